@@ -1,0 +1,304 @@
+//! The `topolab` commands. Each returns an exit code: 0 success, 1 when the input was read
+//! but a structure refused it (or problems were found), 2 when the input cannot be read.
+
+use clap::{Parser, Subcommand};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use topolab_structures::registry::{self, StructureVisitor};
+use topolab_structures::summary::{summarize, Summary};
+use topolab_structures::{meshes, Capabilities, Error, MeshTopology, Operator, PolygonSoup};
+
+/// A lab of mesh data structures: build, query, explain and measure them side by side.
+#[derive(Parser, Debug)]
+#[command(name = "topolab", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// List the structures, the operators and each structure's theoretical cost per operator.
+    List {
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Counts, boundary curves, Euler characteristic and genus of a mesh, computed through a structure.
+    Info {
+        /// A mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`):
+        /// a canonical mesh name such as `open-tetrahedron`, or `torus:N`, `sphere:N`,
+        /// `grid:N`, `quad-grid:N` for about N faces.
+        mesh: String,
+        /// The structure that answers the queries.
+        #[arg(long, default_value = "vertex-list")]
+        structure: String,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
+    Explain {
+        /// The structure (see `topolab list`).
+        name: String,
+        /// Explain this mesh (a file or built-in mesh) instead of the open tetrahedron.
+        #[arg(long)]
+        mesh: Option<String>,
+    },
+}
+
+/// Runs a parsed command line; returns the process exit code.
+pub fn run(cli: Cli) -> u8 {
+    let result = match cli.command {
+        Command::List { json } => list(json),
+        Command::Info {
+            mesh,
+            structure,
+            json,
+        } => info(&mesh, &structure, json),
+        Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+    };
+    match result {
+        Ok(text) => {
+            print!("{text}");
+            0
+        }
+        Err(e) => {
+            eprintln!("topolab: {}", e.message);
+            e.code
+        }
+    }
+}
+
+/// A failed command: what to tell the user and the exit code.
+#[derive(Debug)]
+pub struct Failure {
+    /// The message, with context.
+    pub message: String,
+    /// The exit code.
+    pub code: u8,
+}
+
+impl Failure {
+    fn unreadable(what: &str, e: Error) -> Self {
+        Self {
+            message: format!("cannot read {what}: {e}"),
+            code: 2,
+        }
+    }
+    fn usage(message: String) -> Self {
+        Self { message, code: 2 }
+    }
+}
+
+/// Loads a mesh named on the command line: a file, or a built-in mesh.
+pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
+    let path = PathBuf::from(spec);
+    if path.exists() {
+        let soup = topolab_structures::io::read(&path).map_err(|e| Failure::unreadable(spec, e))?;
+        return Ok(soup);
+    }
+    meshes::from_spec(spec).ok_or_else(|| {
+        let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
+        Failure::usage(format!(
+            "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N)",
+            names.join(", ")
+        ))
+    })
+}
+
+fn unknown_structure(name: &str) -> Failure {
+    Failure::usage(format!(
+        "unknown structure {name:?}; known: {}",
+        registry::NAMES.join(", ")
+    ))
+}
+
+#[derive(serde::Serialize)]
+struct StructureRow {
+    name: &'static str,
+    capabilities: Capabilities,
+    costs: Vec<(&'static str, &'static str)>,
+}
+
+struct Row;
+impl StructureVisitor for Row {
+    type Output = StructureRow;
+    fn visit<M: MeshTopology>(self) -> StructureRow {
+        StructureRow {
+            name: M::NAME,
+            capabilities: M::capabilities(),
+            costs: Operator::ALL
+                .iter()
+                .map(|&op| (op.name(), M::cost(op).notation()))
+                .collect(),
+        }
+    }
+}
+
+fn list(json: bool) -> Result<String, Failure> {
+    let rows: Vec<StructureRow> = registry::NAMES
+        .iter()
+        .map(|n| registry::visit(n, Row).expect("registered"))
+        .collect();
+    if json {
+        let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
+        let v = serde_json::json!({ "structures": rows, "operators": ops });
+        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
+    }
+    let mut out = String::new();
+    let _ = writeln!(out, "Structures and the theoretical cost of each operator");
+    let _ = writeln!(
+        out,
+        "(n: elements scanned, k: local size (valence or face size), ∂n1: boundary edges)\n"
+    );
+    let _ = write!(out, "{:<18}", "operator");
+    for r in &rows {
+        let _ = write!(out, "{:>14}", r.name);
+    }
+    out.push('\n');
+    for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
+        let _ = write!(out, "{:<18}", spec.name);
+        for r in &rows {
+            let _ = write!(out, "{:>14}", r.costs[i].1);
+        }
+        out.push('\n');
+    }
+    out.push('\n');
+    for r in &rows {
+        let c = r.capabilities;
+        let _ = writeln!(
+            out,
+            "{:<14} {}{}{}{}",
+            r.name,
+            if c.triangles_only {
+                "triangles only"
+            } else {
+                "polygons"
+            },
+            if c.non_manifold_vertices {
+                ", non-manifold vertices"
+            } else {
+                ""
+            },
+            if c.grids_only {
+                ", regular grids only"
+            } else {
+                ""
+            },
+            if c.distinct_positions {
+                ", distinct positions"
+            } else {
+                ""
+            },
+        );
+    }
+    let _ = writeln!(out, "\noperators:");
+    for spec in &topolab_harness::catalogue::CATALOGUE {
+        let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);
+    }
+    Ok(out)
+}
+
+struct InfoVisit<'a>(&'a PolygonSoup);
+impl StructureVisitor for InfoVisit<'_> {
+    type Output = Result<Summary, Error>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        let m = M::from_soup(self.0)?;
+        Ok(summarize(&m))
+    }
+}
+
+fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
+    let soup = load_mesh(spec)?;
+    let summary = registry::visit(structure, InfoVisit(&soup))
+        .ok_or_else(|| unknown_structure(structure))?
+        .map_err(|e| Failure {
+            message: format!("{structure} cannot store {spec}: {e}"),
+            code: 1,
+        })?;
+    let non_manifold_vertices = soup
+        .connectivity()
+        .map(|c| c.vertex_fans(&soup).iter().filter(|&&n| n > 1).count())
+        .unwrap_or(0);
+    if json {
+        let mut v = serde_json::to_value(&summary).expect("serialisable");
+        v["mesh"] = spec.into();
+        v["non_manifold_vertices"] = non_manifold_vertices.into();
+        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
+    }
+    let s = &summary;
+    let mut out = String::new();
+    let _ = writeln!(out, "mesh:                 {spec}");
+    let _ = writeln!(out, "structure:            {}", s.structure);
+    let _ = writeln!(
+        out,
+        "vertices:             {} ({} unused)",
+        s.vertices, s.unused_vertices
+    );
+    let _ = writeln!(out, "edges:                {}", s.edges);
+    let _ = writeln!(
+        out,
+        "faces:                {} ({})",
+        s.faces,
+        if s.triangles_only {
+            "triangles"
+        } else {
+            "polygons"
+        }
+    );
+    let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
+    let _ = writeln!(out, "boundary curves:      {}", s.boundary_curves);
+    let _ = writeln!(out, "components:           {}", s.components);
+    let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
+    match s.genus {
+        Some(g) => writeln!(out, "genus:                {g}"),
+        None => writeln!(
+            out,
+            "genus:                undefined ({} components)",
+            s.components
+        ),
+    }
+    .ok();
+    let _ = writeln!(
+        out,
+        "manifold:             {}",
+        if non_manifold_vertices == 0 {
+            "yes (oriented, every vertex one fan)".to_string()
+        } else {
+            format!("edges yes, {non_manifold_vertices} non-manifold vertices")
+        }
+    );
+    Ok(out)
+}
+
+struct ExplainVisit<'a>(&'a PolygonSoup);
+impl StructureVisitor for ExplainVisit<'_> {
+    type Output = Result<String, Error>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        let m = M::from_soup(self.0)?;
+        let mut out = String::new();
+        m.explain(&mut out)
+            .expect("writing to a String cannot fail");
+        Ok(out)
+    }
+}
+
+fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let (soup, label) = match mesh {
+        Some(spec) => (load_mesh(spec)?, spec.to_string()),
+        None => (
+            meshes::open_tetrahedron(),
+            "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
+        ),
+    };
+    let text = registry::visit(name, ExplainVisit(&soup))
+        .ok_or_else(|| unknown_structure(name))?
+        .map_err(|e| Failure {
+            message: format!("{name} cannot store {label}: {e}"),
+            code: 1,
+        })?;
+    Ok(format!("{name} for {label}\n\n{text}"))
+}

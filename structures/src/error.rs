@@ -1,0 +1,260 @@
+//! The one error type of `topolab-structures`.
+//!
+//! Readers, soup checks, structure construction and `validate()` all answer with [`Error`].
+//! Every variant names the offending element (face, vertex, edge by its end vertices) or the
+//! place in the file (line or byte offset), so a user can find the problem.
+
+use std::path::PathBuf;
+
+/// A file format the lab reads or writes.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// Wavefront OBJ.
+    Obj,
+    /// Object File Format.
+    Off,
+    /// Stanford polygon file format (ASCII or binary).
+    Ply,
+}
+
+impl std::fmt::Display for Format {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Format::Obj => "OBJ",
+            Format::Off => "OFF",
+            Format::Ply => "PLY",
+        })
+    }
+}
+
+/// Where in a file a problem was found.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Location {
+    /// 1-based line of a text file.
+    Line(usize),
+    /// Byte offset in a binary file (or binary body).
+    Byte(u64),
+}
+
+impl std::fmt::Display for Location {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Location::Line(l) => write!(f, "line {l}"),
+            Location::Byte(b) => write!(f, "byte {b}"),
+        }
+    }
+}
+
+/// Everything that can go wrong in `topolab-structures`.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// The operating system refused to read or write a file.
+    #[error("cannot access {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// What the OS said.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The file name does not tell which format to read.
+    #[error("cannot tell the format of {path}: expected an .obj, .off or .ply file")]
+    UnknownFormat {
+        /// The file.
+        path: PathBuf,
+    },
+    /// A token or line that the format does not allow.
+    #[error("{format} {location}: {message}")]
+    Syntax {
+        /// The format being read.
+        format: Format,
+        /// Where.
+        location: Location,
+        /// What was expected and what was found.
+        message: String,
+    },
+    /// The file ended before the elements its header announced.
+    #[error("{format} {location}: file ends early: {message}")]
+    Truncated {
+        /// The format being read.
+        format: Format,
+        /// Where the file ended.
+        location: Location,
+        /// What was still expected.
+        message: String,
+    },
+    /// A header announces more elements than the file could hold; nothing was allocated.
+    #[error("{format}: header announces {announced} {what}, but the file has room for at most {possible}")]
+    ImplausibleHeader {
+        /// The format being read.
+        format: Format,
+        /// "vertices" or "faces".
+        what: &'static str,
+        /// What the header says.
+        announced: u64,
+        /// The most the remaining bytes could hold.
+        possible: u64,
+    },
+    /// A mesh with more elements than `u32` handles can address.
+    #[error("{what}: {count} elements do not fit u32 handles")]
+    TooLarge {
+        /// Which element kind.
+        what: &'static str,
+        /// How many there are.
+        count: u64,
+    },
+    /// A face refers to a vertex that does not exist (or a negative / overflowing index).
+    #[error("face {face} refers to vertex {index}, but there are {vertices} vertices")]
+    IndexOutOfRange {
+        /// The face (0-based, input order).
+        face: usize,
+        /// The index as written (after converting the format's base and relative indices).
+        index: i64,
+        /// How many vertices exist.
+        vertices: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("vertex {vertex} has a non-finite coordinate {value}")]
+    NonFiniteCoordinate {
+        /// The vertex.
+        vertex: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A face with fewer than three corners.
+    #[error("face {face} has {corners} corners; a face needs at least 3")]
+    TooFewCorners {
+        /// The face.
+        face: usize,
+        /// How many corners it has.
+        corners: usize,
+    },
+    /// A face that uses one vertex twice.
+    #[error("face {face} uses vertex {vertex} more than once")]
+    RepeatedVertex {
+        /// The face.
+        face: usize,
+        /// The repeated vertex.
+        vertex: u32,
+    },
+    /// An edge with more than two incident faces.
+    #[error("edge ({a}, {b}) is shared by {} faces {faces:?}; a manifold edge has one or two", faces.len())]
+    NonManifoldEdge {
+        /// One end vertex.
+        a: u32,
+        /// The other end vertex.
+        b: u32,
+        /// Every face that uses the edge.
+        faces: Vec<u32>,
+    },
+    /// Two faces use their shared edge in the same direction: their orientations disagree.
+    #[error("faces {f} and {g} both traverse edge ({a} -> {b}): inconsistent orientation")]
+    InconsistentOrientation {
+        /// Start vertex of the edge in both faces.
+        a: u32,
+        /// End vertex.
+        b: u32,
+        /// One face.
+        f: u32,
+        /// The other face.
+        g: u32,
+    },
+    /// A vertex whose faces form more than one fan (e.g. two cones touching at their tips).
+    #[error("vertex {vertex} is non-manifold: its faces form {fans} separate fans")]
+    NonManifoldVertex {
+        /// The vertex.
+        vertex: u32,
+        /// How many fans its star falls into.
+        fans: usize,
+    },
+    /// A triangle-only structure was given a polygon with more corners.
+    #[error("{structure} stores triangles only, but face {face} has {corners} corners")]
+    NotTriangles {
+        /// The structure that refused.
+        structure: &'static str,
+        /// The first offending face.
+        face: usize,
+        /// Its number of corners.
+        corners: usize,
+    },
+    /// Two vertices at the same position, which a structure that identifies vertices by
+    /// their coordinates (explicit storage) cannot tell apart.
+    #[error(
+        "{structure} identifies vertices by position, but vertices {first} and {second} coincide"
+    )]
+    CoincidentVertices {
+        /// The structure that refused.
+        structure: &'static str,
+        /// The first vertex.
+        first: u32,
+        /// The vertex at the same position.
+        second: u32,
+    },
+    /// The regular grid (and its height field) represent grid meshes only.
+    #[error("{structure} represents grid meshes only: {reason}")]
+    NotAGrid {
+        /// The structure that refused.
+        structure: &'static str,
+        /// Why this soup is not one of its grids.
+        reason: String,
+    },
+    /// A structure's `validate()` found a broken invariant.
+    #[error("{structure}: invariant broken: {message}")]
+    Invariant {
+        /// The structure.
+        structure: &'static str,
+        /// Which invariant and where.
+        message: String,
+    },
+    /// A request outside what the structure or mesh offers (e.g. an unknown structure name).
+    #[error("{0}")]
+    Unsupported(String),
+}
+
+impl Error {
+    /// A short, stable name of the error kind (used in JSON output and tests).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Error::Io { .. } => "io",
+            Error::UnknownFormat { .. } => "unknown-format",
+            Error::Syntax { .. } => "syntax",
+            Error::Truncated { .. } => "truncated",
+            Error::ImplausibleHeader { .. } => "implausible-header",
+            Error::TooLarge { .. } => "too-large",
+            Error::IndexOutOfRange { .. } => "index-out-of-range",
+            Error::NonFiniteCoordinate { .. } => "non-finite-coordinate",
+            Error::TooFewCorners { .. } => "too-few-corners",
+            Error::RepeatedVertex { .. } => "repeated-vertex",
+            Error::NonManifoldEdge { .. } => "non-manifold-edge",
+            Error::InconsistentOrientation { .. } => "inconsistent-orientation",
+            Error::NonManifoldVertex { .. } => "non-manifold-vertex",
+            Error::NotTriangles { .. } => "not-triangles",
+            Error::CoincidentVertices { .. } => "coincident-vertices",
+            Error::NotAGrid { .. } => "not-a-grid",
+            Error::Invariant { .. } => "invariant",
+            Error::Unsupported(_) => "unsupported",
+        }
+    }
+
+    /// `true` for the errors that say the mesh is not an oriented manifold.
+    pub fn is_non_manifold(&self) -> bool {
+        matches!(
+            self,
+            Error::NonManifoldEdge { .. }
+                | Error::InconsistentOrientation { .. }
+                | Error::NonManifoldVertex { .. }
+        )
+    }
+
+    /// Shorthand for an [`Error::Invariant`].
+    pub fn invariant(structure: &'static str, message: impl Into<String>) -> Self {
+        Error::Invariant {
+            structure,
+            message: message.into(),
+        }
+    }
+}
+
+/// The result type of this crate.
+pub type Result<T, E = Error> = std::result::Result<T, E>;

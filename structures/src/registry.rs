@@ -1,0 +1,35 @@
+//! The structures of this crate by name: one line per structure in [`structures!`].
+//!
+//! Code that must work with a structure chosen at run time (the CLI) implements
+//! [`StructureVisitor`] and calls [`visit`]; the visitor's generic method is monomorphised for
+//! each structure, so nothing goes through `dyn`.
+
+use crate::topology::MeshTopology;
+use crate::{ExplicitStorage, VertexList};
+
+/// Code generic over a structure, run for a structure named at run time.
+pub trait StructureVisitor {
+    /// What the visit returns.
+    type Output;
+    /// Runs with the structure `M`.
+    fn visit<M: MeshTopology>(self) -> Self::Output;
+}
+
+macro_rules! structures {
+    ($($ty:ty),* $(,)?) => {
+        /// Names of every structure of this crate, in report order.
+        pub const NAMES: &[&str] = &[$(<$ty as MeshTopology>::NAME),*];
+
+        /// Runs `visitor` with the structure called `name`; `None` if there is none.
+        pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+            $(
+                if name == <$ty as MeshTopology>::NAME {
+                    return Some(visitor.visit::<$ty>());
+                }
+            )*
+            None
+        }
+    };
+}
+
+structures!(ExplicitStorage, VertexList);

@@ -1,0 +1,7 @@
+//! The conformance suite, one line per structure.
+
+use topolab_structures::conformance;
+use topolab_structures::{ExplicitStorage, VertexList};
+
+conformance!(explicit, ExplicitStorage);
+conformance!(vertex_list, VertexList);
