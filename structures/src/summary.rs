@@ -69,8 +69,8 @@ pub fn summarize<M: MeshTopology>(m: &M) -> Summary {
     // χ = 2 - 2g - b for one connected orientable surface; anything else (several
     // components, a pinched vertex) leaves the genus undefined.
     let twice_genus = 2 - chi - curves.len() as i64;
-    let genus =
-        (components == 1 && twice_genus >= 0 && twice_genus.rem_euclid(2) == 0).then_some(twice_genus / 2);
+    let genus = (components == 1 && twice_genus >= 0 && twice_genus.rem_euclid(2) == 0)
+        .then_some(twice_genus / 2);
     let mut triangles_only = nf > 0;
     for f in 0..nf {
         let mut k = 0;
