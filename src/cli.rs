@@ -47,6 +47,8 @@ pub enum Command {
         #[arg(long)]
         mesh: Option<String>,
     },
+    /// Measure every operator on every structure and write results.json and index.html.
+    Report(crate::report::ReportArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -59,6 +61,10 @@ pub fn run(cli: Cli) -> u8 {
             json,
         } => info(&mesh, &structure, json),
         Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+        Command::Report(args) => {
+            let command = std::env::args().collect::<Vec<_>>().join(" ");
+            crate::report::report(&args, command)
+        }
     };
     match result {
         Ok(text) => {
@@ -88,7 +94,7 @@ impl Failure {
             code: 2,
         }
     }
-    fn usage(message: String) -> Self {
+    pub(crate) fn usage(message: String) -> Self {
         Self { message, code: 2 }
     }
 }

@@ -7,3 +7,9 @@
 #![forbid(unsafe_code)]
 
 pub mod cli;
+pub mod report;
+
+/// The process's allocator, counting bytes so the report can measure each structure's heap
+/// (current and peak). The counters add two atomic operations to every allocation.
+#[global_allocator]
+pub static ALLOCATOR: peak_alloc::PeakAlloc = peak_alloc::PeakAlloc;

@@ -1,9 +1,19 @@
 //! # topolab-harness
 //!
-//! The operator catalogue (what each operator takes and answers); timing, memory, fitting and
-//! the report build on it.
+//! The operator catalogue (what each operator takes and answers), the kernels that time it on
+//! any structure, timing with medians, complexity fits, the machine probe, and the results
+//! model and HTML report.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
 pub mod catalogue;
 pub mod checksum;
+pub mod fit;
+pub mod html;
+pub mod kernels;
+pub mod machine;
+pub mod measure;
+pub mod probe;
+pub mod results;
+pub mod svg;
+pub mod timing;

@@ -285,4 +285,25 @@ pub trait MeshTopology: Sized {
 
     /// For teaching: what the structure stores, record by record, with the lecture's field names.
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
+
+    /// A whole sweep of `op` over every element, run by the structure itself and folded into
+    /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
+    /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
+    /// the harness run its one generic kernel.
+    fn native_sweep(&self, op: Operator) -> Option<u64> {
+        let _ = op;
+        None
+    }
+
+    /// Like [`MeshTopology::native_sweep`], for the sampled vertex or face queries `ids`.
+    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
+        let _ = (op, ids);
+        None
+    }
+
+    /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
+    fn native_workload(&self, name: &str) -> Option<f64> {
+        let _ = name;
+        None
+    }
 }

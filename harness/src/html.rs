@@ -1,0 +1,428 @@
+//! The self-contained HTML report (inline CSS and SVG, no network) drawn from [`Results`].
+
+use crate::results::{Measurement, Results, Status};
+use crate::svg;
+use std::fmt::Write;
+use topolab_structures::Operator;
+
+fn esc(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+fn ns(x: f64) -> String {
+    if x >= 1e6 {
+        format!("{:.1} ms", x / 1e6)
+    } else if x >= 1e3 {
+        format!("{:.1} µs", x / 1e3)
+    } else if x >= 10.0 {
+        format!("{x:.0} ns")
+    } else {
+        format!("{x:.1} ns")
+    }
+}
+
+fn bytes(b: f64) -> String {
+    if b >= 1e9 {
+        format!("{:.2} GB", b / 1e9)
+    } else if b >= 1e6 {
+        format!("{:.1} MB", b / 1e6)
+    } else {
+        format!("{:.0} kB", b / 1e3)
+    }
+}
+
+const CSS: &str = r#"
+body{font-family:system-ui,sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
+h1{margin-bottom:.2em} h2{border-bottom:2px solid #ddd;padding-bottom:.2em;margin-top:2em}
+table{border-collapse:collapse;font-size:13px;margin:1em 0} th,td{border:1px solid #ccc;padding:3px 6px;text-align:right}
+th{background:#f3f3f3} td.l,th.l{text-align:left}
+td.ok{background:#e8f5e9} td.bad{background:#ffebee} td.skip{background:#f5f5f5;color:#777} td.ref{background:#fff8e1}
+.cost{font-weight:bold;display:block} .exp{color:#555} .small{font-size:12px;color:#555}
+.plots{display:flex;flex-wrap:wrap;gap:8px} .plots svg{border:1px solid #eee}
+.read{background:#f6f8fa;border-left:4px solid #4a90d9;padding:.6em 1em;margin:1em 0}
+pre{background:#f6f8fa;padding:.6em;overflow-x:auto;font-size:12px;max-height:420px}
+.thumbs{display:flex;flex-wrap:wrap;gap:12px} .thumbs figure{margin:0;text-align:center;font-size:12px}
+.teach{display:flex;gap:16px;flex-wrap:wrap;align-items:flex-start} details{margin:.3em 0}
+"#;
+
+/// Renders the whole report page.
+pub fn render(r: &Results) -> String {
+    let mut h = String::new();
+    let names: Vec<&str> = r.structures.iter().map(|s| s.name.as_str()).collect();
+    let ci = |s: &str| names.iter().position(|&n| n == s).unwrap_or(0);
+    let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
+    let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
+    machine_section(&mut h, r);
+    table_4_1(&mut h, r, &names);
+    plots(&mut h, r, &ci);
+    sweeps(&mut h, r, &names);
+    workloads(&mut h, r, &ci);
+    memory(&mut h, r, &ci);
+    construction(&mut h, r, &ci);
+    libigl(&mut h, r);
+    teaching(&mut h, r);
+    meshes(&mut h, r);
+    if !r.notes.is_empty() {
+        h.push_str("<h2>Notes</h2><ul>");
+        for n in &r.notes {
+            let _ = write!(h, "<li>{}</li>", esc(n));
+        }
+        h.push_str("</ul>");
+    }
+    h.push_str("</body></html>\n");
+    h
+}
+
+fn machine_section(h: &mut String, r: &Results) {
+    let m = &r.machine;
+    let p = &r.probe;
+    let _ = write!(
+        h,
+        "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>timing</th><td class=l>median of repeated runs (at least {} per cell, until {:.2} s); {} sampled queries per kind; single-threaded</td></tr></table>",
+        esc(&m.cpu), m.cores, esc(&m.caches), esc(&m.memory), esc(&m.rustc), esc(&m.commit), esc(&m.date),
+        p.read_bytes_per_s / 1e9, bytes(p.read_array_bytes as f64), p.chase_ns_per_hop, bytes(p.chase_array_bytes as f64),
+        3, r.settings.cell_budget_s, r.settings.samples
+    );
+}
+
+/// The measured cells of one (structure, operator, kernel, family), by size.
+fn cells<'a>(
+    r: &'a Results,
+    s: &str,
+    op: &str,
+    kernel: &str,
+    family: &str,
+) -> Vec<&'a Measurement> {
+    let mut v: Vec<&Measurement> = r
+        .measurements
+        .iter()
+        .filter(|m| {
+            m.structure == s && m.operator == op && m.kernel == kernel && m.family == family
+        })
+        .collect();
+    v.sort_by_key(|m| m.triangles);
+    v
+}
+
+/// One plot line per structure: its measured ns per item against triangles.
+fn lines(
+    r: &Results,
+    op: &str,
+    kernel: &str,
+    family: &str,
+    ci: &dyn Fn(&str) -> usize,
+) -> Vec<svg::Series> {
+    r.structures
+        .iter()
+        .map(|s| svg::Series {
+            name: s.name.clone(),
+            colour: ci(&s.name),
+            points: cells(r, &s.name, op, kernel, family)
+                .iter()
+                .filter_map(|m| m.ns_per_item.map(|t| (m.triangles as f64, t)))
+                .collect(),
+        })
+        .collect()
+}
+
+fn family_of(op: Operator) -> &'static str {
+    match op {
+        Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
+        _ => "torus",
+    }
+}
+
+fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
+    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the lecture's tables and the CHE chapter's Table 4.1), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate from smaller sizes is shown). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
+    h.push_str("<table><tr><th class=l>operator</th>");
+    for n in names {
+        let _ = write!(h, "<th>{n}</th>");
+    }
+    if !r.libigl.is_empty() {
+        h.push_str("<th>libigl (whole-mesh build)</th>");
+    }
+    h.push_str("</tr>");
+    for op in Operator::ALL {
+        let fam = family_of(op);
+        let kernel = if op == Operator::BoundaryCurves {
+            "sweep"
+        } else {
+            "sampled"
+        };
+        let _ = write!(
+            h,
+            "<tr><th class=l>{} <span class=small>({fam})</span></th>",
+            op.name()
+        );
+        for s in names {
+            let theory = r
+                .structures
+                .iter()
+                .find(|x| x.name == *s)
+                .and_then(|x| x.costs.iter().find(|c| c.operator == op))
+                .map(|c| c.cost.clone())
+                .unwrap_or_default();
+            let fit = r.fits.iter().find(|f| {
+                f.structure == *s
+                    && f.operator == op.name()
+                    && f.kernel == kernel
+                    && f.family == fam
+            });
+            let cs = cells(r, s, op.name(), kernel, fam);
+            let last_measured = cs.iter().rev().find(|m| m.status == Status::Measured);
+            let last = cs.last();
+            let (class, body) = match (last, fit) {
+                (None, _) => ("skip", "not run".to_string()),
+                (Some(m), _) if m.status == Status::Refused => {
+                    ("skip", "cannot store this mesh".to_string())
+                }
+                (Some(m), f) => {
+                    let class = match f {
+                        Some(f) if f.agrees => "ok",
+                        Some(_) => "bad",
+                        None => "",
+                    };
+                    let e = f
+                        .map(|f| format!("e = {:.2} ({})", f.exponent, f.class))
+                        .unwrap_or_else(|| "e: too few sizes".into());
+                    let t = match (m.status, last_measured) {
+                        (Status::Skipped, _) => format!(
+                            "skipped at {} tri (est. {})",
+                            m.triangles,
+                            m.estimate_ns_per_item.map(ns).unwrap_or_default()
+                        ),
+                        (_, Some(lm)) => format!(
+                            "{} at {} tri",
+                            lm.ns_per_item.map(ns).unwrap_or_default(),
+                            lm.triangles
+                        ),
+                        _ => String::new(),
+                    };
+                    let class = if m.status == Status::Skipped && class.is_empty() {
+                        "skip"
+                    } else {
+                        class
+                    };
+                    (class, format!("<span class=exp>{e}</span><br>{t}"))
+                }
+            };
+            let _ = write!(
+                h,
+                "<td class={class}><span class=cost>{theory}</span>{body}</td>"
+            );
+        }
+        if !r.libigl.is_empty() {
+            let l: Vec<String> = r
+                .libigl
+                .iter()
+                .filter(|l| l.operator == op.name())
+                .map(|l| {
+                    format!(
+                        "{}: {} per element{}",
+                        l.function,
+                        ns(l.ns_per_item),
+                        if l.agrees { "" } else { " (checksum differs!)" }
+                    )
+                })
+                .collect();
+            let _ = write!(
+                h,
+                "<td class=ref>{}</td>",
+                l.last().cloned().unwrap_or_default()
+            );
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+}
+
+fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+    h.push_str("<h2>Time per query against mesh size</h2><div class=read><b>How to read them.</b> Both axes are logarithmic, so a power law is a straight line whose slope is its exponent: a flat line is a constant-time query, a line rising one decade per decade of size is a linear scan. Lines that stop early were skipped at larger sizes (too slow to measure).</div><div class=plots>");
+    for op in Operator::ALL {
+        let fam = family_of(op);
+        let kernel = if op == Operator::BoundaryCurves {
+            "sweep"
+        } else {
+            "sampled"
+        };
+        let series = lines(r, op.name(), kernel, fam, ci);
+        h.push_str(&svg::loglog(
+            &format!("{} ({fam}, {kernel})", op.name()),
+            "triangles",
+            "ns per query",
+            &series,
+        ));
+    }
+    h.push_str("</div>");
+}
+
+fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usize)> {
+    r.meshes
+        .iter()
+        .filter(|m| m.family == family)
+        .max_by_key(|m| m.triangles)
+        .map(|m| (m.name.as_str(), m.triangles))
+}
+
+fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let bw = r.probe.read_bytes_per_s;
+    let _ = write!(h, "<h2>Sweeps and the bandwidth bound ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the share of the machine's bandwidth bound reached: the structure's container bytes read once at the probe's {:.1} GB/s, divided by the measured time (100% = the sweep runs as fast as memory can deliver its data; far below means pointer chasing or computation dominate).</div><table><tr><th class=l>operator</th>", bw / 1e9);
+    for n in names {
+        let _ = write!(h, "<th>{n}</th>");
+    }
+    h.push_str("</tr>");
+    for op in Operator::ALL {
+        let _ = write!(h, "<tr><th class=l>{}</th>", op.name());
+        for s in names {
+            let cons = r
+                .measurements
+                .iter()
+                .find(|m| m.structure == *s && m.mesh == mesh && m.kernel == "construction");
+            let m = r.measurements.iter().find(|m| {
+                m.structure == *s
+                    && m.mesh == mesh
+                    && m.operator == op.name()
+                    && m.kernel == "sweep"
+            });
+            let cell = match m {
+                Some(m) if m.status == Status::Measured => {
+                    let t = m.ns_per_item.unwrap_or(f64::NAN);
+                    let frac = cons
+                        .and_then(|c| c.declared_bytes)
+                        .map(|b| (b as f64 / bw * 1e9) / (t * m.items as f64))
+                        .map(|f| {
+                            format!(
+                                "<br><span class=small>{:.0}% of bound{}</span>",
+                                f * 100.0,
+                                if m.native { ", native" } else { "" }
+                            )
+                        })
+                        .unwrap_or_default();
+                    format!("<td>{}{frac}</td>", ns(t))
+                }
+                Some(m) if m.status == Status::Skipped => format!(
+                    "<td class=skip>skipped (est. {})</td>",
+                    m.estimate_ns_per_item.map(ns).unwrap_or_default()
+                ),
+                _ => "<td class=skip>–</td>".into(),
+            };
+            h.push_str(&cell);
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+}
+
+fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+    h.push_str("<h2>Application workloads (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The workloads of the published Surface_mesh benchmark, which OpenMesh and pmp-library users compare on: <i>circulators</i> (for each vertex count its faces, for each face subtract its vertices; the total must be 0), <i>barycenter</i> (mean of all positions), <i>normals</i> (face normals, then vertex normals), <i>smoothing</i> (one step of uniform 1-ring averaging of interior vertices). Time per element on closed tori of growing size; every structure's result is cross-checked.</div><div class=plots>");
+    for w in crate::kernels::Workload::ALL {
+        let series = lines(r, w.name(), "workload", "torus", ci);
+        h.push_str(&svg::loglog(
+            w.name(),
+            "triangles",
+            "ns per element",
+            &series,
+        ));
+    }
+    h.push_str("</div>");
+}
+
+fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let rows: Vec<(String, usize, f64, Option<f64>)> = r
+        .measurements
+        .iter()
+        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
+        .filter_map(|m| {
+            m.bytes.map(|b| {
+                (
+                    m.structure.clone(),
+                    ci(&m.structure),
+                    b as f64 / tri as f64,
+                    m.declared_bytes.map(|d| d as f64 / tri as f64),
+                )
+            })
+        })
+        .collect();
+    let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
+    let peak: Vec<(String, usize, f64, Option<f64>)> = r
+        .measurements
+        .iter()
+        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
+        .filter_map(|m| {
+            m.peak_bytes.map(|b| {
+                (
+                    m.structure.clone(),
+                    ci(&m.structure),
+                    b as f64 / tri as f64,
+                    None,
+                )
+            })
+        })
+        .collect();
+    h.push_str(&svg::bars(
+        "peak bytes per triangle during construction",
+        "B",
+        &peak,
+    ));
+}
+
+fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log). A flat line is linear-time construction.</div><div class=plots>");
+    for fam in ["torus", "grid"] {
+        let series = lines(r, "construction", "construction", fam, ci);
+        h.push_str(&svg::loglog(
+            &format!("construction ({fam})"),
+            "faces",
+            "ns per face",
+            &series,
+        ));
+    }
+    h.push_str("</div>");
+}
+
+fn libigl(h: &mut String, r: &Results) {
+    if r.libigl.is_empty() {
+        return;
+    }
+    h.push_str("<h2>libigl as reference</h2><div class=read><b>How to read it.</b> libigl answers these relations by building whole-mesh adjacency arrays (not by per-query circulation), timed inside Python around each call (best of several, one thread). Its checksum is compared with the lab's answer for the same operator.</div><table><tr><th class=l>mesh</th><th class=l>operator</th><th class=l>libigl function</th><th>ns per element</th><th>checksum agrees</th></tr>");
+    for l in &r.libigl {
+        let _ = write!(h, "<tr><td class=l>{}</td><td class=l>{}</td><td class=l>{}</td><td>{}</td><td class={}>{}</td></tr>", esc(&l.mesh), l.operator, l.function, ns(l.ns_per_item), if l.agrees { "ok" } else { "bad" }, if l.agrees { "yes" } else { "no" });
+    }
+    h.push_str("</table>");
+}
+
+fn teaching(h: &mut String, r: &Results) {
+    let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
+    for t in &r.teaching {
+        let _ = write!(
+            h,
+            "<details><summary>{}</summary><pre>{}</pre></details>",
+            t.structure,
+            esc(&t.text)
+        );
+    }
+    h.push_str("</div></div>");
+}
+
+fn meshes(h: &mut String, r: &Results) {
+    h.push_str("<h2>Meshes</h2><div class=thumbs>");
+    for m in &r.meshes {
+        let _ = write!(
+            h,
+            "<figure>{}<figcaption>{}<br>{} vertices, {} faces</figcaption></figure>",
+            m.thumbnail_svg,
+            esc(&m.name),
+            m.vertices,
+            m.faces
+        );
+    }
+    h.push_str("</div>");
+}

@@ -1,0 +1,405 @@
+//! The timed kernels, written once for every structure and serving both the report and
+//! `cargo bench`.
+//!
+//! An operator's kernel answers it for a list of query elements: every element (a *sweep*,
+//! throughput) or a fixed seeded sample (*sampled*, latency per query). Both fold the answers
+//! into the checksum of [`crate::checksum`], so the same query set gives the same number on
+//! every structure. Answers that are edges enter by their end vertices, so edge-valued
+//! relations (R01, R11, R21, successor, predecessor) also pay one R10 per answer — on every
+//! structure alike, OpenMesh included.
+
+use crate::checksum::{edge_key, mix};
+use glam::DVec3;
+use rand::seq::index::sample;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::collections::HashMap;
+use topolab_structures::{
+    BoundaryCurves, EdgeId, FaceId, MeshAttributes, MeshTopology, Operator, PolygonSoup, VertexId,
+};
+
+/// How an operator is exercised.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kernel {
+    /// Every element once (throughput).
+    Sweep,
+    /// A fixed, seeded random sample of query elements (latency per query).
+    Sampled,
+}
+
+impl Kernel {
+    /// The name used in results.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kernel::Sweep => "sweep",
+            Kernel::Sampled => "sampled",
+        }
+    }
+}
+
+/// Query elements of one mesh, named independently of any structure: vertices and faces by
+/// id, edges by a corner of the soup (its outgoing edge, and its face).
+#[derive(Clone, Debug)]
+pub struct QuerySet {
+    /// Sampled vertices.
+    pub vertices: Vec<u32>,
+    /// Sampled faces.
+    pub faces: Vec<u32>,
+    /// Sampled edges as (end, end, face of the corner).
+    pub edges: Vec<(u32, u32, u32)>,
+}
+
+/// The seeded sample of `count` queries of each kind for `soup` (fewer on tiny meshes).
+pub fn sample_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let nv = soup.num_vertices();
+    let nf = soup.num_faces();
+    let nc = soup.num_corners();
+    let pick = |rng: &mut ChaCha8Rng, n: usize| -> Vec<u32> {
+        let mut v: Vec<u32> = sample(rng, n, count.min(n))
+            .into_iter()
+            .map(|i| i as u32)
+            .collect();
+        v.sort_unstable();
+        v
+    };
+    let vertices = pick(&mut rng, nv);
+    let faces = pick(&mut rng, nf);
+    let offsets = soup.offsets();
+    let edges = pick(&mut rng, nc)
+        .into_iter()
+        .map(|c| {
+            let c = c as usize;
+            let f = offsets.partition_point(|&o| o as usize <= c) - 1;
+            let n = soup.next_corner(c, f);
+            (soup.indices()[c], soup.indices()[n], f as u32)
+        })
+        .collect();
+    QuerySet {
+        vertices,
+        faces,
+        edges,
+    }
+}
+
+/// Query elements in one structure's ids, prepared outside any timed region.
+#[derive(Clone, Debug, Default)]
+pub struct Queries {
+    /// Vertices to query.
+    pub vertices: Vec<VertexId>,
+    /// Edges to query.
+    pub edges: Vec<EdgeId>,
+    /// Faces to query.
+    pub faces: Vec<FaceId>,
+    /// (edge, face) pairs for successor and predecessor.
+    pub edge_faces: Vec<(EdgeId, FaceId)>,
+}
+
+impl Queries {
+    /// Every element of `m`: the sweep's queries.
+    pub fn all<M: MeshTopology>(m: &M) -> Self {
+        let mut edges = Vec::with_capacity(m.num_edges());
+        m.for_each_edge(|e| edges.push(e));
+        let faces: Vec<FaceId> = (0..m.num_faces()).map(FaceId::new).collect();
+        let mut edge_faces = Vec::with_capacity(edges.len() * 2);
+        for &f in &faces {
+            m.face_edges(f, |e| edge_faces.push((e, f)));
+        }
+        Self {
+            vertices: (0..m.num_vertices()).map(VertexId::new).collect(),
+            edges,
+            faces,
+            edge_faces,
+        }
+    }
+
+    /// The sample `set` in `m`'s ids (edges looked up by their end vertices).
+    pub fn sampled<M: MeshTopology>(m: &M, set: &QuerySet) -> Self {
+        let mut by_ends = HashMap::with_capacity(m.num_edges());
+        m.for_each_edge(|e| {
+            let [a, b] = m.edge_vertices(e);
+            by_ends.insert(edge_key(a.0, b.0), e);
+        });
+        let edge = |a: u32, b: u32| by_ends[&edge_key(a, b)];
+        Self {
+            vertices: set.vertices.iter().map(|&v| VertexId(v)).collect(),
+            faces: set.faces.iter().map(|&f| FaceId(f)).collect(),
+            edges: set.edges.iter().map(|&(a, b, _)| edge(a, b)).collect(),
+            edge_faces: set
+                .edges
+                .iter()
+                .map(|&(a, b, f)| (edge(a, b), FaceId(f)))
+                .collect(),
+        }
+    }
+
+    /// How many queries `op` makes over this set.
+    pub fn count(&self, op: Operator) -> usize {
+        match op {
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+                self.vertices.len()
+            }
+            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
+                self.edges.len()
+            }
+            Operator::R20 | Operator::R21 | Operator::R22 => self.faces.len(),
+            Operator::EdgeSuccessor | Operator::EdgePredecessor => self.edge_faces.len(),
+            Operator::BoundaryCurves => 1,
+        }
+    }
+}
+
+#[inline(always)]
+fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
+    let [a, b] = m.edge_vertices(e);
+    edge_key(a.0, b.0)
+}
+
+/// Answers `op` for every query of `q` and returns the checksum. Reuses `curves` as the
+/// caller-owned buffer of boundary curves.
+pub fn run<M: MeshTopology>(m: &M, op: Operator, q: &Queries, curves: &mut BoundaryCurves) -> u64 {
+    let mut sum = 0u64;
+    let mut add = |x: u64| sum = sum.wrapping_add(x);
+    match op {
+        Operator::R00 => q
+            .vertices
+            .iter()
+            .for_each(|&v| m.vertex_vertices(v, |w| add(mix(v.0 as u64, w.0 as u64)))),
+        Operator::R01 => q
+            .vertices
+            .iter()
+            .for_each(|&v| m.vertex_edges(v, |e| add(mix(v.0 as u64, key(m, e))))),
+        Operator::R02 => q
+            .vertices
+            .iter()
+            .for_each(|&v| m.vertex_faces(v, |f| add(mix(v.0 as u64, f.0 as u64)))),
+        Operator::R10 => q.edges.iter().for_each(|&e| {
+            let [a, b] = m.edge_vertices(e);
+            add(mix(a.0.min(b.0) as u64, a.0.max(b.0) as u64))
+        }),
+        Operator::R11 => q.edges.iter().for_each(|&e| {
+            let k = key(m, e);
+            m.edge_edges(e, |x| add(mix(k, key(m, x))))
+        }),
+        Operator::R12 => q.edges.iter().for_each(|&e| {
+            let k = key(m, e);
+            m.edge_faces(e, |f| add(mix(k, f.0 as u64)))
+        }),
+        Operator::R20 => q
+            .faces
+            .iter()
+            .for_each(|&f| m.face_vertices(f, |v| add(mix(f.0 as u64, v.0 as u64)))),
+        Operator::R21 => q
+            .faces
+            .iter()
+            .for_each(|&f| m.face_edges(f, |e| add(mix(f.0 as u64, key(m, e))))),
+        Operator::R22 => q
+            .faces
+            .iter()
+            .for_each(|&f| m.face_faces(f, |g| add(mix(f.0 as u64, g.0 as u64)))),
+        Operator::BoundaryVertex => q.vertices.iter().for_each(|&v| {
+            if m.is_boundary_vertex(v) {
+                add(mix(v.0 as u64, 1))
+            }
+        }),
+        Operator::BoundaryEdge => q.edges.iter().for_each(|&e| {
+            if m.is_boundary_edge(e) {
+                add(mix(key(m, e), 1))
+            }
+        }),
+        Operator::BoundaryCurves => {
+            m.boundary_curves(curves);
+            for i in 0..curves.len() {
+                let c = curves.curve(i);
+                c.iter().for_each(|&e| add(mix(c.len() as u64, key(m, e))));
+            }
+        }
+        Operator::EdgeSuccessor => q.edge_faces.iter().for_each(|&(e, f)| {
+            if let Some(s) = m.edge_successor(e, f) {
+                add(mix(key(m, e), key(m, s)))
+            }
+        }),
+        Operator::EdgePredecessor => q.edge_faces.iter().for_each(|&(e, f)| {
+            if let Some(p) = m.edge_predecessor(e, f) {
+                add(mix(key(m, e), key(m, p)))
+            }
+        }),
+    }
+    sum
+}
+
+/// The application workloads of the Surface_mesh benchmark (Sieger & Botsch, IMR 2011).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Workload {
+    /// For each vertex count its faces, for each face subtract its vertices: the total is 0.
+    Circulators,
+    /// The mean of all positions.
+    Barycenter,
+    /// Face normals, then vertex normals as the normalised sum of unit face normals.
+    Normals,
+    /// One step of uniform 1-ring averaging of interior vertices.
+    Smoothing,
+}
+
+impl Workload {
+    /// Every workload.
+    pub const ALL: [Workload; 4] = [
+        Workload::Circulators,
+        Workload::Barycenter,
+        Workload::Normals,
+        Workload::Smoothing,
+    ];
+
+    /// The kebab-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Workload::Circulators => "circulators",
+            Workload::Barycenter => "barycenter",
+            Workload::Normals => "normals",
+            Workload::Smoothing => "smoothing",
+        }
+    }
+
+    /// What one item is (for ns per item).
+    pub fn items<M: MeshTopology>(self, m: &M) -> usize {
+        match self {
+            Workload::Circulators => m.num_vertices() + m.num_faces(),
+            Workload::Barycenter | Workload::Smoothing => m.num_vertices(),
+            Workload::Normals => m.num_vertices() + m.num_faces(),
+        }
+    }
+}
+
+/// Caller-owned buffers of the workloads (allocated once, outside the timed region).
+#[derive(Clone, Debug, Default)]
+pub struct WorkloadBuffers {
+    face_normals: Vec<DVec3>,
+    vertex_out: Vec<DVec3>,
+}
+
+/// Runs a workload; returns its result as a float checksum (the sum of every resulting
+/// coordinate, or the incidence count for circulators). Panics if the circulator total is not 0,
+/// which would mean the structure's R02 and R20 disagree.
+pub fn run_workload<M: MeshTopology>(m: &M, w: Workload, buf: &mut WorkloadBuffers) -> f64 {
+    let (nv, nf) = (m.num_vertices(), m.num_faces());
+    match w {
+        Workload::Circulators => {
+            let (mut total, mut count) = (0i64, 0i64);
+            for v in 0..nv {
+                m.vertex_faces(VertexId::new(v), |_| {
+                    total += 1;
+                    count += 1;
+                });
+            }
+            for f in 0..nf {
+                m.face_vertices(FaceId::new(f), |_| total -= 1);
+            }
+            assert_eq!(
+                total,
+                0,
+                "{}: vertex-face and face-vertex circulators disagree",
+                M::NAME
+            );
+            count as f64
+        }
+        Workload::Barycenter => {
+            let mut sum = DVec3::ZERO;
+            for v in 0..nv {
+                sum += m.position(VertexId::new(v));
+            }
+            let c = sum / nv.max(1) as f64;
+            c.x + c.y + c.z
+        }
+        Workload::Normals => {
+            buf.face_normals.resize(nf, DVec3::ZERO);
+            buf.vertex_out.resize(nv, DVec3::ZERO);
+            for f in 0..nf {
+                buf.face_normals[f] = m.face_normal(FaceId::new(f));
+            }
+            let mut total = 0.0;
+            for v in 0..nv {
+                let mut n = DVec3::ZERO;
+                m.vertex_faces(VertexId::new(v), |f| n += buf.face_normals[f.index()]);
+                let n = n.normalize_or_zero();
+                buf.vertex_out[v] = n;
+                total += n.x + n.y + n.z;
+            }
+            total
+        }
+        Workload::Smoothing => {
+            buf.vertex_out.resize(nv, DVec3::ZERO);
+            for v in 0..nv {
+                let vid = VertexId::new(v);
+                let p = m.position(vid);
+                buf.vertex_out[v] = if m.is_boundary_vertex(vid) {
+                    p
+                } else {
+                    let (mut sum, mut k) = (DVec3::ZERO, 0u32);
+                    m.vertex_vertices(vid, |w| {
+                        sum += m.position(w);
+                        k += 1;
+                    });
+                    if k == 0 {
+                        p
+                    } else {
+                        sum / k as f64
+                    }
+                };
+            }
+            buf.vertex_out.iter().map(|p| p.x + p.y + p.z).sum()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::{meshes, ExplicitStorage, VertexList};
+
+    #[test]
+    fn two_structures_agree_on_every_kernel_and_workload() {
+        let soup = meshes::annulus(7);
+        let (a, b) = (
+            VertexList::from_soup(&soup).unwrap(),
+            ExplicitStorage::from_soup(&soup).unwrap(),
+        );
+        let set = sample_queries(&soup, 5, 1);
+        let mut curves = BoundaryCurves::default();
+        for op in Operator::ALL {
+            for (qa, qb) in [
+                (Queries::all(&a), Queries::all(&b)),
+                (Queries::sampled(&a, &set), Queries::sampled(&b, &set)),
+            ] {
+                let (x, y) = (run(&a, op, &qa, &mut curves), run(&b, op, &qb, &mut curves));
+                assert_eq!(x, y, "{op:?}");
+                if op != Operator::BoundaryVertex || soup.num_vertices() > 0 {
+                    assert_ne!(x, 0, "{op:?} answered nothing");
+                }
+            }
+        }
+        let mut buf = WorkloadBuffers::default();
+        for w in Workload::ALL {
+            assert_eq!(
+                run_workload(&a, w, &mut buf),
+                run_workload(&b, w, &mut buf),
+                "{w:?}"
+            );
+        }
+        // 14 triangles, 3 corners each.
+        assert_eq!(run_workload(&a, Workload::Circulators, &mut buf), 42.0);
+    }
+
+    #[test]
+    fn a_different_answer_changes_the_checksum() {
+        let closed = VertexList::from_soup(&meshes::closed_tetrahedron()).unwrap();
+        let open = VertexList::from_soup(&meshes::open_tetrahedron()).unwrap();
+        let mut curves = BoundaryCurves::default();
+        let (qc, qo) = (Queries::all(&closed), Queries::all(&open));
+        assert_ne!(
+            run(&closed, Operator::R22, &qc, &mut curves),
+            run(&open, Operator::R22, &qo, &mut curves)
+        );
+    }
+}

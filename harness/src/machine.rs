@@ -1,0 +1,91 @@
+//! Facts about the machine and build that results must carry: CPU, cores, caches, compiler,
+//! commit, date.
+
+use std::process::Command;
+
+/// Machine and build facts.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Machine {
+    /// CPU model name.
+    pub cpu: String,
+    /// Logical cores.
+    pub cores: usize,
+    /// Cache sizes, e.g. `L1d 48K, L2 2048K, L3 ...`.
+    pub caches: String,
+    /// Total memory.
+    pub memory: String,
+    /// `rustc --version`.
+    pub rustc: String,
+    /// `git rev-parse --short HEAD` (plus `-dirty` with uncommitted changes).
+    pub commit: String,
+    /// UTC date and time of the run.
+    pub date: String,
+    /// The OS kernel.
+    pub os: String,
+}
+
+fn run(cmd: &str, args: &[&str]) -> Option<String> {
+    let out = Command::new(cmd).args(args).output().ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+/// Reads the facts (anything unreadable is "unknown").
+pub fn facts() -> Machine {
+    let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+    let cpu = cpuinfo
+        .lines()
+        .find(|l| l.starts_with("model name"))
+        .and_then(|l| l.split(':').nth(1))
+        .map(|s| s.trim().to_string())
+        .unwrap_or_else(|| "unknown".into());
+    let mut caches = Vec::new();
+    for i in 0..8 {
+        let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
+        let read = |f: &str| {
+            std::fs::read_to_string(format!("{base}/{f}"))
+                .ok()
+                .map(|s| s.trim().to_string())
+        };
+        if let (Some(level), Some(kind), Some(size)) = (read("level"), read("type"), read("size")) {
+            let k = match kind.as_str() {
+                "Data" => "d",
+                "Instruction" => "i",
+                _ => "",
+            };
+            caches.push(format!("L{level}{k} {size}"));
+        }
+    }
+    let memory = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|m| {
+            m.lines()
+                .next()
+                .map(|l| l.split_whitespace().nth(1).unwrap_or("0").to_string())
+        })
+        .and_then(|kb| kb.parse::<f64>().ok())
+        .map(|kb| format!("{:.1} GiB", kb / (1024.0 * 1024.0)))
+        .unwrap_or_else(|| "unknown".into());
+    let dirty = run("git", &["status", "--porcelain", "--untracked-files=no"])
+        .is_some_and(|s| !s.is_empty());
+    let commit = run("git", &["rev-parse", "--short", "HEAD"])
+        .map(|c| if dirty { format!("{c}-dirty") } else { c })
+        .unwrap_or_else(|| "unknown".into());
+    Machine {
+        cpu,
+        cores: std::thread::available_parallelism()
+            .map(|n| n.get())
+            .unwrap_or(1),
+        caches: if caches.is_empty() {
+            "unknown".into()
+        } else {
+            caches.join(", ")
+        },
+        memory,
+        rustc: run("rustc", &["--version"]).unwrap_or_else(|| "unknown".into()),
+        commit,
+        date: run("date", &["-u", "+%Y-%m-%d %H:%M UTC"]).unwrap_or_else(|| "unknown".into()),
+        os: run("uname", &["-sr"]).unwrap_or_else(|| "unknown".into()),
+    }
+}

@@ -1,0 +1,134 @@
+//! Renders a quick report into a temporary folder and checks its JSON and HTML; looks at the
+//! page in headless Chromium when it is installed.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use topolab_structures::{registry, Operator};
+
+fn out_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("topolab-test-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn render(out: &Path) {
+    let status = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args([
+            "report",
+            "--quick",
+            "--sizes",
+            "200,800",
+            "--probe-mb",
+            "4",
+            "--out",
+        ])
+        .arg(out)
+        .status()
+        .expect("run topolab");
+    assert!(status.success(), "topolab report failed: {status}");
+}
+
+#[test]
+fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
+    let out = out_dir("report");
+    render(&out);
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let ms = json["measurements"].as_array().unwrap();
+    let workloads = [
+        "construction",
+        "circulators",
+        "barycenter",
+        "normals",
+        "smoothing",
+    ];
+    for s in registry::NAMES {
+        for op in Operator::ALL.iter().map(|o| o.name()).chain(workloads) {
+            let found = ms
+                .iter()
+                .any(|m| m["structure"] == *s && m["operator"] == op);
+            let refused = ms
+                .iter()
+                .any(|m| m["structure"] == *s && m["status"] == "refused");
+            assert!(found || refused, "{s} has no {op} measurement");
+        }
+    }
+    for m in ms {
+        for field in [
+            "structure",
+            "operator",
+            "kernel",
+            "mesh",
+            "triangles",
+            "ns_per_item",
+            "items",
+            "checksum",
+            "status",
+        ] {
+            assert!(m.get(field).is_some(), "measurement lacks {field}: {m}");
+        }
+        if m["status"] == "measured" {
+            assert!(m["ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+        }
+    }
+    assert!(json["machine"]["cpu"].is_string());
+    assert!(json["probe"]["read_bytes_per_s"].as_f64().unwrap() > 0.0);
+    assert!(!json["fits"].as_array().unwrap().is_empty());
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
+    for s in registry::NAMES {
+        assert!(
+            html.contains(&format!("<th>{s}</th>")),
+            "{s} missing from the table"
+        );
+    }
+    assert!(
+        !html.contains("<script src") && !html.contains("<link"),
+        "the page must be self-contained"
+    );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn the_page_renders_in_headless_chromium() {
+    let Some(chromium) = ["chromium", "chromium-browser"].into_iter().find(|c| {
+        Command::new(c)
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success())
+    }) else {
+        eprintln!("SKIPPED: Chromium is not installed (apt-get install chromium): the page was not looked at");
+        return;
+    };
+    let out = out_dir("chromium");
+    render(&out);
+    let shot = out.join("shot.png");
+    let run = Command::new(chromium)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--no-first-run",
+            "--window-size=1200,2400",
+        ])
+        .arg(format!("--user-data-dir={}", out.join("profile").display()))
+        .arg(format!("--screenshot={}", shot.display()))
+        .arg(format!("file://{}", out.join("index.html").display()))
+        .output()
+        .expect("run chromium");
+    assert!(
+        run.status.success(),
+        "chromium failed: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let png = std::fs::read(&shot).expect("a screenshot");
+    assert_eq!(&png[1..4], b"PNG");
+    assert!(
+        png.len() > 50_000,
+        "the screenshot is nearly empty ({} bytes)",
+        png.len()
+    );
+    let _ = std::fs::remove_dir_all(&out);
+}
