@@ -8,6 +8,7 @@
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
+//! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -15,8 +16,10 @@
 #![forbid(unsafe_code)]
 
 pub mod attributes;
+mod boundary_walk;
 pub mod conformance;
 mod corner_scan;
+pub mod edge_list;
 pub mod error;
 pub mod explicit;
 pub mod ids;
@@ -30,6 +33,7 @@ pub mod topology;
 pub mod vertex_list;
 
 pub use attributes::{MeshAttributes, Plane};
+pub use edge_list::EdgeList;
 pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};

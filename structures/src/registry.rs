@@ -32,4 +32,4 @@ macro_rules! structures {
     };
 }
 
-structures!(ExplicitStorage, VertexList);
+structures!(ExplicitStorage, VertexList, crate::EdgeList);
