@@ -9,6 +9,7 @@
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
 //! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
+//! | [`WingedEdge`] | `winged-edge` | seed 004's records: edges with 8 pointers, av(v), af(f) | yes | no |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -31,6 +32,7 @@ pub mod soup;
 pub mod summary;
 pub mod topology;
 pub mod vertex_list;
+pub mod winged_edge;
 
 pub use attributes::{MeshAttributes, Plane};
 pub use edge_list::EdgeList;
@@ -40,3 +42,4 @@ pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use soup::{Connectivity, PolygonSoup};
 pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 pub use vertex_list::VertexList;
+pub use winged_edge::WingedEdge;

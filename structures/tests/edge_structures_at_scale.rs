@@ -21,3 +21,9 @@ fn build_and_validate<M: MeshTopology>() {
 fn edge_list_from_a_million_triangle_torus() {
     build_and_validate::<topolab_structures::EdgeList>();
 }
+
+#[test]
+#[ignore = "a million triangles: run in release with --ignored"]
+fn winged_edge_from_a_million_triangle_torus() {
+    build_and_validate::<topolab_structures::WingedEdge>();
+}
