@@ -424,6 +424,20 @@ mod tests {
     }
 
     #[test]
+    fn heap_bytes_are_the_documented_bytes_per_element() {
+        let soup = meshes::torus(6, 5);
+        let m = EdgeList::from_soup(&soup).unwrap();
+        let (n0, n1, n2) = (m.num_vertices(), m.num_edges(), m.num_faces());
+        let corners = soup.num_corners();
+        assert_eq!(
+            m.heap_bytes(),
+            24 * n0 + 16 * n1 + 4 * corners + 4 * (n2 + 1)
+        );
+        // 52 bytes per triangle (plus the final offset) on a closed triangle mesh.
+        assert_eq!(m.heap_bytes(), 52 * n2 + 4);
+    }
+
+    #[test]
     fn explain_prints_the_lectures_records_for_the_open_tetrahedron() {
         let m = EdgeList::from_soup(&meshes::open_tetrahedron()).unwrap();
         let mut text = String::new();

@@ -1263,6 +1263,16 @@ mod tests {
     }
 
     #[test]
+    fn heap_bytes_are_the_documented_bytes_per_element() {
+        let soup = meshes::torus(6, 5);
+        let m = WingedEdge::from_soup(&soup).unwrap();
+        let (n0, n1, n2) = (m.num_vertices(), m.num_edges(), m.num_faces());
+        assert_eq!(m.heap_bytes(), 28 * n0 + 32 * n1 + 4 * n2);
+        // 66 bytes per triangle on a closed triangle mesh, as the module docs say.
+        assert_eq!(m.heap_bytes(), 66 * n2);
+    }
+
+    #[test]
     fn explain_prints_the_seeds_fields_for_the_open_tetrahedron() {
         let m = WingedEdge::from_soup(&meshes::open_tetrahedron()).unwrap();
         let mut text = String::new();
