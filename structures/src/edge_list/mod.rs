@@ -297,8 +297,9 @@ impl MeshTopology for EdgeList {
             }
         }
         // Each polygon: its edges exist, name it as left or right, and chain head to tail.
-        // Counting the mentions checks that every edge's polygons list it exactly once each.
-        let mut mentions = vec![0u8; n1];
+        // Counting the mentions per side checks that the left polygon lists the edge once, and
+        // the right one once if there is one.
+        let mut mentions = vec![[0u32; 2]; n1];
         for f in 0..n2 {
             let face = FaceId::new(f);
             let edges = self.edges_of(face);
@@ -319,14 +320,13 @@ impl MeshTopology for EdgeList {
                         e.0, next.0
                     ));
                 }
-                mentions[e.index()] += 1;
+                mentions[e.index()][(self.edge_left[e.index()] != face) as usize] += 1;
             }
         }
-        for (e, (&listed, right)) in mentions.iter().zip(&self.edge_right).enumerate() {
-            let sides = 1 + right.is_valid() as u8;
-            if listed != sides {
+        for (e, (&[left, right], face)) in mentions.iter().zip(&self.edge_right).enumerate() {
+            if left != 1 || right != face.is_valid() as u32 {
                 return fail(format!(
-                    "edge e{e} has {sides} polygons but is listed {listed} times"
+                    "edge e{e} is listed {left} times by its left and {right} times by its right polygon"
                 ));
             }
         }
