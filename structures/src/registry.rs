@@ -32,4 +32,9 @@ macro_rules! structures {
     };
 }
 
-structures!(ExplicitStorage, VertexList);
+structures!(
+    ExplicitStorage,
+    VertexList,
+    crate::EdgeList,
+    crate::WingedEdge
+);

@@ -5,3 +5,5 @@ use topolab_structures::{ExplicitStorage, VertexList};
 
 conformance!(explicit, ExplicitStorage);
 conformance!(vertex_list, VertexList);
+conformance!(edge_list, topolab_structures::EdgeList);
+conformance!(winged_edge, topolab_structures::WingedEdge);
