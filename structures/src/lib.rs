@@ -8,6 +8,7 @@
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
+//! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -19,7 +20,9 @@ pub mod conformance;
 mod corner_scan;
 pub mod error;
 pub mod explicit;
+pub mod half_edge;
 pub mod ids;
+pub mod index_half_edge;
 pub mod io;
 pub mod meshes;
 pub mod oracle;
@@ -33,6 +36,7 @@ pub use attributes::{MeshAttributes, Plane};
 pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use index_half_edge::IndexHalfEdge;
 pub use soup::{Connectivity, PolygonSoup};
 pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 pub use vertex_list::VertexList;
