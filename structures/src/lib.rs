@@ -8,12 +8,14 @@
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
+//! | [`PointerHalfEdge`] | `pointer-half-edge` | the lecture's `HE_edge`/`HE_vert`/`HE_face` records linked by pointers | yes | refused |
 //! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
 #![deny(missing_docs)]
-#![forbid(unsafe_code)]
+// Unsafe code lives only in `pointer_half_edge::links` (real pointers are that structure's point).
+#![deny(unsafe_code)]
 
 pub mod attributes;
 pub mod conformance;
@@ -26,6 +28,7 @@ pub mod index_half_edge;
 pub mod io;
 pub mod meshes;
 pub mod oracle;
+pub mod pointer_half_edge;
 pub mod registry;
 pub mod soup;
 pub mod summary;
@@ -37,6 +40,7 @@ pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use index_half_edge::IndexHalfEdge;
+pub use pointer_half_edge::PointerHalfEdge;
 pub use soup::{Connectivity, PolygonSoup};
 pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 pub use vertex_list::VertexList;

@@ -5,7 +5,7 @@
 //! each structure, so nothing goes through `dyn`.
 
 use crate::topology::MeshTopology;
-use crate::{ExplicitStorage, IndexHalfEdge, VertexList};
+use crate::{ExplicitStorage, IndexHalfEdge, PointerHalfEdge, VertexList};
 
 /// Code generic over a structure, run for a structure named at run time.
 pub trait StructureVisitor {
@@ -32,4 +32,4 @@ macro_rules! structures {
     };
 }
 
-structures!(ExplicitStorage, VertexList, IndexHalfEdge);
+structures!(ExplicitStorage, VertexList, PointerHalfEdge, IndexHalfEdge);

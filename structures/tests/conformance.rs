@@ -1,8 +1,9 @@
 //! The conformance suite, one line per structure.
 
 use topolab_structures::conformance;
-use topolab_structures::{ExplicitStorage, IndexHalfEdge, VertexList};
+use topolab_structures::{ExplicitStorage, IndexHalfEdge, PointerHalfEdge, VertexList};
 
 conformance!(explicit, ExplicitStorage);
 conformance!(vertex_list, VertexList);
 conformance!(index_half_edge, IndexHalfEdge);
+conformance!(pointer_half_edge, PointerHalfEdge);
