@@ -287,8 +287,14 @@ impl StructureVisitor for ExplainVisit<'_> {
 }
 
 fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
     let (soup, label) = match mesh {
         Some(spec) => (load_mesh(spec)?, spec.to_string()),
+        // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
+        None if grids_only => (
+            meshes::grid(2, 2, true),
+            "a 2x2 triangulated grid (the open tetrahedron is not a grid)".to_string(),
+        ),
         None => (
             meshes::open_tetrahedron(),
             "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),

@@ -10,6 +10,8 @@
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
 //! | [`PointerHalfEdge`] | `pointer-half-edge` | the lecture's `HE_edge`/`HE_vert`/`HE_face` records linked by pointers | yes | refused |
 //! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
+//! | [`RegularGrid`] | `regular-grid` | a grid's counts, origin and cell size; nothing per element | grids of quads or triangles | (none in a grid) |
+//! | [`HeightField`] | `height-field` | a grid's counts and one position per vertex | grids of quads or triangles | (none in a grid) |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -30,6 +32,7 @@ pub mod meshes;
 pub mod oracle;
 pub mod pointer_half_edge;
 pub mod registry;
+pub mod regular_grid;
 pub mod soup;
 pub mod summary;
 pub mod topology;
@@ -41,6 +44,7 @@ pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use index_half_edge::IndexHalfEdge;
 pub use pointer_half_edge::PointerHalfEdge;
+pub use regular_grid::{HeightField, RegularGrid};
 pub use soup::{Connectivity, PolygonSoup};
 pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 pub use vertex_list::VertexList;

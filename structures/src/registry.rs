@@ -5,7 +5,9 @@
 //! each structure, so nothing goes through `dyn`.
 
 use crate::topology::MeshTopology;
-use crate::{ExplicitStorage, IndexHalfEdge, PointerHalfEdge, VertexList};
+use crate::{
+    ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge, RegularGrid, VertexList,
+};
 
 /// Code generic over a structure, run for a structure named at run time.
 pub trait StructureVisitor {
@@ -32,4 +34,11 @@ macro_rules! structures {
     };
 }
 
-structures!(ExplicitStorage, VertexList, PointerHalfEdge, IndexHalfEdge);
+structures!(
+    ExplicitStorage,
+    VertexList,
+    PointerHalfEdge,
+    IndexHalfEdge,
+    RegularGrid,
+    HeightField
+);
