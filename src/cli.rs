@@ -154,15 +154,22 @@ fn list(json: bool) -> Result<String, Failure> {
         out,
         "(n: elements scanned, k: local size (valence or face size), ∂n1: boundary edges)\n"
     );
+    // Columns as wide as the longest structure name (`pointer-half-edge`) plus a gap.
+    let width = rows
+        .iter()
+        .map(|r| r.name.len() + 2)
+        .max()
+        .unwrap_or(0)
+        .max(14);
     let _ = write!(out, "{:<18}", "operator");
     for r in &rows {
-        let _ = write!(out, "{:>14}", r.name);
+        let _ = write!(out, "{:>width$}", r.name);
     }
     out.push('\n');
     for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
         let _ = write!(out, "{:<18}", spec.name);
         for r in &rows {
-            let _ = write!(out, "{:>14}", r.costs[i].1);
+            let _ = write!(out, "{:>width$}", r.costs[i].1);
         }
         out.push('\n');
     }
