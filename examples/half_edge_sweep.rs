@@ -24,38 +24,39 @@ fn median_of_7(mut sweep: impl FnMut() -> u64) -> (f64, u64) {
     (times[3], checksum)
 }
 
+/// Runs `each` for elements `0..count`, which folds its answers into the returned checksum.
+#[inline(always)]
+fn sweep(count: usize, mut each: impl FnMut(u32, &mut u64)) -> u64 {
+    let mut sum = 0u64;
+    for x in 0..count as u32 {
+        each(x, &mut sum);
+    }
+    sum
+}
+
+/// Adds one answer `b` of element `a` to the checksum (the harness's per-operator term).
+#[inline(always)]
+fn add(sum: &mut u64, a: u32, b: u32) {
+    *sum = sum.wrapping_add(mix(a as u64, b as u64));
+}
+
 fn measure<M: MeshTopology>(soup: &PolygonSoup) {
     let start = Instant::now();
     let m = M::from_soup(soup).expect("a torus is manifold");
     let build = start.elapsed().as_secs_f64();
     let (nv, nf) = (m.num_vertices(), m.num_faces());
     let (r00, c00) = median_of_7(|| {
-        let mut sum = 0u64;
-        for v in 0..nv as u32 {
-            m.vertex_vertices(VertexId(v), |w| {
-                sum = sum.wrapping_add(mix(v as u64, w.0 as u64))
-            });
-        }
-        sum
+        sweep(nv, |v, sum| {
+            m.vertex_vertices(VertexId(v), |w| add(sum, v, w.0))
+        })
     });
     let (r02, c02) = median_of_7(|| {
-        let mut sum = 0u64;
-        for v in 0..nv as u32 {
-            m.vertex_faces(VertexId(v), |f| {
-                sum = sum.wrapping_add(mix(v as u64, f.0 as u64))
-            });
-        }
-        sum
+        sweep(nv, |v, sum| {
+            m.vertex_faces(VertexId(v), |f| add(sum, v, f.0))
+        })
     });
-    let (r22, c22) = median_of_7(|| {
-        let mut sum = 0u64;
-        for f in 0..nf as u32 {
-            m.face_faces(FaceId(f), |g| {
-                sum = sum.wrapping_add(mix(f as u64, g.0 as u64))
-            });
-        }
-        sum
-    });
+    let (r22, c22) =
+        median_of_7(|| sweep(nf, |f, sum| m.face_faces(FaceId(f), |g| add(sum, f, g.0))));
     println!(
         "{:<18} build {:>6.1} ns/face | r00 {:>5.1} ns/vertex ({c00:016x}) | r02 {:>5.1} ns/vertex ({c02:016x}) | r22 {:>5.1} ns/face ({c22:016x}) | {:.1} B/face",
         M::NAME,

@@ -178,7 +178,7 @@ fn list(json: bool) -> Result<String, Failure> {
         let c = r.capabilities;
         let _ = writeln!(
             out,
-            "{:<14} {}{}{}{}",
+            "{:<width$} {}{}{}{}",
             r.name,
             if c.triangles_only {
                 "triangles only"
