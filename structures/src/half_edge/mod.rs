@@ -514,3 +514,39 @@ fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::meshes;
+    use crate::soup::PolygonSoup;
+    use crate::topology::{BoundaryCurves, MeshTopology};
+    use crate::{IndexHalfEdge, PointerHalfEdge};
+    use glam::DVec3;
+
+    /// Empty input, unused vertices and several boundary loops, for both storages.
+    fn edge_cases<M: MeshTopology>() {
+        let empty = M::from_soup(&PolygonSoup::new()).expect("an empty mesh is a mesh");
+        empty.validate().expect("valid");
+        assert_eq!((empty.num_vertices(), empty.num_edges()), (0, 0));
+        let mut curves = BoundaryCurves::default();
+        empty.boundary_curves(&mut curves);
+        assert!(curves.is_empty());
+
+        let lonely = PolygonSoup::from_polygons(vec![DVec3::ZERO; 2], &[] as &[[u32; 3]]);
+        let m = M::from_soup(&lonely).expect("unused vertices are allowed");
+        m.validate().expect("valid");
+        assert!(!m.is_boundary_vertex(crate::VertexId(1)));
+
+        let annulus = M::from_soup(&meshes::annulus(5)).expect("manifold");
+        annulus.boundary_curves(&mut curves);
+        assert_eq!(curves.len(), 2, "inner and outer boundary");
+        assert_eq!(curves.edges.len(), 10);
+        assert_eq!(curves.starts, [0, 5, 10]);
+    }
+
+    #[test]
+    fn edge_cases_of_both_storages() {
+        edge_cases::<IndexHalfEdge>();
+        edge_cases::<PointerHalfEdge>();
+    }
+}

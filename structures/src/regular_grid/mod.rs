@@ -739,6 +739,7 @@ mod tests {
                 .expect_err("refused")
                 .to_string()
         };
+        assert!(reason(&PolygonSoup::new()).contains("no faces"));
         assert!(reason(&meshes::quad_cube()).contains("face 0 is [0, 2, 3, 1]"));
         assert!(reason(&meshes::mixed_polygons()).contains("face 0 is [0, 1, 2, 3]"));
         let swapped =
