@@ -68,6 +68,13 @@ thread_local! {
     pub(super) static LIVE_RECORDS: std::cell::Cell<isize> = const { std::cell::Cell::new(0) };
 }
 
+// SAFETY: `Records` owns its records exclusively (like a `Box` per record), so moving it to
+// another thread moves that ownership; nothing else points into them.
+unsafe impl Send for Records {}
+// SAFETY: after `new` the records are never written (fact 1) and have no interior mutability,
+// so shared references from several threads only read.
+unsafe impl Sync for Records {}
+
 /// Allocates one record.
 fn boxed<T>(record: T) -> *mut T {
     #[cfg(test)]

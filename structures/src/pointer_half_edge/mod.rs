@@ -199,6 +199,30 @@ mod tests {
     }
 
     #[test]
+    fn meshes_can_be_shared_across_threads_like_the_index_structure() {
+        fn send_and_sync<T: Send + Sync>() {}
+        send_and_sync::<PointerHalfEdge>();
+        let m = PointerHalfEdge::from_soup(&meshes::closed_tetrahedron()).expect("manifold");
+        let valences: Vec<usize> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..4)
+                .map(|v| {
+                    let m = &m;
+                    s.spawn(move || {
+                        let mut n = 0;
+                        m.vertex_vertices(VertexId(v), |_| n += 1);
+                        n
+                    })
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("no panic"))
+                .collect()
+        });
+        assert_eq!(valences, [3, 3, 3, 3]);
+    }
+
+    #[test]
     fn validate_catches_a_misdirected_pointer() {
         let soup = meshes::open_tetrahedron();
         let mut m = PointerHalfEdge::from_soup(&soup).expect("manifold");
