@@ -199,6 +199,17 @@ mod tests {
     }
 
     #[test]
+    fn records_take_the_bytes_the_module_docs_state() {
+        use std::mem::size_of;
+        assert_eq!(size_of::<super::links::HeEdge>(), 40);
+        assert_eq!(size_of::<super::links::HeVert>(), 40);
+        assert_eq!(size_of::<super::links::HeFace>(), 16);
+        let m = PointerHalfEdge::from_soup(&meshes::closed_tetrahedron()).expect("manifold");
+        let (records, tables) = (4 * 40 + 4 * 16 + 12 * 40, (4 + 4 + 12) * 8);
+        assert_eq!(m.heap_bytes(), records + tables);
+    }
+
+    #[test]
     fn meshes_can_be_shared_across_threads_like_the_index_structure() {
         fn send_and_sync<T: Send + Sync>() {}
         send_and_sync::<PointerHalfEdge>();
