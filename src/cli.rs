@@ -160,15 +160,22 @@ fn list(json: bool) -> Result<String, Failure> {
         out,
         "(n: elements scanned, k: local size (valence or face size), ∂n1: boundary edges)\n"
     );
+    // Columns as wide as the longest structure name (`pointer-half-edge`) plus a gap.
+    let width = rows
+        .iter()
+        .map(|r| r.name.len() + 2)
+        .max()
+        .unwrap_or(0)
+        .max(14);
     let _ = write!(out, "{:<18}", "operator");
     for r in &rows {
-        let _ = write!(out, "{:>14}", r.name);
+        let _ = write!(out, "{:>width$}", r.name);
     }
     out.push('\n');
     for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
         let _ = write!(out, "{:<18}", spec.name);
         for r in &rows {
-            let _ = write!(out, "{:>14}", r.costs[i].1);
+            let _ = write!(out, "{:>width$}", r.costs[i].1);
         }
         out.push('\n');
     }
@@ -177,7 +184,7 @@ fn list(json: bool) -> Result<String, Failure> {
         let c = r.capabilities;
         let _ = writeln!(
             out,
-            "{:<14} {}{}{}{}",
+            "{:<width$} {}{}{}{}",
             r.name,
             if c.triangles_only {
                 "triangles only"
@@ -293,8 +300,14 @@ impl StructureVisitor for ExplainVisit<'_> {
 }
 
 fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
     let (soup, label) = match mesh {
         Some(spec) => (load_mesh(spec)?, spec.to_string()),
+        // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
+        None if grids_only => (
+            meshes::grid(2, 2, true),
+            "a 2x2 triangulated grid (the open tetrahedron is not a grid)".to_string(),
+        ),
         None => (
             meshes::open_tetrahedron(),
             "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),

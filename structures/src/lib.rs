@@ -10,11 +10,16 @@
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
 //! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
 //! | [`WingedEdge`] | `winged-edge` | seed 004's records: edges with 8 pointers, av(v), af(f) | yes | no |
+//! | [`PointerHalfEdge`] | `pointer-half-edge` | the lecture's `HE_edge`/`HE_vert`/`HE_face` records linked by pointers | yes | refused |
+//! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
+//! | [`RegularGrid`] | `regular-grid` | a grid's counts, origin and cell size; nothing per element | grids of quads or triangles | (none in a grid) |
+//! | [`HeightField`] | `height-field` | a grid's counts and one position per vertex | grids of quads or triangles | (none in a grid) |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
 #![deny(missing_docs)]
-#![forbid(unsafe_code)]
+// Unsafe code lives only in `pointer_half_edge::links` (real pointers are that structure's point).
+#![deny(unsafe_code)]
 
 pub mod attributes;
 mod boundary_walk;
@@ -23,11 +28,15 @@ mod corner_scan;
 pub mod edge_list;
 pub mod error;
 pub mod explicit;
+pub mod half_edge;
 pub mod ids;
+pub mod index_half_edge;
 pub mod io;
 pub mod meshes;
 pub mod oracle;
+pub mod pointer_half_edge;
 pub mod registry;
+pub mod regular_grid;
 pub mod soup;
 pub mod summary;
 pub mod topology;
@@ -39,6 +48,9 @@ pub use edge_list::EdgeList;
 pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use index_half_edge::IndexHalfEdge;
+pub use pointer_half_edge::PointerHalfEdge;
+pub use regular_grid::{HeightField, RegularGrid};
 pub use soup::{Connectivity, PolygonSoup};
 pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 pub use vertex_list::VertexList;

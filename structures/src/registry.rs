@@ -5,7 +5,9 @@
 //! each structure, so nothing goes through `dyn`.
 
 use crate::topology::MeshTopology;
-use crate::{ExplicitStorage, VertexList};
+use crate::{
+    ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge, RegularGrid, VertexList,
+};
 
 /// Code generic over a structure, run for a structure named at run time.
 pub trait StructureVisitor {
@@ -36,5 +38,9 @@ structures!(
     ExplicitStorage,
     VertexList,
     crate::EdgeList,
-    crate::WingedEdge
+    crate::WingedEdge,
+    PointerHalfEdge,
+    IndexHalfEdge,
+    RegularGrid,
+    HeightField
 );
