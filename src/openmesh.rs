@@ -35,7 +35,10 @@
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
-//! random meshes with corner-touching cells, faces in random order).
+//! random meshes with corner-touching cells, faces in random order). That needs every fan to
+//! be open: a vertex with a closed fan and another fan is refused with
+//! [`Error::NonManifoldVertex`] (OpenMesh's `add_face` refuses it too, "complex vertex"), a
+//! case [`Capabilities::non_manifold_vertices`] cannot express.
 
 use std::any::Any;
 use std::ffi::c_void;
@@ -43,8 +46,8 @@ use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::ptr::NonNull;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, MeshTopology, Operator, PolygonSoup,
-    Result, VertexId,
+    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, MeshTopology,
+    Operator, PolygonSoup, Result, VertexId,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -423,11 +426,41 @@ fn refusal(soup: &PolygonSoup, face: usize) -> Error {
     }
 }
 
+/// OpenMesh stores a vertex with several fans by linking the fans' boundary halfedges, so
+/// every fan must be open: a closed fan plus another one at the same vertex (two cones tip to
+/// tip, one closed) is refused by `add_face` ("complex vertex"). Refusing it here, before
+/// OpenMesh, makes the answer independent of the face order.
+fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
+    let fans = connectivity.vertex_fans(soup);
+    if fans.iter().all(|&n| n <= 1) {
+        return Ok(());
+    }
+    // Each open fan has two boundary edges at its vertex (one in, one out).
+    let mut boundary_sides = vec![0u32; soup.num_vertices()];
+    for (face, corners) in soup.faces().enumerate() {
+        let start = soup.face_start(face);
+        for (i, &v) in corners.iter().enumerate() {
+            if connectivity.twin_corner(start + i).is_none() {
+                boundary_sides[v as usize] += 1;
+                boundary_sides[corners[(i + 1) % corners.len()] as usize] += 1;
+            }
+        }
+    }
+    match (0..fans.len()).find(|&v| fans[v] > 1 && boundary_sides[v] < 2 * fans[v]) {
+        Some(v) => Err(Error::NonManifoldVertex {
+            vertex: v as u32,
+            fans: fans[v] as usize,
+        }),
+        None => Ok(()),
+    }
+}
+
 impl MeshTopology for OpenMesh {
     const NAME: &'static str = "openmesh";
 
     fn capabilities() -> Capabilities {
         Capabilities {
+            // With open fans only; see the module docs.
             non_manifold_vertices: true,
             ..Capabilities::POLYGONS
         }
@@ -454,9 +487,7 @@ impl MeshTopology for OpenMesh {
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {
         let connectivity = soup.connectivity()?;
-        if !Self::capabilities().non_manifold_vertices {
-            connectivity.check_vertex_fans(soup)?;
-        }
+        check_open_fans(soup, &connectivity)?;
         Self::build_native(soup, connectivity.num_edges())
     }
 
