@@ -16,7 +16,7 @@ mod common;
 
 #[cfg(has_openmesh)]
 mod native {
-    use super::common::{checksum, query_count, sampled};
+    use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
     use glam::DVec3;
     use std::sync::{Mutex, MutexGuard};
     use topolab::openmesh::OpenMesh;
@@ -132,24 +132,6 @@ mod native {
             .is_trimesh());
     }
 
-    /// Unit normal of a polygon (Newell's method; the cross product for a triangle).
-    fn face_normal(p: &[DVec3]) -> DVec3 {
-        let mut n = DVec3::ZERO;
-        for i in 0..p.len() {
-            let (a, b) = (p[i], p[(i + 1) % p.len()]);
-            n += DVec3::new(
-                (a.y - b.y) * (a.z + b.z),
-                (a.z - b.z) * (a.x + b.x),
-                (a.x - b.x) * (a.y + b.y),
-            );
-        }
-        n.normalize_or_zero()
-    }
-
-    fn close(a: f64, b: f64) -> bool {
-        (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
-    }
-
     #[test]
     fn workloads_compute_what_the_benchmark_says() {
         let _serial = one_at_a_time();
@@ -170,16 +152,7 @@ mod native {
                 "barycenter on {name}"
             );
 
-            let mut vertex_normals = vec![DVec3::ZERO; soup.num_vertices()];
-            for face in soup.faces() {
-                let p: Vec<DVec3> = face.iter().map(|&v| soup.positions[v as usize]).collect();
-                let n = face_normal(&p);
-                face.iter().for_each(|&v| vertex_normals[v as usize] += n);
-            }
-            let expected: f64 = vertex_normals
-                .iter()
-                .map(|n| n.normalize_or_zero().element_sum())
-                .sum();
+            let expected = uniform_vertex_normals_sum(&soup);
             assert!(om.prepare_workload("normals"));
             let normals = om.native_workload("normals").unwrap();
             assert!(

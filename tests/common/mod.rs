@@ -1,8 +1,14 @@
 //! The checksums of `topolab_harness::checksum`, written over [`MeshTopology`] for any
 //! structure, to check the baselines (OpenMesh's C++ sweeps, libigl's outputs) against.
 
+// Each test crate that includes this module uses part of it.
+#![allow(dead_code)]
+
+use glam::DVec3;
 use topolab_harness::checksum::{edge_key, mix};
-use topolab_structures::{BoundaryCurves, EdgeId, FaceId, MeshTopology, Operator, VertexId};
+use topolab_structures::{
+    BoundaryCurves, EdgeId, FaceId, MeshTopology, Operator, PolygonSoup, VertexId,
+};
 
 fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
     let [a, b] = m.edge_vertices(e);
@@ -85,4 +91,38 @@ pub fn checksum<M: MeshTopology>(m: &M, op: Operator) -> u64 {
 pub fn sampled<M: MeshTopology>(m: &M, op: Operator, ids: &[u32]) -> u64 {
     ids.iter()
         .fold(0u64, |sum, &id| sum.wrapping_add(term(m, op, id)))
+}
+
+/// Unit normal of a polygon (Newell's method; for a triangle, the normalised cross product).
+fn face_normal(p: &[DVec3]) -> DVec3 {
+    let mut n = DVec3::ZERO;
+    for i in 0..p.len() {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        n += DVec3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        );
+    }
+    n.normalize_or_zero()
+}
+
+/// The `normals` workload's result: vertex normals as the normalised sum of the unit normals
+/// of their faces, and the sum of all their coordinates.
+pub fn uniform_vertex_normals_sum(soup: &PolygonSoup) -> f64 {
+    let mut vertex_normals = vec![DVec3::ZERO; soup.num_vertices()];
+    for face in soup.faces() {
+        let p: Vec<DVec3> = face.iter().map(|&v| soup.positions[v as usize]).collect();
+        let n = face_normal(&p);
+        face.iter().for_each(|&v| vertex_normals[v as usize] += n);
+    }
+    vertex_normals
+        .iter()
+        .map(|n| n.normalize_or_zero().element_sum())
+        .sum()
+}
+
+/// `a` and `b` agree to about 1e-9, relative.
+pub fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
 }
