@@ -5,11 +5,12 @@
 topolab_structures::conformance!(openmesh, topolab::openmesh::OpenMesh);
 
 #[cfg(not(has_openmesh))]
+mod common;
+
+#[cfg(not(has_openmesh))]
 #[test]
-fn openmesh_conformance_skipped() {
-    eprintln!(
-        "SKIPPED openmesh conformance: {}",
-        topolab::OPENMESH_MISSING
-    );
-    assert!(!topolab::HAS_OPENMESH);
+fn skipped_openmesh_not_compiled_in() {
+    common::report_skip("openmesh conformance", topolab::OPENMESH_MISSING);
+    // Without OpenMesh the registry must not offer it.
+    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
 }

@@ -50,8 +50,9 @@ fn run_reference(python: &Path, name: &str, soup: &PolygonSoup) -> serde_json::V
 #[test]
 fn libigl_gives_the_checksums_of_the_lab() {
     let Some(python) = python_with_libigl() else {
-        eprintln!(
-            "SKIPPED libigl reference: .venv/bin/python with libigl is missing (run `bash .ci/install-deps`)"
+        common::report_skip(
+            "libigl reference",
+            ".venv/bin/python with libigl is missing (run `bash .ci/install-deps`)",
         );
         return;
     };

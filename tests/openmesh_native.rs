@@ -3,15 +3,12 @@
 
 #[cfg(not(has_openmesh))]
 #[test]
-fn openmesh_native_skipped() {
-    eprintln!(
-        "SKIPPED openmesh native sweeps: {}",
-        topolab::OPENMESH_MISSING
-    );
-    assert!(!topolab::HAS_OPENMESH);
+fn skipped_openmesh_not_compiled_in() {
+    common::report_skip("openmesh native sweeps", topolab::OPENMESH_MISSING);
+    // Without OpenMesh the registry must not offer it.
+    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
 }
 
-#[cfg(has_openmesh)]
 mod common;
 
 #[cfg(has_openmesh)]

@@ -126,3 +126,10 @@ pub fn uniform_vertex_normals_sum(soup: &PolygonSoup) -> f64 {
 pub fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
 }
+
+/// Tells the person running the tests that `what` did not run and why. Written to stderr
+/// directly: libtest captures `eprintln!` of a passing test, and a skip must be seen.
+pub fn report_skip(what: &str, why: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "SKIPPED {what}: {why}");
+}
