@@ -57,6 +57,14 @@ fn main() -> std::process::ExitCode {
         }
     );
 
+    // Times on a busy machine are inflated: say how busy it was.
+    if let Ok(load) = std::fs::read_to_string("/proc/loadavg") {
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        println!(
+            "load average {} on {cores} cores\n",
+            load.split(' ').take(3).collect::<Vec<_>>().join(" ")
+        );
+    }
     let (t, mesh) = median(|| OpenMesh::build_native(&soup, edges).expect("a torus builds"));
     println!(
         "construction (reserve + add_vertex + add_face, one C++ call): {:8.1} ns/face  {:7.1} ms",
