@@ -21,7 +21,8 @@ of 5, one thread: IGL_NUM_THREADS=1):
 | boundary_loop_all            | boundary-curves |
 | per_vertex_normals (uniform) | normals         |
 
-`normals` is the Surface_mesh benchmark workload (normalised sum of unit face normals): it
+libigl's reader triangulates polygons, so on a polygon file the checksums are those of its
+triangulation, not the lab's polygon mesh. `normals` is the Surface_mesh benchmark workload (normalised sum of unit face normals): it
 has a "value" (the sum of all vertex normal coordinates) instead of a checksum.
 """
 
