@@ -1,10 +1,10 @@
 //! The `topolab` commands. Each returns an exit code: 0 success, 1 when the input was read
 //! but a structure refused it (or problems were found), 2 when the input cannot be read.
 
+use crate::registry::{self, StructureVisitor};
 use clap::{Parser, Subcommand};
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use topolab_structures::registry::{self, StructureVisitor};
 use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{meshes, Capabilities, Error, MeshTopology, Operator, PolygonSoup};
 
@@ -116,6 +116,9 @@ pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
 }
 
 fn unknown_structure(name: &str) -> Failure {
+    if name == registry::OPENMESH {
+        return Failure::usage(format!("{name}: {}", crate::OPENMESH_MISSING));
+    }
     Failure::usage(format!(
         "unknown structure {name:?}; known: {}",
         registry::NAMES.join(", ")

@@ -1,10 +1,11 @@
 //! # topolab
 //!
 //! The lab's command-line tool and everything that ties the crates together: the registry of
-//! every structure (the ones of `topolab-structures`, later the OpenMesh baseline) and the
-//! commands of the `topolab` binary.
+//! every structure (the ones of `topolab-structures` plus the OpenMesh baseline, when compiled
+//! in) and the commands of the `topolab` binary.
 #![deny(missing_docs)]
-#![forbid(unsafe_code)]
+// Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
+#![deny(unsafe_code)]
 
 pub mod cli;
 pub mod report;
@@ -13,3 +14,16 @@ pub mod report;
 /// (current and peak). The counters add two atomic operations to every allocation.
 #[global_allocator]
 pub static ALLOCATOR: peak_alloc::PeakAlloc = peak_alloc::PeakAlloc;
+#[cfg(has_openmesh)]
+#[allow(unsafe_code)]
+pub mod openmesh;
+pub mod registry;
+
+/// What to do when the OpenMesh baseline is not compiled in (OpenMesh was missing at build
+/// time, or `TOPOLAB_NO_OPENMESH=1` was set).
+pub const OPENMESH_MISSING: &str = "the OpenMesh baseline is not compiled in: install OpenMesh \
+(`apt-get install libopenmesh-dev` on Debian/Ubuntu, or `bash .ci/install-deps`), unset \
+TOPOLAB_NO_OPENMESH, and rebuild";
+
+/// `true` when this build includes the OpenMesh baseline.
+pub const HAS_OPENMESH: bool = cfg!(has_openmesh);

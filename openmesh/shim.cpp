@@ -1,0 +1,522 @@
+// The C API of shim.h over OpenMesh. Every loop here uses OpenMesh the way its documentation
+// recommends (ranges over elements, circulator ranges, handles; no property lookups in loops),
+// so that a sweep measures OpenMesh, not the FFI.
+
+#include "shim.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <malloc.h>
+
+#include <cmath>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+// Double-precision points and normals, so positions round-trip exactly (the lab's are f64).
+struct Traits : OpenMesh::DefaultTraits {
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using Tri = OpenMesh::TriMesh_ArrayKernelT<Traits>;
+using Poly = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
+using VH = OpenMesh::VertexHandle;
+using HH = OpenMesh::HalfedgeHandle;
+using EH = OpenMesh::EdgeHandle;
+using FH = OpenMesh::FaceHandle;
+
+// Operator codes: topolab's Operator::ALL order (shim.h).
+enum Op {
+  R00, R01, R02, R10, R11, R12, R20, R21, R22,
+  BOUNDARY_VERTEX, BOUNDARY_EDGE, BOUNDARY_CURVES, EDGE_SUCCESSOR, EDGE_PREDECESSOR, OP_COUNT
+};
+enum Workload { CIRCULATORS, BARYCENTER, NORMALS, SMOOTHING };
+
+// harness/src/checksum.rs, bit for bit.
+constexpr uint64_t mix(uint64_t a, uint64_t b) {
+  const uint64_t h = (a * 0x9E3779B97F4A7C15ULL + b) * 0xBF58476D1CE4E5B9ULL;
+  return h ^ (h >> 31);
+}
+static_assert(mix(3, 5) == 0x40159a6e5620edf9ULL, "mix differs from harness/src/checksum.rs");
+
+constexpr uint64_t edge_key(uint32_t a, uint32_t b) {
+  return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
+}
+
+// Bytes the allocator hands out now: small chunks plus mmapped large ones.
+size_t heap_in_use() {
+  const struct mallinfo2 info = mallinfo2();
+  return info.uordblks + info.hblkhd;
+}
+
+// How an answer enters a checksum: vertices and faces by index, edges by their end vertices.
+template <class M> uint64_t key(const M &, VH v) { return uint32_t(v.idx()); }
+template <class M> uint64_t key(const M &, FH f) { return uint32_t(f.idx()); }
+template <class M> uint64_t key(const M &m, EH e) {
+  const HH h = m.halfedge_handle(e, 0);
+  return edge_key(m.to_vertex_handle(h).idx(), m.from_vertex_handle(h).idx());
+}
+template <class M> uint64_t key(const M &m, HH h) { return key(m, m.edge_handle(h)); }
+
+// The lab's boundary vertex: incident to a boundary edge. OpenMesh's is_boundary(vh) is also
+// true for an isolated vertex, and its outgoing halfedge is a boundary one when one exists.
+template <class M> bool is_boundary_vertex(const M &m, VH v) {
+  const HH h = m.halfedge_handle(v);
+  return h.is_valid() && m.is_boundary(h);
+}
+
+// Relation `Op` of element `id`: one emit per answer (a handle).
+template <int Op, class M, class Emit> inline void relation(const M &m, int id, Emit &&emit) {
+  if constexpr (Op == R00) {
+    for (VH w : m.vv_range(VH(id))) emit(w);
+  } else if constexpr (Op == R01) {
+    for (EH e : m.ve_range(VH(id))) emit(e);
+  } else if constexpr (Op == R02) {
+    for (FH f : m.vf_range(VH(id))) emit(f);
+  } else if constexpr (Op == R11) {
+    for (int side = 0; side < 2; ++side) {
+      const HH h = m.halfedge_handle(EH(id), side);
+      if (m.is_boundary(h)) continue;
+      for (HH x = m.next_halfedge_handle(h); x != h; x = m.next_halfedge_handle(x))
+        emit(m.edge_handle(x));
+    }
+  } else if constexpr (Op == R12) {
+    for (int side = 0; side < 2; ++side) {
+      const FH f = m.face_handle(m.halfedge_handle(EH(id), side));
+      if (f.is_valid()) emit(f);
+    }
+  } else if constexpr (Op == R20) {
+    for (VH v : m.fv_ccw_range(FH(id))) emit(v);
+  } else if constexpr (Op == R21) {
+    for (EH e : m.fe_ccw_range(FH(id))) emit(e);
+  } else if constexpr (Op == R22) {
+    for (FH g : m.ff_ccw_range(FH(id))) emit(g);
+  }
+}
+
+// The checksum term of one query element (harness/src/checksum.rs, per-operator table).
+template <int Op, class M> inline uint64_t term(const M &m, int id) {
+  uint64_t sum = 0;
+  if constexpr (Op == R00 || Op == R01 || Op == R02 || Op == R20 || Op == R21 || Op == R22) {
+    const uint64_t q = uint32_t(id);
+    relation<Op>(m, id, [&](auto h) { sum += mix(q, key(m, h)); });
+  } else if constexpr (Op == R11 || Op == R12) {
+    const uint64_t q = key(m, EH(id));
+    relation<Op>(m, id, [&](auto h) { sum += mix(q, key(m, h)); });
+  } else if constexpr (Op == R10) {
+    const uint64_t k = key(m, EH(id));
+    sum = mix(k >> 32, k & 0xFFFFFFFFULL);
+  } else if constexpr (Op == BOUNDARY_VERTEX) {
+    if (is_boundary_vertex(m, VH(id))) sum = mix(uint32_t(id), 1);
+  } else if constexpr (Op == BOUNDARY_EDGE) {
+    if (m.is_boundary(EH(id))) sum = mix(key(m, EH(id)), 1);
+  } else if constexpr (Op == EDGE_SUCCESSOR || Op == EDGE_PREDECESSOR) {
+    for (HH h : m.fh_ccw_range(FH(id))) {
+      const HH other =
+          Op == EDGE_SUCCESSOR ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
+      sum += mix(key(m, h), key(m, other));
+    }
+  }
+  return sum;
+}
+
+// Calls on_loop(start halfedge, length) once per boundary loop (OpenMesh links boundary
+// halfedges with next_halfedge, also across the fans of a non-manifold vertex).
+template <class M, class OnLoop> void boundary_loops(const M &m, OnLoop &&on_loop) {
+  std::vector<bool> seen(m.n_halfedges(), false);
+  for (HH start : m.halfedges()) {
+    if (seen[start.idx()] || !m.is_boundary(start)) continue;
+    uint32_t length = 0;
+    HH h = start;
+    do {
+      seen[h.idx()] = true;
+      ++length;
+      h = m.next_halfedge_handle(h);
+    } while (h != start);
+    on_loop(start, length);
+  }
+}
+
+template <class M> uint64_t boundary_curves_checksum(const M &m) {
+  uint64_t sum = 0;
+  boundary_loops(m, [&](HH start, uint32_t length) {
+    HH h = start;
+    do {
+      sum += mix(length, key(m, h));
+      h = m.next_halfedge_handle(h);
+    } while (h != start);
+  });
+  return sum;
+}
+
+// The elements a sweep of Op runs over.
+template <int Op, class M> auto query_elements(const M &m) {
+  if constexpr (Op == R00 || Op == R01 || Op == R02 || Op == BOUNDARY_VERTEX) {
+    return m.vertices();
+  } else if constexpr (Op == R10 || Op == R11 || Op == R12 || Op == BOUNDARY_EDGE) {
+    return m.edges();
+  } else {
+    return m.faces();
+  }
+}
+
+template <int Op, class M> uint64_t sweep(const M &m) {
+  if constexpr (Op == BOUNDARY_CURVES) {
+    return boundary_curves_checksum(m);
+  } else {
+    uint64_t sum = 0;
+    for (auto element : query_elements<Op>(m)) sum += term<Op>(m, element.idx());
+    return sum;
+  }
+}
+
+template <int Op, class M> uint64_t sampled(const M &m, const uint32_t *ids, size_t count) {
+  if constexpr (Op == BOUNDARY_CURVES) {
+    return 0;
+  } else {
+    uint64_t sum = 0;
+    for (size_t i = 0; i < count; ++i) sum += term<Op>(m, int(ids[i]));
+    return sum;
+  }
+}
+
+// Runs f(std::integral_constant<int, op>) so each operator gets its own compiled loop.
+template <class F> uint64_t dispatch(int op, F &&f) {
+  switch (op) {
+    case R00: return f(std::integral_constant<int, R00>{});
+    case R01: return f(std::integral_constant<int, R01>{});
+    case R02: return f(std::integral_constant<int, R02>{});
+    case R10: return f(std::integral_constant<int, R10>{});
+    case R11: return f(std::integral_constant<int, R11>{});
+    case R12: return f(std::integral_constant<int, R12>{});
+    case R20: return f(std::integral_constant<int, R20>{});
+    case R21: return f(std::integral_constant<int, R21>{});
+    case R22: return f(std::integral_constant<int, R22>{});
+    case BOUNDARY_VERTEX: return f(std::integral_constant<int, BOUNDARY_VERTEX>{});
+    case BOUNDARY_EDGE: return f(std::integral_constant<int, BOUNDARY_EDGE>{});
+    case BOUNDARY_CURVES: return f(std::integral_constant<int, BOUNDARY_CURVES>{});
+    case EDGE_SUCCESSOR: return f(std::integral_constant<int, EDGE_SUCCESSOR>{});
+    case EDGE_PREDECESSOR: return f(std::integral_constant<int, EDGE_PREDECESSOR>{});
+    default: return 0;
+  }
+}
+
+// Surface_mesh benchmark: count vertex-face incidences from both sides. Returns the count, or
+// NaN when the two sides disagree (the benchmark's assertion).
+template <class M> double circulators(const M &m) {
+  int64_t counter = 0;
+  for (VH v : m.vertices())
+    for (FH f : m.vf_range(v)) {
+      (void)f;
+      ++counter;
+    }
+  const int64_t counted = counter;
+  for (FH f : m.faces())
+    for (VH v : m.fv_ccw_range(f)) {
+      (void)v;
+      --counter;
+    }
+  return counter == 0 ? double(counted) : std::nan("");
+}
+
+// The mean of all positions; returns the sum of its coordinates.
+template <class M> double barycenter(const M &m) {
+  typename M::Point center(0.0, 0.0, 0.0);
+  for (VH v : m.vertices()) center += m.point(v);
+  if (m.n_vertices() > 0) center /= double(m.n_vertices());
+  return center[0] + center[1] + center[2];
+}
+
+// Face normals, then vertex normals (normalised sum of unit face normals); returns the sum of
+// the vertex normals' coordinates. Normals must have been requested (prepare_workload).
+template <class M> double normals(M &m) {
+  m.update_face_normals();
+  m.update_vertex_normals();
+  double sum = 0.0;
+  for (VH v : m.vertices()) {
+    const auto &n = m.normal(v);
+    sum += n[0] + n[1] + n[2];
+  }
+  return sum;
+}
+
+// One step of uniform Laplacian smoothing of interior vertices, positions written after the
+// sweep; returns the sum of all coordinates afterwards.
+template <class M> double smoothing(M &m) {
+  std::vector<typename M::Point> next(m.n_vertices());
+  for (VH v : m.vertices()) {
+    next[v.idx()] = m.point(v);
+    if (m.is_boundary(v)) continue;
+    typename M::Point sum(0.0, 0.0, 0.0);
+    unsigned valence = 0;
+    for (VH w : m.vv_range(v)) {
+      sum += m.point(w);
+      ++valence;
+    }
+    if (valence > 0) next[v.idx()] = sum / double(valence);
+  }
+  double total = 0.0;
+  for (VH v : m.vertices()) {
+    m.set_point(v, next[v.idx()]);
+    total += next[v.idx()][0] + next[v.idx()][1] + next[v.idx()][2];
+  }
+  return total;
+}
+
+template <class M>
+bool fill(M &m, const double *xyz, uint32_t vertices, const uint32_t *indices,
+          const uint32_t *offsets, uint32_t faces, uint32_t edges_hint, uint32_t *failed_face) {
+  m.reserve(vertices, edges_hint, faces);
+  for (uint32_t i = 0; i < vertices; ++i)
+    m.add_vertex(typename M::Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
+  std::vector<VH> corners;
+  for (uint32_t j = 0; j < faces; ++j) {
+    FH f;
+    const uint32_t *begin = indices + offsets[j], *end = indices + offsets[j + 1];
+    if (std::is_same<M, Tri>::value) {
+      f = m.add_face(VH(begin[0]), VH(begin[1]), VH(begin[2]));
+    } else {
+      corners.clear();
+      for (const uint32_t *c = begin; c != end; ++c) corners.push_back(VH(*c));
+      f = m.add_face(corners);
+    }
+    if (!f.is_valid()) {
+      *failed_face = j;
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+struct topolab_om_mesh {
+  std::unique_ptr<Tri> tri;    // set for triangle input
+  std::unique_ptr<Poly> poly;  // set for polygon input
+  uint64_t heap_bytes = 0;     // mallinfo2 growth while building
+  bool normals_requested = false;
+};
+
+namespace {
+template <class F> auto with_mesh(const topolab_om_mesh *mesh, F &&f) {
+  return mesh->tri ? f(*mesh->tri) : f(*mesh->poly);
+}
+template <class F> auto with_mesh_mut(topolab_om_mesh *mesh, F &&f) {
+  return mesh->tri ? f(*mesh->tri) : f(*mesh->poly);
+}
+}  // namespace
+
+extern "C" {
+
+topolab_om_mesh *topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indices,
+                                  const uint32_t *offsets, uint32_t faces, int triangles,
+                                  uint32_t edges_hint, uint32_t *failed_face) {
+  *failed_face = UINT32_MAX;
+  // add_face's refusals become typed errors on the Rust side: no messages on stderr.
+  omerr().disable();
+  try {
+    const size_t before = heap_in_use();
+    auto mesh = std::make_unique<topolab_om_mesh>();
+    bool ok;
+    if (triangles) {
+      mesh->tri = std::make_unique<Tri>();
+      ok = fill(*mesh->tri, xyz, vertices, indices, offsets, faces, edges_hint, failed_face);
+    } else {
+      mesh->poly = std::make_unique<Poly>();
+      ok = fill(*mesh->poly, xyz, vertices, indices, offsets, faces, edges_hint, failed_face);
+    }
+    if (!ok) return nullptr;
+    const size_t after = heap_in_use();
+    mesh->heap_bytes = after > before ? after - before : 0;
+    return mesh.release();
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+void topolab_om_free(topolab_om_mesh *mesh) { delete mesh; }
+
+uint64_t topolab_om_heap_bytes(const topolab_om_mesh *mesh) { return mesh->heap_bytes; }
+int topolab_om_is_trimesh(const topolab_om_mesh *mesh) { return mesh->tri ? 1 : 0; }
+uint32_t topolab_om_num_vertices(const topolab_om_mesh *mesh) {
+  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_vertices()); });
+}
+uint32_t topolab_om_num_edges(const topolab_om_mesh *mesh) {
+  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_edges()); });
+}
+uint32_t topolab_om_num_faces(const topolab_om_mesh *mesh) {
+  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_faces()); });
+}
+
+void topolab_om_position(const topolab_om_mesh *mesh, uint32_t v, double *out) {
+  with_mesh(mesh, [&](const auto &m) {
+    const auto &p = m.point(VH(int(v)));
+    out[0] = p[0];
+    out[1] = p[1];
+    out[2] = p[2];
+    return 0;
+  });
+}
+
+void topolab_om_edge_vertices(const topolab_om_mesh *mesh, uint32_t e, uint32_t *out) {
+  with_mesh(mesh, [&](const auto &m) {
+    const HH h = m.halfedge_handle(EH(int(e)), 0);
+    out[0] = uint32_t(m.from_vertex_handle(h).idx());
+    out[1] = uint32_t(m.to_vertex_handle(h).idx());
+    return 0;
+  });
+}
+
+int topolab_om_is_boundary_vertex(const topolab_om_mesh *mesh, uint32_t v) {
+  return with_mesh(mesh, [&](const auto &m) { return is_boundary_vertex(m, VH(int(v))) ? 1 : 0; });
+}
+
+int topolab_om_is_boundary_edge(const topolab_om_mesh *mesh, uint32_t e) {
+  return with_mesh(mesh, [&](const auto &m) { return m.is_boundary(EH(int(e))) ? 1 : 0; });
+}
+
+void topolab_om_query(const topolab_om_mesh *mesh, int op, uint32_t id, topolab_om_emit emit,
+                      void *context) {
+  with_mesh(mesh, [&](const auto &m) {
+    return dispatch(op, [&](auto code) -> uint64_t {
+      relation<decltype(code)::value>(m, int(id),
+                                      [&](auto h) { emit(context, uint32_t(h.idx())); });
+      return 0;
+    });
+  });
+}
+
+int64_t topolab_om_edge_neighbour(const topolab_om_mesh *mesh, uint32_t e, uint32_t f,
+                                  int successor) {
+  return with_mesh(mesh, [&](const auto &m) -> int64_t {
+    for (int side = 0; side < 2; ++side) {
+      const HH h = m.halfedge_handle(EH(int(e)), side);
+      if (m.face_handle(h) != FH(int(f))) continue;
+      const HH other = successor ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
+      return m.edge_handle(other).idx();
+    }
+    return -1;
+  });
+}
+
+void topolab_om_boundary_curves(const topolab_om_mesh *mesh, topolab_om_emit emit,
+                                topolab_om_end_curve end_curve, void *context) {
+  try {
+    with_mesh(mesh, [&](const auto &m) {
+      boundary_loops(m, [&](HH start, uint32_t) {
+        HH h = start;
+        do {
+          emit(context, uint32_t(m.edge_handle(h).idx()));
+          h = m.next_halfedge_handle(h);
+        } while (h != start);
+        end_curve(context);
+      });
+      return 0;
+    });
+  } catch (...) {
+    // Out of memory for the visited flags: no curves reported.
+  }
+}
+
+void topolab_om_halfedge(const topolab_om_mesh *mesh, uint32_t h, uint32_t *out) {
+  with_mesh(mesh, [&](const auto &m) {
+    const HH heh{int(h)};
+    const FH f = m.face_handle(heh);
+    out[0] = uint32_t(m.to_vertex_handle(heh).idx());
+    out[1] = uint32_t(m.next_halfedge_handle(heh).idx());
+    out[2] = uint32_t(m.prev_halfedge_handle(heh).idx());
+    out[3] = f.is_valid() ? uint32_t(f.idx()) : UINT32_MAX;
+    return 0;
+  });
+}
+
+uint32_t topolab_om_vertex_halfedge(const topolab_om_mesh *mesh, uint32_t v) {
+  return with_mesh(mesh, [&](const auto &m) {
+    const HH h = m.halfedge_handle(VH(int(v)));
+    return h.is_valid() ? uint32_t(h.idx()) : UINT32_MAX;
+  });
+}
+
+uint32_t topolab_om_face_halfedge(const topolab_om_mesh *mesh, uint32_t f) {
+  return with_mesh(mesh, [&](const auto &m) { return uint32_t(m.halfedge_handle(FH(int(f))).idx()); });
+}
+
+int topolab_om_validate(const topolab_om_mesh *mesh, uint32_t *element) {
+  return with_mesh(mesh, [&](const auto &m) {
+    for (HH h : m.halfedges()) {
+      const HH next = m.next_halfedge_handle(h);
+      const bool linked = next.is_valid() && m.prev_halfedge_handle(next) == h &&
+                          m.from_vertex_handle(next) == m.to_vertex_handle(h) &&
+                          m.face_handle(next) == m.face_handle(h);
+      if (!linked) {
+        *element = uint32_t(h.idx());
+        return 1;
+      }
+    }
+    for (VH v : m.vertices()) {
+      const HH h = m.halfedge_handle(v);
+      if (h.is_valid() && m.from_vertex_handle(h) != v) {
+        *element = uint32_t(v.idx());
+        return 2;
+      }
+    }
+    for (FH f : m.faces()) {
+      if (m.face_handle(m.halfedge_handle(f)) != f) {
+        *element = uint32_t(f.idx());
+        return 3;
+      }
+    }
+    return 0;
+  });
+}
+
+uint64_t topolab_om_sweep(const topolab_om_mesh *mesh, int op) {
+  try {
+    return with_mesh(mesh, [&](const auto &m) {
+      return dispatch(op, [&](auto code) { return sweep<decltype(code)::value>(m); });
+    });
+  } catch (...) {
+    return 0;  // only boundary-curves allocates (its visited flags)
+  }
+}
+
+uint64_t topolab_om_sampled(const topolab_om_mesh *mesh, int op, const uint32_t *ids,
+                            size_t count) {
+  return with_mesh(mesh, [&](const auto &m) {
+    return dispatch(op, [&](auto code) { return sampled<decltype(code)::value>(m, ids, count); });
+  });
+}
+
+void topolab_om_prepare_workload(topolab_om_mesh *mesh, int workload) {
+  if (workload != NORMALS || mesh->normals_requested) return;
+  with_mesh_mut(mesh, [](auto &m) {
+    m.request_face_normals();
+    m.request_vertex_normals();
+    return 0;
+  });
+  mesh->normals_requested = true;
+}
+
+double topolab_om_workload(topolab_om_mesh *mesh, int workload) {
+  try {
+    topolab_om_prepare_workload(mesh, workload);
+    return with_mesh_mut(mesh, [&](auto &m) {
+      switch (workload) {
+        case CIRCULATORS: return circulators(m);
+        case BARYCENTER: return barycenter(m);
+        case NORMALS: return normals(m);
+        case SMOOTHING: return smoothing(m);
+        default: return std::nan("");
+      }
+    });
+  } catch (...) {
+    return std::nan("");
+  }
+}
+
+}  // extern "C"

@@ -1,0 +1,653 @@
+//! # OpenMesh (the C++ baseline, through FFI)
+//!
+//! [OpenMesh](https://www.graphics.rwth-aachen.de/software/openmesh/) is the halfedge library
+//! graphics engineers compare against. [`OpenMesh`] wraps a `TriMesh_ArrayKernelT` (triangle
+//! input) or `PolyMesh_ArrayKernelT` (polygon input) with double-precision points, built and
+//! queried through the C API of `openmesh/shim.h`. This module is the only place of the lab
+//! with `unsafe` code; everything it exports is safe.
+//!
+//! What OpenMesh's array kernel stores (4-byte handles):
+//!
+//! | stores | bytes |
+//! |---|---|
+//! | per vertex: position (3 × f64), one outgoing halfedge | 28 |
+//! | per halfedge: to-vertex, next, prev, face (the opposite of `h` is `h ^ 1`, its edge `h / 2`) | 16 (32 per edge) |
+//! | per face: one of its halfedges | 4 |
+//!
+//! Ids: vertex i of the input is OpenMesh's vertex i and face j its face j (OpenMesh keeps
+//! insertion order); `EdgeId` is OpenMesh's edge index (edges are created by `add_face`).
+//!
+//! | operator | how (OpenMesh's API) | cost |
+//! |---|---|---|
+//! | R00, R01, R02 | `vv_range`, `ve_range`, `vf_range` (circulators) | O(k) |
+//! | R10 | the edge's halfedge: `from_vertex_handle`, `to_vertex_handle` | O(1) |
+//! | R11 | `next_halfedge_handle` around both faces of the edge | O(k) |
+//! | R12 | `face_handle` of both halfedges | O(1) |
+//! | R20, R21, R22 | `fv_ccw_range`, `fe_ccw_range`, `ff_ccw_range` | O(k) |
+//! | boundary vertex | the outgoing halfedge is a boundary one (`is_boundary`) | O(1) |
+//! | boundary edge | `is_boundary(edge)` | O(1) |
+//! | boundary curves | scan the halfedges for unvisited boundary ones, follow `next` | O(n) |
+//! | successor, predecessor | the edge's halfedge in the face, `next`/`prev` | O(1) |
+//!
+//! For timing, per-query FFI calls would measure the FFI, so whole sweeps run as one C++
+//! function each ([`OpenMesh::native_sweep`], [`OpenMesh::native_sampled`],
+//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`.
+//!
+//! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
+//! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
+//! random meshes with corner-touching cells, faces in random order). That needs every fan to
+//! be open: a vertex with a closed fan and another fan is refused with
+//! [`Error::NonManifoldVertex`] (OpenMesh's `add_face` refuses it too, "complex vertex"), a
+//! case [`Capabilities::non_manifold_vertices`] cannot express.
+
+use std::any::Any;
+use std::ffi::c_void;
+use std::fmt::Write;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use std::ptr::NonNull;
+use topolab_structures::{
+    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, MeshTopology,
+    Operator, PolygonSoup, Result, VertexId,
+};
+
+/// The declarations of `openmesh/shim.h`.
+mod ffi {
+    use std::ffi::c_void;
+
+    /// The C++ `topolab_om_mesh` (opaque).
+    #[repr(C)]
+    pub struct RawMesh {
+        _opaque: [u8; 0],
+        _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+    }
+
+    pub type Emit = unsafe extern "C" fn(context: *mut c_void, index: u32);
+    pub type EndCurve = unsafe extern "C" fn(context: *mut c_void);
+
+    extern "C" {
+        pub fn topolab_om_build(
+            xyz: *const f64,
+            vertices: u32,
+            indices: *const u32,
+            offsets: *const u32,
+            faces: u32,
+            triangles: i32,
+            edges_hint: u32,
+            failed_face: *mut u32,
+        ) -> *mut RawMesh;
+        pub fn topolab_om_free(mesh: *mut RawMesh);
+        pub fn topolab_om_heap_bytes(mesh: *const RawMesh) -> u64;
+        pub fn topolab_om_is_trimesh(mesh: *const RawMesh) -> i32;
+        pub fn topolab_om_num_vertices(mesh: *const RawMesh) -> u32;
+        pub fn topolab_om_num_edges(mesh: *const RawMesh) -> u32;
+        pub fn topolab_om_num_faces(mesh: *const RawMesh) -> u32;
+        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64);
+        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32);
+        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32) -> i32;
+        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32) -> i32;
+        pub fn topolab_om_query(
+            mesh: *const RawMesh,
+            op: i32,
+            id: u32,
+            emit: Emit,
+            context: *mut c_void,
+        );
+        pub fn topolab_om_edge_neighbour(
+            mesh: *const RawMesh,
+            e: u32,
+            f: u32,
+            successor: i32,
+        ) -> i64;
+        pub fn topolab_om_boundary_curves(
+            mesh: *const RawMesh,
+            emit: Emit,
+            end_curve: EndCurve,
+            context: *mut c_void,
+        );
+        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32);
+        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32) -> u32;
+        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32) -> u32;
+        pub fn topolab_om_validate(mesh: *const RawMesh, element: *mut u32) -> i32;
+        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32) -> u64;
+        pub fn topolab_om_sampled(
+            mesh: *const RawMesh,
+            op: i32,
+            ids: *const u32,
+            count: usize,
+        ) -> u64;
+        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32);
+        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32) -> f64;
+    }
+}
+
+// The shim numbers operators in `Operator::ALL` order; the enum's discriminants are that order.
+const _: () = assert!(Operator::R00 as i32 == 0 && Operator::EdgePredecessor as i32 == 13);
+// Positions go to C++ as 3 doubles per vertex, without a copy.
+const _: () = assert!(std::mem::size_of::<glam::DVec3>() == 24);
+
+/// The Surface_mesh benchmark workloads (Sieger & Botsch), by name, in the shim's order.
+///
+/// | name | what | returns |
+/// |---|---|---|
+/// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
+/// | `barycenter` | the mean of all positions | the sum of its coordinates |
+/// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
+/// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
+pub const WORKLOADS: [&str; 4] = ["circulators", "barycenter", "normals", "smoothing"];
+
+/// An OpenMesh mesh (TriMesh for triangle input, PolyMesh otherwise); see the module docs.
+pub struct OpenMesh {
+    /// The C++ mesh, owned (freed in `Drop`).
+    raw: NonNull<ffi::RawMesh>,
+    /// Number of vertices, edges and faces, kept here to check ids without an FFI call.
+    vertices: u32,
+    edges: u32,
+    faces: u32,
+}
+
+impl Drop for OpenMesh {
+    fn drop(&mut self) {
+        // SAFETY: `raw` came from `topolab_om_build` and is freed exactly once, here.
+        unsafe { ffi::topolab_om_free(self.raw.as_ptr()) }
+    }
+}
+
+impl std::fmt::Debug for OpenMesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("OpenMesh")
+            .field("trimesh", &self.is_trimesh())
+            .field("vertices", &self.vertices)
+            .field("edges", &self.edges)
+            .field("faces", &self.faces)
+            .finish()
+    }
+}
+
+/// A Rust closure called from C++, with a panic caught and carried back across the FFI
+/// (unwinding through C++ frames is not allowed).
+struct Callback<F> {
+    f: F,
+    panic: Option<Box<dyn Any + Send>>,
+}
+
+impl<F> Callback<F> {
+    fn new(f: F) -> Self {
+        Self { f, panic: None }
+    }
+
+    fn run(&mut self, call: impl FnOnce(&mut F)) {
+        if self.panic.is_some() {
+            return;
+        }
+        if let Err(payload) = catch_unwind(AssertUnwindSafe(|| call(&mut self.f))) {
+            self.panic = Some(payload);
+        }
+    }
+
+    /// Re-raises a panic of the closure, now that C++ has returned.
+    fn finish(self) {
+        if let Some(payload) = self.panic {
+            resume_unwind(payload);
+        }
+    }
+}
+
+unsafe extern "C" fn emit_index<F: FnMut(u32)>(context: *mut c_void, index: u32) {
+    // SAFETY: `context` is the `&mut Callback<F>` that `OpenMesh::query` passed along with
+    // this very instantiation, alive and not otherwise borrowed for the C++ call.
+    let callback = unsafe { &mut *context.cast::<Callback<F>>() };
+    callback.run(|f| f(index));
+}
+
+unsafe extern "C" fn push_curve_edge(context: *mut c_void, index: u32) {
+    // SAFETY: `context` is the `&mut Callback<&mut BoundaryCurves>` of `boundary_curves`.
+    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
+    callback.run(|out| out.edges.push(EdgeId(index)));
+}
+
+unsafe extern "C" fn end_curve(context: *mut c_void) {
+    // SAFETY: as in `push_curve_edge`.
+    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
+    callback.run(|out| out.end_curve());
+}
+
+/// The kind of element an operator is asked about (what its sampled ids index).
+enum QueryElement {
+    Vertex,
+    Edge,
+    Face,
+    Mesh,
+}
+
+fn query_element(op: Operator) -> QueryElement {
+    match op {
+        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+            QueryElement::Vertex
+        }
+        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
+            QueryElement::Edge
+        }
+        Operator::R20
+        | Operator::R21
+        | Operator::R22
+        | Operator::EdgeSuccessor
+        | Operator::EdgePredecessor => QueryElement::Face,
+        Operator::BoundaryCurves => QueryElement::Mesh,
+    }
+}
+
+impl OpenMesh {
+    /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
+    /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
+    ///
+    /// Only [`PolygonSoup::check`] runs first (so every index is in range). A face that
+    /// `add_face` refuses is reported with the lab's error for it (the edge analysis of
+    /// [`PolygonSoup::connectivity`] or the non-manifold vertex it touches).
+    /// [`MeshTopology::from_soup`] checks the soup fully first, like every structure.
+    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
+        soup.check()?;
+        let mut failed_face = u32::MAX;
+        // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
+        // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
+        // asserted above); offsets has faces + 1 entries; a TriMesh is asked for only when
+        // every face is a triangle. The C++ side copies everything it keeps.
+        let raw = unsafe {
+            ffi::topolab_om_build(
+                soup.positions.as_ptr().cast::<f64>(),
+                soup.num_vertices() as u32,
+                soup.indices().as_ptr(),
+                soup.offsets().as_ptr(),
+                soup.num_faces() as u32,
+                soup.is_triangle_mesh() as i32,
+                edges_hint.min(u32::MAX as usize) as u32,
+                &mut failed_face,
+            )
+        };
+        match NonNull::new(raw) {
+            Some(raw) => {
+                // SAFETY: `raw` is a live mesh just built.
+                let counts = unsafe {
+                    (
+                        ffi::topolab_om_num_vertices(raw.as_ptr()),
+                        ffi::topolab_om_num_edges(raw.as_ptr()),
+                        ffi::topolab_om_num_faces(raw.as_ptr()),
+                    )
+                };
+                Ok(Self {
+                    raw,
+                    vertices: counts.0,
+                    edges: counts.1,
+                    faces: counts.2,
+                })
+            }
+            None if failed_face == u32::MAX => Err(Error::Unsupported(
+                "OpenMesh could not allocate the mesh".into(),
+            )),
+            None => Err(refusal(soup, failed_face as usize)),
+        }
+    }
+
+    /// `true` for a TriMesh (triangle input), `false` for a PolyMesh.
+    pub fn is_trimesh(&self) -> bool {
+        // SAFETY: `raw` is live for `self`'s lifetime.
+        unsafe { ffi::topolab_om_is_trimesh(self.raw.as_ptr()) != 0 }
+    }
+
+    /// The checksum of operator `kernel` (an [`Operator::name`]) over every element, computed
+    /// by one C++ loop with OpenMesh's circulators; `None` for an unknown name.
+    pub fn native_sweep(&self, kernel: &str) -> Option<u64> {
+        let op = Operator::from_name(kernel)?;
+        // SAFETY: `raw` is live; the shim checks nothing but needs nothing but a valid code.
+        Some(unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), op as i32) })
+    }
+
+    /// The checksum of operator `kernel` over the query elements `ids` only (vertex, edge or
+    /// face ids by the operator; faces for successor and predecessor). `None` for an unknown
+    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range.
+    pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<u64> {
+        let op = Operator::from_name(kernel)?;
+        let count = match query_element(op) {
+            QueryElement::Vertex => self.vertices,
+            QueryElement::Edge => self.edges,
+            QueryElement::Face => self.faces,
+            QueryElement::Mesh => return None,
+        };
+        if ids.iter().any(|&id| id >= count) {
+            return None;
+        }
+        // SAFETY: `raw` is live and every id was just checked to be in range.
+        Some(unsafe {
+            ffi::topolab_om_sampled(self.raw.as_ptr(), op as i32, ids.as_ptr(), ids.len())
+        })
+    }
+
+    /// Requests what workload `name` needs (normals for `normals`), so that a timed
+    /// [`OpenMesh::native_workload`] runs only the workload; `false` for an unknown name.
+    pub fn prepare_workload(&mut self, name: &str) -> bool {
+        let Some(code) = WORKLOADS.iter().position(|&w| w == name) else {
+            return false;
+        };
+        // SAFETY: `raw` is live and exclusively borrowed.
+        unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), code as i32) };
+        true
+    }
+
+    /// Runs a Surface_mesh benchmark workload (see [`WORKLOADS`] for what each returns) in
+    /// one C++ call; `None` for an unknown name. `smoothing` moves the vertices, `normals`
+    /// adds normal properties (requested on first use unless [`OpenMesh::prepare_workload`]
+    /// did it).
+    pub fn native_workload(&mut self, name: &str) -> Option<f64> {
+        let code = WORKLOADS.iter().position(|&w| w == name)?;
+        // SAFETY: `raw` is live and exclusively borrowed (the workload may write positions).
+        Some(unsafe { ffi::topolab_om_workload(self.raw.as_ptr(), code as i32) })
+    }
+
+    /// Calls `f` with every answer (an index) of relation `op` of element `id`.
+    fn query(&self, op: Operator, id: u32, f: impl FnMut(u32)) {
+        fn run<F: FnMut(u32)>(raw: *const ffi::RawMesh, op: Operator, id: u32, f: F) {
+            let mut callback = Callback::new(f);
+            // SAFETY: `raw` is live; the caller checked `id` against the element count of
+            // `op`'s input; the context is `&mut callback`, matching `emit_index::<F>`, and
+            // outlives the call (C++ does not keep it).
+            unsafe {
+                ffi::topolab_om_query(
+                    raw,
+                    op as i32,
+                    id,
+                    emit_index::<F>,
+                    (&mut callback as *mut Callback<F>).cast(),
+                )
+            };
+            callback.finish();
+        }
+        run(self.raw.as_ptr(), op, id, f);
+    }
+
+    fn vertex(&self, v: VertexId) -> u32 {
+        assert!(
+            v.0 < self.vertices,
+            "{v:?} out of range ({} vertices)",
+            self.vertices
+        );
+        v.0
+    }
+    fn edge(&self, e: EdgeId) -> u32 {
+        assert!(
+            e.0 < self.edges,
+            "{e:?} out of range ({} edges)",
+            self.edges
+        );
+        e.0
+    }
+    fn face(&self, f: FaceId) -> u32 {
+        assert!(
+            f.0 < self.faces,
+            "{f:?} out of range ({} faces)",
+            self.faces
+        );
+        f.0
+    }
+
+    fn neighbour_in_face(&self, e: EdgeId, face: FaceId, successor: bool) -> Option<EdgeId> {
+        let (e, face) = (self.edge(e), self.face(face));
+        // SAFETY: `raw` is live and both ids were checked.
+        let answer =
+            unsafe { ffi::topolab_om_edge_neighbour(self.raw.as_ptr(), e, face, successor as i32) };
+        u32::try_from(answer).ok().map(EdgeId)
+    }
+
+    /// The halfedge record `h` as OpenMesh stores it: (to vertex, next, prev, face).
+    fn halfedge(&self, h: u32) -> [u32; 4] {
+        let mut out = [0u32; 4];
+        // SAFETY: `raw` is live, `h` < 2 × edges (callers iterate that range), `out` has 4 slots.
+        unsafe { ffi::topolab_om_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        out
+    }
+}
+
+/// The lab's error for face `face` that OpenMesh's `add_face` refused ("complex edge" or
+/// "complex vertex"): the soup's own edge analysis names the problem the way every other
+/// structure does; failing that, the non-manifold vertex of that face.
+fn refusal(soup: &PolygonSoup, face: usize) -> Error {
+    let connectivity = match soup.connectivity() {
+        Ok(c) => c,
+        Err(e) => return e,
+    };
+    let fans = connectivity.vertex_fans(soup);
+    match soup.face(face).iter().find(|&&v| fans[v as usize] > 1) {
+        Some(&vertex) => Error::NonManifoldVertex {
+            vertex,
+            fans: fans[vertex as usize] as usize,
+        },
+        None => Error::Unsupported(format!(
+            "OpenMesh's add_face refused face {face} {:?} of a manifold soup",
+            soup.face(face)
+        )),
+    }
+}
+
+/// OpenMesh stores a vertex with several fans by linking the fans' boundary halfedges, so
+/// every fan must be open: a closed fan plus another one at the same vertex (two cones tip to
+/// tip, one closed) is refused by `add_face` ("complex vertex"). Refusing it here, before
+/// OpenMesh, makes the answer independent of the face order.
+fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
+    let fans = connectivity.vertex_fans(soup);
+    if fans.iter().all(|&n| n <= 1) {
+        return Ok(());
+    }
+    // Each open fan has two boundary edges at its vertex (one in, one out).
+    let mut boundary_sides = vec![0u32; soup.num_vertices()];
+    for (face, corners) in soup.faces().enumerate() {
+        let start = soup.face_start(face);
+        for (i, &v) in corners.iter().enumerate() {
+            if connectivity.twin_corner(start + i).is_none() {
+                boundary_sides[v as usize] += 1;
+                boundary_sides[corners[(i + 1) % corners.len()] as usize] += 1;
+            }
+        }
+    }
+    match (0..fans.len()).find(|&v| fans[v] > 1 && boundary_sides[v] < 2 * fans[v]) {
+        Some(v) => Err(Error::NonManifoldVertex {
+            vertex: v as u32,
+            fans: fans[v] as usize,
+        }),
+        None => Ok(()),
+    }
+}
+
+impl MeshTopology for OpenMesh {
+    const NAME: &'static str = "openmesh";
+
+    fn capabilities() -> Capabilities {
+        Capabilities {
+            // With open fans only; see the module docs.
+            non_manifold_vertices: true,
+            ..Capabilities::POLYGONS
+        }
+    }
+
+    fn cost(op: Operator) -> Cost {
+        match op {
+            Operator::R10
+            | Operator::R12
+            | Operator::BoundaryVertex
+            | Operator::BoundaryEdge
+            | Operator::EdgeSuccessor
+            | Operator::EdgePredecessor => Cost::Constant,
+            Operator::R00
+            | Operator::R01
+            | Operator::R02
+            | Operator::R11
+            | Operator::R20
+            | Operator::R21
+            | Operator::R22 => Cost::Local,
+            Operator::BoundaryCurves => Cost::Linear,
+        }
+    }
+
+    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+        let connectivity = soup.connectivity()?;
+        check_open_fans(soup, &connectivity)?;
+        Self::build_native(soup, connectivity.num_edges())
+    }
+
+    fn num_vertices(&self) -> usize {
+        self.vertices as usize
+    }
+    fn num_edges(&self) -> usize {
+        self.edges as usize
+    }
+    fn num_faces(&self) -> usize {
+        self.faces as usize
+    }
+    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        (0..self.edges).for_each(|e| f(EdgeId(e)));
+    }
+    fn position(&self, v: VertexId) -> glam::DVec3 {
+        let v = self.vertex(v);
+        let mut out = [0.0f64; 3];
+        // SAFETY: `raw` is live, `v` checked, `out` has 3 slots.
+        unsafe { ffi::topolab_om_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        glam::DVec3::from_array(out)
+    }
+    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        self.query(Operator::R00, self.vertex(v), |w| f(VertexId(w)));
+    }
+    fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R01, self.vertex(v), |e| f(EdgeId(e)));
+    }
+    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R02, self.vertex(v), |g| f(FaceId(g)));
+    }
+    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
+        let e = self.edge(e);
+        let mut out = [0u32; 2];
+        // SAFETY: `raw` is live, `e` checked, `out` has 2 slots.
+        unsafe { ffi::topolab_om_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        out.map(VertexId)
+    }
+    fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R11, self.edge(e), |x| f(EdgeId(x)));
+    }
+    fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R12, self.edge(e), |g| f(FaceId(g)));
+    }
+    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
+        self.query(Operator::R20, self.face(face), |v| f(VertexId(v)));
+    }
+    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R21, self.face(face), |e| f(EdgeId(e)));
+    }
+    fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R22, self.face(face), |g| f(FaceId(g)));
+    }
+    fn is_boundary_vertex(&self, v: VertexId) -> bool {
+        let v = self.vertex(v);
+        // SAFETY: `raw` is live, `v` checked.
+        unsafe { ffi::topolab_om_is_boundary_vertex(self.raw.as_ptr(), v) != 0 }
+    }
+    fn is_boundary_edge(&self, e: EdgeId) -> bool {
+        let e = self.edge(e);
+        // SAFETY: `raw` is live, `e` checked.
+        unsafe { ffi::topolab_om_is_boundary_edge(self.raw.as_ptr(), e) != 0 }
+    }
+    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+        out.clear();
+        let mut callback = Callback::new(out);
+        // SAFETY: `raw` is live; the context is `&mut Callback<&mut BoundaryCurves>`, what
+        // `push_curve_edge` and `end_curve` expect, alive for the whole call.
+        unsafe {
+            ffi::topolab_om_boundary_curves(
+                self.raw.as_ptr(),
+                push_curve_edge,
+                end_curve,
+                (&mut callback as *mut Callback<&mut BoundaryCurves>).cast(),
+            )
+        };
+        callback.finish();
+    }
+    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        self.neighbour_in_face(e, face, true)
+    }
+    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        self.neighbour_in_face(e, face, false)
+    }
+
+    fn validate(&self) -> Result<()> {
+        let mut element = 0u32;
+        // SAFETY: `raw` is live; `element` is a valid out-pointer.
+        let problem = unsafe { ffi::topolab_om_validate(self.raw.as_ptr(), &mut element) };
+        let message = match problem {
+            0 => return Ok(()),
+            1 => format!("halfedge {element}: next/prev/face links disagree"),
+            2 => format!("vertex {element}: its outgoing halfedge does not start at it"),
+            _ => format!("face {element}: its halfedge belongs to another face"),
+        };
+        Err(Error::invariant(Self::NAME, message))
+    }
+
+    /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
+    /// no other thread allocates during construction.
+    fn heap_bytes(&self) -> usize {
+        // SAFETY: `raw` is live.
+        unsafe { ffi::topolab_om_heap_bytes(self.raw.as_ptr()) as usize }
+    }
+
+    fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
+        let kernel = if self.is_trimesh() {
+            "TriMesh_ArrayKernelT"
+        } else {
+            "PolyMesh_ArrayKernelT"
+        };
+        writeln!(
+            w,
+            "OpenMesh {kernel} (C++ halfedge structure): halfedge h's opposite is h ^ 1, its edge h / 2"
+        )?;
+        let show = |x: u32, prefix: &str| {
+            if x == u32::MAX {
+                "-".to_string()
+            } else {
+                format!("{prefix}{x}")
+            }
+        };
+        writeln!(
+            w,
+            "vertices: {} (position, outgoing halfedge)",
+            self.vertices
+        )?;
+        for v in 0..self.vertices {
+            let p = self.position(VertexId(v));
+            // SAFETY: `raw` is live and `v` < vertices.
+            let h = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v) };
+            writeln!(
+                w,
+                "  v{v}: ({:.3}, {:.3}, {:.3})  out {}",
+                p.x,
+                p.y,
+                p.z,
+                show(h, "h")
+            )?;
+        }
+        writeln!(
+            w,
+            "halfedges: {} (to vertex, next, prev, face)",
+            2 * self.edges
+        )?;
+        for h in 0..2 * self.edges {
+            let [to, next, prev, face] = self.halfedge(h);
+            writeln!(
+                w,
+                "  h{h} (edge e{}): to v{to}, next h{next}, prev h{prev}, face {}",
+                h / 2,
+                show(face, "f")
+            )?;
+        }
+        writeln!(w, "faces: {} (one halfedge)", self.faces)?;
+        for f in 0..self.faces {
+            // SAFETY: `raw` is live and `f` < faces.
+            let h = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f) };
+            writeln!(w, "  f{f}: h{h}")?;
+        }
+        Ok(())
+    }
+}

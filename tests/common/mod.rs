@@ -1,0 +1,135 @@
+//! The checksums of `topolab_harness::checksum`, written over [`MeshTopology`] for any
+//! structure, to check the baselines (OpenMesh's C++ sweeps, libigl's outputs) against.
+
+// Each test crate that includes this module uses part of it.
+#![allow(dead_code)]
+
+use glam::DVec3;
+use topolab_harness::checksum::{edge_key, mix};
+use topolab_structures::{
+    BoundaryCurves, EdgeId, FaceId, MeshTopology, Operator, PolygonSoup, VertexId,
+};
+
+fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
+    let [a, b] = m.edge_vertices(e);
+    edge_key(a.0, b.0)
+}
+
+/// How many query elements operator `op` has in `m` (vertices, edges or faces).
+pub fn query_count<M: MeshTopology>(m: &M, op: Operator) -> usize {
+    match op {
+        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+            m.num_vertices()
+        }
+        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => m.num_edges(),
+        _ => m.num_faces(),
+    }
+}
+
+/// The checksum term of query element `id` (vertex, edge or face id by the operator).
+fn term<M: MeshTopology>(m: &M, op: Operator, id: u32) -> u64 {
+    let mut sum = 0u64;
+    let mut add = |x: u64| sum = sum.wrapping_add(x);
+    let (v, e, f) = (VertexId(id), EdgeId(id), FaceId(id));
+    let q = id as u64;
+    match op {
+        Operator::R00 => m.vertex_vertices(v, |w| add(mix(q, w.0 as u64))),
+        Operator::R01 => m.vertex_edges(v, |x| add(mix(q, key(m, x)))),
+        Operator::R02 => m.vertex_faces(v, |g| add(mix(q, g.0 as u64))),
+        Operator::R10 => {
+            let [a, b] = m.edge_vertices(e);
+            add(mix(a.0.min(b.0) as u64, a.0.max(b.0) as u64));
+        }
+        Operator::R11 => m.edge_edges(e, |x| add(mix(key(m, e), key(m, x)))),
+        Operator::R12 => m.edge_faces(e, |g| add(mix(key(m, e), g.0 as u64))),
+        Operator::R20 => m.face_vertices(f, |w| add(mix(q, w.0 as u64))),
+        Operator::R21 => m.face_edges(f, |x| add(mix(q, key(m, x)))),
+        Operator::R22 => m.face_faces(f, |g| add(mix(q, g.0 as u64))),
+        Operator::BoundaryVertex if m.is_boundary_vertex(v) => add(mix(q, 1)),
+        Operator::BoundaryEdge if m.is_boundary_edge(e) => add(mix(key(m, e), 1)),
+        Operator::EdgeSuccessor | Operator::EdgePredecessor => m.face_edges(f, |x| {
+            let other = if op == Operator::EdgeSuccessor {
+                m.edge_successor(x, f)
+            } else {
+                m.edge_predecessor(x, f)
+            };
+            let other = other.expect("an edge of a face has a successor and a predecessor in it");
+            add(mix(key(m, x), key(m, other)));
+        }),
+        _ => {}
+    }
+    sum
+}
+
+/// The sweep checksum of `op` over every element of `m`.
+pub fn checksum<M: MeshTopology>(m: &M, op: Operator) -> u64 {
+    if op == Operator::BoundaryCurves {
+        let mut curves = BoundaryCurves::default();
+        m.boundary_curves(&mut curves);
+        let mut sum = 0u64;
+        for i in 0..curves.len() {
+            let curve = curves.curve(i);
+            for &e in curve {
+                sum = sum.wrapping_add(mix(curve.len() as u64, key(m, e)));
+            }
+        }
+        return sum;
+    }
+    let ids: Vec<u32> = match op {
+        // Edge ids are each structure's own: enumerate them.
+        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
+            let mut ids = Vec::with_capacity(m.num_edges());
+            m.for_each_edge(|e| ids.push(e.0));
+            ids
+        }
+        _ => (0..query_count(m, op) as u32).collect(),
+    };
+    sampled(m, op, &ids)
+}
+
+/// The checksum of `op` over the query elements `ids` only.
+pub fn sampled<M: MeshTopology>(m: &M, op: Operator, ids: &[u32]) -> u64 {
+    ids.iter()
+        .fold(0u64, |sum, &id| sum.wrapping_add(term(m, op, id)))
+}
+
+/// Unit normal of a polygon (Newell's method; for a triangle, the normalised cross product).
+fn face_normal(p: &[DVec3]) -> DVec3 {
+    let mut n = DVec3::ZERO;
+    for i in 0..p.len() {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        n += DVec3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        );
+    }
+    n.normalize_or_zero()
+}
+
+/// The `normals` workload's result: vertex normals as the normalised sum of the unit normals
+/// of their faces, and the sum of all their coordinates.
+pub fn uniform_vertex_normals_sum(soup: &PolygonSoup) -> f64 {
+    let mut vertex_normals = vec![DVec3::ZERO; soup.num_vertices()];
+    for face in soup.faces() {
+        let p: Vec<DVec3> = face.iter().map(|&v| soup.positions[v as usize]).collect();
+        let n = face_normal(&p);
+        face.iter().for_each(|&v| vertex_normals[v as usize] += n);
+    }
+    vertex_normals
+        .iter()
+        .map(|n| n.normalize_or_zero().element_sum())
+        .sum()
+}
+
+/// `a` and `b` agree to about 1e-9, relative.
+pub fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
+}
+
+/// Tells the person running the tests that `what` did not run and why. Written to stderr
+/// directly: libtest captures `eprintln!` of a passing test, and a skip must be seen.
+pub fn report_skip(what: &str, why: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "SKIPPED {what}: {why}");
+}

@@ -1,0 +1,16 @@
+//! The lab's conformance suite on the OpenMesh baseline (compiled in when OpenMesh is
+//! installed; see README.md).
+
+#[cfg(has_openmesh)]
+topolab_structures::conformance!(openmesh, topolab::openmesh::OpenMesh);
+
+#[cfg(not(has_openmesh))]
+mod common;
+
+#[cfg(not(has_openmesh))]
+#[test]
+fn skipped_openmesh_not_compiled_in() {
+    common::report_skip("openmesh conformance", topolab::OPENMESH_MISSING);
+    // Without OpenMesh the registry must not offer it.
+    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
+}

@@ -1,0 +1,258 @@
+//! The OpenMesh baseline's native C++ sweeps and workloads give the lab's checksums, and its
+//! construction reports problems the way the lab's structures do.
+
+#[cfg(not(has_openmesh))]
+#[test]
+fn skipped_openmesh_not_compiled_in() {
+    common::report_skip("openmesh native sweeps", topolab::OPENMESH_MISSING);
+    // Without OpenMesh the registry must not offer it.
+    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
+}
+
+mod common;
+
+#[cfg(has_openmesh)]
+mod native {
+    use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
+    use glam::DVec3;
+    use std::sync::{Mutex, MutexGuard};
+    use topolab::openmesh::OpenMesh;
+    use topolab_structures::meshes::{self, RandomMeshParams};
+    use topolab_structures::{MeshTopology, Operator, PolygonSoup, VertexId, VertexList};
+
+    /// The tests of this file run one at a time: the heap measurement (glibc `mallinfo2`) counts
+    /// every thread's allocations, so another test allocating meanwhile would distort it.
+    fn one_at_a_time() -> MutexGuard<'static, ()> {
+        static LOCK: Mutex<()> = Mutex::new(());
+        LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+
+    /// A torus (closed), a triangle grid (boundary), a quad grid and mixed polygons (PolyMesh),
+    /// and a shuffled random mesh with holes and corner-touching cells.
+    fn meshes() -> Vec<(&'static str, PolygonSoup)> {
+        vec![
+            ("torus", meshes::torus(12, 7)),
+            ("grid", meshes::grid(6, 4, true)),
+            ("quad-grid", meshes::grid(5, 3, false)),
+            ("mixed-polygons", meshes::mixed_polygons()),
+            (
+                "random",
+                meshes::random_mesh(7, RandomMeshParams::default()),
+            ),
+        ]
+    }
+
+    #[test]
+    fn native_sweeps_equal_the_checksums_of_the_lab() {
+        let _serial = one_at_a_time();
+        for (name, soup) in meshes() {
+            let om = OpenMesh::from_soup(&soup).unwrap();
+            let reference = VertexList::from_soup(&soup).unwrap();
+            for op in Operator::ALL {
+                let expected = checksum(&reference, op);
+                assert_eq!(
+                    om.native_sweep(op.name()),
+                    Some(expected),
+                    "{} on {name}",
+                    op.name()
+                );
+                // The per-query FFI path agrees too.
+                assert_eq!(
+                    checksum(&om, op),
+                    expected,
+                    "{} per query on {name}",
+                    op.name()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn checksums_see_the_boundary() {
+        let _serial = one_at_a_time();
+        let om = OpenMesh::from_soup(&meshes::grid(6, 4, true)).unwrap();
+        for kernel in ["boundary-vertex", "boundary-edge", "boundary-curves"] {
+            assert_ne!(om.native_sweep(kernel), Some(0), "{kernel} on a grid");
+        }
+        assert_eq!(om.native_sweep("no-such-kernel"), None);
+    }
+
+    #[test]
+    fn sampled_kernels_sum_the_sampled_queries_only() {
+        let _serial = one_at_a_time();
+        for (name, soup) in meshes() {
+            let om = OpenMesh::from_soup(&soup).unwrap();
+            let reference = VertexList::from_soup(&soup).unwrap();
+            for op in Operator::ALL {
+                if op == Operator::BoundaryCurves {
+                    assert_eq!(om.native_sampled(op.name(), &[0]), None);
+                    continue;
+                }
+                let n = query_count(&reference, op) as u32;
+                // Repeated ids count twice, like repeated queries.
+                let ids = [n - 1, 0, n / 2, n / 2];
+                let native = om.native_sampled(op.name(), &ids);
+                assert_eq!(
+                    native,
+                    Some(sampled(&om, op, &ids)),
+                    "sampled {} on {name}",
+                    op.name()
+                );
+                // Vertex and face ids are the input's in every structure (edge ids are not).
+                if !matches!(
+                    op,
+                    Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge
+                ) {
+                    assert_eq!(
+                        native,
+                        Some(sampled(&reference, op, &ids)),
+                        "{} vs vertex-list",
+                        op.name()
+                    );
+                }
+                assert_eq!(om.native_sampled(op.name(), &[n]), None, "id out of range");
+            }
+        }
+    }
+
+    #[test]
+    fn trimesh_for_triangles_polymesh_for_polygons() {
+        let _serial = one_at_a_time();
+        assert!(OpenMesh::from_soup(&meshes::torus(4, 3))
+            .unwrap()
+            .is_trimesh());
+        assert!(!OpenMesh::from_soup(&meshes::quad_cube())
+            .unwrap()
+            .is_trimesh());
+        assert!(!OpenMesh::from_soup(&meshes::mixed_polygons())
+            .unwrap()
+            .is_trimesh());
+    }
+
+    #[test]
+    fn workloads_compute_what_the_benchmark_says() {
+        let _serial = one_at_a_time();
+        for (name, soup) in meshes() {
+            let mut om = OpenMesh::from_soup(&soup).unwrap();
+            let reference = VertexList::from_soup(&soup).unwrap();
+            let circulators = om.native_workload("circulators").unwrap();
+            assert_eq!(
+                circulators,
+                soup.num_corners() as f64,
+                "circulators on {name}"
+            );
+
+            let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
+            let barycenter = om.native_workload("barycenter").unwrap();
+            assert!(
+                close(barycenter, mean.element_sum()),
+                "barycenter on {name}"
+            );
+
+            let expected = uniform_vertex_normals_sum(&soup);
+            assert!(om.prepare_workload("normals"));
+            let normals = om.native_workload("normals").unwrap();
+            assert!(
+                close(normals, expected),
+                "normals on {name}: {normals} vs {expected}"
+            );
+
+            let smoothed: Vec<DVec3> = (0..soup.num_vertices())
+                .map(|v| {
+                    let v = VertexId::new(v);
+                    let (mut sum, mut k) = (DVec3::ZERO, 0.0);
+                    reference.vertex_vertices(v, |w| {
+                        sum += soup.positions[w.index()];
+                        k += 1.0;
+                    });
+                    if reference.is_boundary_vertex(v) || k == 0.0 {
+                        soup.positions[v.index()]
+                    } else {
+                        sum / k
+                    }
+                })
+                .collect();
+            let expected: f64 = smoothed.iter().map(|p| p.element_sum()).sum();
+            let smoothing = om.native_workload("smoothing").unwrap();
+            assert!(close(smoothing, expected), "smoothing on {name}");
+            for (v, p) in smoothed.iter().enumerate() {
+                let q = om.position(VertexId::new(v));
+                assert!(
+                    (q - *p).length() < 1e-12,
+                    "smoothing moved v{v} to {q}, expected {p}"
+                );
+            }
+            assert_eq!(om.native_workload("no-such-workload"), None);
+        }
+    }
+
+    #[test]
+    fn heap_bytes_are_what_the_array_kernel_needs() {
+        let _serial = one_at_a_time();
+        // 28 B per vertex, 32 per edge, 4 per face: about 66 B per triangle of a closed mesh.
+        let soup = meshes::torus_with_triangles(60_000);
+        let om = OpenMesh::from_soup(&soup).unwrap();
+        let per_face = om.heap_bytes() as f64 / soup.num_faces() as f64;
+        eprintln!("OpenMesh heap: {per_face:.1} bytes per face");
+        assert!(
+            (60.0..100.0).contains(&per_face),
+            "{per_face} heap bytes per face"
+        );
+    }
+
+    /// Three triangles on one edge, then two triangles traversing their shared edge the same way.
+    fn broken_soups() -> Vec<PolygonSoup> {
+        let positions = (0..5)
+            .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0))
+            .collect();
+        vec![
+            PolygonSoup::from_polygons(positions, &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]),
+            PolygonSoup::from_polygons(
+                (0..4).map(|i| DVec3::new(i as f64, 0.0, 1.0)).collect(),
+                &[[0u32, 1, 2], [0, 1, 3]],
+            ),
+        ]
+    }
+
+    #[test]
+    fn refusals_name_elements_like_the_lab() {
+        let _serial = one_at_a_time();
+        for soup in broken_soups() {
+            let lab = VertexList::from_soup(&soup).unwrap_err().to_string();
+            let checked = OpenMesh::from_soup(&soup).unwrap_err().to_string();
+            // OpenMesh's own add_face refuses the face too; the error still names it the lab's way.
+            let native = OpenMesh::build_native(&soup, 8).unwrap_err().to_string();
+            assert_eq!(checked, lab);
+            assert_eq!(native, lab);
+        }
+    }
+
+    /// A closed tetrahedron plus a triangle at its vertex 0, the triangle first or last.
+    fn closed_fan_soups() -> Vec<PolygonSoup> {
+        let tetrahedron = meshes::closed_tetrahedron();
+        let mut positions = tetrahedron.positions.clone();
+        positions.extend([DVec3::new(5.0, 5.0, 5.0), DVec3::new(6.0, 5.0, 5.0)]);
+        let faces: Vec<Vec<u32>> = tetrahedron.faces().map(|f| f.to_vec()).collect();
+        let triangle = vec![0u32, 4, 5];
+        let last: Vec<Vec<u32>> = faces.iter().cloned().chain([triangle.clone()]).collect();
+        let first: Vec<Vec<u32>> = [triangle].into_iter().chain(faces).collect();
+        vec![
+            PolygonSoup::from_polygons(positions.clone(), &last),
+            PolygonSoup::from_polygons(positions, &first),
+        ]
+    }
+
+    #[test]
+    fn a_closed_fan_at_a_non_manifold_vertex_is_refused_in_any_order() {
+        let _serial = one_at_a_time();
+        for soup in closed_fan_soups() {
+            let checked = OpenMesh::from_soup(&soup).unwrap_err();
+            assert_eq!(checked.kind(), "non-manifold-vertex", "{checked}");
+            // OpenMesh's add_face refuses it as well ("complex vertex"), named the same way.
+            let native = OpenMesh::build_native(&soup, 16).unwrap_err();
+            assert_eq!(native.to_string(), checked.to_string());
+        }
+        // Open fans (the bowtie) are stored; the conformance suite checks the answers.
+        assert!(OpenMesh::from_soup(&meshes::bowtie()).is_ok());
+    }
+}
