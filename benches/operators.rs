@@ -8,7 +8,7 @@
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, Throughput};
 use std::time::Duration;
-use topolab_structures::registry::{self, StructureVisitor};
+use topolab::registry::{self, StructureVisitor};
 use topolab_harness::kernels::{run, run_workload, sample_queries, Queries, QuerySet, Workload, WorkloadBuffers};
 use topolab_structures::{meshes, BoundaryCurves, MeshTopology, Operator, PolygonSoup};
 

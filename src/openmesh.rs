@@ -650,4 +650,16 @@ impl MeshTopology for OpenMesh {
         }
         Ok(())
     }
+
+    fn native_sweep(&self, op: Operator) -> Option<u64> {
+        OpenMesh::native_sweep(self, op.name())
+    }
+
+    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
+        OpenMesh::native_sampled(self, op.name(), ids)
+    }
+
+    fn native_workload(&mut self, name: &str) -> Option<f64> {
+        OpenMesh::native_workload(self, name)
+    }
 }

@@ -13,7 +13,7 @@ use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
-use topolab_structures::registry::{self, StructureVisitor};
+use crate::registry::{self, StructureVisitor};
 use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.

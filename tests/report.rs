@@ -3,7 +3,8 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use topolab_structures::{registry, Operator};
+use topolab::registry;
+use topolab_structures::Operator;
 
 fn out_dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("topolab-test-{name}-{}", std::process::id()));

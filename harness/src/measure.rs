@@ -115,7 +115,7 @@ pub fn measure_structure<M: MeshTopology>(
     let before = meter.current();
     let built = M::from_soup(case.soup);
     let peak = meter.peak().saturating_sub(before);
-    let m = match built {
+    let mut m = match built {
         Ok(m) => m,
         Err(e) => {
             cons.status = Status::Refused;

@@ -302,7 +302,9 @@ pub trait MeshTopology: Sized {
     }
 
     /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
-    fn native_workload(&self, name: &str) -> Option<f64> {
+    /// Takes `&mut self` because a baseline may keep its results (normals) in the mesh; running
+    /// it twice must give the same result.
+    fn native_workload(&mut self, name: &str) -> Option<f64> {
         let _ = name;
         None
     }
