@@ -8,6 +8,10 @@
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
+//! | [`CheL0`] | `che-l0` | Compact Half-Edge level 0: `G[]`, `V[]` (triangle soup) | no | no |
+//! | [`CheL1`] | `che-l1` | CHE level 1: + opposite half-edges `O[]` | no | no |
+//! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
+//! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -15,6 +19,7 @@
 #![forbid(unsafe_code)]
 
 pub mod attributes;
+pub mod che;
 pub mod conformance;
 mod corner_scan;
 pub mod error;
@@ -30,6 +35,7 @@ pub mod topology;
 pub mod vertex_list;
 
 pub use attributes::{MeshAttributes, Plane};
+pub use che::{CheL0, CheL1, CheL2, CheL3};
 pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};

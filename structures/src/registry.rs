@@ -5,7 +5,7 @@
 //! each structure, so nothing goes through `dyn`.
 
 use crate::topology::MeshTopology;
-use crate::{ExplicitStorage, VertexList};
+use crate::{CheL0, CheL1, CheL2, CheL3, ExplicitStorage, VertexList};
 
 /// Code generic over a structure, run for a structure named at run time.
 pub trait StructureVisitor {
@@ -32,4 +32,4 @@ macro_rules! structures {
     };
 }
 
-structures!(ExplicitStorage, VertexList);
+structures!(ExplicitStorage, VertexList, CheL0, CheL1, CheL2, CheL3);

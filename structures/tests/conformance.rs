@@ -1,7 +1,11 @@
 //! The conformance suite, one line per structure.
 
 use topolab_structures::conformance;
-use topolab_structures::{ExplicitStorage, VertexList};
+use topolab_structures::{CheL0, CheL1, CheL2, CheL3, ExplicitStorage, VertexList};
 
 conformance!(explicit, ExplicitStorage);
 conformance!(vertex_list, VertexList);
+conformance!(che_l0, CheL0);
+conformance!(che_l1, CheL1);
+conformance!(che_l2, CheL2);
+conformance!(che_l3, CheL3);
