@@ -163,7 +163,7 @@ impl CheLevel for CheL0 {
     }
 
     /// Algorithm 9: one scan of `V[]` for the half-edges opposite to any of `t`'s three.
-    fn face_faces(&self, t: u32, mut f: impl FnMut(FaceId)) {
+    fn triangles_across(&self, t: u32, mut f: impl FnMut(FaceId)) {
         let own = [0, 1, 2].map(|i| {
             let he = 3 * t + i;
             (self.v[he as usize], self.v[next(he) as usize])

@@ -168,18 +168,18 @@ impl CheLevel for CheL2 {
     }
 
     /// `O[VH[v]] < 0` (§4.3).
-    fn is_boundary_vertex(&self, v: u32) -> bool {
+    fn vertex_on_boundary(&self, v: u32) -> bool {
         let he = self.vh[v as usize];
         he >= 0 && self.l1.opposite()[he as usize] < 0
     }
 
-    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
         for &he in &self.eh {
             f(EdgeId(he));
         }
     }
 
-    fn num_edges(&self) -> usize {
+    fn edge_count(&self) -> usize {
         self.eh.len()
     }
 }

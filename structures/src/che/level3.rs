@@ -138,24 +138,24 @@ impl CheLevel for CheL3 {
         self.l2.edge_of(he)
     }
 
-    fn is_boundary_vertex(&self, v: u32) -> bool {
-        CheLevel::is_boundary_vertex(&self.l2, v)
+    fn vertex_on_boundary(&self, v: u32) -> bool {
+        self.l2.vertex_on_boundary(v)
     }
 
-    fn face_faces(&self, t: u32, f: impl FnMut(FaceId)) {
-        CheLevel::face_faces(&self.l2, t, f)
+    fn triangles_across(&self, t: u32, f: impl FnMut(FaceId)) {
+        self.l2.triangles_across(t, f)
     }
 
-    fn for_each_edge(&self, f: impl FnMut(EdgeId)) {
-        CheLevel::for_each_edge(&self.l2, f)
+    fn each_edge(&self, f: impl FnMut(EdgeId)) {
+        self.l2.each_edge(f)
     }
 
-    fn num_edges(&self) -> usize {
-        CheLevel::num_edges(&self.l2)
+    fn edge_count(&self) -> usize {
+        self.l2.edge_count()
     }
 
     /// Algorithm 10 (§4.6): each curve walked from its half-edge in `CH[]`, O(∂n1).
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+    fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         for &he in &self.ch {
             walk_boundary_curve(he, |h| self.twin(h), out);

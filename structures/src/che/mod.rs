@@ -180,12 +180,12 @@ pub trait CheLevel {
     }
 
     /// Is `v` on the boundary? Defaults to walking the star (levels 0 and 1).
-    fn is_boundary_vertex(&self, v: u32) -> bool {
+    fn vertex_on_boundary(&self, v: u32) -> bool {
         self.vertex_star(v, |_| {}, |_| {}).is_some()
     }
 
     /// R22 of triangle `t`. Defaults to the triangles across its three half-edges.
-    fn face_faces(&self, t: u32, mut f: impl FnMut(FaceId)) {
+    fn triangles_across(&self, t: u32, mut f: impl FnMut(FaceId)) {
         for he in 3 * t..3 * t + 3 {
             if let Some(o) = self.twin(he) {
                 f(FaceId(triangle(o)));
@@ -194,7 +194,7 @@ pub trait CheLevel {
     }
 
     /// Every edge once. Defaults to the half-edges that are the smaller of their pair.
-    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
         for he in 0..self.start_vertices().len() as u32 {
             if self.twin(he).is_none_or(|o| he < o) {
                 f(EdgeId(he));
@@ -202,16 +202,16 @@ pub trait CheLevel {
         }
     }
 
-    /// Number of edges. Defaults to counting [`CheLevel::for_each_edge`].
-    fn num_edges(&self) -> usize {
+    /// Number of edges. Defaults to counting [`CheLevel::each_edge`].
+    fn edge_count(&self) -> usize {
         let mut n = 0;
-        self.for_each_edge(|_| n += 1);
+        self.each_edge(|_| n += 1);
         n
     }
 
     /// The boundary curves. Defaults to the scan of levels 0–2 (§4.6): every boundary
     /// half-edge not yet on a written curve starts a new curve.
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+    fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         for he in 0..self.start_vertices().len() as u32 {
             if self.twin(he).is_none() && !out.edges.contains(&EdgeId(he)) {
@@ -320,13 +320,13 @@ macro_rules! che_topology {
                 self.geometry().len()
             }
             fn num_edges(&self) -> usize {
-                $crate::che::CheLevel::num_edges(self)
+                $crate::che::CheLevel::edge_count(self)
             }
             fn num_faces(&self) -> usize {
                 self.start_vertices().len() / 3
             }
             fn for_each_edge(&self, f: impl FnMut($crate::ids::EdgeId)) {
-                $crate::che::CheLevel::for_each_edge(self, f)
+                $crate::che::CheLevel::each_edge(self, f)
             }
             fn position(&self, v: $crate::ids::VertexId) -> glam::DVec3 {
                 self.geometry()[v.index()]
@@ -409,16 +409,16 @@ macro_rules! che_topology {
                 }
             }
             fn face_faces(&self, face: $crate::ids::FaceId, f: impl FnMut($crate::ids::FaceId)) {
-                $crate::che::CheLevel::face_faces(self, face.0, f)
+                $crate::che::CheLevel::triangles_across(self, face.0, f)
             }
             fn is_boundary_vertex(&self, v: $crate::ids::VertexId) -> bool {
-                $crate::che::CheLevel::is_boundary_vertex(self, v.0)
+                $crate::che::CheLevel::vertex_on_boundary(self, v.0)
             }
             fn is_boundary_edge(&self, e: $crate::ids::EdgeId) -> bool {
                 self.twin(e.0).is_none()
             }
             fn boundary_curves(&self, out: &mut $crate::topology::BoundaryCurves) {
-                $crate::che::CheLevel::boundary_curves(self, out)
+                $crate::che::CheLevel::walk_boundary_curves(self, out)
             }
             fn edge_successor(
                 &self,
