@@ -46,6 +46,13 @@ pub enum Command {
         /// Explain this mesh (a file or built-in mesh) instead of the open tetrahedron.
         #[arg(long)]
         mesh: Option<String>,
+        /// With `explain che`: print the steps of this relation's algorithm at each level
+        /// (`r00`, `r01` or `r02`: the vertex star) instead of the containers.
+        #[arg(long, requires = "vertex")]
+        trace: Option<String>,
+        /// The vertex whose star `--trace` follows.
+        #[arg(long)]
+        vertex: Option<u32>,
     },
 }
 
@@ -58,7 +65,23 @@ pub fn run(cli: Cli) -> u8 {
             structure,
             json,
         } => info(&mesh, &structure, json),
-        Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+        Command::Explain {
+            name,
+            mesh,
+            trace,
+            vertex,
+        } if name == crate::explain_che::NAME => {
+            crate::explain_che::explain_che(mesh.as_deref(), trace.as_deref(), vertex)
+        }
+        Command::Explain {
+            name, mesh, trace, ..
+        } => match trace {
+            Some(_) => Err(Failure::usage(format!(
+                "--trace works with `explain {}` only",
+                crate::explain_che::NAME
+            ))),
+            None => explain(&name, mesh.as_deref()),
+        },
     };
     match result {
         Ok(text) => {
@@ -88,7 +111,7 @@ impl Failure {
             code: 2,
         }
     }
-    fn usage(message: String) -> Self {
+    pub(crate) fn usage(message: String) -> Self {
         Self { message, code: 2 }
     }
 }
@@ -286,14 +309,19 @@ impl StructureVisitor for ExplainVisit<'_> {
     }
 }
 
-fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
-    let (soup, label) = match mesh {
+/// The mesh `explain` shows: the one named, or the open tetrahedron; with a label for it.
+pub(crate) fn mesh_or_tetrahedron(mesh: Option<&str>) -> Result<(PolygonSoup, String), Failure> {
+    Ok(match mesh {
         Some(spec) => (load_mesh(spec)?, spec.to_string()),
         None => (
             meshes::open_tetrahedron(),
             "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
         ),
-    };
+    })
+}
+
+fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let (soup, label) = mesh_or_tetrahedron(mesh)?;
     let text = registry::visit(name, ExplainVisit(&soup))
         .ok_or_else(|| unknown_structure(name))?
         .map_err(|e| Failure {

@@ -75,10 +75,13 @@ impl CheL0 {
         &self.g
     }
 
-    /// The scan of Algorithm 8: the half-edge from `b` to `a` for the half-edge `a → b`.
-    fn find_half_edge(&self, a: u32, b: u32) -> Option<u32> {
-        (0..self.v.len() as u32)
-            .find(|&he| self.v[he as usize] == a && self.v[next(he) as usize] == b)
+    /// The scan of Algorithm 8: the half-edge from `a` to `b`, each `V[]` read reported.
+    fn find_half_edge(&self, a: u32, b: u32, mut trace: impl FnMut(StarRead)) -> Option<u32> {
+        (0..self.v.len() as u32).find(|&he| {
+            let start = self.v[he as usize];
+            trace(StarRead::Vertex { he, vertex: start });
+            start == a && self.v[next(he) as usize] == b
+        })
     }
 
     fn check_containers(&self) -> Result<()> {
@@ -132,8 +135,10 @@ impl CheLevel for CheL0 {
         &self.v
     }
 
-    /// Algorithm 5: every half-edge leaving `v` is found by scanning `V[]`; the boundary
-    /// half-edge entering `v` comes from [`LoneNeighbour`] and one more scan.
+    /// Algorithm 5: every half-edge leaving `v` is found by scanning `V[]`; the chapter
+    /// gathers the star's simplices in a set, which a query may not allocate, so the
+    /// boundary half-edge entering `v` (the one simplex not met as a half-edge leaving `v`)
+    /// comes from [`LoneNeighbour`] and a second scan.
     fn vertex_star(
         &self,
         v: u32,
@@ -147,10 +152,15 @@ impl CheLevel for CheL0 {
             if start == v {
                 trace(StarRead::Corner { he });
                 corner(he);
-                lone.add(self.v[prev(he) as usize], self.v[next(he) as usize]);
+                let entering_from = self.v[prev(he) as usize];
+                trace(StarRead::Vertex {
+                    he: prev(he),
+                    vertex: entering_from,
+                });
+                lone.add(entering_from, self.v[next(he) as usize]);
             }
         }
-        let closing = self.find_half_edge(lone.vertex()?, v);
+        let closing = self.find_half_edge(lone.vertex()?, v, &mut trace);
         if let Some(he) = closing {
             trace(StarRead::Closing { he });
         }
@@ -159,7 +169,7 @@ impl CheLevel for CheL0 {
 
     /// Algorithm 8's scan for the half-edge with the same vertices in the other direction.
     fn twin(&self, he: u32) -> Option<u32> {
-        self.find_half_edge(self.v[next(he) as usize], self.v[he as usize])
+        self.find_half_edge(self.v[next(he) as usize], self.v[he as usize], |_| {})
     }
 
     /// Algorithm 9: one scan of `V[]` for the half-edges opposite to any of `t`'s three.
