@@ -1,7 +1,7 @@
 //! Construction of the CHE containers: the chapter's Algorithms 1–4 as written, and the fast
 //! construction of `O[]` and `EH` that produces identical containers without hashing.
 
-use super::{next, next_boundary_half_edge, sweep_star};
+use super::{fan_walk_algorithm_7, next, next_boundary_half_edge};
 use crate::error::{Error, Result};
 use crate::soup::PolygonSoup;
 use glam::DVec3;
@@ -20,8 +20,9 @@ pub(crate) struct Checked {
     pub vh: Vec<i32>,
 }
 
-/// Level 0 of a soup: `G[]` and `V[]` after refusing what no CHE level stores (polygons,
-/// unreadable input, more half-edges than `i32` can number).
+/// Level 0 of a soup: `G[]` and `V[]` after refusing polygons and more half-edges than `i32`
+/// can number. Indices, repeated vertices and coordinates are checked by the caller: the
+/// chapter's construction through [`PolygonSoup::check`], the fast one on its way.
 fn level0_containers(
     soup: &PolygonSoup,
     structure: &'static str,
@@ -34,8 +35,7 @@ fn level0_containers(
             corners,
         });
     }
-    soup.check()?;
-    if soup.num_corners() > i32::MAX as usize {
+    if soup.num_corners() > i32::MAX as usize || soup.num_vertices() >= u32::MAX as usize {
         return Err(Error::TooLarge {
             what: "half-edges",
             count: soup.num_corners() as u64,
@@ -56,10 +56,15 @@ fn refusal(soup: &PolygonSoup, structure: &'static str) -> Error {
     }
 }
 
-/// Fast construction: `O[]` by [`opposites_by_buckets`], `VH[]` by Algorithm 3, then one fan
-/// walk per vertex to refuse non-manifold vertices. O(n) with no hashing.
+/// Fast construction: `O[]` by [`opposites_by_buckets`] (which also rejects bad indices and
+/// repeated vertices), `VH[]` by Algorithm 3, then one fan walk per vertex to refuse
+/// non-manifold vertices. O(n) with no hashing; any problem found is reported by the shared
+/// checks ([`refusal`]), so both constructions name it alike.
 pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<Checked> {
     let (g, v) = level0_containers(soup, structure)?;
+    if !g.iter().all(|p| p.is_finite()) {
+        return Err(refusal(soup, structure));
+    }
     let o = opposites_by_buckets(&v, g.len()).ok_or_else(|| refusal(soup, structure))?;
     let vh = vertex_half_edges_algorithm_3(&v, &o, g.len());
     if !every_vertex_one_fan(&o, &vh) {
@@ -72,7 +77,7 @@ pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<
 /// Algorithm 1 (`O[]` through a map) and Algorithm 3 (`VH[]`).
 pub(crate) fn build_chapter(soup: &PolygonSoup, structure: &'static str) -> Result<Checked> {
     let (g, v) = level0_containers(soup, structure)?;
-    soup.connectivity()?.check_vertex_fans(soup)?;
+    soup.connectivity()?.check_vertex_fans(soup)?; // includes PolygonSoup::check
     let o = opposites_algorithm_1(&v);
     let vh = vertex_half_edges_algorithm_3(&v, &o, g.len());
     Ok(Checked { g, v, o, vh })
@@ -102,48 +107,56 @@ pub fn opposites_algorithm_1(v: &[u32]) -> Vec<i32> {
 }
 
 /// The same `O[]` as [`opposites_algorithm_1`] without a map: a counting sort puts every
-/// half-edge in the bucket of its smaller vertex (two sequential passes), and the opposite
-/// half-edges are then neighbours in a bucket of a few entries (sorted by the larger vertex).
+/// half-edge in the bucket of its smaller vertex (two sequential passes over `V[]`), and the
+/// opposite half-edges are then neighbours in a bucket of a few entries, once sorted by
+/// their larger vertex.
 ///
-/// Returns `None` when three half-edges share an edge or two traverse it in the same
-/// direction (a non-manifold edge or inconsistent orientation). `num_vertices` bounds `V[]`.
+/// Returns `None` when a triangle names a vertex `>= num_vertices` or one vertex twice, or
+/// when three half-edges share an edge or two traverse it in the same direction (a
+/// non-manifold edge or inconsistent orientation).
 pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
-    // start[a + 1]: how many half-edges have smaller vertex a; then the prefix sums.
-    let mut start = vec![0u32; num_vertices + 1];
+    let n = num_vertices as u32;
+    // start[a + 2] counts the half-edges whose smaller vertex is a; after the prefix sums
+    // start[a + 1] is where bucket a begins, and after the scatter (which advances it) where
+    // it ends, so bucket a is start[a]..start[a + 1].
+    let mut start = vec![0u32; num_vertices + 2];
     for t in v.chunks_exact(3) {
-        start[t[0].min(t[1]) as usize + 1] += 1;
-        start[t[1].min(t[2]) as usize + 1] += 1;
-        start[t[2].min(t[0]) as usize + 1] += 1;
+        let (a, b, c) = (t[0], t[1], t[2]);
+        if a >= n || b >= n || c >= n || a == b || b == c || c == a {
+            return None;
+        }
+        start[a.min(b) as usize + 2] += 1;
+        start[b.min(c) as usize + 2] += 1;
+        start[c.min(a) as usize + 2] += 1;
     }
-    for a in 0..num_vertices {
-        start[a + 1] += start[a];
+    for a in 2..start.len() {
+        start[a] += start[a - 1];
     }
-    // bucket: per smaller vertex, its half-edges as (larger vertex << 32 | half-edge).
+    // Per smaller vertex, its half-edges keyed by their larger vertex: (larger << 32) | he.
     let mut bucket = vec![0u64; v.len()];
-    let mut fill = start.clone();
     for (t, corners) in v.chunks_exact(3).enumerate() {
         for i in 0..3 {
             let (a, b) = (corners[i], corners[(i + 1) % 3]);
-            let slot = &mut fill[a.min(b) as usize];
+            let slot = &mut start[a.min(b) as usize + 1];
             bucket[*slot as usize] = ((a.max(b) as u64) << 32) | (3 * t + i) as u64;
             *slot += 1;
         }
     }
     let mut o = vec![-1i32; v.len()];
     for a in 0..num_vertices {
-        let entries = &mut bucket[start[a] as usize..start[a + 1] as usize];
-        entries.sort_unstable();
+        let keyed = &mut bucket[start[a] as usize..start[a + 1] as usize];
+        keyed.sort_unstable();
         let mut i = 0;
-        while i < entries.len() {
-            let larger = entries[i] >> 32;
-            let same = entries[i..]
+        while i < keyed.len() {
+            let larger = keyed[i] >> 32;
+            let same = keyed[i..]
                 .iter()
                 .take_while(|&&x| x >> 32 == larger)
                 .count();
             match same {
                 1 => {}
                 2 => {
-                    let (h0, h1) = (entries[i] as u32, entries[i + 1] as u32);
+                    let (h0, h1) = (keyed[i] as u32, keyed[i + 1] as u32);
                     if v[h0 as usize] == v[h1 as usize] {
                         return None;
                     }
@@ -178,7 +191,7 @@ pub fn vertex_half_edges_algorithm_3(v: &[u32], o: &[i32], num_vertices: usize) 
 fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
     let mut reached = 0usize;
     for &start in vh.iter().filter(|&&h| h >= 0) {
-        sweep_star(o, start as u32, |_| {}, |_| reached += 1);
+        fan_walk_algorithm_7(o, start as u32, |_| {}, |_| reached += 1);
     }
     reached == o.len()
 }

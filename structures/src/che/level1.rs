@@ -4,7 +4,7 @@
 
 use super::build::{build_chapter, build_fast, Checked};
 use super::{
-    che_topology, next, print_container, sweep_star, vec_bytes, CheL0, CheLevel, StarRead,
+    che_topology, fan_walk_algorithm_7, next, print_container, vec_bytes, CheL0, CheLevel, StarRead,
 };
 use crate::error::{Error, Result};
 use crate::ids::EdgeId;
@@ -158,7 +158,7 @@ impl CheLevel for CheL1 {
                 break;
             }
         }
-        sweep_star(&self.o, h, trace, corner)
+        fan_walk_algorithm_7(&self.o, h, trace, corner)
     }
 
     #[inline(always)]

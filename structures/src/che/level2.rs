@@ -3,7 +3,7 @@
 //! star starts at `VH[v]` (Algorithm 7): O(deg v).
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
-use super::{che_topology, level1::level1_cost, print_container, sweep_star, vec_bytes};
+use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
 use crate::error::{Error, Result};
 use crate::ids::EdgeId;
@@ -154,7 +154,7 @@ impl CheLevel for CheL2 {
         if he < 0 {
             return None;
         }
-        sweep_star(self.l1.opposite(), he as u32, trace, corner)
+        fan_walk_algorithm_7(self.l1.opposite(), he as u32, trace, corner)
     }
 
     #[inline(always)]

@@ -63,7 +63,7 @@
 //! `from_soup_chapter` the chapter's algorithms; a proptest checks they agree.
 //!
 //! Note on the pseudo-code: Algorithms 6 and 7 step `h ← next(O[h])`, which from the boundary
-//! half-edge stored in `VH[v]` stops at once; the walk here ([`sweep_star`]) turns the other
+//! half-edge stored in `VH[v]` stops at once; the walk here ([`fan_walk_algorithm_7`]) turns the other
 //! way, `h ← O[prev(h)]`, which from that half-edge reaches every triangle of the star.
 //! Algorithm 10 steps `next(O[next(he)])` even when `next(he)` is on the boundary; the walk
 //! here ([`next_boundary_half_edge`]) is Algorithm 4's inner loop, which stops there.
@@ -257,7 +257,7 @@ pub fn next_boundary_half_edge(he: u32, twin: impl Fn(u32) -> Option<u32>) -> u3
 /// From a boundary half-edge (what `VH[v]` stores for a boundary vertex) it reaches the whole
 /// fan; see the module docs for why it does not step `next(O[h])` as the pseudo-code writes.
 #[inline(always)]
-pub fn sweep_star(
+pub fn fan_walk_algorithm_7(
     o: &[i32],
     start: u32,
     mut trace: impl FnMut(StarRead),
