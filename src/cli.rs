@@ -41,7 +41,7 @@ pub enum Command {
     },
     /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
     Explain {
-        /// The structure (see `topolab list`).
+        /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
         name: String,
         /// Explain this mesh (a file or built-in mesh) instead of the open tetrahedron.
         #[arg(long)]

@@ -138,7 +138,7 @@ impl CheLevel for CheL0 {
     /// Algorithm 5: every half-edge leaving `v` is found by scanning `V[]`; the chapter
     /// gathers the star's simplices in a set, which a query may not allocate, so the
     /// boundary half-edge entering `v` (the one simplex not met as a half-edge leaving `v`)
-    /// comes from [`LoneNeighbour`] and a second scan.
+    /// comes from sums over the scan (see the module docs) and a second scan.
     fn vertex_star(
         &self,
         v: u32,

@@ -28,10 +28,18 @@
 //! | R11, R12 | O(n2) Algorithm 8 | O(1) | O(1) | O(1) |
 //! | R20, R21 | O(1) | O(1) | O(1) | O(1) |
 //! | R22 | O(n2) Algorithm 9 | O(1) | O(1) | O(1) |
-//! | boundary vertex | O(n2) (one scan) | O(n2) (scan, then the fan) | O(1): `O[VH[v]] < 0` | O(1) |
+//! | boundary vertex | O(n2) (Algorithm 5's scan) | O(n2) (Algorithm 6) | O(1): `O[VH[v]] < 0` | O(1) |
 //! | boundary edge | O(n2) (Algorithm 8's scan) | O(1): `O[he] < 0` | O(1) | O(1) |
-//! | boundary curves | O(n2²): a scan per half-edge | O(n2) scan, §4.6 | O(n2) | O(∂n1) Algorithm 10 |
+//! | boundary curves | O(n2²): a scan per half-edge | O(n2) scan, §4.6 | O(n2) | O(∂n1) Algorithm 10 (each step turns around one vertex) |
 //! | successor, predecessor | O(1) | O(1) | O(1) | O(1) |
+//!
+//! At level 0 the chapter gathers a star's simplices in a set, which a query may not
+//! allocate: every edge and neighbour of a vertex is met as a half-edge leaving it except, at a
+//! boundary vertex, the boundary edge entering it, whose far end is recovered from sums over
+//! the same scan (the "missing number" of two lists) and its half-edge by a second scan.
+//! A level-0 edge's boundary test is Algorithm 8's scan, so `for_each_edge`, `num_edges` and
+//! the boundary curves of level 0 cost a scan per half-edge, O(n2²): keep level 0 to small
+//! meshes or to the operators Table 4.1 lists.
 //!
 //! Successor and predecessor are O(1) at every level: the three half-edges of the face are
 //! `3t..3t+3`, so the edge is found among them by its end vertices. The boundary curves of
@@ -42,16 +50,16 @@
 //!
 //! An edge is represented by one of its half-edges, as the chapter does (`E_id e = he`):
 //! `EdgeId(he)`. At level 0 there is no `O[]`, so *either* half-edge of an interior edge names
-//! it, and the relations answer with the half-edge they read; [`MeshTopology::for_each_edge`]
+//! it, and the relations answer with the half-edge they read; [`MeshTopology::for_each_edge`](crate::MeshTopology::for_each_edge)
 //! lists the smaller one. From level 1 on, answers always give the smaller half-edge
 //! `min(he, O[he])` (the boundary half-edge for a boundary edge): exactly the keys of level 2's
 //! `EH` (Algorithm 2).
 //!
 //! ## What is refused
 //!
-//! Triangles only ([`Error::NotTriangles`]). Non-manifold edges ([`Error::NonManifoldEdge`],
+//! Triangles only ([`Error::NotTriangles`](crate::Error::NotTriangles)). Non-manifold edges ([`Error::NonManifoldEdge`](crate::Error::NonManifoldEdge),
 //! naming the edge and its faces) and inconsistent orientation are refused as everywhere in
-//! the lab. Non-manifold vertices are refused ([`Error::NonManifoldVertex`]): `VH[v]` stores one
+//! the lab. Non-manifold vertices are refused ([`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex)): `VH[v]` stores one
 //! half-edge and the vertex star (Algorithms 6, 7) walks one fan, so a second fan would be
 //! silently missed.
 //!
