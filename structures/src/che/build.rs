@@ -142,7 +142,9 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
             *slot += 1;
         }
     }
-    let mut o = vec![-1i32; v.len()];
+    // Every half-edge is in exactly one bucket, so each O[he] is written below; zeroed memory
+    // comes from the allocator without a pass of its own.
+    let mut o = vec![0i32; v.len()];
     for a in 0..num_vertices {
         let keyed = &mut bucket[start[a] as usize..start[a + 1] as usize];
         keyed.sort_unstable();
@@ -154,7 +156,7 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
                 .take_while(|&&x| x >> 32 == larger)
                 .count();
             match same {
-                1 => {}
+                1 => o[keyed[i] as u32 as usize] = -1,
                 2 => {
                     let (h0, h1) = (keyed[i] as u32, keyed[i + 1] as u32);
                     if v[h0 as usize] == v[h1 as usize] {
