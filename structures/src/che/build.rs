@@ -20,9 +20,10 @@ pub(crate) struct Checked {
     pub vh: Vec<i32>,
 }
 
-/// Level 0 of a soup: `G[]` and `V[]` after refusing polygons and more half-edges than `i32`
-/// can number. Indices, repeated vertices and coordinates are checked by the caller: the
-/// chapter's construction through [`PolygonSoup::check`], the fast one on its way.
+/// Level 0 of a soup: `G[]` and `V[]` after refusing polygons and more half-edges or
+/// vertices than `i32` can number (`O[]` and `VH[]` hold them with the chapter's `-1`).
+/// Indices, repeated vertices and coordinates are checked by the caller: the chapter's
+/// construction through [`PolygonSoup::check`], the fast one on its way.
 fn level0_containers(
     soup: &PolygonSoup,
     structure: &'static str,
@@ -35,11 +36,16 @@ fn level0_containers(
             corners,
         });
     }
-    if soup.num_corners() > i32::MAX as usize || soup.num_vertices() >= u32::MAX as usize {
-        return Err(Error::TooLarge {
-            what: "half-edges",
-            count: soup.num_corners() as u64,
-        });
+    for (what, count, limit) in [
+        ("half-edges", soup.num_corners(), i32::MAX as usize),
+        ("vertices", soup.num_vertices(), i32::MAX as usize),
+    ] {
+        if count > limit {
+            return Err(Error::TooLarge {
+                what,
+                count: count as u64,
+            });
+        }
     }
     Ok((soup.positions.clone(), soup.indices().to_vec()))
 }
