@@ -94,30 +94,33 @@ fn star_trace<L: MeshTopology + CheLevel>(
     );
     let mut reads = 0;
     level.vertex_star(
-        v,
+        VertexId(v),
         |read| {
             let line = match read {
                 StarRead::Vertex { he, vertex } => {
                     reads += 1;
-                    format!("read V[{he}] = {vertex}")
+                    format!("read V[{}] = {}", he.0, vertex.0)
                 }
                 StarRead::Opposite { he, opposite } => {
                     reads += 1;
-                    format!("read O[{he}] = {opposite}")
+                    format!("read O[{}] = {opposite}", he.0)
                 }
                 StarRead::VertexHalfEdge { vertex, he } => {
                     reads += 1;
-                    format!("read VH[{vertex}] = {he}")
+                    format!("read VH[{}] = {he}", vertex.0)
                 }
                 StarRead::Corner { he } => format!(
-                    "triangle {} through half-edge {he} (leaves v{v}): neighbour V[{}] = {}",
-                    triangle(he),
-                    next(he),
-                    starts[next(he) as usize]
+                    "triangle {} through half-edge {} (leaves v{v}): neighbour V[{}] = {}",
+                    triangle(he).0,
+                    he.0,
+                    next(he).0,
+                    starts[next(he).index()]
                 ),
                 StarRead::Closing { he } => format!(
-                    "boundary half-edge {he} enters v{v}: neighbour V[{he}] = {}",
-                    starts[he as usize]
+                    "boundary half-edge {} enters v{v}: neighbour V[{}] = {}",
+                    he.0,
+                    he.0,
+                    starts[he.index()]
                 ),
             };
             let _ = writeln!(out, "  {line}");

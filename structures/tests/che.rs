@@ -194,10 +194,10 @@ fn level1_star_from_an_interior_first_half_edge() {
     for vertex in 0..soup.num_vertices() as u32 {
         let first = v.iter().position(|&x| x == vertex).unwrap();
         let mut l1_star = Vec::new();
-        let closing = l1.vertex_star(vertex, |_| {}, |h| l1_star.push(h));
+        let closing = l1.vertex_star(VertexId(vertex), |_| {}, |h| l1_star.push(h));
         let l2 = CheL2::from_soup(&soup).unwrap();
         let mut l2_star = Vec::new();
-        let l2_closing = l2.vertex_star(vertex, |_| {}, |h| l2_star.push(h));
+        let l2_closing = l2.vertex_star(VertexId(vertex), |_| {}, |h| l2_star.push(h));
         l1_star.sort_unstable();
         l2_star.sort_unstable();
         assert_eq!(l1_star, l2_star, "star of v{vertex}");
@@ -217,8 +217,14 @@ fn level1_star_from_an_interior_first_half_edge() {
 fn level2_star_reads_vh_then_opposites() {
     let l2 = CheL2::from_soup(&meshes::open_tetrahedron()).unwrap();
     let mut reads = Vec::new();
-    l2.vertex_star(3, |r| reads.push(r), |_| {});
-    assert_eq!(reads[0], che::StarRead::VertexHalfEdge { vertex: 3, he: 2 });
+    l2.vertex_star(VertexId(3), |r| reads.push(r), |_| {});
+    assert_eq!(
+        reads[0],
+        che::StarRead::VertexHalfEdge {
+            vertex: VertexId(3),
+            he: 2
+        }
+    );
     let opposites = reads
         .iter()
         .filter(|r| matches!(r, che::StarRead::Opposite { .. }))

@@ -1,8 +1,9 @@
 //! Construction of the CHE containers: the chapter's Algorithms 1–4 as written, and the fast
 //! construction of `O[]` and `EH` that produces identical containers without hashing.
 
-use super::{fan_walk_algorithm_7, next, next_boundary_half_edge};
+use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
 use crate::error::{Error, Result};
+use crate::ids::HalfEdgeId;
 use crate::soup::PolygonSoup;
 use glam::DVec3;
 use std::collections::{BTreeMap, HashMap};
@@ -97,7 +98,7 @@ pub fn opposites_algorithm_1(v: &[u32]) -> Vec<i32> {
     let mut o = vec![-1i32; v.len()];
     let mut adjacency: HashMap<(u32, u32), u32> = HashMap::new();
     for he in 0..v.len() as u32 {
-        let (v0, v1) = (v[he as usize], v[next(he) as usize]);
+        let (v0, v1) = (v[he as usize], v[next(HalfEdgeId(he)).index()]);
         let v2 = (v0.min(v1), v0.max(v1));
         match adjacency.remove(&v2) {
             Some(other) => {
@@ -199,7 +200,7 @@ pub fn vertex_half_edges_algorithm_3(v: &[u32], o: &[i32], num_vertices: usize) 
 fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
     let mut reached = 0usize;
     for &start in vh.iter().filter(|&&h| h >= 0) {
-        fan_walk_algorithm_7(o, start as u32, |_| {}, |_| reached += 1);
+        fan_walk_algorithm_7(o, HalfEdgeId(start as u32), |_| {}, |_| reached += 1);
     }
     reached == o.len()
 }
@@ -242,14 +243,11 @@ pub fn boundary_curves_algorithm_4(o: &mut [i32]) -> Vec<u32> {
         }
         ch.push(he);
         let label = -(ch.len() as i32);
-        let mut he0 = he;
-        while !visited[he0 as usize] {
-            visited[he0 as usize] = true;
-            o[he0 as usize] = label;
-            he0 = next_boundary_half_edge(he0, |h| {
-                let x = o[h as usize];
-                (x >= 0).then_some(x as u32)
-            });
+        let mut he0 = HalfEdgeId(he);
+        while !visited[he0.index()] {
+            visited[he0.index()] = true;
+            o[he0.index()] = label;
+            he0 = next_boundary_half_edge(he0, |h| opposite_of(o, h));
         }
     }
     ch.shrink_to_fit();

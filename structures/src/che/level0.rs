@@ -2,9 +2,10 @@
 //! neighbour scans `V[]` (Algorithms 5, 8, 9).
 
 use super::build::{build_fast, Checked};
-use super::{che_topology, next, prev, print_container, triangle, vec_bytes, CheLevel, StarRead};
+use super::{che_topology, half_edges_of, next, prev, print_container, triangle};
+use super::{vec_bytes, CheLevel, StarRead};
 use crate::error::{Error, Result};
-use crate::ids::FaceId;
+use crate::ids::{FaceId, HalfEdgeId, VertexId};
 use crate::soup::PolygonSoup;
 use crate::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -75,12 +76,28 @@ impl CheL0 {
         &self.g
     }
 
+    /// Every half-edge, in index order.
+    fn half_edges(&self) -> impl Iterator<Item = HalfEdgeId> {
+        (0..self.v.len() as u32).map(HalfEdgeId)
+    }
+
+    /// `V[he]`.
+    #[inline(always)]
+    fn start(&self, he: HalfEdgeId) -> VertexId {
+        VertexId(self.v[he.index()])
+    }
+
     /// The scan of Algorithm 8: the half-edge from `a` to `b`, each `V[]` read reported.
-    fn find_half_edge(&self, a: u32, b: u32, mut trace: impl FnMut(StarRead)) -> Option<u32> {
-        (0..self.v.len() as u32).find(|&he| {
-            let start = self.v[he as usize];
+    fn find_half_edge(
+        &self,
+        a: VertexId,
+        b: VertexId,
+        mut trace: impl FnMut(StarRead),
+    ) -> Option<HalfEdgeId> {
+        self.half_edges().find(|&he| {
+            let start = self.start(he);
             trace(StarRead::Vertex { he, vertex: start });
-            start == a && self.v[next(he) as usize] == b
+            start == a && self.start(next(he)) == b
         })
     }
 
@@ -141,26 +158,26 @@ impl CheLevel for CheL0 {
     /// comes from sums over the scan (see the module docs) and a second scan.
     fn vertex_star(
         &self,
-        v: u32,
+        v: VertexId,
         mut trace: impl FnMut(StarRead),
-        mut corner: impl FnMut(u32),
-    ) -> Option<u32> {
+        mut corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
         let mut lone = LoneNeighbour::default();
-        for (he, &start) in self.v.iter().enumerate() {
-            let he = he as u32;
+        for he in self.half_edges() {
+            let start = self.start(he);
             trace(StarRead::Vertex { he, vertex: start });
             if start == v {
                 trace(StarRead::Corner { he });
                 corner(he);
-                let entering_from = self.v[prev(he) as usize];
+                let entering_from = self.start(prev(he));
                 trace(StarRead::Vertex {
                     he: prev(he),
                     vertex: entering_from,
                 });
-                lone.add(entering_from, self.v[next(he) as usize]);
+                lone.add(entering_from.0, self.start(next(he)).0);
             }
         }
-        let closing = self.find_half_edge(lone.vertex()?, v, &mut trace);
+        let closing = self.find_half_edge(VertexId(lone.vertex()?), v, &mut trace);
         if let Some(he) = closing {
             trace(StarRead::Closing { he });
         }
@@ -168,20 +185,18 @@ impl CheLevel for CheL0 {
     }
 
     /// Algorithm 8's scan for the half-edge with the same vertices in the other direction.
-    fn twin(&self, he: u32) -> Option<u32> {
-        self.find_half_edge(self.v[next(he) as usize], self.v[he as usize], |_| {})
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
+        self.find_half_edge(self.start(next(he)), self.start(he), |_| {})
     }
 
     /// Algorithm 9: one scan of `V[]` for the half-edges opposite to any of `t`'s three.
-    fn triangles_across(&self, t: u32, mut f: impl FnMut(FaceId)) {
-        let own = [0, 1, 2].map(|i| {
-            let he = 3 * t + i;
-            (self.v[he as usize], self.v[next(he) as usize])
-        });
-        for he in 0..self.v.len() as u32 {
-            let reversed = (self.v[next(he) as usize], self.v[he as usize]);
+    fn triangles_across(&self, t: FaceId, mut f: impl FnMut(FaceId)) {
+        let mut own = half_edges_of(t).map(|he| (self.start(he), self.start(next(he))));
+        let own = [(); 3].map(|()| own.next().expect("a triangle has three half-edges"));
+        for he in self.half_edges() {
+            let reversed = (self.start(next(he)), self.start(he));
             if triangle(he) != t && own.contains(&reversed) {
-                f(FaceId(triangle(he)));
+                f(triangle(he));
             }
         }
     }

@@ -3,11 +3,10 @@
 //! still scans `V[]` for its first half-edge (Algorithm 6).
 
 use super::build::{build_chapter, build_fast, Checked};
-use super::{
-    che_topology, fan_walk_algorithm_7, next, print_container, vec_bytes, CheL0, CheLevel, StarRead,
-};
+use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
+use super::{CheL0, CheLevel, StarRead};
 use crate::error::{Error, Result};
-use crate::ids::EdgeId;
+use crate::ids::{EdgeId, HalfEdgeId, VertexId};
 use crate::soup::PolygonSoup;
 use crate::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -84,16 +83,15 @@ impl CheL1 {
         if self.o.len() != v.len() {
             return Err(Error::invariant(structure, "O[] and V[] differ in length"));
         }
-        for (he, &o) in self.o.iter().enumerate() {
-            if o < 0 {
+        for he in (0..v.len() as u32).map(HalfEdgeId) {
+            let Some(o) = opposite_of(&self.o, he) else {
                 continue;
-            }
-            let (he, o) = (he as u32, o as u32);
-            let paired = (o as usize) < v.len()
+            };
+            let paired = o.index() < v.len()
                 && o != he
-                && self.o[o as usize] == he as i32
-                && v[o as usize] == v[next(he) as usize]
-                && v[next(o) as usize] == v[he as usize];
+                && self.o[o.index()] == he.0 as i32
+                && v[o.index()] == v[next(he).index()]
+                && v[next(o).index()] == v[he.index()];
             if !paired {
                 return Err(Error::invariant(
                     structure,
@@ -130,30 +128,30 @@ impl CheLevel for CheL1 {
     /// the way round), then walks the fan forward as Algorithm 7 does.
     fn vertex_star(
         &self,
-        v: u32,
+        v: VertexId,
         mut trace: impl FnMut(StarRead),
-        corner: impl FnMut(u32),
-    ) -> Option<u32> {
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
         let mut first = None;
-        for (he, &start) in self.start_vertices().iter().enumerate() {
-            trace(StarRead::Vertex {
-                he: he as u32,
-                vertex: start,
-            });
-            if start == v {
-                first = Some(he as u32);
+        for (he, &start) in (0u32..).map(HalfEdgeId).zip(self.start_vertices()) {
+            let vertex = VertexId(start);
+            trace(StarRead::Vertex { he, vertex });
+            if vertex == v {
+                first = Some(he);
                 break;
             }
         }
         let he0 = first?;
         let mut h = he0;
         loop {
-            let opposite = self.o[h as usize];
-            trace(StarRead::Opposite { he: h, opposite });
-            if opposite < 0 {
-                break;
+            trace(StarRead::Opposite {
+                he: h,
+                opposite: self.o[h.index()],
+            });
+            match opposite_of(&self.o, h) {
+                None => break,
+                Some(o) => h = next(o),
             }
-            h = next(opposite as u32);
             if h == he0 {
                 break;
             }
@@ -162,15 +160,13 @@ impl CheLevel for CheL1 {
     }
 
     #[inline(always)]
-    fn twin(&self, he: u32) -> Option<u32> {
-        let o = self.o[he as usize];
-        (o >= 0).then_some(o as u32)
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
+        opposite_of(&self.o, he)
     }
 
     /// The smaller half-edge of the edge, `min(he, O[he])` (the key of level 2's `EH`).
     #[inline(always)]
-    fn edge_of(&self, he: u32) -> EdgeId {
-        let o = self.o[he as usize];
-        EdgeId(if o >= 0 { he.min(o as u32) } else { he })
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        EdgeId(opposite_of(&self.o, he).map_or(he, |o| o.min(he)).0)
     }
 }

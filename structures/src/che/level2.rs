@@ -6,7 +6,7 @@ use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
 use crate::error::{Error, Result};
-use crate::ids::EdgeId;
+use crate::ids::{EdgeId, HalfEdgeId, VertexId};
 use crate::soup::PolygonSoup;
 use crate::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -145,31 +145,31 @@ impl CheLevel for CheL2 {
     #[inline(always)]
     fn vertex_star(
         &self,
-        v: u32,
+        v: VertexId,
         mut trace: impl FnMut(StarRead),
-        corner: impl FnMut(u32),
-    ) -> Option<u32> {
-        let he = self.vh[v as usize];
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
+        let he = self.vh[v.index()];
         trace(StarRead::VertexHalfEdge { vertex: v, he });
         if he < 0 {
             return None;
         }
-        fan_walk_algorithm_7(self.l1.opposite(), he as u32, trace, corner)
+        fan_walk_algorithm_7(self.l1.opposite(), HalfEdgeId(he as u32), trace, corner)
     }
 
     #[inline(always)]
-    fn twin(&self, he: u32) -> Option<u32> {
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
         self.l1.twin(he)
     }
 
     #[inline(always)]
-    fn edge_of(&self, he: u32) -> EdgeId {
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
         self.l1.edge_of(he)
     }
 
     /// `O[VH[v]] < 0` (§4.3).
-    fn vertex_on_boundary(&self, v: u32) -> bool {
-        let he = self.vh[v as usize];
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
+        let he = self.vh[v.index()];
         he >= 0 && self.l1.opposite()[he as usize] < 0
     }
 

@@ -7,7 +7,7 @@ use super::build::boundary_curves_algorithm_4;
 use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
 use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
 use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId};
+use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::soup::PolygonSoup;
 use crate::topology::{BoundaryCurves, Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -69,9 +69,9 @@ impl CheL3 {
         let mut walked = 0;
         for (k, &start) in self.ch.iter().enumerate() {
             let label = -(k as i32 + 1);
-            let mut he = start;
+            let mut he = HalfEdgeId(start);
             loop {
-                if o.get(he as usize) != Some(&label) {
+                if o.get(he.index()) != Some(&label) {
                     return Err(Error::invariant(
                         structure,
                         format!(
@@ -82,7 +82,7 @@ impl CheL3 {
                 }
                 walked += 1;
                 he = next_boundary_half_edge(he, |h| self.twin(h));
-                if he == start {
+                if he.0 == start {
                     break;
                 }
             }
@@ -121,28 +121,28 @@ impl CheLevel for CheL3 {
     #[inline(always)]
     fn vertex_star(
         &self,
-        v: u32,
+        v: VertexId,
         trace: impl FnMut(StarRead),
-        corner: impl FnMut(u32),
-    ) -> Option<u32> {
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
         self.l2.vertex_star(v, trace, corner)
     }
 
     #[inline(always)]
-    fn twin(&self, he: u32) -> Option<u32> {
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
         self.l2.twin(he)
     }
 
     #[inline(always)]
-    fn edge_of(&self, he: u32) -> EdgeId {
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
         self.l2.edge_of(he)
     }
 
-    fn vertex_on_boundary(&self, v: u32) -> bool {
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
         self.l2.vertex_on_boundary(v)
     }
 
-    fn triangles_across(&self, t: u32, f: impl FnMut(FaceId)) {
+    fn triangles_across(&self, t: FaceId, f: impl FnMut(FaceId)) {
         self.l2.triangles_across(t, f)
     }
 
@@ -158,7 +158,7 @@ impl CheLevel for CheL3 {
     fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         for &he in &self.ch {
-            walk_boundary_curve(he, |h| self.twin(h), out);
+            walk_boundary_curve(HalfEdgeId(he), |h| self.twin(h), out);
         }
     }
 }

@@ -91,33 +91,48 @@ pub use level1::CheL1;
 pub use level2::CheL2;
 pub use level3::CheL3;
 
-use crate::ids::{EdgeId, FaceId};
+use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::topology::BoundaryCurves;
 
 /// `next(he)`: the following half-edge of the same triangle (§4.1).
 #[inline(always)]
-pub const fn next(he: u32) -> u32 {
-    if he % 3 == 2 {
-        he - 2
-    } else {
-        he + 1
-    }
+pub const fn next(he: HalfEdgeId) -> HalfEdgeId {
+    HalfEdgeId(if he.0 % 3 == 2 { he.0 - 2 } else { he.0 + 1 })
 }
 
 /// `prev(he)`: the preceding half-edge of the same triangle (§4.1).
 #[inline(always)]
-pub const fn prev(he: u32) -> u32 {
-    if he.is_multiple_of(3) {
-        he + 2
+pub const fn prev(he: HalfEdgeId) -> HalfEdgeId {
+    HalfEdgeId(if he.0.is_multiple_of(3) {
+        he.0 + 2
     } else {
-        he - 1
-    }
+        he.0 - 1
+    })
 }
 
 /// The triangle `⌊he/3⌋` that owns half-edge `he` (§4.1).
 #[inline(always)]
-pub const fn triangle(he: u32) -> u32 {
-    he / 3
+pub const fn triangle(he: HalfEdgeId) -> FaceId {
+    FaceId(he.0 / 3)
+}
+
+/// The half-edge that represents edge `e` (`E_id e = he`, §4.6).
+#[inline(always)]
+pub const fn half_edge(e: EdgeId) -> HalfEdgeId {
+    HalfEdgeId(e.0)
+}
+
+/// `O[he]` as a half-edge, `None` on the boundary (any negative value: `-1`, or `-k` at level 3).
+#[inline(always)]
+pub fn opposite_of(o: &[i32], he: HalfEdgeId) -> Option<HalfEdgeId> {
+    let x = o[he.index()];
+    (x >= 0).then_some(HalfEdgeId(x as u32))
+}
+
+/// The half-edges of triangle `t`: `3t, 3t+1, 3t+2` (§4.1).
+#[inline(always)]
+pub fn half_edges_of(t: FaceId) -> impl Iterator<Item = HalfEdgeId> {
+    (3 * t.0..3 * t.0 + 3).map(HalfEdgeId)
 }
 
 /// One read a vertex-star algorithm makes, reported to a trace (`topolab explain che --trace`).
@@ -126,33 +141,33 @@ pub enum StarRead {
     /// `V[he]` was read (the scans of levels 0 and 1).
     Vertex {
         /// The half-edge.
-        he: u32,
+        he: HalfEdgeId,
         /// Its start vertex.
-        vertex: u32,
+        vertex: VertexId,
     },
     /// `O[he]` was read.
     Opposite {
         /// The half-edge.
-        he: u32,
+        he: HalfEdgeId,
         /// Its opposite (negative on the boundary).
         opposite: i32,
     },
     /// `VH[v]` was read (levels 2 and 3).
     VertexHalfEdge {
         /// The vertex.
-        vertex: u32,
+        vertex: VertexId,
         /// Its stored half-edge (`-1` for an unused vertex).
         he: i32,
     },
     /// A triangle of the star was reached through `he`, the half-edge leaving the vertex.
     Corner {
         /// The half-edge leaving the vertex.
-        he: u32,
+        he: HalfEdgeId,
     },
     /// The star ends at this boundary half-edge entering the vertex (boundary vertices only).
     Closing {
         /// The half-edge entering the vertex.
-        he: u32,
+        he: HalfEdgeId,
     },
 }
 
@@ -173,39 +188,39 @@ pub trait CheLevel {
     /// returns the boundary half-edge entering `v` if `v` is on the boundary.
     fn vertex_star(
         &self,
-        v: u32,
+        v: VertexId,
         trace: impl FnMut(StarRead),
-        corner: impl FnMut(u32),
-    ) -> Option<u32>;
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId>;
 
     /// The opposite of `he` if its edge is interior (level 0: Algorithm 8's scan).
-    fn twin(&self, he: u32) -> Option<u32>;
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId>;
 
     /// The edge id this level answers for half-edge `he` (see the module docs).
     #[inline(always)]
-    fn edge_of(&self, he: u32) -> EdgeId {
-        EdgeId(he)
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        EdgeId(he.0)
     }
 
     /// Is `v` on the boundary? Defaults to walking the star (levels 0 and 1).
-    fn vertex_on_boundary(&self, v: u32) -> bool {
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
         self.vertex_star(v, |_| {}, |_| {}).is_some()
     }
 
     /// R22 of triangle `t`. Defaults to the triangles across its three half-edges.
-    fn triangles_across(&self, t: u32, mut f: impl FnMut(FaceId)) {
-        for he in 3 * t..3 * t + 3 {
+    fn triangles_across(&self, t: FaceId, mut f: impl FnMut(FaceId)) {
+        for he in half_edges_of(t) {
             if let Some(o) = self.twin(he) {
-                f(FaceId(triangle(o)));
+                f(triangle(o));
             }
         }
     }
 
     /// Every edge once. Defaults to the half-edges that are the smaller of their pair.
     fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
-        for he in 0..self.start_vertices().len() as u32 {
+        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
             if self.twin(he).is_none_or(|o| he < o) {
-                f(EdgeId(he));
+                f(EdgeId(he.0));
             }
         }
     }
@@ -221,8 +236,8 @@ pub trait CheLevel {
     /// half-edge not yet on a written curve starts a new curve.
     fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
-        for he in 0..self.start_vertices().len() as u32 {
-            if self.twin(he).is_none() && !out.edges.contains(&EdgeId(he)) {
+        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
+            if self.twin(he).is_none() && !out.edges.contains(&EdgeId(he.0)) {
                 walk_boundary_curve(he, |h| self.twin(h), out);
             }
         }
@@ -231,13 +246,13 @@ pub trait CheLevel {
 
 /// Writes the boundary curve through boundary half-edge `start` into `out` as one curve.
 pub(crate) fn walk_boundary_curve(
-    start: u32,
-    twin: impl Fn(u32) -> Option<u32>,
+    start: HalfEdgeId,
+    twin: impl Fn(HalfEdgeId) -> Option<HalfEdgeId>,
     out: &mut BoundaryCurves,
 ) {
     let mut he = start;
     loop {
-        out.edges.push(EdgeId(he));
+        out.edges.push(EdgeId(he.0));
         he = next_boundary_half_edge(he, &twin);
         if he == start {
             break;
@@ -249,7 +264,10 @@ pub(crate) fn walk_boundary_curve(
 /// The boundary half-edge that follows boundary half-edge `he` on its curve: it leaves the
 /// vertex `he` enters, found by turning around that vertex (Algorithm 4's inner loop).
 #[inline]
-pub fn next_boundary_half_edge(he: u32, twin: impl Fn(u32) -> Option<u32>) -> u32 {
+pub fn next_boundary_half_edge(
+    he: HalfEdgeId,
+    twin: impl Fn(HalfEdgeId) -> Option<HalfEdgeId>,
+) -> HalfEdgeId {
     let mut g = next(he);
     while let Some(o) = twin(g) {
         g = next(o);
@@ -267,16 +285,16 @@ pub fn next_boundary_half_edge(he: u32, twin: impl Fn(u32) -> Option<u32>) -> u3
 #[inline(always)]
 pub fn fan_walk_algorithm_7(
     o: &[i32],
-    start: u32,
+    start: HalfEdgeId,
     mut trace: impl FnMut(StarRead),
-    mut corner: impl FnMut(u32),
-) -> Option<u32> {
+    mut corner: impl FnMut(HalfEdgeId),
+) -> Option<HalfEdgeId> {
     let mut h = start;
     loop {
         trace(StarRead::Corner { he: h });
         corner(h);
         let entering = prev(h);
-        let opposite = o[entering as usize];
+        let opposite = o[entering.index()];
         trace(StarRead::Opposite {
             he: entering,
             opposite,
@@ -285,7 +303,7 @@ pub fn fan_walk_algorithm_7(
             trace(StarRead::Closing { he: entering });
             return Some(entering);
         }
-        h = opposite as u32;
+        h = HalfEdgeId(opposite as u32);
         if h == start {
             return None;
         }
@@ -294,12 +312,18 @@ pub fn fan_walk_algorithm_7(
 
 /// The edge after (`forward`) or before `e` in triangle `t`, found among `t`'s three
 /// half-edges by `e`'s end vertices: O(1) at every level.
-fn neighbour_in_face<L: CheLevel>(level: &L, e: EdgeId, t: FaceId, forward: bool) -> Option<u32> {
+fn neighbour_in_face<L: CheLevel>(
+    level: &L,
+    e: EdgeId,
+    t: FaceId,
+    forward: bool,
+) -> Option<HalfEdgeId> {
     let v = level.start_vertices();
-    let (a, b) = (v[e.index()], v[next(e.0) as usize]);
-    (3 * t.0..3 * t.0 + 3)
+    let ends = |h: HalfEdgeId| (v[h.index()], v[next(h).index()]);
+    let (a, b) = ends(half_edge(e));
+    half_edges_of(t)
         .find(|&h| {
-            let (c, d) = (v[h as usize], v[next(h) as usize]);
+            let (c, d) = ends(h);
             (c, d) == (a, b) || (c, d) == (b, a)
         })
         .map(|h| if forward { next(h) } else { prev(h) })
@@ -345,13 +369,10 @@ macro_rules! che_topology {
                 mut f: impl FnMut($crate::ids::VertexId),
             ) {
                 let vs = self.start_vertices();
-                let closing = self.vertex_star(
-                    v.0,
-                    |_| {},
-                    |h| f($crate::ids::VertexId(vs[$crate::che::next(h) as usize])),
-                );
+                let neighbour = |h: $crate::ids::HalfEdgeId| $crate::ids::VertexId(vs[h.index()]);
+                let closing = self.vertex_star(v, |_| {}, |h| f(neighbour($crate::che::next(h))));
                 if let Some(p) = closing {
-                    f($crate::ids::VertexId(vs[p as usize]));
+                    f(neighbour(p));
                 }
             }
             fn vertex_edges(
@@ -359,7 +380,7 @@ macro_rules! che_topology {
                 v: $crate::ids::VertexId,
                 mut f: impl FnMut($crate::ids::EdgeId),
             ) {
-                let closing = self.vertex_star(v.0, |_| {}, |h| f(self.edge_of(h)));
+                let closing = self.vertex_star(v, |_| {}, |h| f(self.edge_of(h)));
                 if let Some(p) = closing {
                     f(self.edge_of(p));
                 }
@@ -369,33 +390,32 @@ macro_rules! che_topology {
                 v: $crate::ids::VertexId,
                 mut f: impl FnMut($crate::ids::FaceId),
             ) {
-                self.vertex_star(
-                    v.0,
-                    |_| {},
-                    |h| f($crate::ids::FaceId($crate::che::triangle(h))),
-                );
+                self.vertex_star(v, |_| {}, |h| f($crate::che::triangle(h)));
             }
             fn edge_vertices(&self, e: $crate::ids::EdgeId) -> [$crate::ids::VertexId; 2] {
                 let vs = self.start_vertices();
+                let he = $crate::che::half_edge(e);
                 [
-                    $crate::ids::VertexId(vs[e.index()]),
-                    $crate::ids::VertexId(vs[$crate::che::next(e.0) as usize]),
+                    $crate::ids::VertexId(vs[he.index()]),
+                    $crate::ids::VertexId(vs[$crate::che::next(he).index()]),
                 ]
             }
             fn edge_edges(&self, e: $crate::ids::EdgeId, mut f: impl FnMut($crate::ids::EdgeId)) {
-                let mut sides = |h: u32| {
+                let mut sides = |h: $crate::ids::HalfEdgeId| {
                     f(self.edge_of($crate::che::next(h)));
                     f(self.edge_of($crate::che::prev(h)));
                 };
-                sides(e.0);
-                if let Some(o) = self.twin(e.0) {
+                let he = $crate::che::half_edge(e);
+                sides(he);
+                if let Some(o) = self.twin(he) {
                     sides(o);
                 }
             }
             fn edge_faces(&self, e: $crate::ids::EdgeId, mut f: impl FnMut($crate::ids::FaceId)) {
-                f($crate::ids::FaceId($crate::che::triangle(e.0)));
-                if let Some(o) = self.twin(e.0) {
-                    f($crate::ids::FaceId($crate::che::triangle(o)));
+                let he = $crate::che::half_edge(e);
+                f($crate::che::triangle(he));
+                if let Some(o) = self.twin(he) {
+                    f($crate::che::triangle(o));
                 }
             }
             fn face_vertices(
@@ -403,8 +423,8 @@ macro_rules! che_topology {
                 face: $crate::ids::FaceId,
                 mut f: impl FnMut($crate::ids::VertexId),
             ) {
-                for &v in &self.start_vertices()[3 * face.index()..3 * face.index() + 3] {
-                    f($crate::ids::VertexId(v));
+                for he in $crate::che::half_edges_of(face) {
+                    f($crate::ids::VertexId(self.start_vertices()[he.index()]));
                 }
             }
             fn face_edges(
@@ -412,18 +432,18 @@ macro_rules! che_topology {
                 face: $crate::ids::FaceId,
                 mut f: impl FnMut($crate::ids::EdgeId),
             ) {
-                for h in 3 * face.0..3 * face.0 + 3 {
-                    f(self.edge_of(h));
+                for he in $crate::che::half_edges_of(face) {
+                    f(self.edge_of(he));
                 }
             }
             fn face_faces(&self, face: $crate::ids::FaceId, f: impl FnMut($crate::ids::FaceId)) {
-                $crate::che::CheLevel::triangles_across(self, face.0, f)
+                $crate::che::CheLevel::triangles_across(self, face, f)
             }
             fn is_boundary_vertex(&self, v: $crate::ids::VertexId) -> bool {
-                $crate::che::CheLevel::vertex_on_boundary(self, v.0)
+                $crate::che::CheLevel::vertex_on_boundary(self, v)
             }
             fn is_boundary_edge(&self, e: $crate::ids::EdgeId) -> bool {
-                self.twin(e.0).is_none()
+                self.twin($crate::che::half_edge(e)).is_none()
             }
             fn boundary_curves(&self, out: &mut $crate::topology::BoundaryCurves) {
                 $crate::che::CheLevel::walk_boundary_curves(self, out)
