@@ -119,6 +119,17 @@ fn heap_bytes_match_the_containers() {
 #[test]
 fn refusals_name_the_problem() {
     let quads = meshes::quad_cube();
+    for (e, name) in [
+        (CheL0::from_soup(&quads).unwrap_err(), "che-l0"),
+        (CheL2::from_soup(&quads).unwrap_err(), "che-l2"),
+        (CheL3::from_soup(&quads).unwrap_err(), "che-l3"),
+        (CheL3::from_soup_chapter(&quads).unwrap_err(), "che-l3"),
+    ] {
+        assert!(
+            matches!(e, Error::NotTriangles { structure, .. } if structure == name),
+            "{e}"
+        );
+    }
     let e = CheL1::from_soup(&quads).unwrap_err();
     assert!(
         matches!(

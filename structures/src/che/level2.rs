@@ -38,7 +38,8 @@ pub(crate) fn level2_cost(op: Operator) -> Cost {
 che_topology!(CheL2, "che-l2", level2_cost);
 
 impl CheL2 {
-    fn from_checked(c: Checked, edge_map: fn(&[i32]) -> Vec<u32>) -> Self {
+    /// Level 2 of checked containers, with `EH` built by `edge_map`.
+    pub(crate) fn from_checked(c: Checked, edge_map: fn(&[i32]) -> Vec<u32>) -> Self {
         let (l1, vh) = CheL1::from_checked(c);
         let eh = edge_map(l1.opposite());
         Self { l1, vh, eh }

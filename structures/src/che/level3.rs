@@ -3,7 +3,9 @@
 //! a negative value (curve k → `-k`), so boundary tests stay `O[he] < 0`. The boundary curves
 //! are walked from `CH[]` (Algorithm 10) in O(∂n1).
 
-use super::build::boundary_curves_algorithm_4;
+use super::build::{
+    boundary_curves_algorithm_4, build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan,
+};
 use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
 use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
 use crate::error::{Error, Result};
@@ -38,13 +40,15 @@ impl CheL3 {
     }
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
-        CheL2::from_soup(soup).map(Self::from_level2)
+        build_fast(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_by_scan)))
     }
 
     /// Builds level 3 with the chapter's Algorithms 1–4 (maps) instead of the fast
     /// construction of `from_soup`; the containers are identical.
     pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
-        CheL2::from_soup_chapter(soup).map(Self::from_level2)
+        build_chapter(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_algorithm_2)))
     }
 
     /// `G[]`: the vertex positions.
