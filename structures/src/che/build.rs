@@ -63,8 +63,8 @@ fn refusal(soup: &PolygonSoup, structure: &'static str) -> Error {
     }
 }
 
-/// Fast construction: `O[]` by [`opposites_by_buckets`] (which also rejects bad indices and
-/// repeated vertices), `VH[]` by Algorithm 3, then one fan walk per vertex to refuse
+/// Fast construction: `O[]` and `VH[]` by [`opposites_and_vertex_half_edges`] (which also
+/// rejects bad indices and repeated vertices), then one fan walk per vertex to refuse
 /// non-manifold vertices. O(n) with no hashing; any problem found is reported by the shared
 /// checks ([`refusal`]), so both constructions name it alike.
 pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<Checked> {
@@ -72,8 +72,8 @@ pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<
     if !g.iter().all(|p| p.is_finite()) {
         return Err(refusal(soup, structure));
     }
-    let o = opposites_by_buckets(&v, g.len()).ok_or_else(|| refusal(soup, structure))?;
-    let vh = vertex_half_edges_algorithm_3(&v, &o, g.len());
+    let (o, vh) =
+        opposites_and_vertex_half_edges(&v, g.len()).ok_or_else(|| refusal(soup, structure))?;
     if !every_vertex_one_fan(&o, &vh) {
         return Err(refusal(soup, structure));
     }
@@ -122,6 +122,51 @@ pub fn opposites_algorithm_1(v: &[u32]) -> Vec<i32> {
 /// when three half-edges share an edge or two traverse it in the same direction (a
 /// non-manifold edge or inconsistent orientation).
 pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
+    pair_by_buckets(v, num_vertices, |_, _, _| {})
+}
+
+/// [`opposites_by_buckets`] that also computes Algorithm 3's `VH[]` while it pairs, without a
+/// pass of its own: Algorithm 3's result does not depend on the order it meets the
+/// half-edges (the largest boundary half-edge leaving `v` if any, else the smallest one), so
+/// each half-edge offers itself as a key where boundary beats interior, then larger boundary
+/// and smaller interior half-edges win. The `VH[]` is identical to
+/// [`vertex_half_edges_algorithm_3`]'s.
+pub fn opposites_and_vertex_half_edges(
+    v: &[u32],
+    num_vertices: usize,
+) -> Option<(Vec<i32>, Vec<i32>)> {
+    const BOUNDARY: u32 = 1 << 31;
+    // Per vertex its best key so far; 0 (no key) for an unused vertex. Half-edges are below
+    // i32::MAX, so an interior key `BOUNDARY - 1 - he` is never 0.
+    let mut best = vec![0u32; num_vertices];
+    let o = pair_by_buckets(v, num_vertices, |he, start, boundary| {
+        let key = if boundary {
+            BOUNDARY | he
+        } else {
+            BOUNDARY - 1 - he
+        };
+        let slot = &mut best[start as usize];
+        *slot = (*slot).max(key);
+    })?;
+    let vh = best
+        .into_iter()
+        .map(|key| match key {
+            0 => -1,
+            k if k & BOUNDARY != 0 => (k & !BOUNDARY) as i32,
+            k => (BOUNDARY - 1 - k) as i32,
+        })
+        .collect();
+    Some((o, vh))
+}
+
+/// The counting sort and pairing of [`opposites_by_buckets`]; calls `visit(he, V[he],
+/// is_boundary)` once per half-edge.
+#[inline(always)]
+fn pair_by_buckets(
+    v: &[u32],
+    num_vertices: usize,
+    mut visit: impl FnMut(u32, u32, bool),
+) -> Option<Vec<i32>> {
     let n = num_vertices as u32;
     // start[a + 2] counts the half-edges whose smaller vertex is a; after the prefix sums
     // start[a + 1] is where bucket a begins, and after the scatter (which advances it) where
@@ -139,16 +184,20 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
     for a in 2..start.len() {
         start[a] += start[a - 1];
     }
-    // Per smaller vertex, its half-edges keyed by their larger vertex: (larger << 32) | he.
+    // Per smaller vertex, its half-edges keyed by their larger vertex, with a bit telling
+    // whether the half-edge leaves the larger vertex: (larger << 32) | (leaves << 31) | he.
+    const LEAVES_LARGER: u64 = 1 << 31;
     let mut bucket = vec![0u64; v.len()];
     for (t, corners) in v.chunks_exact(3).enumerate() {
         for i in 0..3 {
             let (a, b) = (corners[i], corners[(i + 1) % 3]);
             let slot = &mut start[a.min(b) as usize + 1];
-            bucket[*slot as usize] = ((a.max(b) as u64) << 32) | (3 * t + i) as u64;
+            let leaves = if a > b { LEAVES_LARGER } else { 0 };
+            bucket[*slot as usize] = ((a.max(b) as u64) << 32) | leaves | (3 * t + i) as u64;
             *slot += 1;
         }
     }
+    let half_edge = |key: u64| (key & (LEAVES_LARGER - 1)) as u32;
     // Every half-edge is in exactly one bucket, so each O[he] is written below; zeroed memory
     // comes from the allocator without a pass of its own.
     let mut o = vec![0i32; v.len()];
@@ -162,15 +211,29 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
                 .iter()
                 .take_while(|&&x| x >> 32 == larger)
                 .count();
+            let start_of = |key: u64| {
+                if key & LEAVES_LARGER != 0 {
+                    larger as u32
+                } else {
+                    a as u32
+                }
+            };
             match same {
-                1 => o[keyed[i] as u32 as usize] = -1,
+                1 => {
+                    let h = half_edge(keyed[i]);
+                    o[h as usize] = -1;
+                    visit(h, start_of(keyed[i]), true);
+                }
                 2 => {
-                    let (h0, h1) = (keyed[i] as u32, keyed[i + 1] as u32);
-                    if v[h0 as usize] == v[h1 as usize] {
-                        return None;
+                    let (k0, k1) = (keyed[i], keyed[i + 1]);
+                    if (k0 ^ k1) & LEAVES_LARGER == 0 {
+                        return None; // both traverse the edge in the same direction
                     }
+                    let (h0, h1) = (half_edge(k0), half_edge(k1));
                     o[h0 as usize] = h1 as i32;
                     o[h1 as usize] = h0 as i32;
+                    visit(h0, start_of(k0), false);
+                    visit(h1, start_of(k1), false);
                 }
                 _ => return None,
             }

@@ -84,7 +84,7 @@ mod level3;
 
 pub use build::{
     boundary_curves_algorithm_4, edge_map_algorithm_2, edge_map_by_scan, opposites_algorithm_1,
-    opposites_by_buckets, vertex_half_edges_algorithm_3,
+    opposites_and_vertex_half_edges, opposites_by_buckets, vertex_half_edges_algorithm_3,
 };
 pub use level0::CheL0;
 pub use level1::CheL1;
