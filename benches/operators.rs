@@ -6,14 +6,20 @@
 //! (default all). Run one group with `cargo bench --bench operators -- r00`.
 
 use criterion::measurement::WallTime;
-use criterion::{criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, Throughput};
+use criterion::{
+    criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, Throughput,
+};
 use std::time::Duration;
 use topolab::registry::{self, StructureVisitor};
-use topolab_harness::kernels::{run, run_workload, sample_queries, Queries, QuerySet, Workload, WorkloadBuffers};
+use topolab_harness::kernels::{
+    run, run_workload, sample_queries, Queries, QuerySet, Workload, WorkloadBuffers,
+};
 use topolab_structures::{meshes, BoundaryCurves, MeshTopology, Operator, PolygonSoup};
 
 fn env_list(name: &str) -> Option<Vec<String>> {
-    std::env::var(name).ok().map(|v| v.split(',').map(|s| s.trim().to_string()).collect())
+    std::env::var(name)
+        .ok()
+        .map(|v| v.split(',').map(|s| s.trim().to_string()).collect())
 }
 
 fn sizes() -> Vec<usize> {
@@ -23,7 +29,8 @@ fn sizes() -> Vec<usize> {
 }
 
 fn structures() -> Vec<String> {
-    env_list("TOPOLAB_BENCH_STRUCTURES").unwrap_or_else(|| registry::NAMES.iter().map(|s| s.to_string()).collect())
+    env_list("TOPOLAB_BENCH_STRUCTURES")
+        .unwrap_or_else(|| registry::NAMES.iter().map(|s| s.to_string()).collect())
 }
 
 /// What one benchmark group measures.
@@ -45,22 +52,31 @@ impl StructureVisitor for Bench<'_, '_> {
     type Output = ();
     fn visit<M: MeshTopology>(self) {
         let id = BenchmarkId::new(M::NAME, self.soup.num_faces());
-        let Ok(m) = M::from_soup(self.soup) else { return };
+        let Ok(m) = M::from_soup(self.soup) else {
+            return;
+        };
         match self.what {
             What::Construction => {
-                self.group.throughput(Throughput::Elements(self.soup.num_faces() as u64));
-                self.group.bench_function(id, |b| b.iter(|| M::from_soup(self.soup).map(|m| m.num_faces())));
+                self.group
+                    .throughput(Throughput::Elements(self.soup.num_faces() as u64));
+                self.group.bench_function(id, |b| {
+                    b.iter(|| M::from_soup(self.soup).map(|m| m.num_faces()))
+                });
             }
             What::Op(op) => {
                 let q = Queries::sampled(&m, self.set);
                 let mut curves = BoundaryCurves::default();
-                self.group.throughput(Throughput::Elements(q.count(op) as u64));
-                self.group.bench_function(id, |b| b.iter(|| run(&m, op, &q, &mut curves)));
+                self.group
+                    .throughput(Throughput::Elements(q.count(op) as u64));
+                self.group
+                    .bench_function(id, |b| b.iter(|| run(&m, op, &q, &mut curves)));
             }
             What::Workload(w) => {
                 let mut buf = WorkloadBuffers::default();
-                self.group.throughput(Throughput::Elements(w.items(&m) as u64));
-                self.group.bench_function(id, |b| b.iter(|| run_workload(&m, w, &mut buf)));
+                self.group
+                    .throughput(Throughput::Elements(w.items(&m) as u64));
+                self.group
+                    .bench_function(id, |b| b.iter(|| run_workload(&m, w, &mut buf)));
             }
         }
     }
@@ -79,13 +95,28 @@ fn operators(c: &mut Criterion) {
         .into_iter()
         .map(|op| (op.name(), What::Op(op)))
         .chain([("construction", What::Construction)])
-        .chain(Workload::ALL.into_iter().map(|w| (w.name(), What::Workload(w))));
+        .chain(
+            Workload::ALL
+                .into_iter()
+                .map(|w| (w.name(), What::Workload(w))),
+        );
     for (name, what) in groups {
         let mut group = c.benchmark_group(name);
-        group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(1));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(300))
+            .measurement_time(Duration::from_secs(1));
         for (soup, set) in &meshes {
             for s in structures() {
-                registry::visit(&s, Bench { group: &mut group, what, soup, set });
+                registry::visit(
+                    &s,
+                    Bench {
+                        group: &mut group,
+                        what,
+                        soup,
+                        set,
+                    },
+                );
             }
         }
         group.finish();

@@ -41,11 +41,18 @@ pub enum Command {
     },
     /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
     Explain {
-        /// The structure (see `topolab list`).
+        /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
         name: String,
         /// Explain this mesh (a file or built-in mesh) instead of the open tetrahedron.
         #[arg(long)]
         mesh: Option<String>,
+        /// With `explain che`: print the steps of this relation's algorithm at each level
+        /// (`r00`, `r01` or `r02`: the vertex star) instead of the containers.
+        #[arg(long, requires = "vertex")]
+        trace: Option<String>,
+        /// The vertex whose star `--trace` follows.
+        #[arg(long)]
+        vertex: Option<u32>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
     Report(crate::report::ReportArgs),
@@ -60,7 +67,23 @@ pub fn run(cli: Cli) -> u8 {
             structure,
             json,
         } => info(&mesh, &structure, json),
-        Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+        Command::Explain {
+            name,
+            mesh,
+            trace,
+            vertex,
+        } if name == crate::explain_che::NAME => {
+            crate::explain_che::explain_che(mesh.as_deref(), trace.as_deref(), vertex)
+        }
+        Command::Explain {
+            name, mesh, trace, ..
+        } => match trace {
+            Some(_) => Err(Failure::usage(format!(
+                "--trace works with `explain {}` only",
+                crate::explain_che::NAME
+            ))),
+            None => explain(&name, mesh.as_deref()),
+        },
         Command::Report(args) => {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
             crate::report::report(&args, command)
@@ -302,9 +325,13 @@ impl StructureVisitor for ExplainVisit<'_> {
     }
 }
 
-fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
-    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
-    let (soup, label) = match mesh {
+/// The mesh `explain` shows: the one named, or the open tetrahedron (a 2x2 grid for grid-only
+/// structures, which cannot store it); with a label for it.
+pub(crate) fn mesh_or_tetrahedron(
+    mesh: Option<&str>,
+    grids_only: bool,
+) -> Result<(PolygonSoup, String), Failure> {
+    Ok(match mesh {
         Some(spec) => (load_mesh(spec)?, spec.to_string()),
         // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
         None if grids_only => (
@@ -315,7 +342,12 @@ fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
             meshes::open_tetrahedron(),
             "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
         ),
-    };
+    })
+}
+
+fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
+    let (soup, label) = mesh_or_tetrahedron(mesh, grids_only)?;
     let text = registry::visit(name, ExplainVisit(&soup))
         .ok_or_else(|| unknown_structure(name))?
         .map_err(|e| Failure {

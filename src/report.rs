@@ -2,6 +2,7 @@
 //! a self-contained `index.html`.
 
 use crate::cli::Failure;
+use crate::registry::{self, StructureVisitor};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -13,7 +14,6 @@ use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
-use crate::registry::{self, StructureVisitor};
 use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.

@@ -14,6 +14,10 @@
 //! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
 //! | [`RegularGrid`] | `regular-grid` | a grid's counts, origin and cell size; nothing per element | grids of quads or triangles | (none in a grid) |
 //! | [`HeightField`] | `height-field` | a grid's counts and one position per vertex | grids of quads or triangles | (none in a grid) |
+//! | [`CheL0`] | `che-l0` | Compact Half-Edge level 0: `G[]`, `V[]` (triangle soup) | no | no |
+//! | [`CheL1`] | `che-l1` | CHE level 1: + opposite half-edges `O[]` | no | no |
+//! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
+//! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -23,6 +27,7 @@
 
 pub mod attributes;
 mod boundary_walk;
+pub mod che;
 pub mod conformance;
 mod corner_scan;
 pub mod edge_list;
@@ -44,6 +49,7 @@ pub mod vertex_list;
 pub mod winged_edge;
 
 pub use attributes::{MeshAttributes, Plane};
+pub use che::{CheL0, CheL1, CheL2, CheL3};
 pub use edge_list::EdgeList;
 pub use error::{Error, Format, Location, Result};
 pub use explicit::ExplicitStorage;

@@ -6,7 +6,8 @@
 
 use crate::topology::MeshTopology;
 use crate::{
-    ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge, RegularGrid, VertexList,
+    CheL0, CheL1, CheL2, CheL3, ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge,
+    RegularGrid, VertexList,
 };
 
 /// Code generic over a structure, run for a structure named at run time.
@@ -42,5 +43,9 @@ structures!(
     PointerHalfEdge,
     IndexHalfEdge,
     RegularGrid,
-    HeightField
+    HeightField,
+    CheL0,
+    CheL1,
+    CheL2,
+    CheL3
 );

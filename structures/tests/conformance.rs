@@ -2,7 +2,8 @@
 
 use topolab_structures::conformance;
 use topolab_structures::{
-    ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge, RegularGrid, VertexList,
+    CheL0, CheL1, CheL2, CheL3, ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge,
+    RegularGrid, VertexList,
 };
 
 conformance!(explicit, ExplicitStorage);
@@ -13,3 +14,7 @@ conformance!(index_half_edge, IndexHalfEdge);
 conformance!(pointer_half_edge, PointerHalfEdge);
 conformance!(regular_grid, RegularGrid);
 conformance!(height_field, HeightField);
+conformance!(che_l0, CheL0);
+conformance!(che_l1, CheL1);
+conformance!(che_l2, CheL2);
+conformance!(che_l3, CheL3);
