@@ -13,6 +13,6 @@ deps:
 test: deps
 	$(CARGO) test --workspace
 
-# The report (for now: the table of structures and their theoretical costs).
+# The report on the default meshes: reports/latest/index.html and results.json.
 report: deps
-	$(CARGO) run --release --quiet -- list
+	$(CARGO) run --release --quiet -- report
