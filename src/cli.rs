@@ -30,7 +30,8 @@ pub enum Command {
     Info {
         /// A mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`):
         /// a canonical mesh name such as `open-tetrahedron`, or `torus:N`, `sphere:N`,
-        /// `grid:N`, `quad-grid:N` for about N faces.
+        /// `grid:N`, `quad-grid:N`, `mixed:N`, `genus:G:N`, `holes:K:N`, `surface:G:K:N`
+        /// for about N faces.
         mesh: String,
         /// The structure that answers the queries.
         #[arg(long, default_value = "vertex-list")]
@@ -47,6 +48,20 @@ pub enum Command {
         #[arg(long)]
         mesh: Option<String>,
     },
+    /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
+    Refine {
+        /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
+        mesh: String,
+        /// Number of levels.
+        #[arg(long)]
+        levels: usize,
+        /// Where new vertices go: `midpoint` (same shape) or `loop` (smooth).
+        #[arg(long, default_value = "midpoint")]
+        scheme: String,
+        /// The output file (.obj or .off).
+        #[arg(long)]
+        out: PathBuf,
+    },
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -59,6 +74,12 @@ pub fn run(cli: Cli) -> u8 {
             json,
         } => info(&mesh, &structure, json),
         Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+        Command::Refine {
+            mesh,
+            levels,
+            scheme,
+            out,
+        } => crate::refine::refine(&mesh, levels, &scheme, &out),
     };
     match result {
         Ok(text) => {
@@ -88,7 +109,8 @@ impl Failure {
             code: 2,
         }
     }
-    fn usage(message: String) -> Self {
+    /// A usage error (exit code 2).
+    pub fn usage(message: String) -> Self {
         Self { message, code: 2 }
     }
 }
@@ -103,7 +125,7 @@ pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
     meshes::from_spec(spec).ok_or_else(|| {
         let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
         Failure::usage(format!(
-            "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N)",
+            "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
             names.join(", ")
         ))
     })
