@@ -36,7 +36,7 @@ pub fn refine(spec: &str, levels: usize, scheme: &str, out: &Path) -> Result<Str
         soup.num_vertices(),
         soup.num_faces()
     );
-    let fine = subdivide_levels(&soup, scheme, levels, |level, s| {
+    let fine = subdivide_levels(soup, scheme, levels, |level, s| {
         eprintln!(
             "refine: level {level}: {} vertices, {} faces ({:.1} s)",
             s.num_vertices(),
