@@ -61,6 +61,10 @@ pub enum Command {
         /// The output file (.obj or .off).
         #[arg(long)]
         out: PathBuf,
+        /// Renumber the result: `input` (as refined: new vertices appended), `random`,
+        /// `random:SEED`, `morton`, `hilbert` or `bfs` (see `topolab_structures::ordering`).
+        #[arg(long, default_value = "input")]
+        order: String,
     },
 }
 
@@ -79,7 +83,8 @@ pub fn run(cli: Cli) -> u8 {
             levels,
             scheme,
             out,
-        } => crate::refine::refine(&mesh, levels, &scheme, &out),
+            order,
+        } => crate::refine::refine(&mesh, levels, &scheme, &order, &out),
     };
     match result {
         Ok(text) => {
