@@ -546,7 +546,8 @@ pub fn perturb(soup: &PolygonSoup, amplitude: f64, seed: u64) -> PolygonSoup {
 /// | `holes:K:N` | genus-0 surface with K boundary curves ([`perforated_plate`]) |
 /// | `surface:G:K:N` | genus G and K boundary curves |
 ///
-/// `_` may separate digits (`torus:1_000_000`). `None` for anything else.
+/// `_` may separate digits (`torus:1_000_000`). `None` for anything else, and for more than
+/// 2^30 faces or 2^20 tunnels and openings.
 pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     if let Some(m) = canonical_by_name(spec) {
         return Some(m.soup);
@@ -556,6 +557,13 @@ pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     let numbers: Vec<usize> = parts
         .map(|n| n.replace('_', "").parse().ok())
         .collect::<Option<_>>()?;
+    // Sizes past u32 handles (and slot counts that would need more) are refused, not attempted.
+    const MAX_FACES: usize = 1 << 30;
+    const MAX_SLOTS: usize = 1 << 20;
+    let (&n, counts) = numbers.split_last()?;
+    if n > MAX_FACES || counts.iter().sum::<usize>() > MAX_SLOTS {
+        return None;
+    }
     let side = |cells: usize| ((cells as f64).sqrt().round() as usize).max(1);
     match (kind, numbers.as_slice()) {
         ("torus", &[n]) => Some(torus_with_triangles(n.max(2))),
@@ -701,6 +709,8 @@ mod tests {
         assert!(from_spec("genus:2").is_none());
         assert!(from_spec("holes:x:10").is_none());
         assert!(from_spec("torus:100:3").is_none());
+        assert!(from_spec("genus:99999999999:10").is_none());
+        assert!(from_spec("torus:99999999999").is_none());
     }
 
     #[test]
