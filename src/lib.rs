@@ -28,3 +28,4 @@ TOPOLAB_NO_OPENMESH, and rebuild";
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
 pub mod explain_che;
+pub mod refine;

@@ -2,7 +2,8 @@
 //!
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
 //! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
-//! [`conformance`]) and tested on ([`meshes`]).
+//! [`conformance`]) and tested on ([`meshes`]), refined to any size ([`refine`]) and
+//! renumbered to measure the effect of element order ([`ordering`]).
 //!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|
@@ -39,7 +40,9 @@ pub mod index_half_edge;
 pub mod io;
 pub mod meshes;
 pub mod oracle;
+pub mod ordering;
 pub mod pointer_half_edge;
+pub mod refine;
 pub mod registry;
 pub mod regular_grid;
 pub mod soup;

@@ -187,11 +187,7 @@ pub fn canonical_by_name(name: &str) -> Option<CanonicalMesh> {
 pub fn grid(nx: usize, ny: usize, triangulated: bool) -> PolygonSoup {
     let per = if triangulated { 2 } else { 1 };
     let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), nx * ny * per, nx * ny * 4 + 2);
-    for j in 0..=ny {
-        for i in 0..=nx {
-            s.push_vertex(DVec3::new(i as f64, j as f64, 0.0));
-        }
-    }
+    push_grid_vertices(&mut s, nx, ny);
     let w = (nx + 1) as u32;
     for j in 0..ny as u32 {
         for i in 0..nx as u32 {
@@ -206,6 +202,16 @@ pub fn grid(nx: usize, ny: usize, triangulated: bool) -> PolygonSoup {
         }
     }
     s
+}
+
+/// Adds the vertices of an `nx` × `ny` cell grid in the z = 0 plane, row by row: vertex
+/// `(i, j)` at `(i, j, 0)`.
+fn push_grid_vertices(s: &mut PolygonSoup, nx: usize, ny: usize) {
+    for j in 0..=ny {
+        for i in 0..=nx {
+            s.push_vertex(DVec3::new(i as f64, j as f64, 0.0));
+        }
+    }
 }
 
 /// A closed triangulated torus of `nu` × `nv` vertices (`2 nu nv` triangles), ordered ring by ring.
@@ -356,31 +362,227 @@ pub fn random_mesh(seed: u64, params: RandomMeshParams) -> PolygonSoup {
     s.relabel_vertices(&perm).reorder_faces(&order)
 }
 
+/// A closed surface of genus `genus` with `holes` boundary curves and about `triangles`
+/// triangles: a thick plate (two copies of a planar grid, z = ±0.5, joined by a rim of quads cut
+/// into triangles) pierced by `genus` square tunnels, with `holes` square openings cut into its
+/// top side. Euler characteristic `2 - 2 genus - holes`; every vertex is used and manifold.
+///
+/// The slots (tunnels, then openings) are laid out on a near-square array of tiles of `t` × `t`
+/// cells, each slot the middle half of its tile, so slots never touch each other or the rim.
+/// Vertices are numbered top side row by row, then bottom side row by row; faces top, bottom,
+/// rim. Linear in the size (one pass per side, capacity reserved), so 16M triangles is fine.
+pub fn perforated_plate(genus: usize, holes: usize, triangles: usize) -> PolygonSoup {
+    let slots = genus + holes;
+    let cols = ((slots as f64).sqrt().ceil() as usize).max(1);
+    let rows = slots.div_ceil(cols).max(1);
+    // Two sides of 2 t² triangles per tile, less a tunnel's t² or an opening's t² / 2.
+    let per_t2 = (4 * cols * rows) as f64 - genus as f64 - holes as f64 / 2.0;
+    let tile = ((triangles as f64 / per_t2).sqrt().round() as usize).max(4);
+    let (nx, ny) = (cols * tile, rows * tile);
+    // The slot of cell (i, j): its index among all slots, if the cell is inside one.
+    let slot_of = |i: usize, j: usize| -> Option<usize> {
+        let (lo, hi) = (tile / 4, tile - tile / 4);
+        let (u, v) = (i % tile, j % tile);
+        let slot = (j / tile) * cols + i / tile;
+        (slot < slots && (lo..hi).contains(&u) && (lo..hi).contains(&v)).then_some(slot)
+    };
+    // Cells of the plate (not in a tunnel), and of its top side (not in a tunnel or an opening).
+    let in_plate = |i: usize, j: usize| !matches!(slot_of(i, j), Some(s) if s < genus);
+    let in_top = |i: usize, j: usize| slot_of(i, j).is_none();
+    let cells = nx * ny;
+    let mut s = PolygonSoup::with_capacity(2 * (nx + 1) * (ny + 1), 4 * cells, 12 * cells);
+    let top = add_grid_side(&mut s, nx, ny, 0.5, in_top);
+    let bottom = add_grid_side(&mut s, nx, ny, -0.5, in_plate);
+    let w = nx + 1;
+    for j in 0..ny {
+        for i in 0..nx {
+            if in_top(i, j) {
+                let [a, b, c, d] = cell_corners(&top, w, i, j);
+                s.push_face(&[a, b, c]);
+                s.push_face(&[a, c, d]);
+            }
+        }
+    }
+    for j in 0..ny {
+        for i in 0..nx {
+            if in_plate(i, j) {
+                // Seen from below: the reversed cell.
+                let [a, b, c, d] = cell_corners(&bottom, w, i, j);
+                s.push_face(&[a, c, b]);
+                s.push_face(&[a, d, c]);
+            }
+        }
+    }
+    // The rim: each side of a plate cell whose neighbour is outside the plate (the outer edge
+    // or a tunnel wall) joins top and bottom with a quad cut into two triangles. The cell's
+    // counter-clockwise side p -> q is q -> p in the rim, as the orientation requires.
+    let outside = |i: isize, j: isize| {
+        i < 0 || j < 0 || i >= nx as isize || j >= ny as isize || !in_plate(i as usize, j as usize)
+    };
+    for j in 0..ny {
+        for i in 0..nx {
+            if !in_plate(i, j) {
+                continue;
+            }
+            let (ii, jj) = (i as isize, j as isize);
+            let corner = |k: usize| {
+                let (di, dj) = [(0, 0), (1, 0), (1, 1), (0, 1)][k];
+                (j + dj) * w + i + di
+            };
+            for (k, (di, dj)) in [(0, -1), (1, 0), (0, 1), (-1, 0)].into_iter().enumerate() {
+                if outside(ii + di, jj + dj) {
+                    let (p, q) = (corner(k), corner((k + 1) % 4));
+                    s.push_face(&[top[q], top[p], bottom[p]]);
+                    s.push_face(&[top[q], bottom[p], bottom[q]]);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// Adds the vertices of one side of a plate at height `z`: grid vertex `(i, j)` of an
+/// `nx` × `ny` cell grid gets a new vertex when a cell around it is `in_side`. Returns the
+/// new id of each grid vertex (`u32::MAX` when unused), indexed `j (nx + 1) + i`.
+fn add_grid_side(
+    s: &mut PolygonSoup,
+    nx: usize,
+    ny: usize,
+    z: f64,
+    in_side: impl Fn(usize, usize) -> bool,
+) -> Vec<u32> {
+    let mut id = Vec::with_capacity((nx + 1) * (ny + 1));
+    for j in 0..=ny {
+        for i in 0..=nx {
+            let around = [(i, j), (i.wrapping_sub(1), j), (i, j.wrapping_sub(1))];
+            let used = around
+                .into_iter()
+                .chain([(i.wrapping_sub(1), j.wrapping_sub(1))])
+                .any(|(a, b)| a < nx && b < ny && in_side(a, b));
+            id.push(if used {
+                s.push_vertex(DVec3::new(i as f64, j as f64, z)).0
+            } else {
+                u32::MAX
+            });
+        }
+    }
+    id
+}
+
+/// The new ids of cell `(i, j)`'s corners, counter-clockwise from `(i, j)`, in a grid of row
+/// width `w` vertices.
+fn cell_corners(id: &[u32], w: usize, i: usize, j: usize) -> [u32; 4] {
+    let a = j * w + i;
+    [id[a], id[a + 1], id[a + w + 1], id[a + w]]
+}
+
+/// An open grid of about `faces` polygons of sizes 3, 4, 5 and 6: cells are taken in pairs
+/// along each row, and pair `(p, j)` becomes, by `(p + j) mod 4`, a hexagon, two quads, a
+/// pentagon and a triangle, or a quad and two triangles. One boundary curve; vertices as
+/// [`grid`] numbers them.
+pub fn mixed_grid(faces: usize) -> PolygonSoup {
+    // On average two faces per pair of cells, a square of 2 n × 2 n cells: 4 n² faces.
+    let n = ((faces as f64 / 4.0).sqrt().round() as usize).max(1);
+    let (nx, ny) = (2 * n, 2 * n);
+    let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), 4 * n * n, 12 * n * n);
+    push_grid_vertices(&mut s, nx, ny);
+    let w = (nx + 1) as u32;
+    for j in 0..ny as u32 {
+        for p in 0..n as u32 {
+            // Bottom row p0 p1 p2, top row q0 q1 q2 of the pair's two cells.
+            let p0 = j * w + 2 * p;
+            let (p1, p2) = (p0 + 1, p0 + 2);
+            let (q0, q1, q2) = (p0 + w, p1 + w, p2 + w);
+            match (p + j) % 4 {
+                0 => {
+                    s.push_face(&[p0, p1, p2, q2, q1, q0]);
+                }
+                1 => {
+                    s.push_face(&[p0, p1, q1, q0]);
+                    s.push_face(&[p1, p2, q2, q1]);
+                }
+                2 => {
+                    s.push_face(&[p0, p1, p2, q2, q1]);
+                    s.push_face(&[p0, q1, q0]);
+                }
+                _ => {
+                    s.push_face(&[p0, p1, q1, q0]);
+                    s.push_face(&[p1, p2, q2]);
+                    s.push_face(&[p1, q2, q1]);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// The same mesh with every position moved by a seeded random offset in
+/// `[-amplitude, amplitude]` per coordinate (connectivity unchanged), to break the regularity
+/// of generated meshes.
+pub fn perturb(soup: &PolygonSoup, amplitude: f64, seed: u64) -> PolygonSoup {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut out = soup.clone();
+    for p in &mut out.positions {
+        let offset = DVec3::new(
+            rng.random_range(-1.0..=1.0),
+            rng.random_range(-1.0..=1.0),
+            rng.random_range(-1.0..=1.0),
+        );
+        *p += amplitude * offset;
+    }
+    out
+}
+
 /// A built-in mesh named on the command line: a canonical mesh name, or a generator with a
-/// face count, `torus:N`, `sphere:N`, `grid:N` (triangles) or `quad-grid:N` (quads), for about
-/// N faces. `None` for anything else.
+/// face count for about N faces:
+///
+/// | spec | mesh |
+/// |---|---|
+/// | `torus:N` | closed torus, genus 1, ordered ring by ring |
+/// | `sphere:N` | closed UV sphere |
+/// | `grid:N`, `quad-grid:N` | open grid of triangles or quads |
+/// | `mixed:N` | open grid of triangles, quads, pentagons and hexagons ([`mixed_grid`]) |
+/// | `genus:G:N` | closed surface of genus G ([`perforated_plate`]) |
+/// | `holes:K:N` | genus-0 surface with K boundary curves ([`perforated_plate`]) |
+/// | `surface:G:K:N` | genus G and K boundary curves |
+///
+/// `_` may separate digits (`torus:1_000_000`). `None` for anything else, and for more than
+/// 2^30 faces or 2^20 tunnels and openings.
 pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     if let Some(m) = canonical_by_name(spec) {
         return Some(m.soup);
     }
-    let (kind, n) = spec.split_once(':')?;
-    let n: usize = n.replace('_', "").parse().ok()?;
-    let n = n.max(2);
+    let mut parts = spec.split(':');
+    let kind = parts.next()?;
+    let numbers: Vec<usize> = parts
+        .map(|n| n.replace('_', "").parse().ok())
+        .collect::<Option<_>>()?;
+    // Sizes past u32 handles (and slot counts that would need more) are refused, not attempted.
+    const MAX_FACES: usize = 1 << 30;
+    const MAX_SLOTS: usize = 1 << 20;
+    let (&n, counts) = numbers.split_last()?;
+    if n > MAX_FACES || counts.iter().sum::<usize>() > MAX_SLOTS {
+        return None;
+    }
     let side = |cells: usize| ((cells as f64).sqrt().round() as usize).max(1);
-    match kind {
-        "torus" => Some(torus_with_triangles(n)),
-        "sphere" => {
+    match (kind, numbers.as_slice()) {
+        ("torus", &[n]) => Some(torus_with_triangles(n.max(2))),
+        ("sphere", &[n]) => {
             let s = side(n / 2).max(3);
             Some(sphere(s, s))
         }
-        "grid" => {
+        ("grid", &[n]) => {
             let s = side(n / 2);
             Some(grid(s, s, true))
         }
-        "quad-grid" => {
+        ("quad-grid", &[n]) => {
             let s = side(n);
             Some(grid(s, s, false))
         }
+        ("mixed", &[n]) => Some(mixed_grid(n)),
+        ("genus", &[g, n]) => Some(perforated_plate(g, 0, n)),
+        ("holes", &[k, n]) => Some(perforated_plate(0, k, n)),
+        ("surface", &[g, k, n]) => Some(perforated_plate(g, k, n)),
         _ => None,
     }
 }
@@ -388,6 +590,7 @@ pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::oracle::Oracle;
 
     #[test]
     fn canonical_meshes_are_valid_soups() {
@@ -435,5 +638,91 @@ mod tests {
         let p = RandomMeshParams::default();
         assert_eq!(random_mesh(7, p), random_mesh(7, p));
         assert_ne!(random_mesh(7, p), random_mesh(8, p));
+    }
+
+    /// V - E + F and the boundary curves, both from the edge analysis and from the oracle.
+    fn euler_and_curves(s: &PolygonSoup) -> (i64, usize) {
+        let c = s.connectivity().unwrap();
+        c.check_vertex_fans(s).unwrap();
+        let euler = s.num_vertices() as i64 - c.num_edges() as i64 + s.num_faces() as i64;
+        let oracle = crate::oracle::Oracle::new(s);
+        assert_eq!(oracle.edge_faces.len(), c.num_edges());
+        assert!(
+            oracle.vertex_faces.iter().all(|f| !f.is_empty()),
+            "unused vertex"
+        );
+        (
+            euler,
+            oracle.boundary_curve_count().expect("simple boundary"),
+        )
+    }
+
+    #[test]
+    fn perforated_plates_have_the_requested_genus_and_boundary_curves() {
+        for (genus, holes) in [
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (3, 0),
+            (5, 0),
+            (0, 1),
+            (0, 3),
+            (2, 2),
+        ] {
+            for triangles in [200, 3000] {
+                let s = perforated_plate(genus, holes, triangles);
+                let (euler, curves) = euler_and_curves(&s);
+                assert_eq!(
+                    euler,
+                    2 - 2 * genus as i64 - holes as i64,
+                    "g{genus} k{holes}"
+                );
+                assert_eq!(curves, holes, "g{genus} k{holes}");
+                assert_eq!(Oracle::new(&s).face_components(), 1);
+                assert!(s.is_triangle_mesh());
+            }
+        }
+        let s = perforated_plate(3, 0, 100_000).num_faces();
+        assert!((90_000..=110_000).contains(&s), "{s} triangles");
+    }
+
+    #[test]
+    fn mixed_grid_has_every_face_size_from_three_to_six_and_one_boundary() {
+        let s = mixed_grid(2000);
+        let (euler, curves) = euler_and_curves(&s);
+        assert_eq!((euler, curves), (1, 1));
+        for k in 3..=6 {
+            assert!(s.faces().any(|f| f.len() == k), "no {k}-gon");
+        }
+        assert!((1800..=2200).contains(&s.num_faces()), "{}", s.num_faces());
+    }
+
+    #[test]
+    fn specs_name_the_generators() {
+        let g = from_spec("genus:2:1_000").unwrap();
+        assert_eq!(euler_and_curves(&g), (-2, 0));
+        let h = from_spec("holes:4:1000").unwrap();
+        assert_eq!(euler_and_curves(&h), (-2, 4));
+        let m = from_spec("surface:1:2:1000").unwrap();
+        assert_eq!(euler_and_curves(&m), (-2, 2));
+        assert_eq!(from_spec("mixed:500").unwrap(), mixed_grid(500));
+        assert!(from_spec("genus:2").is_none());
+        assert!(from_spec("holes:x:10").is_none());
+        assert!(from_spec("torus:100:3").is_none());
+        assert!(from_spec("genus:99999999999:10").is_none());
+        assert!(from_spec("torus:99999999999").is_none());
+    }
+
+    #[test]
+    fn perturbation_is_seeded_bounded_and_keeps_the_faces() {
+        let s = torus(6, 4);
+        let p = perturb(&s, 0.01, 3);
+        assert_eq!(p, perturb(&s, 0.01, 3));
+        assert_ne!(p, perturb(&s, 0.01, 4));
+        assert!(p.faces().eq(s.faces()));
+        for (a, b) in s.positions.iter().zip(&p.positions) {
+            let d = (*a - *b).abs().max_element();
+            assert!(d > 0.0 && d <= 0.01, "moved by {d}");
+        }
     }
 }
