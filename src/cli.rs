@@ -39,6 +39,9 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The lecture's consistency checks on a mesh file: every problem, with the elements it
+    /// concerns. Exit code 0 when clean, 1 when problems were found, 2 when unreadable.
+    Check(crate::check::CheckArgs),
     /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
     Explain {
         /// The structure (see `topolab list`).
@@ -59,6 +62,7 @@ pub fn run(cli: Cli) -> u8 {
             json,
         } => info(&mesh, &structure, json),
         Command::Explain { name, mesh } => explain(&name, mesh.as_deref()),
+        Command::Check(args) => return crate::check::run(args),
     };
     match result {
         Ok(text) => {

@@ -15,6 +15,7 @@
 #![forbid(unsafe_code)]
 
 pub mod attributes;
+pub mod checks;
 pub mod conformance;
 mod corner_scan;
 pub mod error;

@@ -276,6 +276,9 @@ trait Values {
     fn skip(&mut self, ty: Scalar, n: u64) -> Result<()>;
     /// Where the next value starts.
     fn location(&self) -> Location;
+    /// Fails when anything but whitespace (ASCII) or anything at all (binary) is left: the
+    /// header's counts or types do not describe the body.
+    fn finish(&mut self) -> Result<()>;
 }
 
 fn read_body(values: &mut impl Values, elements: &[Element], out: &mut SoupBuilder) -> Result<()> {
@@ -312,7 +315,7 @@ fn read_body(values: &mut impl Values, elements: &[Element], out: &mut SoupBuild
             }
         }
     }
-    Ok(())
+    values.finish()
 }
 
 /// ASCII body: whitespace-separated numbers.
@@ -367,6 +370,19 @@ impl Values for AsciiValues<'_> {
     }
     fn location(&self) -> Location {
         Location::Line(self.line)
+    }
+    fn finish(&mut self) -> Result<()> {
+        match self.token() {
+            Ok(word) => Err(syntax(
+                PLY,
+                self.line,
+                format!(
+                    "{:?} after the last element the header announces",
+                    String::from_utf8_lossy(word)
+                ),
+            )),
+            Err(_) => Ok(()),
+        }
     }
 }
 
@@ -445,5 +461,16 @@ impl Values for BinaryValues<'_> {
     }
     fn location(&self) -> Location {
         Location::Byte(self.pos as u64)
+    }
+    fn finish(&mut self) -> Result<()> {
+        let left = self.bytes.len() - self.pos;
+        if left == 0 {
+            return Ok(());
+        }
+        Err(Error::Syntax {
+            format: PLY,
+            location: self.location(),
+            message: format!("{left} bytes after the last element the header announces"),
+        })
     }
 }
