@@ -83,3 +83,29 @@ fn info_exits_2_on_an_unreadable_file_and_1_on_a_non_manifold_mesh() {
     assert_eq!(topolab(&["info", fin.to_str().unwrap()]).0, 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn check_exits_0_on_a_clean_file_and_reports_its_topology() {
+    let dir = temp_dir("check");
+    let path = dir.join("tet.off");
+    std::fs::write(&path, OFF).unwrap();
+    let (code, stdout) = topolab(&["check", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(stdout.contains("no problems found"), "{stdout}");
+    let (code, stdout) = topolab(&["check", path.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["clean"], true);
+    let s = &v["summary"];
+    assert_eq!(
+        (s["edges"].as_u64(), s["boundary_curves"].as_u64()),
+        (Some(6), Some(1))
+    );
+    assert_eq!(s["components"][0]["euler_characteristic"], 1);
+    assert_eq!(s["components"][0]["genus"], 0);
+    assert_eq!(
+        topolab(&["check", dir.join("none.obj").to_str().unwrap()]).0,
+        2
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -10,7 +10,17 @@
 //! | polygon | `repeated-vertex`, `non-simple-face`, `non-planar-face`, `non-convex-face` | facets are closed, simple, planar (and convex) polygons |
 //!
 //! Faces with a missing vertex or fewer than three distinct vertices take no part in the
-//! later checks (they have no edges to speak of); every other face does.
+//! later checks (they have no edges to speak of); faces that repeat a vertex or an earlier
+//! face's vertex set take no part in the edge analysis (they are reported already).
+//!
+//! Geometry is tested in floating point without exact predicates: a corner within rounding
+//! of a line counts as on it. A polygon is projected onto the coordinate plane most nearly
+//! parallel to it for the simplicity and convexity tests (the lecture's test by the sign of
+//! successive turns, run only on simple polygons); a self-intersecting polygon whose lobes
+//! cancel has zero area and is reported as degenerate. Polygons of more than
+//! [`MAX_SIMPLICITY_CORNERS`] corners are not tested for self-intersection. Geometric
+//! intersections between different faces (the lecture's "two facets share nothing, a vertex
+//! or an edge") are not tested.
 
 use crate::attributes::NewellSum;
 use crate::error::Error;
@@ -384,10 +394,10 @@ fn written_index(raw: &RawSoup, j: usize, k: usize) -> i64 {
     if v != crate::io::UNREPRESENTABLE {
         return v as i64;
     }
+    // The readers list them in file order, that is by (face, corner).
     raw.unrepresentable
-        .iter()
-        .find(|u| u.face == j && u.corner == k)
-        .map_or(v as i64, |u| u.index)
+        .binary_search_by_key(&(j, k), |u| (u.face, u.corner))
+        .map_or(v as i64, |i| raw.unrepresentable[i].index)
 }
 
 type Push<'a> = dyn FnMut(FindingKind, Vec<u32>, Vec<u32>, String) + 'a;
@@ -553,7 +563,10 @@ fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, push: &mut Pu
         DVec2::new(a[(drop + 1) % 3], a[(drop + 2) % 3])
     };
     let corner = |i: usize| flat(soup.positions[face[i % k] as usize]);
-    if let Some((a, b)) = self_intersection(k, &corner) {
+    let simplicity = (k <= MAX_SIMPLICITY_CORNERS)
+        .then(|| self_intersection(k, &corner))
+        .flatten();
+    if let Some((a, b)) = simplicity {
         push(
             FindingKind::NonSimpleFace,
             face.to_vec(),
@@ -578,6 +591,10 @@ fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, push: &mut Pu
         );
     }
 }
+
+/// Faces with more corners are not tested for self-intersection: the pairwise test is
+/// O(k²) (a 4096-gon takes about 8 million segment tests).
+pub const MAX_SIMPLICITY_CORNERS: usize = 4096;
 
 /// The first pair of edges (edge `i` from corner `i` to `i + 1`) of a closed polygon that meet
 /// other than at a shared corner, or adjacent edges that fold back onto each other.

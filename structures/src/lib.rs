@@ -2,7 +2,8 @@
 //!
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
 //! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
-//! [`conformance`]) and tested on ([`meshes`]).
+//! [`conformance`]) and tested on ([`meshes`]); [`checks`] runs the lecture's consistency
+//! checks on a file as written.
 //!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|

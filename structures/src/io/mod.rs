@@ -4,6 +4,9 @@
 //! soup), already checked with [`PolygonSoup::check`]. Bad files give a typed [`Error`] with
 //! the line or byte offset, never a panic; a header announcing more elements than the file can
 //! hold is refused before anything is allocated.
+//!
+//! [`read_raw`] and [`read_bytes_raw`] stop short of that check and return a [`RawSoup`]: the
+//! file as written, so that `topolab check` can report every problem instead of the first.
 
 use crate::error::{Error, Format, Result};
 use crate::soup::PolygonSoup;
