@@ -281,6 +281,7 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
 
     // Missing elements, and which faces are usable for everything else.
     let mut usable = vec![false; soup.num_faces()];
+    let mut repeats = vec![false; soup.num_faces()];
     let mut used = vec![false; n];
     let mut edges_without_end = HashSet::new();
     let mut sorted = Vec::new();
@@ -317,6 +318,12 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
         sorted.clear();
         sorted.extend_from_slice(face);
         sorted.sort_unstable();
+        let mut repeated: Vec<u32> = sorted
+            .windows(2)
+            .filter(|w| w[0] == w[1])
+            .map(|w| w[0])
+            .collect();
+        repeated.dedup();
         sorted.dedup();
         if sorted.len() < 3 {
             push(
@@ -331,12 +338,7 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
             );
             continue;
         }
-        if sorted.len() < face.len() {
-            let repeated: Vec<u32> = sorted
-                .iter()
-                .copied()
-                .filter(|v| face.iter().filter(|w| *w == v).count() > 1)
-                .collect();
+        if !repeated.is_empty() {
             push(
                 FindingKind::RepeatedVertex,
                 repeated.clone(),
@@ -345,6 +347,7 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
                     "face {j} visits vertices {repeated:?} more than once: not a simple polygon"
                 ),
             );
+            repeats[j] = true;
         }
         usable[j] = true;
     }
@@ -368,7 +371,7 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
 
     // The edge analysis on the usable faces that visit each vertex once and are not a
     // duplicate of an earlier face (already reported); face ids mapped back.
-    let analysed = |j: usize| usable[j] && !duplicate[j] && is_simple_cycle(soup.face(j));
+    let analysed = |j: usize| usable[j] && !duplicate[j] && !repeats[j];
     let kept: Vec<u32> = (0..soup.num_faces() as u32)
         .filter(|&j| analysed(j as usize))
         .collect();
@@ -381,11 +384,6 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
         *summary.counts.entry(f.kind.name()).or_default() += 1;
     }
     Report { findings, summary }
-}
-
-/// `true` when the face visits no vertex twice.
-fn is_simple_cycle(face: &[u32]) -> bool {
-    face.iter().enumerate().all(|(k, v)| !face[..k].contains(v))
 }
 
 /// The index the file wrote at corner `k` of face `j` (0-based), also when it does not fit `u32`.
