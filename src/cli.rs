@@ -42,6 +42,9 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The lecture's consistency checks on a mesh file: every problem, with the elements it
+    /// concerns. Exit code 0 when clean, 1 when problems were found, 2 when unreadable.
+    Check(crate::check::CheckArgs),
     /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
     Explain {
         /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
@@ -116,6 +119,7 @@ pub fn run(cli: Cli) -> u8 {
             out,
             order,
         } => crate::refine::refine(&mesh, levels, &scheme, &order, &out),
+        Command::Check(args) => return crate::check::run(args),
     };
     match result {
         Ok(text) => {

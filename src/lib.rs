@@ -7,6 +7,7 @@
 // Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
 #![deny(unsafe_code)]
 
+pub mod check;
 pub mod cli;
 pub mod report;
 

@@ -16,24 +16,42 @@ pub struct Plane {
     pub offset: f64,
 }
 
+/// Newell's vector of a polygon, accumulated corner by corner (no allocation): the sum of
+/// `p_i × p_{i+1}` around the polygon, whose direction is the normal and length twice the area.
+#[derive(Copy, Clone, Debug, Default)]
+pub struct NewellSum {
+    first: Option<DVec3>,
+    prev: DVec3,
+    sum: DVec3,
+}
+
+impl NewellSum {
+    /// Adds the next corner.
+    pub fn add(&mut self, p: DVec3) {
+        match self.first {
+            None => self.first = Some(p),
+            Some(_) => self.sum += self.prev.cross(p),
+        }
+        self.prev = p;
+    }
+
+    /// Closes the polygon and returns the vector.
+    pub fn finish(self) -> DVec3 {
+        match self.first {
+            Some(p0) => self.sum + self.prev.cross(p0),
+            None => self.sum,
+        }
+    }
+}
+
 /// Attributes of faces, edges and vertices, for every [`MeshTopology`].
 pub trait MeshAttributes: MeshTopology {
     /// Newell's vector of a face: its direction is the face normal, its length twice the area
     /// (exact for planar polygons of any size, robust for nearly planar ones).
     fn face_area_vector(&self, face: FaceId) -> DVec3 {
-        let (mut first, mut prev, mut sum) = (None, DVec3::ZERO, DVec3::ZERO);
-        self.face_vertices(face, |v| {
-            let p = self.position(v);
-            match first {
-                None => first = Some(p),
-                Some(_) => sum += prev.cross(p),
-            }
-            prev = p;
-        });
-        if let Some(p0) = first {
-            sum += prev.cross(p0);
-        }
-        sum
+        let mut newell = NewellSum::default();
+        self.face_vertices(face, |v| newell.add(self.position(v)));
+        newell.finish()
     }
 
     /// Unit face normal (zero for a degenerate face).

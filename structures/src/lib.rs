@@ -4,6 +4,8 @@
 //! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
 //! [`conformance`]) and tested on ([`meshes`]), refined to any size ([`refine`]) and
 //! renumbered to measure the effect of element order ([`ordering`]).
+//! [`conformance`]) and tested on ([`meshes`]); [`checks`] runs the lecture's consistency
+//! checks on a file as written.
 //!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|
@@ -29,6 +31,7 @@
 pub mod attributes;
 mod boundary_walk;
 pub mod che;
+pub mod checks;
 pub mod conformance;
 mod corner_scan;
 pub mod edge_list;

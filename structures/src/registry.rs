@@ -49,3 +49,26 @@ structures!(
     CheL2,
     CheL3
 );
+
+/// Builds `M` from the soup and validates it.
+struct BuildAndValidate<'a>(&'a crate::PolygonSoup);
+impl StructureVisitor for BuildAndValidate<'_> {
+    type Output = crate::Result<()>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        M::from_soup(self.0)?.validate()
+    }
+}
+
+/// Builds every structure from `soup` and runs its `validate()`: per structure, in [`NAMES`]
+/// order, its name and the outcome (a typed refusal for input it cannot store).
+pub fn build_each(soup: &crate::PolygonSoup) -> Vec<(&'static str, crate::Result<()>)> {
+    NAMES
+        .iter()
+        .map(|&name| {
+            (
+                name,
+                visit(name, BuildAndValidate(soup)).expect("registered"),
+            )
+        })
+        .collect()
+}

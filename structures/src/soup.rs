@@ -263,6 +263,21 @@ pub struct Connectivity {
 
 impl Connectivity {
     fn build(soup: &PolygonSoup) -> Result<Self> {
+        let (connectivity, mut problems) = Self::analyse(soup, true);
+        match problems.pop() {
+            Some(first) => Err(first),
+            None => Ok(connectivity),
+        }
+    }
+
+    /// The edge analysis of a checked soup that goes on past problems: every edge with more
+    /// than two faces ([`Error::NonManifoldEdge`]) and every pair of faces traversing their
+    /// shared edge in the same direction ([`Error::InconsistentOrientation`]) is reported, in
+    /// order of its end vertices. An inconsistent pair is still stored as twins; a
+    /// non-manifold edge is stored with no twin (all its corners map to it, `edge_corners`
+    /// holds its first corner only), so that [`Connectivity::vertex_fans`] still works.
+    /// `stop_at_first` ends the analysis at the first problem (what constructions want).
+    pub fn analyse(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
         let nc = soup.num_corners();
         let mut corner_face = Vec::with_capacity(nc);
         for (j, f) in soup.faces().enumerate() {
@@ -279,27 +294,26 @@ impl Connectivity {
             .collect();
         keys.sort_unstable();
         let mut edge_corners: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
+        // Per edge whose corners are not one corner or one twin pair: the edge and its corners.
+        let mut unpaired: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        let mut problems = Vec::new();
         let mut i = 0;
-        while i < keys.len() {
+        while i < keys.len() && (problems.is_empty() || !stop_at_first) {
             let mut j = i + 1;
             while j < keys.len() && keys[j].0 == keys[i].0 {
                 j += 1;
             }
             let (a, b) = ((keys[i].0 >> 32) as u32, keys[i].0 as u32);
-            match j - i {
-                1 => edge_corners.push([keys[i].1, u32::MAX]),
+            let problem = match j - i {
+                1 => None,
                 2 => {
-                    let (c0, c1) = (keys[i].1, keys[i + 1].1);
-                    if soup.indices[c0 as usize] == soup.indices[c1 as usize] {
-                        let (s, t) = (soup.indices[c0 as usize], soup.indices[next(c0 as usize)]);
-                        return Err(Error::InconsistentOrientation {
-                            a: s,
-                            b: t,
-                            f: corner_face[c0 as usize],
-                            g: corner_face[c1 as usize],
-                        });
-                    }
-                    edge_corners.push([c0, c1]);
+                    let (c0, c1) = (keys[i].1 as usize, keys[i + 1].1 as usize);
+                    (soup.indices[c0] == soup.indices[c1]).then(|| Error::InconsistentOrientation {
+                        a: soup.indices[c0],
+                        b: soup.indices[next(c0)],
+                        f: corner_face[c0],
+                        g: corner_face[c1],
+                    })
                 }
                 _ => {
                     let mut faces: Vec<u32> = keys[i..j]
@@ -307,25 +321,45 @@ impl Connectivity {
                         .map(|k| corner_face[k.1 as usize])
                         .collect();
                     faces.sort_unstable();
-                    return Err(Error::NonManifoldEdge { a, b, faces });
+                    Some(Error::NonManifoldEdge { a, b, faces })
+                }
+            };
+            match j - i {
+                1 => edge_corners.push([keys[i].1, u32::MAX]),
+                2 => edge_corners.push([keys[i].1, keys[i + 1].1]),
+                _ => {
+                    unpaired.push((edge_corners.len(), i..j));
+                    edge_corners.push([keys[i].1, u32::MAX]);
                 }
             }
+            problems.extend(problem);
             i = j;
         }
         // Number edges by first appearance (smallest corner).
-        edge_corners.sort_unstable_by_key(|e| e[0]);
+        let mut order: Vec<u32> = (0..edge_corners.len() as u32).collect();
+        order.sort_unstable_by_key(|&e| edge_corners[e as usize][0]);
+        let mut renumber = vec![0u32; order.len()];
+        for (new, &old) in order.iter().enumerate() {
+            renumber[old as usize] = new as u32;
+        }
         let mut corner_edge = vec![u32::MAX; nc];
-        for (e, cs) in edge_corners.iter().enumerate() {
-            corner_edge[cs[0] as usize] = e as u32;
-            if cs[1] != u32::MAX {
-                corner_edge[cs[1] as usize] = e as u32;
+        for (old, cs) in edge_corners.iter().enumerate() {
+            for c in cs.iter().filter(|&&c| c != u32::MAX) {
+                corner_edge[*c as usize] = renumber[old];
             }
         }
-        Ok(Self {
+        for (old, range) in unpaired {
+            for k in &keys[range] {
+                corner_edge[k.1 as usize] = renumber[old];
+            }
+        }
+        let edge_corners = order.iter().map(|&e| edge_corners[e as usize]).collect();
+        let connectivity = Self {
             edge_corners,
             corner_edge,
             corner_face,
-        })
+        };
+        (connectivity, problems)
     }
 
     /// Number of undirected edges.
@@ -337,7 +371,12 @@ impl Connectivity {
     #[inline]
     pub fn twin_corner(&self, c: usize) -> Option<usize> {
         let [c0, c1] = self.edge_corners[self.corner_edge[c] as usize];
-        let other = if c0 as usize == c { c1 } else { c0 };
+        // A corner that is neither (on an edge the lenient analysis left unpaired) has no twin.
+        let other = match c as u32 {
+            c if c == c0 => c1,
+            c if c == c1 => c0,
+            _ => u32::MAX,
+        };
         (other != u32::MAX).then_some(other as usize)
     }
 
@@ -361,8 +400,15 @@ impl Connectivity {
             let (c0, c1) = (c0 as usize, c1 as usize);
             let n0 = soup.next_corner(c0, self.corner_face[c0] as usize);
             let n1 = soup.next_corner(c1, self.corner_face[c1] as usize);
-            // c0 goes a->b, c1 goes b->a: at a, corners c0 and n1 meet; at b, n0 and c1.
-            for (x, y) in [(c0, n1), (n0, c1)] {
+            // c0 goes a->b, c1 goes b->a: at a, corners c0 and n1 meet; at b, n0 and c1. (A
+            // pair of the lenient analysis may both go a->b: then c0, c1 meet at a, n0, n1 at b.)
+            let same_direction = soup.indices[c0] == soup.indices[c1];
+            let meetings = if same_direction {
+                [(c0, c1), (n0, n1)]
+            } else {
+                [(c0, n1), (n0, c1)]
+            };
+            for (x, y) in meetings {
                 let (rx, ry) = (find(&mut parent, x as u32), find(&mut parent, y as u32));
                 if rx != ry {
                     parent[rx as usize] = ry;

@@ -4,6 +4,9 @@
 //! soup), already checked with [`PolygonSoup::check`]. Bad files give a typed [`Error`] with
 //! the line or byte offset, never a panic; a header announcing more elements than the file can
 //! hold is refused before anything is allocated.
+//!
+//! [`read_raw`] and [`read_bytes_raw`] stop short of that check and return a [`RawSoup`]: the
+//! file as written, so that `topolab check` can report every problem instead of the first.
 
 use crate::error::{Error, Format, Result};
 use crate::soup::PolygonSoup;
@@ -26,22 +29,130 @@ pub fn format_of(path: &Path) -> Result<Format> {
     }
 }
 
-/// Reads a mesh file, choosing the reader by extension.
+mod obj;
+mod off;
+mod ply;
+mod text;
+
+/// Reads a mesh file, choosing the reader by extension, and checks it
+/// ([`RawSoup::into_checked`]).
 pub fn read(path: &Path) -> Result<PolygonSoup> {
+    read_raw(path)?.into_checked()
+}
+
+/// Reads a mesh from memory and checks it ([`RawSoup::into_checked`]).
+pub fn read_bytes(bytes: &[u8], format: Format) -> Result<PolygonSoup> {
+    read_bytes_raw(bytes, format)?.into_checked()
+}
+
+/// Reads a mesh file as written, without [`PolygonSoup::check`]: for tools that report every
+/// problem of a file (`topolab check`) instead of stopping at the first.
+pub fn read_raw(path: &Path) -> Result<RawSoup> {
     let format = format_of(path)?;
     let bytes = std::fs::read(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
     })?;
-    read_bytes(&bytes, format)
+    read_bytes_raw(&bytes, format)
 }
 
-/// Reads a mesh from memory.
-pub fn read_bytes(bytes: &[u8], format: Format) -> Result<PolygonSoup> {
-    let _ = bytes;
-    Err(Error::Unsupported(format!(
-        "reading {format} is not implemented yet"
-    )))
+/// Reads a mesh from memory as written, without [`PolygonSoup::check`]. Fails only on what
+/// makes the file unreadable (syntax, truncation, an implausible header).
+pub fn read_bytes_raw(bytes: &[u8], format: Format) -> Result<RawSoup> {
+    match format {
+        Format::Obj => obj::read(bytes),
+        Format::Off => off::read(bytes),
+        Format::Ply => ply::read(bytes),
+    }
+}
+
+/// The corner value stored in a [`RawSoup`] for an index that no `u32` can hold (negative, or
+/// beyond `u32::MAX`). It is never a valid vertex: [`PolygonSoup::check`] refuses soups with
+/// `u32::MAX` or more vertices.
+pub const UNREPRESENTABLE: u32 = u32::MAX;
+
+/// An index of the file that does not fit a `u32` vertex id.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct UnrepresentableIndex {
+    /// The face (0-based, file order).
+    pub face: usize,
+    /// The corner within the face.
+    pub corner: usize,
+    /// The index as written, converted to 0-based (saturated at the `i64` range).
+    pub index: i64,
+}
+
+/// A mesh as the file wrote it: vertex i of the file is vertex i, face j is face j, nothing
+/// checked. Corners whose index does not fit a `u32` hold [`UNREPRESENTABLE`] and are listed in
+/// `unrepresentable` with the index as written.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RawSoup {
+    /// The positions and faces as read.
+    pub soup: PolygonSoup,
+    /// Every index that did not fit a `u32`, in file order.
+    pub unrepresentable: Vec<UnrepresentableIndex>,
+}
+
+impl RawSoup {
+    /// The soup, once [`PolygonSoup::check`] accepts it; an unrepresentable index is reported
+    /// first, as [`Error::IndexOutOfRange`] with the index as written.
+    pub fn into_checked(self) -> Result<PolygonSoup> {
+        if let Some(bad) = self.unrepresentable.first() {
+            return Err(Error::IndexOutOfRange {
+                face: bad.face,
+                index: bad.index,
+                vertices: self.soup.num_vertices(),
+            });
+        }
+        self.soup.check()?;
+        Ok(self.soup)
+    }
+}
+
+/// Collects faces corner by corner for the readers, turning file indices (already 0-based)
+/// into `u32` corners and recording the ones that do not fit.
+struct SoupBuilder {
+    raw: RawSoup,
+    /// Corners of the face being read.
+    face: Vec<u32>,
+}
+
+impl SoupBuilder {
+    fn with_capacity(vertices: usize, faces: usize) -> Self {
+        Self {
+            raw: RawSoup {
+                soup: PolygonSoup::with_capacity(vertices, faces, faces.saturating_mul(3)),
+                unrepresentable: Vec::new(),
+            },
+            face: Vec::new(),
+        }
+    }
+
+    /// Adds a corner of the current face: `index` is 0-based, as written.
+    fn corner(&mut self, index: i64) {
+        let stored = u32::try_from(index)
+            .ok()
+            .filter(|&v| v != UNREPRESENTABLE)
+            .unwrap_or_else(|| {
+                self.raw.unrepresentable.push(UnrepresentableIndex {
+                    face: self.raw.soup.num_faces(),
+                    corner: self.face.len(),
+                    index,
+                });
+                UNREPRESENTABLE
+            });
+        self.face.push(stored);
+    }
+
+    /// Ends the current face.
+    fn end_face(&mut self) {
+        self.raw.soup.push_face(&self.face);
+        self.face.clear();
+    }
+
+    fn finish(self) -> RawSoup {
+        self.raw
+    }
 }
 
 /// Writes `soup` as OBJ (1-based `v` and `f` lines).

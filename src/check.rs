@@ -1,0 +1,110 @@
+//! `topolab check FILE`: the lecture's consistency checks on a mesh file as written, every
+//! problem reported (not only the first). Exit code 0 when clean, 1 when problems were found,
+//! 2 when the file cannot be read.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use topolab_structures::checks::{self, Options, Report};
+
+/// Findings of one kind printed in the text report before "... and N more".
+const SHOWN_PER_KIND: usize = 10;
+
+/// Arguments of `topolab check`.
+#[derive(clap::Args, Debug)]
+pub struct CheckArgs {
+    /// The mesh file (.obj, .off, .ply).
+    pub file: PathBuf,
+    /// Print the findings and summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Distance under which positions are equal (duplicate vertices) and a face counts as
+    /// flat to a line (degenerate).
+    #[arg(long, default_value_t = Options::default().tolerance)]
+    pub tolerance: f64,
+    /// Largest distance of a corner from its face's plane, relative to the face's size.
+    #[arg(long, default_value_t = Options::default().planarity_tolerance)]
+    pub planarity_tolerance: f64,
+}
+
+/// Runs the check, prints the report; returns the exit code.
+pub fn run(args: CheckArgs) -> u8 {
+    let raw = match topolab_structures::io::read_raw(&args.file) {
+        Ok(raw) => raw,
+        Err(e) => {
+            eprintln!("topolab: cannot read {}: {e}", args.file.display());
+            return 2;
+        }
+    };
+    let options = Options {
+        tolerance: args.tolerance,
+        planarity_tolerance: args.planarity_tolerance,
+    };
+    let report = checks::check(&raw, &options);
+    let name = args.file.display().to_string();
+    if args.json {
+        let mut v = serde_json::to_value(&report).expect("serialisable");
+        v["file"] = name.into();
+        v["clean"] = report.is_clean().into();
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&v).expect("serialisable")
+        );
+    } else {
+        print!("{}", text(&name, &report));
+    }
+    if report.is_clean() {
+        0
+    } else {
+        1
+    }
+}
+
+/// The report for people: findings grouped by kind (the first few of each), then the summary.
+fn text(name: &str, report: &Report) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "file: {name}");
+    if report.is_clean() {
+        let _ = writeln!(out, "no problems found");
+    }
+    for kind in checks::FindingKind::ALL {
+        let of_kind: Vec<_> = report.findings.iter().filter(|f| f.kind == kind).collect();
+        if of_kind.is_empty() {
+            continue;
+        }
+        let _ = writeln!(out, "{} ({}):", kind.name(), of_kind.len());
+        for f in of_kind.iter().take(SHOWN_PER_KIND) {
+            let _ = writeln!(out, "  {}", f.message);
+        }
+        if of_kind.len() > SHOWN_PER_KIND {
+            let _ = writeln!(out, "  ... and {} more", of_kind.len() - SHOWN_PER_KIND);
+        }
+    }
+    let s = &report.summary;
+    let _ = writeln!(out, "summary:");
+    let _ = writeln!(
+        out,
+        "  vertices {}, faces {} ({} usable), edges {}, boundary edges {}, boundary curves {}",
+        s.vertices, s.faces, s.usable_faces, s.edges, s.boundary_edges, s.boundary_curves
+    );
+    let _ = writeln!(
+        out,
+        "  euler characteristic {}, components {}",
+        s.euler_characteristic,
+        s.components.len()
+    );
+    for (i, c) in s.components.iter().enumerate() {
+        let genus = c.genus.map_or("undefined".to_string(), |g| g.to_string());
+        let _ = writeln!(
+            out,
+            "  component {i}: {} faces, {} vertices, {} edges, {} boundary curves, χ {}, {}, {}, genus {genus}",
+            c.faces,
+            c.vertices,
+            c.edges,
+            c.boundary_curves,
+            c.euler_characteristic,
+            if c.manifold { "manifold" } else { "non-manifold" },
+            if c.orientable { "orientable" } else { "non-orientable" },
+        );
+    }
+    out
+}

@@ -1,0 +1,476 @@
+//! Stanford PLY, ASCII and binary (little and big endian).
+//!
+//! The `vertex` element gives the positions (its `x`, `y`, `z` properties, of any scalar type);
+//! the `face` element gives the faces (its list property `vertex_indices` or `vertex_index`,
+//! of any count and index type). Every other property and element is skipped by its type.
+
+use super::text::{
+    lines, parse_count, parse_f64, parse_int, parse_or_syntax, plausible, syntax, tokens, truncated,
+};
+use super::{RawSoup, SoupBuilder};
+use crate::error::{Error, Format, Location, Result};
+use glam::DVec3;
+
+const PLY: Format = Format::Ply;
+
+/// A scalar type of the PLY header, with both of its names.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+enum Scalar {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Scalar {
+    fn from_name(name: &[u8]) -> Option<Self> {
+        Some(match name {
+            b"char" | b"int8" => Scalar::I8,
+            b"uchar" | b"uint8" => Scalar::U8,
+            b"short" | b"int16" => Scalar::I16,
+            b"ushort" | b"uint16" => Scalar::U16,
+            b"int" | b"int32" => Scalar::I32,
+            b"uint" | b"uint32" => Scalar::U32,
+            b"float" | b"float32" => Scalar::F32,
+            b"double" | b"float64" => Scalar::F64,
+            _ => return None,
+        })
+    }
+
+    /// Bytes in the binary encodings.
+    fn size(self) -> u64 {
+        match self {
+            Scalar::I8 | Scalar::U8 => 1,
+            Scalar::I16 | Scalar::U16 => 2,
+            Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
+            Scalar::F64 => 8,
+        }
+    }
+}
+
+/// A property of an element.
+#[derive(Copy, Clone, Debug)]
+enum Property {
+    /// One value.
+    Scalar(Scalar),
+    /// A count, then that many items.
+    List { count: Scalar, item: Scalar },
+}
+
+/// What the reader does with an element's property.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+enum Role {
+    /// Coordinate `axis` of a vertex.
+    Coordinate(usize),
+    /// The corners of a face.
+    Corners,
+    /// Nothing: read past it.
+    Skip,
+}
+
+#[derive(Clone, Debug)]
+struct Element {
+    count: u64,
+    /// Each property with its role.
+    properties: Vec<(Property, Role)>,
+    /// `true` for the `vertex` element: each instance adds a vertex.
+    is_vertex: bool,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+enum Encoding {
+    Ascii,
+    LittleEndian,
+    BigEndian,
+}
+
+struct Header {
+    encoding: Encoding,
+    elements: Vec<Element>,
+    /// Byte offset of the body.
+    body: usize,
+    /// Line number of the body's first line (for ASCII errors).
+    body_line: usize,
+}
+
+pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
+    let header = read_header(bytes)?;
+    let body = &bytes[header.body..];
+    // Refuse counts the body cannot hold before allocating anything.
+    let mut remaining = body.len() as u64 + (header.encoding == Encoding::Ascii) as u64;
+    let (mut num_vertices, mut num_faces) = (0, 0);
+    for e in &header.elements {
+        let what = if e.is_vertex {
+            num_vertices = e.count;
+            "vertices"
+        } else if e.properties.iter().any(|p| p.1 == Role::Corners) {
+            num_faces = e.count;
+            "faces"
+        } else {
+            "elements"
+        };
+        remaining = plausible(PLY, what, e.count, min_bytes(e, header.encoding), remaining)?;
+    }
+    let mut out = SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize);
+    match header.encoding {
+        Encoding::Ascii => read_body(
+            &mut AsciiValues {
+                bytes: body,
+                pos: 0,
+                line: header.body_line,
+            },
+            &header.elements,
+            &mut out,
+        )?,
+        encoding => read_body(
+            &mut BinaryValues {
+                bytes,
+                pos: header.body,
+                big_endian: encoding == Encoding::BigEndian,
+            },
+            &header.elements,
+            &mut out,
+        )?,
+    }
+    Ok(out.finish())
+}
+
+/// The fewest bytes one instance of `e` takes: in binary, its scalars and list counts (lists
+/// may be empty); in ASCII, one digit and one separator per scalar or list count.
+fn min_bytes(e: &Element, encoding: Encoding) -> u64 {
+    e.properties
+        .iter()
+        .map(|(p, _)| match (encoding, p) {
+            (Encoding::Ascii, _) => 2,
+            (_, Property::Scalar(t)) | (_, Property::List { count: t, .. }) => t.size(),
+        })
+        .sum()
+}
+
+fn read_header(bytes: &[u8]) -> Result<Header> {
+    let mut lines = lines(bytes, 1);
+    match lines.next() {
+        Some(l) if l.content == b"ply" => {}
+        Some(_) => return Err(syntax(PLY, 1, "expected the magic line `ply`")),
+        None => {
+            return Err(truncated(
+                PLY,
+                1,
+                "empty file: expected the magic line `ply`",
+            ))
+        }
+    }
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    let mut last = 1;
+    for line in lines {
+        last = line.number;
+        let n = line.number;
+        let words: Vec<&[u8]> = tokens(line.content).collect();
+        match words.as_slice() {
+            [] | [b"comment", ..] | [b"obj_info", ..] => {}
+            [b"format", kind, _version] => {
+                encoding = Some(match *kind {
+                    b"ascii" => Encoding::Ascii,
+                    b"binary_little_endian" => Encoding::LittleEndian,
+                    b"binary_big_endian" => Encoding::BigEndian,
+                    _ => return Err(syntax(PLY, n, "unknown format")),
+                })
+            }
+            [b"element", name, count] => {
+                let count = parse_count(count)
+                    .ok_or_else(|| syntax(PLY, n, "element count is not a count"))?;
+                let is_vertex = *name == b"vertex";
+                if is_vertex && elements.iter().any(|e| e.is_vertex) {
+                    return Err(syntax(PLY, n, "a second vertex element"));
+                }
+                elements.push(Element {
+                    count,
+                    properties: Vec::new(),
+                    is_vertex,
+                });
+            }
+            [b"property", ..] => {
+                let element = elements
+                    .last_mut()
+                    .ok_or_else(|| syntax(PLY, n, "property before any element"))?;
+                let scalar = |name: &[u8]| {
+                    Scalar::from_name(name).ok_or_else(|| {
+                        syntax(
+                            PLY,
+                            n,
+                            format!("unknown type {:?}", String::from_utf8_lossy(name)),
+                        )
+                    })
+                };
+                let (property, name) = match words.as_slice() {
+                    [_, b"list", count, item, name] => (
+                        Property::List {
+                            count: scalar(count)?,
+                            item: scalar(item)?,
+                        },
+                        *name,
+                    ),
+                    [_, ty, name] => (Property::Scalar(scalar(ty)?), *name),
+                    _ => return Err(syntax(PLY, n, "malformed property line")),
+                };
+                let role = match (&property, name) {
+                    (Property::Scalar(_), b"x") if element.is_vertex => Role::Coordinate(0),
+                    (Property::Scalar(_), b"y") if element.is_vertex => Role::Coordinate(1),
+                    (Property::Scalar(_), b"z") if element.is_vertex => Role::Coordinate(2),
+                    (Property::List { .. }, b"vertex_indices" | b"vertex_index")
+                        if !element.is_vertex =>
+                    {
+                        Role::Corners
+                    }
+                    _ => Role::Skip,
+                };
+                if role != Role::Skip && element.properties.iter().any(|p| p.1 == role) {
+                    return Err(syntax(PLY, n, "a property given twice"));
+                }
+                element.properties.push((property, role));
+            }
+            [b"end_header"] => {
+                let encoding =
+                    encoding.ok_or_else(|| syntax(PLY, n, "no format line before end_header"))?;
+                if let Some(v) = elements.iter().find(|e| e.is_vertex) {
+                    for axis in 0..3 {
+                        if !v.properties.iter().any(|p| p.1 == Role::Coordinate(axis)) {
+                            return Err(syntax(PLY, n, "the vertex element lacks x, y or z"));
+                        }
+                    }
+                }
+                return Ok(Header {
+                    encoding,
+                    elements,
+                    body: line.end,
+                    body_line: n + 1,
+                });
+            }
+            _ => {
+                return Err(syntax(
+                    PLY,
+                    n,
+                    format!(
+                        "unexpected header line {:?}",
+                        String::from_utf8_lossy(line.content)
+                    ),
+                ))
+            }
+        }
+    }
+    Err(truncated(PLY, last, "the header has no end_header line"))
+}
+
+/// The values of a PLY body, in order, whatever the encoding.
+trait Values {
+    /// The next value, of type `ty`, as a float.
+    fn float(&mut self, ty: Scalar) -> Result<f64>;
+    /// The next value, of type `ty`, as an integer (saturated to `i64` in ASCII).
+    fn int(&mut self, ty: Scalar) -> Result<i64>;
+    /// Reads past `n` values of type `ty`.
+    fn skip(&mut self, ty: Scalar, n: u64) -> Result<()>;
+    /// Where the next value starts.
+    fn location(&self) -> Location;
+    /// Fails when anything but whitespace (ASCII) or anything at all (binary) is left: the
+    /// header's counts or types do not describe the body.
+    fn finish(&mut self) -> Result<()>;
+}
+
+fn read_body(values: &mut impl Values, elements: &[Element], out: &mut SoupBuilder) -> Result<()> {
+    for e in elements {
+        for _ in 0..e.count {
+            let mut xyz = [0.0; 3];
+            for (property, role) in &e.properties {
+                match (*property, *role) {
+                    (Property::Scalar(ty), Role::Coordinate(axis)) => {
+                        xyz[axis] = values.float(ty)?
+                    }
+                    (Property::Scalar(ty), _) => values.skip(ty, 1)?,
+                    (Property::List { count, item }, role) => {
+                        let location = values.location();
+                        let n = u64::try_from(values.int(count)?).map_err(|_| Error::Syntax {
+                            format: PLY,
+                            location,
+                            message: "negative list count".into(),
+                        })?;
+                        if role == Role::Corners {
+                            for _ in 0..n {
+                                let index = values.int(item)?;
+                                out.corner(index);
+                            }
+                            out.end_face();
+                        } else {
+                            values.skip(item, n)?;
+                        }
+                    }
+                }
+            }
+            if e.is_vertex {
+                out.raw.soup.push_vertex(DVec3::from_array(xyz));
+            }
+        }
+    }
+    values.finish()
+}
+
+/// ASCII body: whitespace-separated numbers.
+struct AsciiValues<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    /// Line of `pos`.
+    line: usize,
+}
+
+impl<'a> AsciiValues<'a> {
+    fn token(&mut self) -> Result<&'a [u8]> {
+        while let Some(&b) = self.bytes.get(self.pos) {
+            if !b.is_ascii_whitespace() {
+                break;
+            }
+            self.line += (b == b'\n') as usize;
+            self.pos += 1;
+        }
+        let start = self.pos;
+        while self
+            .bytes
+            .get(self.pos)
+            .is_some_and(|b| !b.is_ascii_whitespace())
+        {
+            self.pos += 1;
+        }
+        if start == self.pos {
+            return Err(truncated(PLY, self.line, "expected more values"));
+        }
+        Ok(&self.bytes[start..self.pos])
+    }
+
+    fn parsed<T>(&mut self, parse: fn(&[u8]) -> Option<T>, what: &str) -> Result<T> {
+        let word = self.token()?;
+        parse_or_syntax(PLY, self.line, word, parse, what)
+    }
+}
+
+impl Values for AsciiValues<'_> {
+    fn float(&mut self, _: Scalar) -> Result<f64> {
+        self.parsed(parse_f64, "a number")
+    }
+    fn int(&mut self, _: Scalar) -> Result<i64> {
+        self.parsed(parse_int, "an integer")
+    }
+    fn skip(&mut self, _: Scalar, n: u64) -> Result<()> {
+        for _ in 0..n {
+            self.token()?;
+        }
+        Ok(())
+    }
+    fn location(&self) -> Location {
+        Location::Line(self.line)
+    }
+    fn finish(&mut self) -> Result<()> {
+        match self.token() {
+            Ok(word) => Err(syntax(
+                PLY,
+                self.line,
+                format!(
+                    "{:?} after the last element the header announces",
+                    String::from_utf8_lossy(word)
+                ),
+            )),
+            Err(_) => Ok(()),
+        }
+    }
+}
+
+/// Binary body: fixed-size values in one byte order; `pos` counts from the start of the file.
+struct BinaryValues<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    big_endian: bool,
+}
+
+impl BinaryValues<'_> {
+    /// The next `N` bytes in little-endian order.
+    fn take<const N: usize>(&mut self) -> Result<[u8; N]> {
+        let mut raw: [u8; N] = self
+            .bytes
+            .get(self.pos..self.pos + N)
+            .and_then(|s| s.try_into().ok())
+            .ok_or_else(|| self.truncated(N as u64))?;
+        if self.big_endian {
+            raw.reverse();
+        }
+        self.pos += N;
+        Ok(raw)
+    }
+
+    fn truncated(&self, needed: u64) -> Error {
+        Error::Truncated {
+            format: PLY,
+            location: Location::Byte(self.pos as u64),
+            message: format!(
+                "{needed} more bytes expected, {} left",
+                self.bytes.len() - self.pos
+            ),
+        }
+    }
+
+    /// The next value: integers exactly, floats as `f64`.
+    fn value(&mut self, ty: Scalar) -> Result<Result<i64, f64>> {
+        Ok(match ty {
+            Scalar::I8 => Ok(i8::from_le_bytes(self.take()?) as i64),
+            Scalar::U8 => Ok(u8::from_le_bytes(self.take()?) as i64),
+            Scalar::I16 => Ok(i16::from_le_bytes(self.take()?) as i64),
+            Scalar::U16 => Ok(u16::from_le_bytes(self.take()?) as i64),
+            Scalar::I32 => Ok(i32::from_le_bytes(self.take()?) as i64),
+            Scalar::U32 => Ok(u32::from_le_bytes(self.take()?) as i64),
+            Scalar::F32 => Err(f32::from_le_bytes(self.take()?) as f64),
+            Scalar::F64 => Err(f64::from_le_bytes(self.take()?)),
+        })
+    }
+}
+
+impl Values for BinaryValues<'_> {
+    fn float(&mut self, ty: Scalar) -> Result<f64> {
+        Ok(self.value(ty)?.map_or_else(|f| f, |i| i as f64))
+    }
+    fn int(&mut self, ty: Scalar) -> Result<i64> {
+        let location = self.location();
+        match self.value(ty)? {
+            Ok(i) => Ok(i),
+            // A float where an integer belongs: accepted only when it is one.
+            Err(f) if f.is_finite() && f.fract() == 0.0 => Ok(f as i64),
+            Err(f) => Err(Error::Syntax {
+                format: PLY,
+                location,
+                message: format!("{f} is not an integer"),
+            }),
+        }
+    }
+    fn skip(&mut self, ty: Scalar, n: u64) -> Result<()> {
+        let bytes = n.saturating_mul(ty.size());
+        if bytes > (self.bytes.len() - self.pos) as u64 {
+            return Err(self.truncated(bytes));
+        }
+        self.pos += bytes as usize;
+        Ok(())
+    }
+    fn location(&self) -> Location {
+        Location::Byte(self.pos as u64)
+    }
+    fn finish(&mut self) -> Result<()> {
+        let left = self.bytes.len() - self.pos;
+        if left == 0 {
+            return Ok(());
+        }
+        Err(Error::Syntax {
+            format: PLY,
+            location: self.location(),
+            message: format!("{left} bytes after the last element the header announces"),
+        })
+    }
+}

@@ -1,0 +1,192 @@
+//! Property-based fuzzing: random bytes and random mutations of valid files, through every
+//! reader, the checker, and the construction of every registered structure. Nothing may
+//! panic; every refusal is a typed error.
+//!
+//! CI runs a thousand cases per property (a few seconds). A longer run:
+//! `TOPOLAB_FUZZ_CASES=200000 cargo test --release -p topolab-structures --test fuzz`.
+
+use proptest::prelude::*;
+use proptest::test_runner::Config;
+use topolab_structures::checks::{check, Options};
+use topolab_structures::io::{self, read_bytes_raw};
+use topolab_structures::{meshes, registry, Format};
+
+mod support;
+
+/// Cases per property: `TOPOLAB_FUZZ_CASES`, or a CI-sized default.
+fn config() -> Config {
+    let cases = std::env::var("TOPOLAB_FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1000);
+    Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    }
+}
+
+const FORMATS: [Format; 3] = [Format::Obj, Format::Off, Format::Ply];
+
+/// Everything downstream of the readers on `bytes` read as `format`: the raw reader, the
+/// checker on what it read, the checked reader, and every structure on what passes.
+fn exercise(bytes: &[u8], format: Format) -> Result<(), TestCaseError> {
+    let raw = match read_bytes_raw(bytes, format) {
+        Ok(raw) => raw,
+        Err(e) => {
+            // The checked reader fails the same way on an unreadable file.
+            let checked = io::read_bytes(bytes, format).expect_err("unreadable raw");
+            prop_assert_eq!(checked.kind(), e.kind());
+            return Ok(());
+        }
+    };
+    let report = check(&raw, &Options::default());
+    prop_assert_eq!(report.summary.vertices, raw.soup.num_vertices());
+    let Ok(soup) = raw.into_checked() else {
+        return Ok(());
+    };
+    for (name, outcome) in registry::build_each(&soup) {
+        // A structure may refuse input it cannot store, but what it built must validate.
+        if let Err(e) = outcome {
+            prop_assert_ne!(
+                e.kind(),
+                "invariant",
+                "{} broke on its own build: {}",
+                name,
+                e
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Valid files of every format and encoding to mutate.
+fn seeds() -> Vec<(Vec<u8>, Format)> {
+    let mut out = Vec::new();
+    for soup in [
+        meshes::mixed_polygons(),
+        meshes::quad_cube(),
+        meshes::bowtie(),
+    ] {
+        let mut obj = Vec::new();
+        io::write_obj(&mut obj, &soup).unwrap();
+        let mut off = Vec::new();
+        io::write_off(&mut off, &soup).unwrap();
+        out.push((obj, Format::Obj));
+        out.push((off, Format::Off));
+        out.push((support::ascii_ply(&soup).into_bytes(), Format::Ply));
+        out.push((support::binary_ply(&soup, false), Format::Ply));
+        out.push((support::binary_ply(&soup, true), Format::Ply));
+    }
+    out
+}
+
+/// One edit of a file: positions are taken modulo its length.
+#[derive(Clone, Debug)]
+enum Mutation {
+    /// XOR a byte.
+    Flip(usize, u8),
+    /// Insert a byte.
+    Insert(usize, u8),
+    /// Insert a token that readers must handle with care.
+    Token(usize, &'static str),
+    /// Remove up to `n` bytes.
+    Delete(usize, usize),
+    /// Repeat up to `n` bytes.
+    Duplicate(usize, usize),
+    /// Cut the file.
+    Truncate(usize),
+}
+
+fn mutation() -> impl Strategy<Value = Mutation> {
+    const TOKENS: &[&str] = &[
+        "-1",
+        "0",
+        "4294967295",
+        "4294967296",
+        "99999999999999999999",
+        "nan",
+        "inf",
+        "1e999",
+        "\n",
+        " ",
+        "#",
+        "/",
+        "f",
+        "v",
+        "end_header\n",
+        "255",
+        "1000000000000",
+    ];
+    prop_oneof![
+        (any::<usize>(), 1..=255u8).prop_map(|(p, b)| Mutation::Flip(p, b)),
+        (any::<usize>(), any::<u8>()).prop_map(|(p, b)| Mutation::Insert(p, b)),
+        (any::<usize>(), prop::sample::select(TOKENS)).prop_map(|(p, t)| Mutation::Token(p, t)),
+        (any::<usize>(), 1..16usize).prop_map(|(p, n)| Mutation::Delete(p, n)),
+        (any::<usize>(), 1..64usize).prop_map(|(p, n)| Mutation::Duplicate(p, n)),
+        any::<usize>().prop_map(Mutation::Truncate),
+    ]
+}
+
+fn apply(bytes: &mut Vec<u8>, m: &Mutation) {
+    let at = |p: usize, len: usize| if len == 0 { 0 } else { p % (len + 1) };
+    let len = bytes.len();
+    match *m {
+        Mutation::Flip(p, b) if len > 0 => bytes[p % len] ^= b,
+        Mutation::Flip(..) => {}
+        Mutation::Insert(p, b) => bytes.insert(at(p, len), b),
+        Mutation::Token(p, t) => {
+            let i = at(p, len);
+            bytes.splice(i..i, t.bytes());
+        }
+        Mutation::Delete(p, n) => {
+            let i = at(p, len);
+            bytes.drain(i..(i + n).min(len));
+        }
+        Mutation::Duplicate(p, n) => {
+            let i = at(p, len);
+            let piece = bytes[i..(i + n).min(len)].to_vec();
+            bytes.splice(i..i, piece);
+        }
+        Mutation::Truncate(p) => bytes.truncate(at(p, len)),
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn random_bytes_never_panic_any_reader(bytes in prop::collection::vec(any::<u8>(), 0..600)) {
+        for format in FORMATS {
+            exercise(&bytes, format)?;
+        }
+    }
+
+    #[test]
+    fn random_text_never_panics_any_reader(
+        text in "(ply|format ascii 1.0|element (vertex|face) [0-9]{1,3}|property (float|uchar|int|list uchar int) [a-z_]{1,14}|end_header|OFF|v|f|[0-9 ./-]{0,12}|nan|\n){0,40}"
+    ) {
+        for format in FORMATS {
+            exercise(text.as_bytes(), format)?;
+        }
+    }
+
+    #[test]
+    fn mutated_valid_files_never_panic(
+        seed in 0..15usize,
+        edits in prop::collection::vec(mutation(), 1..6),
+    ) {
+        let (mut bytes, format) = seeds().swap_remove(seed);
+        for m in &edits {
+            apply(&mut bytes, m);
+        }
+        exercise(&bytes, format)?;
+    }
+}
+
+#[test]
+fn the_seeds_are_valid_files() {
+    for (bytes, format) in seeds() {
+        io::read_bytes(&bytes, format).unwrap();
+    }
+}

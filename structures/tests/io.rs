@@ -1,0 +1,257 @@
+//! The readers: round trips through the writers, every syntax feature of each format, and the
+//! typed errors (with their location) on bad files.
+
+use glam::DVec3;
+use proptest::prelude::*;
+use topolab_structures::io::{self, read_bytes, read_bytes_raw};
+use topolab_structures::meshes::{self, RandomMeshParams};
+use topolab_structures::{Error, Format, Location, PolygonSoup};
+
+mod support;
+use support::{ascii_ply, binary_ply};
+
+fn round_trip(soup: &PolygonSoup) {
+    let mut obj = Vec::new();
+    io::write_obj(&mut obj, soup).unwrap();
+    assert_eq!(&read_bytes(&obj, Format::Obj).unwrap(), soup, "OBJ");
+    let mut off = Vec::new();
+    io::write_off(&mut off, soup).unwrap();
+    assert_eq!(&read_bytes(&off, Format::Off).unwrap(), soup, "OFF");
+}
+
+#[test]
+fn canonical_meshes_survive_a_round_trip_through_obj_and_off() {
+    for m in meshes::canonical() {
+        round_trip(&m.soup);
+    }
+}
+
+proptest! {
+    #[test]
+    fn random_meshes_survive_a_round_trip(seed in any::<u64>()) {
+        round_trip(&meshes::random_mesh(seed, RandomMeshParams::default()));
+    }
+}
+
+/// The quad and the triangle of the canonical mixed-polygons mesh, without the pentagon.
+fn square_with_triangle() -> PolygonSoup {
+    let mixed = meshes::mixed_polygons();
+    PolygonSoup::from_polygons(
+        mixed.positions[..5].to_vec(),
+        &[mixed.face(0), mixed.face(1)],
+    )
+}
+
+#[test]
+fn obj_reads_every_corner_form_and_skips_what_a_soup_does_not_store() {
+    let text = "# a comment\nmtllib a.mtl\no thing\ng group\ns off\nusemtl red\n\
+        v 0 0 0 1\nv 1 0 0 1 0.5 0.5 0.5\nvt 0 0\nvn 0 0 1\nv 1 1 0\n\
+        f 1/1/1 2//1 3/1\nv 0 1 0\r\nv 0.5 1.7 0 # apex\n\
+        f -2 3 5\r\nl 1 2\np 1\n";
+    let soup = read_bytes(text.as_bytes(), Format::Obj).unwrap();
+    let mut expected = square_with_triangle();
+    expected = PolygonSoup::from_polygons(expected.positions.clone(), &[[0u32, 1, 2], [3, 2, 4]]);
+    assert_eq!(soup, expected);
+}
+
+#[test]
+fn an_obj_point_cloud_reads_as_a_soup_without_faces() {
+    let soup = read_bytes(b"v 1 2 3\nv 4 5 6\n", Format::Obj).unwrap();
+    assert_eq!((soup.num_vertices(), soup.num_faces()), (2, 0));
+    assert_eq!(soup.positions[1], DVec3::new(4.0, 5.0, 6.0));
+}
+
+#[test]
+fn off_reads_variants_comments_and_face_colours() {
+    let expected = square_with_triangle();
+    let plain = "OFF\n# comment\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n\n0 1 0\n0.5 1.7 0\n\
+        4 0 1 2 3\n3 3 2 4\n";
+    let coloured = "COFF 5 2 7\n0 0 0 255 0 0 255\n1 0 0 1 1 1 1\n1 1 0 0 0 0 0\n0 1 0 1 1 1 1\n\
+        0.5 1.7 0 0 0 0 0\n4 0 1 2 3 255 0 0\n3 3 2 4 0.1 0.2 0.3 # trailing colour\n";
+    let normals = "NOFF\n5 2 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0 0 0 1\n\
+        0.5 1.7 0 0 0 1\n4 0 1 2 3\n3 3 2 4";
+    for text in [plain, coloured, normals] {
+        assert_eq!(read_bytes(text.as_bytes(), Format::Off).unwrap(), expected);
+    }
+}
+
+#[test]
+fn ply_reads_ascii_and_both_binary_byte_orders_with_any_scalar_types() {
+    let soup = meshes::quad_cube();
+    assert_eq!(
+        read_bytes(ascii_ply(&soup).as_bytes(), Format::Ply).unwrap(),
+        soup
+    );
+    for big_endian in [false, true] {
+        assert_eq!(
+            read_bytes(&binary_ply(&soup, big_endian), Format::Ply).unwrap(),
+            soup,
+            "big endian: {big_endian}"
+        );
+    }
+}
+
+#[test]
+fn ply_ascii_keeps_double_precision() {
+    let soup = meshes::open_tetrahedron();
+    assert_eq!(
+        read_bytes(ascii_ply(&soup).as_bytes(), Format::Ply).unwrap(),
+        soup
+    );
+}
+
+fn error(bytes: &[u8], format: Format) -> Error {
+    read_bytes(bytes, format).expect_err("the file is bad")
+}
+
+#[test]
+fn syntax_errors_name_their_line() {
+    for (text, format, line) in [
+        ("v 0 0 0\nv 1 x 0\n", Format::Obj, 2),
+        ("v 0 0 0\n\nfoo bar\n", Format::Obj, 3),
+        ("v 0 0 0\nf 1 a 1\n", Format::Obj, 2),
+        ("OFF\n1 0 0\n0 zero 0\n", Format::Off, 3),
+        ("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n3 0 1 2\n", Format::Off, 6),
+        ("ply\nformat ascii 1.0\nelement vertex 1\nproperty weird x\nend_header\n", Format::Ply, 4),
+        ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 what\n", Format::Ply, 8),
+        ("PLY\n", Format::Ply, 1),
+    ] {
+        match error(text.as_bytes(), format) {
+            Error::Syntax { location, .. } => assert_eq!(location, Location::Line(line), "{text:?}"),
+            other => panic!("{text:?}: expected a syntax error, got {other}"),
+        }
+    }
+}
+
+#[test]
+fn cut_files_are_truncated_not_syntax_errors() {
+    let soup = meshes::quad_cube();
+    let mut off = Vec::new();
+    io::write_off(&mut off, &soup).unwrap();
+    let ascii = ascii_ply(&soup).into_bytes();
+    let binary = binary_ply(&soup, false);
+    for (bytes, format) in [
+        (&off[..off.len() - 3], Format::Off),
+        (&off[..off.len() - 12], Format::Off),
+        (&ascii[..ascii.len() - 4], Format::Ply),
+        (&binary[..binary.len() - 5], Format::Ply),
+        (&b""[..], Format::Off),
+        (&b"ply\nformat ascii 1.0\n"[..], Format::Ply),
+    ] {
+        let e = error(bytes, format);
+        assert_eq!(e.kind(), "truncated", "{e}");
+    }
+    match error(&binary[..binary.len() - 5], Format::Ply) {
+        Error::Truncated { location, .. } => {
+            assert!(matches!(location, Location::Byte(b) if b > 0 && b < binary.len() as u64))
+        }
+        other => panic!("{other}"),
+    }
+}
+
+#[test]
+fn headers_announcing_more_than_the_file_holds_are_refused_before_allocating() {
+    let off = b"OFF\n1000000000000 1 0\n0 0 0\n";
+    let ply = b"ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n\
+        property float x\nproperty float y\nproperty float z\nend_header\n";
+    let faces = b"OFF\n3 1000000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    for (bytes, format, what) in [
+        (&off[..], Format::Off, "vertices"),
+        (&ply[..], Format::Ply, "vertices"),
+        (&faces[..], Format::Off, "faces"),
+    ] {
+        match error(bytes, format) {
+            Error::ImplausibleHeader {
+                what: w, announced, ..
+            } => assert_eq!((w, announced), (what, 1_000_000_000_000)),
+            other => panic!("expected an implausible header, got {other}"),
+        }
+    }
+}
+
+#[test]
+fn indices_out_of_range_negative_or_beyond_u32_are_index_errors_with_the_written_index() {
+    for (text, format, index) in [
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", Format::Obj, 3),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", Format::Obj, -1),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", Format::Obj, -1),
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n",
+            Format::Obj,
+            4294967296,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n",
+            Format::Off,
+            -1,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967295\n",
+            Format::Off,
+            4294967295,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999999\n",
+            Format::Off,
+            i64::MAX,
+        ),
+    ] {
+        match error(text.as_bytes(), format) {
+            Error::IndexOutOfRange {
+                face,
+                index: i,
+                vertices,
+            } => {
+                assert_eq!((face, i, vertices), (0, index, 3), "{text:?}")
+            }
+            other => panic!("{text:?}: {other}"),
+        }
+    }
+}
+
+#[test]
+fn the_soup_check_runs_on_what_was_read() {
+    for (text, kind) in [
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 nan\nf 1 2 3\n",
+            "non-finite-coordinate",
+        ),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 inf\n", "non-finite-coordinate"),
+        ("v 0 0 0\nv 1 0 0\nf 1 2\n", "too-few-corners"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1\n", "repeated-vertex"),
+    ] {
+        assert_eq!(error(text.as_bytes(), Format::Obj).kind(), kind, "{text:?}");
+    }
+}
+
+#[test]
+fn the_raw_reader_keeps_what_the_check_refuses() {
+    let raw = read_bytes_raw(b"v 0 0 0\nv 1 0 0\nf 1 2 -9\nf 1 2 7\n", Format::Obj).unwrap();
+    assert_eq!(raw.soup.num_faces(), 2);
+    assert_eq!(raw.soup.face(0), &[0, 1, io::UNREPRESENTABLE]);
+    assert_eq!(raw.soup.face(1), &[0, 1, 6]);
+    assert_eq!(raw.unrepresentable.len(), 1);
+    assert_eq!(
+        (raw.unrepresentable[0].face, raw.unrepresentable[0].index),
+        (0, -7)
+    );
+}
+
+#[test]
+fn files_are_read_by_extension() {
+    let dir = std::env::temp_dir().join(format!("topolab-io-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let soup = meshes::mixed_polygons();
+    for ext in ["obj", "off"] {
+        let path = dir.join(format!("mesh.{ext}"));
+        io::write(&path, &soup).unwrap();
+        assert_eq!(io::read(&path).unwrap(), soup);
+    }
+    let missing = io::read(&dir.join("none.obj")).unwrap_err();
+    assert_eq!(missing.kind(), "io");
+    assert_eq!(
+        io::read(&dir.join("mesh.stl")).unwrap_err().kind(),
+        "unknown-format"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

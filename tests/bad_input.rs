@@ -1,0 +1,292 @@
+//! The bad-input corpus (`tests/bad-input/`, written by its `generate.py`): every reader and
+//! every structure answers with the exact typed error, and `topolab check` reports each
+//! problem with the right exit code.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use topolab_structures::{io, registry};
+
+/// Per file: the kind of the first error of the strict pipeline (read, then the edge and
+/// vertex-fan analysis every manifold structure runs; "ok" when all pass), and the finding
+/// what `topolab check` must say.
+const CORPUS: &[(&str, &str, Check)] = &[
+    // OBJ
+    ("empty.obj", "ok", Clean),
+    ("obj-bad-token.obj", "syntax", Unreadable),
+    ("obj-unknown-statement.obj", "syntax", Unreadable),
+    ("obj-short-vertex.obj", "syntax", Unreadable),
+    ("obj-truncated.obj", "truncated", Unreadable),
+    (
+        "obj-index-out-of-range.obj",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "obj-negative-out-of-range.obj",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "obj-index-zero.obj",
+        "index-out-of-range",
+        Finds("edge-without-end-point"),
+    ),
+    (
+        "obj-index-overflows-u32.obj",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "obj-index-overflows-i64.obj",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "obj-nan.obj",
+        "non-finite-coordinate",
+        Finds("non-finite-coordinate"),
+    ),
+    (
+        "obj-inf.obj",
+        "non-finite-coordinate",
+        Finds("non-finite-coordinate"),
+    ),
+    (
+        "obj-one-vertex-face.obj",
+        "too-few-corners",
+        Finds("too-few-vertices"),
+    ),
+    (
+        "obj-two-vertex-face.obj",
+        "too-few-corners",
+        Finds("too-few-vertices"),
+    ),
+    (
+        "obj-repeated-vertex.obj",
+        "repeated-vertex",
+        Finds("repeated-vertex"),
+    ),
+    (
+        "non-manifold-edge.obj",
+        "non-manifold-edge",
+        Finds("non-manifold-edge"),
+    ),
+    (
+        "non-manifold-vertex.obj",
+        "non-manifold-vertex",
+        Finds("non-manifold-vertex"),
+    ),
+    (
+        "inconsistent-orientation.obj",
+        "inconsistent-orientation",
+        Finds("inconsistent-orientation"),
+    ),
+    (
+        "mobius.obj",
+        "inconsistent-orientation",
+        Finds("non-orientable"),
+    ),
+    (
+        "duplicate-face.obj",
+        "inconsistent-orientation",
+        Finds("duplicate-face"),
+    ),
+    (
+        "geometric-duplicate-face.obj",
+        "ok",
+        Finds("geometric-duplicate-face"),
+    ),
+    (
+        "duplicate-vertices.obj",
+        "non-manifold-vertex",
+        Finds("duplicate-vertices"),
+    ),
+    ("unused-vertex.obj", "ok", Finds("unused-vertex")),
+    ("point-cloud.obj", "ok", Finds("unused-vertex")),
+    ("degenerate-face.obj", "ok", Finds("degenerate-face")),
+    ("non-planar-face.obj", "ok", Finds("non-planar-face")),
+    ("non-convex-face.obj", "ok", Finds("non-convex-face")),
+    ("non-simple-face.obj", "ok", Finds("non-simple-face")),
+    // OFF
+    ("empty.off", "truncated", Unreadable),
+    ("off-no-header.off", "syntax", Unreadable),
+    ("off-bad-count.off", "syntax", Unreadable),
+    (
+        "off-huge-vertex-count.off",
+        "implausible-header",
+        Unreadable,
+    ),
+    ("off-huge-face-count.off", "implausible-header", Unreadable),
+    ("off-truncated.off", "truncated", Unreadable),
+    ("off-truncated-in-face.off", "truncated", Unreadable),
+    (
+        "off-negative-index.off",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "off-index-overflows-u32.off",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "off-nan.off",
+        "non-finite-coordinate",
+        Finds("non-finite-coordinate"),
+    ),
+    (
+        "off-two-vertex-face.off",
+        "too-few-corners",
+        Finds("too-few-vertices"),
+    ),
+    // PLY
+    ("empty.ply", "truncated", Unreadable),
+    ("ply-no-end-header.ply", "truncated", Unreadable),
+    ("ply-bad-format.ply", "syntax", Unreadable),
+    ("ply-missing-z.ply", "syntax", Unreadable),
+    ("ply-ascii-bad-token.ply", "syntax", Unreadable),
+    (
+        "ply-ascii-nan.ply",
+        "non-finite-coordinate",
+        Finds("non-finite-coordinate"),
+    ),
+    ("ply-ascii-truncated.ply", "truncated", Unreadable),
+    (
+        "ply-ascii-huge-header.ply",
+        "implausible-header",
+        Unreadable,
+    ),
+    (
+        "ply-binary-huge-header.ply",
+        "implausible-header",
+        Unreadable,
+    ),
+    ("ply-binary-too-short.ply", "truncated", Unreadable),
+    (
+        "ply-binary-big-endian-too-short.ply",
+        "truncated",
+        Unreadable,
+    ),
+    ("ply-binary-too-long.ply", "syntax", Unreadable),
+    (
+        "ply-binary-negative-index.ply",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "ply-binary-index-overflows-u32.ply",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    ("ply-binary-negative-list-count.ply", "syntax", Unreadable),
+    (
+        "ply-binary-one-vertex-face.ply",
+        "too-few-corners",
+        Finds("too-few-vertices"),
+    ),
+];
+
+/// What `topolab check` says about a file.
+#[derive(Copy, Clone, Debug)]
+enum Check {
+    /// It cannot read it: exit code 2.
+    Unreadable,
+    /// Nothing to report: exit code 0.
+    Clean,
+    /// At least this finding: exit code 1.
+    Finds(&'static str),
+}
+use Check::{Clean, Finds, Unreadable};
+
+/// Refusals that depend on what a structure can store, not on the file being broken.
+const CAPABILITY_REFUSALS: &[&str] = &[
+    "not-triangles",
+    "coincident-vertices",
+    "not-a-grid",
+    "non-manifold-vertex",
+];
+
+fn corpus(file: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/bad-input")
+        .join(file)
+}
+
+/// The kind of the first error of the strict pipeline, or "ok".
+fn strict_kind(path: &Path) -> &'static str {
+    let soup = match io::read(path) {
+        Ok(soup) => soup,
+        Err(e) => return e.kind(),
+    };
+    match soup.connectivity().and_then(|c| c.check_vertex_fans(&soup)) {
+        Ok(()) => "ok",
+        Err(e) => e.kind(),
+    }
+}
+
+#[test]
+fn the_corpus_is_complete_and_every_file_is_in_the_table() {
+    let mut on_disk: Vec<String> = std::fs::read_dir(corpus(""))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n != "generate.py")
+        .collect();
+    on_disk.sort();
+    let mut listed: Vec<String> = CORPUS.iter().map(|c| c.0.to_string()).collect();
+    listed.sort();
+    assert_eq!(on_disk, listed);
+    assert!(CORPUS.len() >= 30);
+}
+
+#[test]
+fn every_corpus_file_gives_its_exact_error_kind() {
+    for &(file, expected, _) in CORPUS {
+        assert_eq!(strict_kind(&corpus(file)), expected, "{file}");
+    }
+}
+
+#[test]
+fn every_structure_builds_or_refuses_corpus_files_with_a_typed_error() {
+    for &(file, expected, _) in CORPUS {
+        let Ok(soup) = io::read(&corpus(file)) else {
+            continue;
+        };
+        for (name, outcome) in registry::build_each(&soup) {
+            if let Err(e) = outcome {
+                assert!(
+                    e.kind() == expected || CAPABILITY_REFUSALS.contains(&e.kind()),
+                    "{name} refused {file} with {} ({e}); the file's problem is {expected}",
+                    e.kind()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn check_reports_each_problem_with_its_exit_code() {
+    for &(file, _, expected) in CORPUS {
+        let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+            .args(["check", "--json"])
+            .arg(corpus(file))
+            .output()
+            .unwrap();
+        let code = out.status.code().unwrap();
+        match expected {
+            Clean => assert_eq!(code, 0, "{file}"),
+            Unreadable => assert_eq!(code, 2, "{file}"),
+            Finds(kind) => {
+                assert_eq!(code, 1, "{file}");
+                let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+                let kinds: Vec<&str> = report["findings"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|f| f["kind"].as_str().unwrap())
+                    .collect();
+                assert!(kinds.contains(&kind), "{file}: {kinds:?}");
+                assert_eq!(report["clean"], false);
+            }
+        }
+    }
+}

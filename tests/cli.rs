@@ -1,0 +1,111 @@
+//! `topolab info` on mesh files of each format, run as a user would: the binary, a file, JSON.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// A fresh directory for this test's files.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("topolab-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Runs `topolab args...`; returns the exit code and stdout.
+fn topolab(args: &[&str]) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().expect("exited normally"),
+        String::from_utf8(out.stdout).expect("UTF-8 output"),
+    )
+}
+
+fn info_json(path: &Path, structure: &str) -> serde_json::Value {
+    let (code, stdout) = topolab(&[
+        "info",
+        path.to_str().unwrap(),
+        "--structure",
+        structure,
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{}: {stdout}", path.display());
+    serde_json::from_str(&stdout).expect("JSON")
+}
+
+/// The open tetrahedron of the CHE chapter (apex 3) in each format.
+const OBJ: &str = "# open tetrahedron\no tet\nv 0 0 0\nv 1 0 0\nv 0.5 0.8 0\nv 0.5 0.3 0.8\n\
+    vn 0 0 1\nf 1//1 2//1 4//1\nf 2 3 4\nf -2 -4 -1\n";
+const OFF: &str = "OFF\n4 3 6\n0 0 0\n1 0 0\n0.5 0.8 0\n0.5 0.3 0.8\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+const PLY: &str = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n\
+    property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n\
+    0 0 0\n1 0 0\n0.5 0.8 0\n0.5 0.3 0.8\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+
+#[test]
+fn info_reads_obj_off_and_ply_files_with_every_structure() {
+    let dir = temp_dir("formats");
+    for (name, text) in [("tet.obj", OBJ), ("tet.off", OFF), ("tet.ply", PLY)] {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        for structure in ["vertex-list", "explicit"] {
+            let v = info_json(&path, structure);
+            let facts = [
+                ("vertices", 4),
+                ("edges", 6),
+                ("faces", 3),
+                ("boundary_edges", 3),
+                ("boundary_curves", 1),
+                ("euler_characteristic", 1),
+            ];
+            for (field, expected) in facts {
+                assert_eq!(v[field], expected, "{name} {structure} {field}");
+            }
+            assert_eq!(v["structure"], structure, "{name}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn info_exits_2_on_an_unreadable_file_and_1_on_a_non_manifold_mesh() {
+    let dir = temp_dir("exit-codes");
+    let unreadable = dir.join("bad.off");
+    std::fs::write(&unreadable, "OFF\n3 1 0\n0 0 0\n1 oops 0\n").unwrap();
+    // Three triangles on one edge (0, 1).
+    let fin = dir.join("fin.obj");
+    std::fs::write(
+        &fin,
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n",
+    )
+    .unwrap();
+    assert_eq!(topolab(&["info", unreadable.to_str().unwrap()]).0, 2);
+    assert_eq!(topolab(&["info", fin.to_str().unwrap()]).0, 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn check_exits_0_on_a_clean_file_and_reports_its_topology() {
+    let dir = temp_dir("check");
+    let path = dir.join("tet.off");
+    std::fs::write(&path, OFF).unwrap();
+    let (code, stdout) = topolab(&["check", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(stdout.contains("no problems found"), "{stdout}");
+    let (code, stdout) = topolab(&["check", path.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["clean"], true);
+    let s = &v["summary"];
+    assert_eq!(
+        (s["edges"].as_u64(), s["boundary_curves"].as_u64()),
+        (Some(6), Some(1))
+    );
+    assert_eq!(s["components"][0]["euler_characteristic"], 1);
+    assert_eq!(s["components"][0]["genus"], 0);
+    assert_eq!(
+        topolab(&["check", dir.join("none.obj").to_str().unwrap()]).0,
+        2
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
