@@ -3,9 +3,8 @@
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
 //! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
 //! [`conformance`]) and tested on ([`meshes`]), refined to any size ([`refine`]) and
-//! renumbered to measure the effect of element order ([`ordering`]).
-//! [`conformance`]) and tested on ([`meshes`]); [`checks`] runs the lecture's consistency
-//! checks on a file as written.
+//! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
+//! lecture's consistency checks on a file as written.
 //!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|
