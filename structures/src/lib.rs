@@ -23,6 +23,7 @@ mod corner_scan;
 pub mod edge_list;
 pub mod error;
 pub mod explicit;
+pub mod hull;
 pub mod ids;
 pub mod io;
 pub mod meshes;

@@ -1,0 +1,117 @@
+//! The seed's randomized incremental algorithm with the conflict graph: expected O(n log n).
+//!
+//! The points are processed in a uniformly random order (a seeded ChaCha8 permutation, so a
+//! run is reproducible). The bipartite conflict graph G links each point p not yet inserted
+//! with the faces of the current hull it sees (`Volume6 > 0`):
+//!
+//! | seed | here | meaning |
+//! |---|---|---|
+//! | P_conflito(f) | `face_conflicts[f]` | the points that see face f |
+//! | F_conflito(p) | `point_conflicts[p]` | the faces p sees |
+//!
+//! Inserting pk: F_conflito(pk) are the faces to remove (empty: pk is inside, skip it). The
+//! faces in pk's plane (`Volume6 = 0`) next to them are removed too, as in
+//! [`super::incremental`] (the degenerate case the seed excludes). For each horizon edge e,
+//! between the removed face f1 and the kept face f2, the cone face f = (e, pk) gets
+//! P_conflito(f) ⊆ P(e) = P_conflito(f1) ∪ P_conflito(f2), each candidate tested once with
+//! `Volume6`. (The inclusion also holds when f1 is only coplanar with pk: the plane of f is
+//! turned from f1's plane away from the wedge between f1 and f2, or equals f1's plane.)
+//!
+//! Removing a face from G: its own list is freed; the points' lists keep the dead id (face
+//! ids are never reused) and skip it when read, which keeps removal O(1) per face. The
+//! expected number of faces created is at most 6n − 20 (the seed's lemma); [`super::Hull`]
+//! reports the count.
+
+use super::incremental::{cover_slots, face_volume6, replace_visible_by_cone, triangle};
+use super::predicates::{find_simplex, volume6};
+use crate::error::Result;
+use crate::ids::{FaceId, VertexId};
+use crate::topology::MeshTopology;
+use crate::winged_edge::WingedEdge;
+use glam::DVec3;
+use rand::seq::SliceRandom;
+use rand::SeedableRng;
+
+/// The randomized incremental hull of the distinct points `distinct`, in the order of a
+/// permutation drawn from `seed`. Returns the hull and the number of faces created.
+pub(super) fn randomized(
+    points: &[DVec3],
+    distinct: &[u32],
+    seed: u64,
+) -> Result<(WingedEdge, usize)> {
+    let mut order = distinct.to_vec();
+    order.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(seed));
+    let simplex = find_simplex(points, &order)?;
+    let (mut mesh, mut created) = super::start_with_tetrahedron(points, simplex)?;
+    let rest: Vec<u32> = order.into_iter().filter(|k| !simplex.contains(k)).collect();
+
+    // face_conflicts[f]: P_conflito(f); point_conflicts[p]: F_conflito(p), dead ids skipped.
+    let mut face_conflicts: Vec<Vec<u32>> = vec![Vec::new(); mesh.face_slots()];
+    let mut point_conflicts: Vec<Vec<FaceId>> = vec![Vec::new(); points.len()];
+    let initial: Vec<FaceId> = mesh.live_faces().collect();
+    for &q in &rest {
+        for &f in &initial {
+            if face_volume6(&mesh, f, points[q as usize]) > 0.0 {
+                face_conflicts[f.index()].push(q);
+                point_conflicts[q as usize].push(f);
+            }
+        }
+    }
+
+    let mut is_visible = Vec::new();
+    let mut visible = Vec::new();
+    let mut horizon = Vec::new();
+    // seen[q] == stamp: q was already tested for the current horizon edge (P(e) is a union).
+    let mut seen = vec![0u32; points.len()];
+    let mut stamp = 0u32;
+    for &k in &rest {
+        let p = points[k as usize];
+        let conflicts = std::mem::take(&mut point_conflicts[k as usize]);
+        cover_slots(&mut is_visible, &mesh);
+        visible.clear();
+        for f in conflicts.into_iter().filter(|&f| mesh.is_face_live(f)) {
+            is_visible[f.index()] = true;
+            visible.push(f);
+        }
+        if visible.is_empty() {
+            continue; // pk sees no face: it is inside P(k−1) or on its boundary.
+        }
+        // The faces in pk's plane next to the visible ones (a walk, since they touch them).
+        let mut next = 0;
+        while next < visible.len() {
+            let (_, neighbours) = triangle(&mesh, visible[next]);
+            next += 1;
+            for g in neighbours {
+                if g.is_valid() && !is_visible[g.index()] && face_volume6(&mesh, g, p) == 0.0 {
+                    is_visible[g.index()] = true;
+                    visible.push(g);
+                }
+            }
+        }
+        replace_visible_by_cone(&mut mesh, &visible, &is_visible, VertexId(k), &mut horizon)?;
+        created += horizon.len();
+        face_conflicts.resize(mesh.face_slots(), Vec::new());
+        for h in &horizon {
+            stamp = stamp.wrapping_add(1);
+            let [a, b, apex] = [h.a, h.b, VertexId(k)].map(|v| mesh.position(v));
+            let (removed, kept) = (h.removed.index(), h.kept.index());
+            let mut new_conflicts = Vec::new();
+            for &q in face_conflicts[removed].iter().chain(&face_conflicts[kept]) {
+                if q == k || seen[q as usize] == stamp {
+                    continue;
+                }
+                seen[q as usize] = stamp;
+                if volume6(a, b, apex, points[q as usize]) > 0.0 {
+                    new_conflicts.push(q);
+                    point_conflicts[q as usize].push(h.created);
+                }
+            }
+            face_conflicts[h.created.index()] = new_conflicts;
+        }
+        for f in &visible {
+            is_visible[f.index()] = false;
+            face_conflicts[f.index()] = Vec::new();
+        }
+    }
+    Ok((mesh, created))
+}
