@@ -49,6 +49,8 @@ pub enum Command {
     },
     /// Measure every operator on every structure and write results.json and index.html.
     Report(crate::report::ReportArgs),
+    /// The 3D convex hull of a point file or random points, by one of seed 004's algorithms.
+    Hull(crate::hull::HullArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -65,6 +67,7 @@ pub fn run(cli: Cli) -> u8 {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
             crate::report::report(&args, command)
         }
+        Command::Hull(args) => crate::hull::hull(&args),
     };
     match result {
         Ok(text) => {

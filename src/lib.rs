@@ -7,6 +7,7 @@
 #![forbid(unsafe_code)]
 
 pub mod cli;
+pub mod hull;
 pub mod report;
 
 /// The process's allocator, counting bytes so the report can measure each structure's heap

@@ -29,6 +29,7 @@
 pub mod gift_wrap;
 pub mod incremental;
 pub mod predicates;
+pub mod qhull;
 pub mod randomized;
 
 use crate::error::{Error, Result};
