@@ -138,10 +138,14 @@ mod tests {
 
     #[test]
     fn collinearity_and_ray_order_are_exact() {
-        let a = DVec3::new(0.1, 0.2, 0.3);
+        let a = DVec3::new(0.125, 0.25, 0.375);
         let w = a * 3.0;
         assert!(collinear(DVec3::ZERO, a, w));
-        assert!(!collinear(DVec3::ZERO, a, w + DVec3::new(0.0, 1e-300, 0.0)));
+        assert!(!collinear(
+            DVec3::ZERO,
+            a,
+            w + DVec3::new(0.0, 2f64.powi(-40), 0.0)
+        ));
         assert!(farther_on_ray(DVec3::ZERO, a, w));
         assert!(!farther_on_ray(DVec3::ZERO, w, a));
     }

@@ -17,6 +17,9 @@
 //! `Volume6`. (The inclusion also holds when f1 is only coplanar with pk: the plane of f is
 //! turned from f1's plane away from the wedge between f1 and f2, or equals f1's plane.)
 //!
+//! Points are named by their rank in the insertion order and every conflict list is kept in
+//! increasing rank, so P(e) is a merge of two sorted lists.
+//!
 //! Removing a face from G: its own list is freed; the points' lists keep the dead id (face
 //! ids are never reused) and skip it when read, which keeps removal O(1) per face. The
 //! expected number of faces created is at most 6n − 20 (the seed's lemma); [`super::Hull`]
@@ -43,17 +46,21 @@ pub(super) fn randomized(
     order.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(seed));
     let simplex = find_simplex(points, &order)?;
     let (mut mesh, mut created) = super::start_with_tetrahedron(points, simplex)?;
+    // Points still to insert, in insertion order; a point is named by its rank here. Conflict
+    // lists hold ranks in increasing order, so P(e) is a merge of two sorted lists (no
+    // duplicate marks) and reads `ordered` front to back instead of jumping around `points`.
     let rest: Vec<u32> = order.into_iter().filter(|k| !simplex.contains(k)).collect();
+    let ordered: Vec<DVec3> = rest.iter().map(|&k| points[k as usize]).collect();
 
-    // face_conflicts[f]: P_conflito(f); point_conflicts[p]: F_conflito(p), dead ids skipped.
+    // face_conflicts[f]: P_conflito(f); point_conflicts[rank]: F_conflito(p), dead ids skipped.
     let mut face_conflicts: Vec<Vec<u32>> = vec![Vec::new(); mesh.face_slots()];
-    let mut point_conflicts: Vec<Vec<FaceId>> = vec![Vec::new(); points.len()];
+    let mut point_conflicts: Vec<Vec<FaceId>> = vec![Vec::new(); rest.len()];
     let initial: Vec<FaceId> = mesh.live_faces().collect();
-    for &q in &rest {
+    for (rank, &q) in ordered.iter().enumerate() {
         for &f in &initial {
-            if face_volume6(&mesh, f, points[q as usize]) > 0.0 {
-                face_conflicts[f.index()].push(q);
-                point_conflicts[q as usize].push(f);
+            if face_volume6(&mesh, f, q) > 0.0 {
+                face_conflicts[f.index()].push(rank as u32);
+                point_conflicts[rank].push(f);
             }
         }
     }
@@ -61,12 +68,9 @@ pub(super) fn randomized(
     let mut is_visible = Vec::new();
     let mut visible = Vec::new();
     let mut horizon = Vec::new();
-    // seen[q] == stamp: q was already tested for the current horizon edge (P(e) is a union).
-    let mut seen = vec![0u32; points.len()];
-    let mut stamp = 0u32;
-    for &k in &rest {
-        let p = points[k as usize];
-        let conflicts = std::mem::take(&mut point_conflicts[k as usize]);
+    for (rank, &k) in rest.iter().enumerate() {
+        let p = ordered[rank];
+        let conflicts = std::mem::take(&mut point_conflicts[rank]);
         cover_slots(&mut is_visible, &mesh);
         visible.clear();
         for f in conflicts.into_iter().filter(|&f| mesh.is_face_live(f)) {
@@ -92,20 +96,19 @@ pub(super) fn randomized(
         created += horizon.len();
         face_conflicts.resize(mesh.face_slots(), Vec::new());
         for h in &horizon {
-            stamp = stamp.wrapping_add(1);
-            let [a, b, apex] = [h.a, h.b, VertexId(k)].map(|v| mesh.position(v));
-            let (removed, kept) = (h.removed.index(), h.kept.index());
+            let [a, b] = [h.a, h.b].map(|v| mesh.position(v));
             let mut new_conflicts = Vec::new();
-            for &q in face_conflicts[removed].iter().chain(&face_conflicts[kept]) {
-                if q == k || seen[q as usize] == stamp {
-                    continue;
-                }
-                seen[q as usize] = stamp;
-                if volume6(a, b, apex, points[q as usize]) > 0.0 {
-                    new_conflicts.push(q);
-                    point_conflicts[q as usize].push(h.created);
-                }
-            }
+            // pk itself is in the removed face's list; every earlier point has left G.
+            merge_sorted(
+                &face_conflicts[h.removed.index()],
+                &face_conflicts[h.kept.index()],
+                |q| {
+                    if q as usize != rank && volume6(a, b, p, ordered[q as usize]) > 0.0 {
+                        new_conflicts.push(q);
+                        point_conflicts[q as usize].push(h.created);
+                    }
+                },
+            );
             face_conflicts[h.created.index()] = new_conflicts;
         }
         for f in &visible {
@@ -114,4 +117,34 @@ pub(super) fn randomized(
         }
     }
     Ok((mesh, created))
+}
+
+/// Calls `f` once for each value of the union of the increasing lists `a` and `b`, in
+/// increasing order.
+fn merge_sorted(a: &[u32], b: &[u32], mut f: impl FnMut(u32)) {
+    let (mut i, mut j) = (0, 0);
+    loop {
+        let next = match (a.get(i), b.get(j)) {
+            (Some(&x), Some(&y)) => x.min(y),
+            (Some(&x), None) => x,
+            (None, Some(&y)) => y,
+            (None, None) => return,
+        };
+        i += usize::from(a.get(i) == Some(&next));
+        j += usize::from(b.get(j) == Some(&next));
+        f(next);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn merge_sorted_gives_the_union_once() {
+        let mut out = Vec::new();
+        super::merge_sorted(&[1, 4, 6, 9], &[2, 4, 9, 12], |x| out.push(x));
+        assert_eq!(out, [1, 2, 4, 6, 9, 12]);
+        out.clear();
+        super::merge_sorted(&[], &[3], |x| out.push(x));
+        assert_eq!(out, [3]);
+    }
 }
