@@ -11,6 +11,9 @@
 //! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
 //! | [`WingedEdge`] | `winged-edge` | seed 004's records: edges with 8 pointers, av(v), af(f) | yes | no |
 //!
+//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with seed 004's
+//! three algorithms (gift wrapping, incremental, randomized incremental).
+//!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
 #![deny(missing_docs)]

@@ -26,6 +26,15 @@
 //!   wrapping: a fan from the facet's first corner; the incremental ones: whatever the
 //!   insertion order leaves), so the algorithms agree on vertices and volume, not faces.
 
+//!
+//! **Speed** (`cargo run --release -p topolab-structures --example hull_bench`): the
+//! randomized algorithm is within a small factor of Qhull on points in a ball, slower when
+//! every point is a vertex (sphere). There most of the time goes to
+//! [`WingedEdge::remove_face`] replacing a removed `av(v)` by scanning all edges (the
+//! structure keeps no edge list per vertex), which happens when a vertex's faces are removed
+//! out of rotation order; a per-vertex edge list in the winged-edge's incremental index would
+//! remove that scan.
+
 pub mod gift_wrap;
 pub mod incremental;
 pub mod predicates;
