@@ -82,11 +82,11 @@ pub(super) struct HorizonEdge {
 
 /// Replaces the visible faces (`visible`, also marked in `is_visible` by face slot) by the
 /// cone from `apex` over their border: each horizon edge a → b gets the face (a, b, apex).
-/// Fills `horizon` with the horizon edges and the faces created.
+/// Fills `horizon` with the horizon edges and the faces created; clears the faces' marks.
 pub(super) fn replace_visible_by_cone(
     mesh: &mut WingedEdge,
     visible: &[FaceId],
-    is_visible: &[bool],
+    is_visible: &mut [bool],
     apex: VertexId,
     horizon: &mut Vec<HorizonEdge>,
 ) -> Result<()> {
@@ -112,8 +112,33 @@ pub(super) fn replace_visible_by_cone(
             }
         }
     }
-    for &f in visible {
+    // Remove in breadth-first order from one face, so each vertex's faces tend to go in
+    // rotation order: removing them out of order makes WingedEdge::remove_face scan all
+    // edges for a new av(v). `is_visible` turns false as a face is queued.
+    let mut queue = Vec::with_capacity(visible.len());
+    if let Some(&first) = visible.first() {
+        is_visible[first.index()] = false;
+        queue.push(first);
+    }
+    let mut next = 0;
+    while next < queue.len() {
+        let f = queue[next];
+        next += 1;
+        let (_, neighbours) = triangle(mesh, f);
+        for g in neighbours {
+            if g.is_valid() && is_visible[g.index()] {
+                is_visible[g.index()] = false;
+                queue.push(g);
+            }
+        }
         mesh.remove_face(f)?;
+    }
+    // The visible faces are connected; should one not be, it is removed all the same.
+    for &f in visible {
+        if mesh.is_face_live(f) {
+            is_visible[f.index()] = false;
+            mesh.remove_face(f)?;
+        }
     }
     for h in horizon.iter_mut() {
         h.created = mesh.add_face(&[h.a, h.b, apex])?;
@@ -155,8 +180,13 @@ pub(super) fn incremental(
         }
         cover_slots(&mut is_visible, &mesh);
         visible.iter().for_each(|f| is_visible[f.index()] = true);
-        replace_visible_by_cone(&mut mesh, &visible, &is_visible, VertexId(k), &mut horizon)?;
-        visible.iter().for_each(|f| is_visible[f.index()] = false);
+        replace_visible_by_cone(
+            &mut mesh,
+            &visible,
+            &mut is_visible,
+            VertexId(k),
+            &mut horizon,
+        )?;
         created += horizon.len();
         // Removed faces stay as tombstones; close the gaps once they outnumber the live faces
         // so the scan above stays proportional to the hull (no face id is held across steps).

@@ -28,12 +28,11 @@
 
 //!
 //! **Speed** (`cargo run --release -p topolab-structures --example hull_bench`): the
-//! randomized algorithm is within a small factor of Qhull on points in a ball, slower when
-//! every point is a vertex (sphere). There most of the time goes to
-//! [`WingedEdge::remove_face`] replacing a removed `av(v)` by scanning all edges (the
-//! structure keeps no edge list per vertex), which happens when a vertex's faces are removed
-//! out of rotation order; a per-vertex edge list in the winged-edge's incremental index would
-//! remove that scan.
+//! randomized algorithm runs within a small factor of Qhull. Visible faces are removed in
+//! breadth-first order: [`WingedEdge::remove_face`] scans all edges for a new `av(v)` when a
+//! vertex's faces go out of rotation order (the structure keeps no edge list per vertex), and
+//! in arbitrary order that scan took 59% of a run on a sphere (perf); a per-vertex edge list
+//! in the winged-edge's incremental index would remove the scan altogether.
 
 pub mod gift_wrap;
 pub mod incremental;

@@ -92,7 +92,13 @@ pub(super) fn randomized(
                 }
             }
         }
-        replace_visible_by_cone(&mut mesh, &visible, &is_visible, VertexId(k), &mut horizon)?;
+        replace_visible_by_cone(
+            &mut mesh,
+            &visible,
+            &mut is_visible,
+            VertexId(k),
+            &mut horizon,
+        )?;
         created += horizon.len();
         face_conflicts.resize(mesh.face_slots(), Vec::new());
         for h in &horizon {
@@ -112,7 +118,6 @@ pub(super) fn randomized(
             face_conflicts[h.created.index()] = new_conflicts;
         }
         for f in &visible {
-            is_visible[f.index()] = false;
             face_conflicts[f.index()] = Vec::new();
         }
     }
