@@ -80,6 +80,8 @@ pub enum Command {
         #[arg(long, default_value = "input")]
         order: String,
     },
+    /// The 3D convex hull of a point file or random points, by one of seed 004's algorithms.
+    Hull(crate::hull::HullArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -120,6 +122,7 @@ pub fn run(cli: Cli) -> u8 {
             order,
         } => crate::refine::refine(&mesh, levels, &scheme, &order, &out),
         Command::Check(args) => return crate::check::run(args),
+        Command::Hull(args) => crate::hull::hull(&args),
     };
     match result {
         Ok(text) => {

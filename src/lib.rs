@@ -9,6 +9,7 @@
 
 pub mod check;
 pub mod cli;
+pub mod hull;
 pub mod report;
 
 /// The process's allocator, counting bytes so the report can measure each structure's heap

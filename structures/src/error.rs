@@ -199,6 +199,15 @@ pub enum Error {
         /// Why this soup is not one of its grids.
         reason: String,
     },
+    /// Points whose convex hull is not a solid: fewer than four distinct points, or all of
+    /// them on one line or one plane (the 3D hull algorithms need four points not in a plane).
+    #[error("the {distinct} distinct points span only dimension {dimension}; a 3D convex hull needs four points not in one plane")]
+    DegeneratePoints {
+        /// How many distinct positions there are.
+        distinct: usize,
+        /// The dimension of their affine hull (0: one point, 1: a line, 2: a plane).
+        dimension: u8,
+    },
     /// A structure's `validate()` found a broken invariant.
     #[error("{structure}: invariant broken: {message}")]
     Invariant {
@@ -232,6 +241,7 @@ impl Error {
             Error::NotTriangles { .. } => "not-triangles",
             Error::CoincidentVertices { .. } => "coincident-vertices",
             Error::NotAGrid { .. } => "not-a-grid",
+            Error::DegeneratePoints { .. } => "degenerate-points",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
         }

@@ -21,6 +21,9 @@
 //! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
 //! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
+//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with seed 004's
+//! three algorithms (gift wrapping, incremental, randomized incremental).
+//!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
 #![deny(missing_docs)]
@@ -37,6 +40,7 @@ pub mod edge_list;
 pub mod error;
 pub mod explicit;
 pub mod half_edge;
+pub mod hull;
 pub mod ids;
 pub mod index_half_edge;
 pub mod io;

@@ -1,0 +1,83 @@
+//! `topolab hull`: the 3D convex hull of a point file or of random points, by one of seed
+//! 004's algorithms, built on the winged-edge; prints counts and time, optionally writes the
+//! hull as OBJ (outward triangles, the hull's vertices only).
+
+use crate::cli::{load_mesh, Failure};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
+use topolab_structures::MeshTopology;
+
+/// Options of `topolab hull`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct HullArgs {
+    /// A mesh or point file (.obj, .off, .ply): only its vertices are used; an OBJ of `v`
+    /// lines only (a point cloud) works.
+    #[arg(required_unless_present = "random", conflicts_with = "random")]
+    pub file: Option<String>,
+    /// Instead of a file: this many random points.
+    #[arg(long)]
+    pub random: Option<usize>,
+    /// Where the random points come from: cube, ball or sphere.
+    #[arg(long, default_value = "cube")]
+    pub shape: String,
+    /// The algorithm: gift (wrapping), incremental, randomized (incremental).
+    #[arg(long, default_value = "randomized")]
+    pub algo: String,
+    /// Write the hull here (.obj or .off).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Seed of the random points and of the randomized algorithm's insertion order.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+}
+
+fn refused(e: topolab_structures::Error) -> Failure {
+    Failure {
+        message: format!("no hull ({}): {e}", e.kind()),
+        code: 1,
+    }
+}
+
+/// Runs `topolab hull`; returns the text to print.
+pub fn hull(args: &HullArgs) -> Result<String, Failure> {
+    let algorithm =
+        Algorithm::from_name(&args.algo, args.seed).map_err(|e| Failure::usage(e.to_string()))?;
+    let (points, source) = match (&args.file, args.random) {
+        (_, Some(n)) => {
+            let shape = Shape::from_name(&args.shape).map_err(|e| Failure::usage(e.to_string()))?;
+            let what = format!("{n} random points in {} (seed {})", args.shape, args.seed);
+            (random_points(shape, n, args.seed), what)
+        }
+        (Some(file), None) => (load_mesh(file)?.positions, file.clone()),
+        (None, None) => return Err(Failure::usage("give a FILE or --random N".into())),
+    };
+    let start = Instant::now();
+    let hull = convex_hull(&points, algorithm).map_err(refused)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let n = points.len();
+    let mut text = String::new();
+    let _ = writeln!(text, "points:        {n} ({source})");
+    let _ = writeln!(text, "algorithm:     {}", algorithm.name());
+    let _ = writeln!(text, "hull vertices: {}", hull.vertices().len());
+    let _ = writeln!(text, "hull edges:    {}", hull.mesh.num_edges());
+    let _ = writeln!(text, "hull faces:    {}", hull.mesh.num_faces());
+    let _ = writeln!(
+        text,
+        "faces created: {} ({:.3} of the seed's bound 6n - 20 = {})",
+        hull.faces_created,
+        hull.faces_created as f64 / (6.0 * n as f64 - 20.0),
+        6 * n as i64 - 20
+    );
+    let _ = writeln!(text, "volume:        {}", hull.volume());
+    let _ = writeln!(text, "time:          {:.6} s", seconds);
+    if let Some(out) = &args.out {
+        topolab_structures::io::write(out, &hull.to_compact_soup()).map_err(|e| Failure {
+            message: format!("cannot write {}: {e}", out.display()),
+            code: 2,
+        })?;
+        let _ = writeln!(text, "written:       {}", out.display());
+    }
+    Ok(text)
+}
