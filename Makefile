@@ -20,5 +20,5 @@ data:
 	python3 bench-data/fetch.py
 
 # The report on the default meshes: reports/latest/index.html and results.json.
-report: deps
+report: deps data
 	$(CARGO) run --release --quiet -- report

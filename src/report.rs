@@ -28,8 +28,9 @@ pub struct ReportArgs {
     /// Structures to measure, comma separated (default: all; see `topolab list`).
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
-    /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary).
-    #[arg(long, value_delimiter = ',', default_value = "torus,grid")]
+    /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
+    /// (the meshes `make data` fetched into bench-data/cache/, when present).
+    #[arg(long, value_delimiter = ',', default_value = "torus,grid,real")]
     pub meshes: Vec<String>,
     /// Output folder.
     #[arg(long, default_value = "reports/latest")]
@@ -132,17 +133,18 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         None => registry::NAMES.iter().map(|s| s.to_string()).collect(),
     };
     for f in &args.meshes {
-        if f != "torus" && f != "grid" {
+        if !["torus", "grid", "real"].contains(&f.as_str()) {
             return Err(Failure::usage(format!(
-                "unknown mesh family {f:?}; known: torus, grid"
+                "unknown mesh family {f:?}; known: torus, grid, real"
             )));
         }
     }
     let plan = Plan {
-        cell_budget: Duration::from_millis(if quick { 30 } else { 250 }),
-        cell_max: Duration::from_millis(if quick { 150 } else { 2_000 }),
+        cell_budget: Duration::from_millis(if quick { 30 } else { 100 }),
+        cell_max: Duration::from_millis(if quick { 150 } else { 1_000 }),
         min_reps: 3,
         max_reps: 25,
+        light: false,
     };
     let samples = if quick { 64 } else { 256 };
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
@@ -164,6 +166,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         measurements: Vec::new(),
         fits: Vec::new(),
         libigl: Vec::new(),
+        hull: Vec::new(),
         teaching: Vec::new(),
         notes: Vec::new(),
     };
@@ -174,9 +177,14 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
     for size in &sizes {
-        for fam in &args.meshes {
+        for fam in args.meshes.iter().filter(|f| *f != "real") {
             let soup = meshes::from_spec(&format!("{fam}:{size}")).expect("known family");
             cases.push((format!("{fam}-{}", short(*size)), fam.clone(), soup));
+        }
+    }
+    if args.meshes.iter().any(|f| f == "real") {
+        for (name, soup) in real_meshes(&mut results.notes) {
+            cases.push((name, "real".into(), soup));
         }
     }
     let bar = ProgressBar::new((cases.len() * names.len()) as u64);
@@ -186,7 +194,13 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
             .progress_chars("=> "),
     );
     let mut est = Estimator::default();
+    // Real meshes appear in one table (construction and the 1-ring sweep): measure only those.
+    let light = Plan {
+        light: true,
+        ..plan
+    };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
+        let plan = if fam == "real" { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
@@ -208,7 +222,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
                 s,
                 Measure {
                     case: &case,
-                    plan: &plan,
+                    plan,
                     est: &mut est,
                     out: &mut results.measurements,
                 },
@@ -234,6 +248,9 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         });
     }
     bar.finish_and_clear();
+    orderings(&cases, &names, &plan, &mut results)?;
+    results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+    results.hull = hull(quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     let skipped = results
         .measurements
@@ -264,6 +281,243 @@ fn short(n: usize) -> String {
     } else {
         n.to_string()
     }
+}
+
+/// The hull benchmark: points in a ball up to 1M (10k with `--quick`), on a sphere up to 100k.
+fn hull(
+    quick: bool,
+    notes: &mut Vec<String>,
+) -> Result<Vec<topolab_structures::hull::bench::HullRow>, Failure> {
+    use topolab_structures::hull::{bench, qhull, Shape};
+    let root = Path::new(".");
+    let python = qhull::python(root);
+    if python.is_none() {
+        notes.push(
+            "Qhull was not run: .venv/bin/python with SciPy is missing (bash .ci/install-deps)."
+                .into(),
+        );
+    }
+    let mut rows = Vec::new();
+    for (shape, name, max) in [
+        (Shape::Ball, "ball", 1_000_000),
+        (Shape::Sphere, "sphere", 100_000),
+    ] {
+        let sizes: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
+            .into_iter()
+            .filter(|&n| n <= if quick { 10_000 } else { max })
+            .collect();
+        let run = bench::run(
+            shape,
+            name,
+            &sizes,
+            python.as_deref().map(|p| (p, root)),
+            1.0,
+            |row| {
+                eprintln!(
+                    "topolab report: hull {} {} {}: {:.3} s",
+                    row.shape, row.n, row.algorithm, row.seconds
+                )
+            },
+        );
+        rows.extend(run.map_err(|e| Failure {
+            message: format!("hull benchmark: {e}"),
+            code: 1,
+        })?);
+    }
+    Ok(rows)
+}
+
+/// The meshes `make data` fetched: every mesh file in `bench-data/cache/` up to 64 MB,
+/// smallest first. Unreadable ones are skipped with a note.
+fn real_meshes(notes: &mut Vec<String>) -> Vec<(String, PolygonSoup)> {
+    let dir = Path::new("bench-data/cache");
+    let mut files: Vec<(u64, PathBuf)> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .map(|e| e.path())
+                .filter(|p| topolab_structures::io::format_of(p).is_ok())
+                .filter_map(|p| std::fs::metadata(&p).ok().map(|m| (m.len(), p)))
+                .collect()
+        })
+        .unwrap_or_default();
+    if files.is_empty() {
+        notes.push("No real meshes: bench-data/cache/ is empty (run `make data`).".into());
+    }
+    files.sort();
+    let mut out = Vec::new();
+    for (bytes, path) in files {
+        let name = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .unwrap_or("mesh")
+            .to_string();
+        if bytes > 64 << 20 {
+            notes.push(format!(
+                "{}: skipped, {} MB is larger than the report reads",
+                path.display(),
+                bytes >> 20
+            ));
+            continue;
+        }
+        match topolab_structures::io::read(&path) {
+            Ok(soup) => out.push((name, soup)),
+            Err(e) => notes.push(format!("{}: not measured: {e}", path.display())),
+        }
+    }
+    out
+}
+
+/// The structures whose vertex 1-ring is compared across element orderings.
+const ORDERING_STRUCTURES: [&str; 5] = [
+    "index-half-edge",
+    "che-l2",
+    "pointer-half-edge",
+    "winged-edge",
+    "openmesh",
+];
+
+struct Sweep<'a> {
+    case: &'a MeshCase<'a>,
+    plan: &'a Plan,
+}
+
+impl StructureVisitor for Sweep<'_> {
+    type Output = Result<Measurement, String>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        topolab_harness::measure::measure_sweep::<M>(self.case, Operator::R00, self.plan)
+    }
+}
+
+/// The effect of element order: the largest torus (at most 256k triangles) renumbered by each
+/// ordering, and the R00 sweep of a few structures on each.
+fn orderings(
+    cases: &[(String, String, PolygonSoup)],
+    names: &[String],
+    plan: &Plan,
+    results: &mut Results,
+) -> Result<(), Failure> {
+    let Some((base, _, soup)) = cases
+        .iter()
+        .filter(|c| c.1 == "torus" && c.2.num_faces() <= 300_000)
+        .max_by_key(|c| c.2.num_faces())
+    else {
+        return Ok(());
+    };
+    let structures: Vec<&String> = names
+        .iter()
+        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()))
+        .collect();
+    for ordering in topolab_structures::ordering::Ordering::ALL {
+        eprintln!("topolab report: ordering {} of {base}", ordering.name());
+        let re = topolab_structures::ordering::reorder(soup, ordering).soup;
+        let name = format!("{base}/{}", ordering.name());
+        let queries = sample_queries(&re, 1, 0);
+        let case = MeshCase {
+            name: &name,
+            family: "ordering",
+            soup: &re,
+            queries: &queries,
+        };
+        for s in &structures {
+            let m = registry::visit(s, Sweep { case: &case, plan })
+                .expect("registered")
+                .map_err(|message| Failure { message, code: 1 })?;
+            results.measurements.push(m);
+        }
+        cross_check(&results.measurements, &name)
+            .map_err(|message| Failure { message, code: 1 })?;
+    }
+    Ok(())
+}
+
+/// libigl's reference timings on the tori, when `.venv/bin/python` with libigl exists: the
+/// script's checksums are compared with the lab's sweep of the same operator.
+fn libigl(
+    cases: &[(String, String, PolygonSoup)],
+    measurements: &[Measurement],
+    notes: &mut Vec<String>,
+) -> Vec<topolab_harness::results::LibiglRow> {
+    let python = Path::new(".venv/bin/python");
+    let script = Path::new("reference/libigl_reference.py");
+    let ready = python.exists()
+        && std::process::Command::new(python)
+            .args(["-c", "import igl"])
+            .output()
+            .is_ok_and(|o| o.status.success());
+    if !ready || !script.exists() {
+        notes.push(
+            "libigl was not run: .venv/bin/python with libigl is missing (bash .ci/install-deps)."
+                .into(),
+        );
+        return Vec::new();
+    }
+    let dir = std::env::temp_dir().join(format!("topolab-libigl-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let mut rows = Vec::new();
+    for (name, _, soup) in cases.iter().filter(|c| c.1 == "torus") {
+        eprintln!("topolab report: libigl on {name}");
+        let (mesh, json) = (
+            dir.join(format!("{name}.obj")),
+            dir.join(format!("{name}.json")),
+        );
+        if topolab_structures::io::write(&mesh, soup).is_err() {
+            continue;
+        }
+        let ran = std::process::Command::new(python)
+            .arg(script)
+            .arg(&mesh)
+            .arg("--out")
+            .arg(&json)
+            .env("IGL_NUM_THREADS", "1")
+            .output();
+        let parsed: Option<serde_json::Value> = std::fs::read_to_string(&json)
+            .ok()
+            .and_then(|t| serde_json::from_str(&t).ok());
+        let Some(v) = parsed.filter(|_| ran.is_ok_and(|o| o.status.success())) else {
+            notes.push(format!("libigl failed on {name}"));
+            continue;
+        };
+        let edges = soup.connectivity().map(|c| c.num_edges()).unwrap_or(0);
+        for r in v["results"].as_array().into_iter().flatten() {
+            let op = r["operator"].as_str().unwrap_or_default().to_string();
+            let lab = measurements.iter().find(|m| {
+                m.mesh == *name
+                    && m.operator == op
+                    && (m.kernel == "sweep" || m.kernel == "workload")
+                    && m.checksum.is_some()
+            });
+            let (checksum, agrees) = match (
+                r["checksum"].as_str(),
+                r["value"].as_f64(),
+                lab.and_then(|m| m.checksum.as_deref()),
+            ) {
+                (Some(c), _, Some(l)) => (c.to_string(), c == l),
+                (None, Some(x), Some(l)) => {
+                    let l: f64 = l.parse().unwrap_or(f64::NAN);
+                    (
+                        format!("{x:.9e}"),
+                        (x - l).abs() <= 1e-6 * x.abs().max(l.abs()).max(1.0),
+                    )
+                }
+                _ => continue,
+            };
+            let items = match op.as_str() {
+                "r10" => edges,
+                "r22" | "boundary-curves" => soup.num_faces(),
+                _ => soup.num_vertices(),
+            };
+            rows.push(topolab_harness::results::LibiglRow {
+                mesh: name.clone(),
+                operator: op,
+                function: r["function"].as_str().unwrap_or_default().into(),
+                checksum,
+                agrees,
+                ns_per_item: r["seconds"].as_f64().unwrap_or(f64::NAN) * 1e9 / items.max(1) as f64,
+            });
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    rows
 }
 
 fn write(out: &Path, results: &Results) -> Result<(), Failure> {

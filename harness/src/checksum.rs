@@ -31,6 +31,10 @@
 //! | edge-predecessor | Σ_f Σ_{e ∈ R21(f)} mix(edge_key(e), edge_key(predecessor(e, f))) |
 //!
 //! A sampled kernel uses the same terms, summed over the sampled query elements only.
+//!
+//! Where a boundary touches itself at a vertex (two holes meeting at a corner), splitting the
+//! boundary edges into curves is not unique, so two correct structures may give different
+//! boundary-curves checksums; the report measures that operator on generated meshes only.
 
 /// Mixes two numbers into one, asymmetrically (see the module docs for the formula).
 #[inline(always)]

@@ -64,7 +64,9 @@ pub fn fit_all(
     let mut groups: BTreeMap<Key, Vec<(f64, f64)>> = BTreeMap::new();
     for m in measurements {
         if let (crate::results::Status::Measured, Some(ns)) = (m.status, m.ns_per_item) {
-            if m.kernel == "sweep" || m.kernel == "sampled" {
+            // Real meshes differ in shape, not only size; orderings share one size.
+            let sized = m.family != "real" && m.family != "ordering";
+            if sized && (m.kernel == "sweep" || m.kernel == "sampled") {
                 groups
                     .entry((&m.structure, &m.operator, &m.kernel, &m.family))
                     .or_default()

@@ -34,9 +34,9 @@ fn bytes(b: f64) -> String {
 }
 
 const CSS: &str = r#"
-body{font-family:system-ui,sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
+body{font-family:system-ui,sans-serif;max-width:1400px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
 h1{margin-bottom:.2em} h2{border-bottom:2px solid #ddd;padding-bottom:.2em;margin-top:2em}
-table{border-collapse:collapse;font-size:13px;margin:1em 0} th,td{border:1px solid #ccc;padding:3px 6px;text-align:right}
+table{border-collapse:collapse;font-size:12px;margin:1em 0;display:block;overflow-x:auto;max-width:100%} th,td{border:1px solid #ccc;padding:3px 6px;text-align:right}
 th{background:#f3f3f3} td.l,th.l{text-align:left}
 td.ok{background:#e8f5e9} td.bad{background:#ffebee} td.skip{background:#f5f5f5;color:#777} td.ref{background:#fff8e1}
 .cost{font-weight:bold;display:block} .exp{color:#555} .small{font-size:12px;color:#555}
@@ -61,7 +61,10 @@ pub fn render(r: &Results) -> String {
     workloads(&mut h, r, &ci);
     memory(&mut h, r, &ci);
     construction(&mut h, r, &ci);
+    orderings(&mut h, r, names.as_slice());
+    real_meshes(&mut h, r, names.as_slice());
     libigl(&mut h, r);
+    hull(&mut h, r);
     teaching(&mut h, r);
     meshes(&mut h, r);
     if !r.notes.is_empty() {
@@ -271,7 +274,7 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
         return;
     };
     let bw = r.probe.read_bytes_per_s;
-    let _ = write!(h, "<h2>Sweeps and the bandwidth bound ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the share of the machine's bandwidth bound reached: the structure's container bytes read once at the probe's {:.1} GB/s, divided by the measured time (100% = the sweep runs as fast as memory can deliver its data; far below means pointer chasing or computation dominate).</div><table><tr><th class=l>operator</th>", bw / 1e9);
+    let _ = write!(h, "<h2>Sweeps and the bandwidth bound ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the bandwidth bound: the time to read the structure's container bytes once at the probe's {:.1} GB/s, and the measured time as a multiple of that streaming time (1× = the sweep runs as fast as memory can deliver all its containers; well above means pointer chasing or computation dominate; below 1× means the operator reads only part of the containers, e.g. a boundary test). On small meshes the containers sit in cache and the bound is loose; it speaks at 1M triangles.</div><table><tr><th class=l>operator</th>", bw / 1e9);
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
@@ -294,13 +297,10 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
                     let t = m.ns_per_item.unwrap_or(f64::NAN);
                     let frac = cons
                         .and_then(|c| c.declared_bytes)
-                        .map(|b| (b as f64 / bw * 1e9) / (t * m.items as f64))
-                        .map(|f| {
-                            format!(
-                                "<br><span class=small>{:.0}% of bound{}</span>",
-                                f * 100.0,
-                                if m.native { ", native" } else { "" }
-                            )
+                        .map(|b| (t * m.items as f64) / (b as f64 / bw * 1e9))
+                        .map(|x| {
+                            let native = if m.native { ", native" } else { "" };
+                            format!("<br><span class=small>{x:.1}× stream{native}</span>")
                         })
                         .unwrap_or_default();
                     format!("<td>{}{frac}</td>", ns(t))
@@ -341,14 +341,21 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
         .iter()
         .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
         .filter_map(|m| {
-            m.bytes.map(|b| {
-                (
+            let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
+            match m.bytes {
+                // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
+                // own allocator measurement (mallinfo2), drawn without a tick.
+                Some(0) => {
+                    declared.map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None))
+                }
+                Some(b) => Some((
                     m.structure.clone(),
                     ci(&m.structure),
                     b as f64 / tri as f64,
-                    m.declared_bytes.map(|d| d as f64 / tri as f64),
-                )
-            })
+                    declared,
+                )),
+                None => None,
+            }
         })
         .collect();
     let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
@@ -388,6 +395,98 @@ fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("</div>");
 }
 
+fn orderings(h: &mut String, r: &Results, names: &[&str]) {
+    let ms: Vec<&Measurement> = r
+        .measurements
+        .iter()
+        .filter(|m| m.family == "ordering")
+        .collect();
+    let Some(first) = ms.first() else { return };
+    let base = first.mesh.split('/').next().unwrap_or_default();
+    let mut meshes: Vec<&str> = ms.iter().map(|m| m.mesh.as_str()).collect();
+    meshes.dedup();
+    let cols: Vec<&str> = names
+        .iter()
+        .copied()
+        .filter(|n| ms.iter().any(|m| m.structure == *n))
+        .collect();
+    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated, at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
+    for c in &cols {
+        let _ = write!(h, "<th>{c}</th>");
+    }
+    h.push_str("</tr>");
+    for mesh in meshes {
+        let _ = write!(
+            h,
+            "<tr><th class=l>{}</th>",
+            mesh.split('/').nth(1).unwrap_or(mesh)
+        );
+        for c in &cols {
+            match ms.iter().find(|m| m.mesh == mesh && m.structure == *c) {
+                Some(m) if m.status == Status::Measured => {
+                    let _ = write!(h, "<td>{}</td>", m.ns_per_item.map(ns).unwrap_or_default());
+                }
+                _ => h.push_str("<td class=skip>–</td>"),
+            }
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+}
+
+fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
+    let real: Vec<&crate::results::MeshInfo> =
+        r.meshes.iter().filter(|m| m.family == "real").collect();
+    if real.is_empty() {
+        return;
+    }
+    h.push_str("<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles).</div><table><tr><th class=l>mesh</th><th>faces</th>");
+    for n in names {
+        let _ = write!(h, "<th>{n}</th>");
+    }
+    h.push_str("</tr>");
+    for mesh in real {
+        let _ = write!(
+            h,
+            "<tr><th class=l>{}</th><td>{}</td>",
+            esc(&mesh.name),
+            mesh.faces
+        );
+        for n in names {
+            let find = |op: &str, kernel: &str| {
+                r.measurements.iter().find(|m| {
+                    m.mesh == mesh.name
+                        && m.structure == *n
+                        && m.operator == op
+                        && m.kernel == kernel
+                })
+            };
+            let cell = match (find("construction", "construction"), find("r00", "sweep")) {
+                (Some(c), _) if c.status == Status::Refused => format!(
+                    "<td class=skip title=\"{}\">refused ({})</td>",
+                    esc(c.note.as_deref().unwrap_or_default()),
+                    c.note
+                        .as_deref()
+                        .and_then(|n| n.split(':').next())
+                        .unwrap_or("?")
+                ),
+                (Some(c), Some(s)) if s.status == Status::Measured => format!(
+                    "<td>{} /v<br><span class=small>build {} /f</span></td>",
+                    s.ns_per_item.map(ns).unwrap_or_default(),
+                    c.ns_per_item.map(ns).unwrap_or_default()
+                ),
+                (Some(_), Some(s)) if s.status == Status::Skipped => {
+                    "<td class=skip>skipped</td>".to_string()
+                }
+                _ => "<td class=skip>–</td>".to_string(),
+            };
+            h.push_str(&cell);
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+}
+
 fn libigl(h: &mut String, r: &Results) {
     if r.libigl.is_empty() {
         return;
@@ -395,6 +494,55 @@ fn libigl(h: &mut String, r: &Results) {
     h.push_str("<h2>libigl as reference</h2><div class=read><b>How to read it.</b> libigl answers these relations by building whole-mesh adjacency arrays (not by per-query circulation), timed inside Python around each call (best of several, one thread). Its checksum is compared with the lab's answer for the same operator.</div><table><tr><th class=l>mesh</th><th class=l>operator</th><th class=l>libigl function</th><th>ns per element</th><th>checksum agrees</th></tr>");
     for l in &r.libigl {
         let _ = write!(h, "<tr><td class=l>{}</td><td class=l>{}</td><td class=l>{}</td><td>{}</td><td class={}>{}</td></tr>", esc(&l.mesh), l.operator, l.function, ns(l.ns_per_item), if l.agrees { "ok" } else { "bad" }, if l.agrees { "yes" } else { "no" });
+    }
+    h.push_str("</table>");
+}
+
+fn hull(h: &mut String, r: &Results) {
+    if r.hull.is_empty() {
+        return;
+    }
+    h.push_str("<h2>3D convex hull on the winged-edge (seed 004)</h2><div class=read><b>How to read it.</b> The seed's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the seed's expected bound 6n − 20.</div><div class=plots>");
+    let algos = ["gift", "incremental", "randomized", "qhull"];
+    let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
+    shapes.dedup();
+    for shape in &shapes {
+        let series: Vec<svg::Series> = algos
+            .iter()
+            .enumerate()
+            .map(|(i, a)| svg::Series {
+                name: a.to_string(),
+                colour: i,
+                points: r
+                    .hull
+                    .iter()
+                    .filter(|x| x.shape == *shape && x.algorithm == *a)
+                    .map(|x| (x.n as f64, x.seconds * 1e9 / x.n as f64))
+                    .collect(),
+            })
+            .collect();
+        h.push_str(&svg::loglog(
+            &format!(
+                "hull of points {}",
+                if *shape == "sphere" {
+                    "on a sphere"
+                } else {
+                    "in a ball"
+                }
+            ),
+            "points",
+            "ns per point",
+            &series,
+        ));
+    }
+    h.push_str("</div><table><tr><th class=l>points</th><th>n</th><th class=l>algorithm</th><th>seconds</th><th>× Qhull</th><th>hull vertices</th><th>faces created</th><th>/ (6n − 20)</th></tr>");
+    for x in &r.hull {
+        let q = r
+            .hull
+            .iter()
+            .find(|y| y.shape == x.shape && y.n == x.n && y.algorithm == "qhull")
+            .map(|y| y.seconds);
+        let _ = write!(h, "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.4}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", x.shape, x.n, x.algorithm, x.seconds, q.map(|q| format!("{:.1}", x.seconds / q)).unwrap_or_default(), x.hull_vertices, x.faces_created.map(|c| c.to_string()).unwrap_or_default(), x.faces_created.map(|c| format!("{:.3}", c as f64 / (6.0 * x.n as f64 - 20.0))).unwrap_or_default());
     }
     h.push_str("</table>");
 }

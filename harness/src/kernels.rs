@@ -97,30 +97,34 @@ pub struct Queries {
 }
 
 impl Queries {
-    /// Every element of `m`: the sweep's queries.
-    pub fn all<M: MeshTopology>(m: &M) -> Self {
+    /// Every element of `m` (built from `soup`): the sweep's queries. The (edge, face) pairs
+    /// come from the soup's corners with edges looked up by their end vertices, so building
+    /// them costs O(n) on every structure (asking a scanning structure for R21 of every face
+    /// would cost O(n²) before anything is timed).
+    pub fn all<M: MeshTopology>(m: &M, soup: &PolygonSoup) -> Self {
         let mut edges = Vec::with_capacity(m.num_edges());
         m.for_each_edge(|e| edges.push(e));
-        let faces: Vec<FaceId> = (0..m.num_faces()).map(FaceId::new).collect();
-        let mut edge_faces = Vec::with_capacity(edges.len() * 2);
-        for &f in &faces {
-            m.face_edges(f, |e| edge_faces.push((e, f)));
+        let by_ends = edges_by_ends(m, &edges);
+        let mut edge_faces = Vec::with_capacity(soup.num_corners());
+        for (f, face) in soup.faces().enumerate() {
+            for (i, &a) in face.iter().enumerate() {
+                let b = face[(i + 1) % face.len()];
+                edge_faces.push((by_ends[&edge_key(a, b)], FaceId::new(f)));
+            }
         }
         Self {
             vertices: (0..m.num_vertices()).map(VertexId::new).collect(),
+            faces: (0..m.num_faces()).map(FaceId::new).collect(),
             edges,
-            faces,
             edge_faces,
         }
     }
 
     /// The sample `set` in `m`'s ids (edges looked up by their end vertices).
     pub fn sampled<M: MeshTopology>(m: &M, set: &QuerySet) -> Self {
-        let mut by_ends = HashMap::with_capacity(m.num_edges());
-        m.for_each_edge(|e| {
-            let [a, b] = m.edge_vertices(e);
-            by_ends.insert(edge_key(a.0, b.0), e);
-        });
+        let mut edges = Vec::with_capacity(m.num_edges());
+        m.for_each_edge(|e| edges.push(e));
+        let by_ends = edges_by_ends(m, &edges);
         let edge = |a: u32, b: u32| by_ends[&edge_key(a, b)];
         Self {
             vertices: set.vertices.iter().map(|&v| VertexId(v)).collect(),
@@ -148,6 +152,17 @@ impl Queries {
             Operator::BoundaryCurves => 1,
         }
     }
+}
+
+/// `m`'s edge ids by their end vertices.
+fn edges_by_ends<M: MeshTopology>(m: &M, edges: &[EdgeId]) -> HashMap<u64, EdgeId> {
+    edges
+        .iter()
+        .map(|&e| {
+            let [a, b] = m.edge_vertices(e);
+            (edge_key(a.0, b.0), e)
+        })
+        .collect()
 }
 
 #[inline(always)]
@@ -369,7 +384,7 @@ mod tests {
         let mut curves = BoundaryCurves::default();
         for op in Operator::ALL {
             for (qa, qb) in [
-                (Queries::all(&a), Queries::all(&b)),
+                (Queries::all(&a, &soup), Queries::all(&b, &soup)),
                 (Queries::sampled(&a, &set), Queries::sampled(&b, &set)),
             ] {
                 let (x, y) = (run(&a, op, &qa, &mut curves), run(&b, op, &qb, &mut curves));
@@ -396,7 +411,10 @@ mod tests {
         let closed = VertexList::from_soup(&meshes::closed_tetrahedron()).unwrap();
         let open = VertexList::from_soup(&meshes::open_tetrahedron()).unwrap();
         let mut curves = BoundaryCurves::default();
-        let (qc, qo) = (Queries::all(&closed), Queries::all(&open));
+        let (qc, qo) = (
+            Queries::all(&closed, &meshes::closed_tetrahedron()),
+            Queries::all(&open, &meshes::open_tetrahedron()),
+        );
         assert_ne!(
             run(&closed, Operator::R22, &qc, &mut curves),
             run(&open, Operator::R22, &qo, &mut curves)

@@ -43,6 +43,8 @@ pub struct Plan {
     pub min_reps: usize,
     /// At most this many.
     pub max_reps: usize,
+    /// Only construction and the R00 sweep (for meshes shown in one table, such as real ones).
+    pub light: bool,
 }
 
 /// The last measured run time of every (structure, family, operator, kernel), to estimate the
@@ -138,7 +140,7 @@ pub fn measure_structure<M: MeshTopology>(
     fill(&mut cons, t, n.max(1), None);
     out.push(cons);
 
-    let all = Queries::all(&m);
+    let all = Queries::all(&m, case.soup);
     let sampled = Queries::sampled(&m, case.queries);
     let mut curves = BoundaryCurves::default();
     for op in Operator::ALL {
@@ -148,6 +150,9 @@ pub fn measure_structure<M: MeshTopology>(
             &[Kernel::Sweep, Kernel::Sampled]
         };
         for &kernel in kernels {
+            if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
+                continue;
+            }
             let q = if kernel == Kernel::Sweep {
                 &all
             } else {
@@ -168,36 +173,16 @@ pub fn measure_structure<M: MeshTopology>(
                     continue;
                 }
             }
-            let ids: Vec<u32> = match op {
-                Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-                    q.vertices.iter().map(|v| v.0).collect()
-                }
-                Operator::R20 | Operator::R21 | Operator::R22 => {
-                    q.faces.iter().map(|f| f.0).collect()
-                }
-                _ => Vec::new(),
-            };
-            let native = match kernel {
-                Kernel::Sweep => m.native_sweep(op).is_some(),
-                Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
-            };
-            let (t, sum) = if native {
-                time(budget, || match kernel {
-                    Kernel::Sweep => m.native_sweep(op).unwrap_or_default(),
-                    Kernel::Sampled => m.native_sampled(op, &ids).unwrap_or_default(),
-                })
-            } else {
-                time(budget, || run(&m, op, q, &mut curves))
-            }
-            .map_err(|e| {
-                format!(
-                    "{} {} {} on {}: {e}",
-                    M::NAME,
-                    op.name(),
-                    kernel.name(),
-                    case.name
-                )
-            })?;
+            let (t, sum, native) =
+                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(|e| {
+                    format!(
+                        "{} {} {} on {}: {e}",
+                        M::NAME,
+                        op.name(),
+                        kernel.name(),
+                        case.name
+                    )
+                })?;
             cell.native = native;
             fill(&mut cell, t, items.max(1), Some(sum.to_string()));
             est.last.insert(key, (n, t.median_ns));
@@ -205,7 +190,7 @@ pub fn measure_structure<M: MeshTopology>(
         }
     }
     let mut buf = WorkloadBuffers::default();
-    for w in Workload::ALL {
+    for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
         let mut cell = measurement(M::NAME, w.name(), "workload", case);
         let items = w.items(&m);
         cell.items = items;
@@ -228,6 +213,77 @@ pub fn measure_structure<M: MeshTopology>(
         out.push(cell);
     }
     Ok(())
+}
+
+/// Times one kernel of `op` on a built structure: the structure's native loop when it has one
+/// (a baseline behind FFI), the harness's generic kernel otherwise. Returns the timing, the
+/// checksum and whether it ran natively.
+pub fn time_kernel<M: MeshTopology>(
+    m: &M,
+    op: Operator,
+    kernel: Kernel,
+    q: &Queries,
+    curves: &mut BoundaryCurves,
+    budget: Budget,
+) -> Result<(crate::timing::Timing, u64, bool), String> {
+    let ids: Vec<u32> = match op {
+        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+            q.vertices.iter().map(|v| v.0).collect()
+        }
+        Operator::R20 | Operator::R21 | Operator::R22 => q.faces.iter().map(|f| f.0).collect(),
+        _ => Vec::new(),
+    };
+    let native = match kernel {
+        Kernel::Sweep => m.native_sweep(op).is_some(),
+        Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
+    };
+    let (t, sum) = if native {
+        time(budget, || match kernel {
+            Kernel::Sweep => m.native_sweep(op).unwrap_or_default(),
+            Kernel::Sampled => m.native_sampled(op, &ids).unwrap_or_default(),
+        })
+    } else {
+        time(budget, || run(m, op, q, curves))
+    }?;
+    Ok((t, sum, native))
+}
+
+/// Builds `M` from `case` and times one sweep of `op` over every element (for comparisons
+/// of one operator across meshes, such as element orderings). A refusal is a refused cell.
+pub fn measure_sweep<M: MeshTopology>(
+    case: &MeshCase,
+    op: Operator,
+    plan: &Plan,
+) -> Result<Measurement, String> {
+    let mut cell = measurement(M::NAME, op.name(), Kernel::Sweep.name(), case);
+    let m = match M::from_soup(case.soup) {
+        Ok(m) => m,
+        Err(e) => {
+            cell.status = Status::Refused;
+            cell.note = Some(format!("{}: {e}", e.kind()));
+            return Ok(cell);
+        }
+    };
+    let q = Queries::all(&m, case.soup);
+    cell.items = q.count(op);
+    let budget = Budget {
+        time: plan.cell_budget,
+        min_reps: plan.min_reps,
+        max_reps: plan.max_reps,
+    };
+    let (t, sum, native) = time_kernel(
+        &m,
+        op,
+        Kernel::Sweep,
+        &q,
+        &mut BoundaryCurves::default(),
+        budget,
+    )
+    .map_err(|e| format!("{} {} on {}: {e}", M::NAME, op.name(), case.name))?;
+    cell.native = native;
+    let items = cell.items.max(1);
+    fill(&mut cell, t, items, Some(sum.to_string()));
+    Ok(cell)
 }
 
 fn fill(cell: &mut Measurement, t: crate::timing::Timing, items: usize, checksum: Option<String>) {
@@ -310,6 +366,7 @@ mod tests {
             cell_max: Duration::from_secs(1),
             min_reps: 1,
             max_reps: 3,
+            light: false,
         };
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)

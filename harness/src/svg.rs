@@ -193,7 +193,7 @@ fn trim_num(v: f64) -> String {
     }
 }
 
-/// A shaded orthographic thumbnail of a mesh (at most ~3000 faces drawn, evenly sampled).
+/// A shaded orthographic thumbnail of a mesh (at most ~1500 faces drawn, evenly sampled).
 pub fn thumbnail(soup: &PolygonSoup, size: f64) -> String {
     let view = DVec3::new(1.0, -1.6, 1.2).normalize();
     let right = DVec3::Z.cross(view).normalize_or(DVec3::X);
@@ -205,7 +205,7 @@ pub fn thumbnail(soup: &PolygonSoup, size: f64) -> String {
         .fold((DVec3::MAX, DVec3::MIN), |(a, b), p| (a.min(*p), b.max(*p)));
     let centre = (lo + hi) * 0.5;
     let scale = size * 0.45 / ((hi - lo).length() * 0.5).max(1e-12);
-    let stride = (soup.num_faces() / 3000).max(1);
+    let stride = (soup.num_faces() / 1500).max(1);
     let mut polys: Vec<(f64, String)> = Vec::new();
     for (j, f) in soup.faces().enumerate().step_by(stride) {
         let ps: Vec<DVec3> = f

@@ -10,7 +10,7 @@
 //! as many `ConvexHull` calls; Qhull is skipped without the workspace's `.venv` with SciPy.
 
 use std::path::Path;
-use topolab_structures::hull::{benchmark_row, qhull, random_points, Algorithm, Shape};
+use topolab_structures::hull::{bench, qhull, Shape};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -50,59 +50,39 @@ fn main() {
     );
     for shape_name in &shapes {
         let shape = Shape::from_name(shape_name).unwrap();
-        let mut too_slow = [false; 3];
-        let sizes = [1_000usize, 10_000, 100_000, 1_000_000];
-        for &n in sizes.iter().filter(|&&n| n <= max) {
-            let points = random_points(shape, n, 42);
-            let repeat = if n >= 100_000 { 1 } else { 3 };
-            let reference = python
-                .as_ref()
-                .map(|py| qhull::run(py, root, &points, repeat).expect("qhull"));
-            if let Some(q) = &reference {
-                println!(
-                    "{:<7} {:>8} {:<11} {:>10.4} {:>10} {:>9} {:>11} {:>9} {:>9}",
-                    shape_name,
-                    n,
-                    "qhull",
-                    q.seconds,
-                    "-",
-                    "-",
-                    "-",
-                    q.vertices.len(),
-                    "1.00"
-                );
-            }
-            for (a, algorithm) in Algorithm::all(7).into_iter().enumerate() {
-                if too_slow[a] {
-                    continue;
+        let sizes: Vec<usize> = [1_000usize, 10_000, 100_000, 1_000_000]
+            .into_iter()
+            .filter(|&n| n <= max)
+            .collect();
+        let mut qhull_seconds = f64::NAN;
+        bench::run(
+            shape,
+            shape_name,
+            &sizes,
+            python.as_deref().map(|p| (p, root)),
+            1.0,
+            |row| {
+                if row.algorithm == "qhull" {
+                    qhull_seconds = row.seconds;
                 }
-                let mut best = f64::INFINITY;
-                let mut row = (0.0, 0, 0);
-                for _ in 0..repeat {
-                    row = benchmark_row(&points, algorithm).expect("hull");
-                    best = best.min(row.0);
-                }
-                let (_, created, hull_vertices) = row;
-                // The next n is 10 times larger: up to 100 times the time for O(n²). The
-                // randomized algorithm (expected O(n log n)) always goes on to the largest n.
-                let quadratic = !matches!(algorithm, Algorithm::Randomized { .. });
-                too_slow[a] = quadratic && best > 1.0;
-                let ratio = reference
-                    .as_ref()
-                    .map_or("-".to_string(), |q| format!("{:.2}", best / q.seconds));
+                let created = row.faces_created.map_or("-".into(), |c| c.to_string());
+                let per = |c: usize, d: f64| format!("{:.3}", c as f64 / d);
                 println!(
-                    "{:<7} {:>8} {:<11} {:>10.4} {:>10} {:>9.3} {:>11.3} {:>9} {:>9}",
-                    shape_name,
-                    n,
-                    algorithm.name(),
-                    best,
+                    "{:<7} {:>8} {:<11} {:>10.4} {:>10} {:>9} {:>11} {:>9} {:>9.2}",
+                    row.shape,
+                    row.n,
+                    row.algorithm,
+                    row.seconds,
                     created,
-                    created as f64 / n as f64,
-                    created as f64 / (6.0 * n as f64 - 20.0),
-                    hull_vertices,
-                    ratio
+                    row.faces_created
+                        .map_or("-".into(), |c| per(c, row.n as f64)),
+                    row.faces_created
+                        .map_or("-".into(), |c| per(c, 6.0 * row.n as f64 - 20.0)),
+                    row.hull_vertices,
+                    row.seconds / qhull_seconds
                 );
-            }
-        }
+            },
+        )
+        .expect("hull benchmark");
     }
 }

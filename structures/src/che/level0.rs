@@ -5,7 +5,7 @@ use super::build::{build_fast, Checked};
 use super::{che_topology, half_edges_of, next, prev, print_container, triangle};
 use super::{vec_bytes, CheLevel, StarRead};
 use crate::error::{Error, Result};
-use crate::ids::{FaceId, HalfEdgeId, VertexId};
+use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::soup::PolygonSoup;
 use crate::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -147,6 +147,25 @@ impl CheL0 {
 impl CheLevel for CheL0 {
     const LEVEL: u8 = 0;
     const STAR_ALGORITHM: &'static str = "Algorithm 5 (§4.6): scan V[] for the vertex";
+
+    /// Every edge once, as its smaller half-edge. An enumeration helper, not one of the
+    /// chapter's queries: without `O[]`, asking Algorithm 8 for each half-edge's twin would cost
+    /// O(n2²), so the half-edges are sorted by their end vertices instead (O(n2 log n2), with a
+    /// temporary buffer) and the first of each pair is listed.
+    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        let mut keyed: Vec<(u64, u32)> = self
+            .half_edges()
+            .map(|he| {
+                let (a, b) = (self.start(he).0, self.start(next(he)).0);
+                let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+                (((lo as u64) << 32) | hi as u64, he.0)
+            })
+            .collect();
+        keyed.sort_unstable();
+        let mut firsts: Vec<u32> = keyed.chunk_by(|x, y| x.0 == y.0).map(|g| g[0].1).collect();
+        firsts.sort_unstable();
+        firsts.into_iter().for_each(|he| f(EdgeId(he)));
+    }
 
     fn start_vertices(&self) -> &[u32] {
         &self.v

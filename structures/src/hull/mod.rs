@@ -34,6 +34,7 @@
 //! in arbitrary order that scan took 59% of a run on a sphere (perf); a per-vertex edge list
 //! in the winged-edge's incremental index would remove the scan altogether.
 
+pub mod bench;
 pub mod gift_wrap;
 pub mod incremental;
 pub mod predicates;
