@@ -277,6 +277,16 @@ impl Workload {
         }
     }
 
+    /// The relations it asks once per element (for estimating its cost).
+    pub fn relations(self) -> &'static [Operator] {
+        match self {
+            Workload::Circulators => &[Operator::R02, Operator::R20],
+            Workload::Barycenter => &[],
+            Workload::Normals => &[Operator::R20, Operator::R02],
+            Workload::Smoothing => &[Operator::R00, Operator::BoundaryVertex],
+        }
+    }
+
     /// What one item is (for ns per item).
     pub fn items<M: MeshTopology>(self, m: &M) -> usize {
         match self {

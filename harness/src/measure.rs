@@ -194,6 +194,22 @@ pub fn measure_structure<M: MeshTopology>(
         let mut cell = measurement(M::NAME, w.name(), "workload", case);
         let items = w.items(&m);
         cell.items = items;
+        // A workload asks its relations once per element: its run grows like n^(1+e) for the
+        // costliest relation it uses.
+        let e = 1.0
+            + w.relations()
+                .iter()
+                .map(|&op| M::cost(op).expected_exponent())
+                .fold(0.0, f64::max);
+        let key = Estimator::key(M::NAME, case.family, w.name(), "workload");
+        if let Some(ns) = est.estimate(&key, n, e) {
+            if ns > plan.cell_max.as_nanos() as f64 {
+                cell.status = Status::Skipped;
+                cell.estimate_ns_per_item = Some(ns / items.max(1) as f64);
+                out.push(cell);
+                continue;
+            }
+        }
         let native = m.native_workload(w.name()).is_some();
         let (t, r) = if native {
             time(budget, || {
@@ -210,6 +226,7 @@ pub fn measure_structure<M: MeshTopology>(
             items.max(1),
             Some(format!("{:.9e}", f64::from_bits(r))),
         );
+        est.last.insert(key, (n, t.median_ns));
         out.push(cell);
     }
     Ok(())

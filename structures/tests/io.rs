@@ -255,3 +255,16 @@ fn files_are_read_by_extension() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_refused_ply_write_leaves_no_file() {
+    let path = std::env::temp_dir().join(format!("topolab-refused-{}.ply", std::process::id()));
+    let err = topolab_structures::io::write(&path, &topolab_structures::meshes::single_triangle())
+        .unwrap_err();
+    assert_eq!(err.kind(), "unsupported");
+    assert!(
+        !path.exists(),
+        "the refused write created {}",
+        path.display()
+    );
+}

@@ -188,22 +188,21 @@ pub fn write_off(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> 
 
 /// Writes `soup` to `path` as OBJ or OFF, by extension.
 pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
-    let format = format_of(path)?;
+    // Refuse before creating anything, so a refused write leaves no empty file behind.
+    let write_as: fn(&mut std::io::BufWriter<std::fs::File>, &PolygonSoup) -> std::io::Result<()> =
+        match format_of(path)? {
+            Format::Obj => |w, s| write_obj(w, s),
+            Format::Off => |w, s| write_off(w, s),
+            Format::Ply => {
+                return Err(Error::Unsupported(
+                    "writing PLY is not supported; use .obj or .off".into(),
+                ))
+            }
+        };
     let io = |source| Error::Io {
         path: path.to_path_buf(),
         source,
     };
-    let file = std::fs::File::create(path).map_err(io)?;
-    let mut w = std::io::BufWriter::new(file);
-    match format {
-        Format::Obj => write_obj(&mut w, soup),
-        Format::Off => write_off(&mut w, soup),
-        Format::Ply => {
-            return Err(Error::Unsupported(
-                "writing PLY is not supported; use .obj or .off".into(),
-            ))
-        }
-    }
-    .and_then(|()| w.flush())
-    .map_err(io)
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
+    write_as(&mut w, soup).and_then(|()| w.flush()).map_err(io)
 }
