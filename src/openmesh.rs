@@ -651,6 +651,11 @@ impl MeshTopology for OpenMesh {
         Ok(())
     }
 
+    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
+        // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
+        Some(OpenMesh::build_native(soup, soup.num_corners() / 2))
+    }
+
     fn native_sweep(&self, op: Operator) -> Option<u64> {
         OpenMesh::native_sweep(self, op.name())
     }

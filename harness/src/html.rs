@@ -55,6 +55,7 @@ pub fn render(r: &Results) -> String {
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
     machine_section(&mut h, r);
+    targets(&mut h, r);
     table_4_1(&mut h, r, &names);
     plots(&mut h, r, &ci);
     sweeps(&mut h, r, &names);
@@ -135,6 +136,76 @@ fn family_of(op: Operator) -> &'static str {
         Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
         _ => "torus",
     }
+}
+
+/// The project's performance targets, checked on the largest torus of this run.
+fn targets(h: &mut String, r: &Results) {
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let get = |s: &str, op: &str, kernel: &str| {
+        r.measurements.iter().find(|m| {
+            m.mesh == mesh
+                && m.structure == s
+                && m.operator == op
+                && m.kernel == kernel
+                && m.status == Status::Measured
+        })
+    };
+    let Some(om_build) = get("openmesh", "construction", "construction") else {
+        return;
+    };
+    let om_r00 = get("openmesh", "r00", "sweep");
+    let _ = write!(h, "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><table><tr><th class=l>target</th><th>measured</th><th>goal</th><th>met</th></tr>");
+    let mut row = |what: String, value: Option<f64>, goal: f64, unit: &str| {
+        let (v, met) = match value {
+            Some(v) => (
+                format!("{v:.2}{unit}"),
+                if v <= goal { "yes" } else { "no" },
+            ),
+            None => ("not measured".into(), "–"),
+        };
+        let class = if met == "yes" {
+            "ok"
+        } else if met == "no" {
+            "bad"
+        } else {
+            "skip"
+        };
+        let _ = write!(h, "<tr><td class=l>{what}</td><td>{v}</td><td>≤ {goal}{unit}</td><td class={class}>{met}</td></tr>");
+    };
+    let ratio =
+        |a: Option<&Measurement>, b: Option<&Measurement>| Some(a?.ns_per_item? / b?.ns_per_item?);
+    row(
+        "che-l1 construction / OpenMesh add_face build".into(),
+        ratio(
+            get("che-l1", "construction", "construction"),
+            Some(om_build),
+        ),
+        0.1,
+        "×",
+    );
+    for s in ["che-l2", "index-half-edge"] {
+        row(
+            format!("{s} vertex 1-ring sweep (r00) / OpenMesh's"),
+            ratio(get(s, "r00", "sweep"), om_r00),
+            0.6,
+            "×",
+        );
+        let bound = get(s, "construction", "construction")
+            .and_then(|c| c.declared_bytes)
+            .map(|b| b as f64 / r.probe.read_bytes_per_s * 1e9);
+        let sweep = get(s, "r00", "sweep").and_then(|m| Some(m.ns_per_item? * m.items as f64));
+        row(
+            format!("{s} r00 sweep / time to stream its containers"),
+            sweep.zip(bound).map(|(t, b)| t / b),
+            2.0,
+            "×",
+        );
+    }
+    h.push_str(
+        "</table><p class=small>Bytes per triangle, measured: see Memory per triangle below.</p>",
+    );
 }
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
@@ -392,7 +463,7 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
 }
 
 fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
-    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log). A flat line is linear-time construction.</div><div class=plots>");
+    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction.</div><div class=plots>");
     for fam in ["torus", "grid"] {
         let series = lines(r, "construction", "construction", fam, ci);
         h.push_str(&svg::loglog(

@@ -135,8 +135,14 @@ pub fn measure_structure<M: MeshTopology>(
             max_reps: plan.max_reps.min(7),
             ..budget
         },
-        || M::from_soup(case.soup).map(|m| m.num_faces()).unwrap_or(0),
+        || {
+            M::native_construction(case.soup)
+                .unwrap_or_else(|| M::from_soup(case.soup))
+                .map(|m| m.num_faces())
+                .unwrap_or(0)
+        },
     )?;
+    cons.native = M::native_construction(case.soup).is_some();
     fill(&mut cons, t, n.max(1), None);
     out.push(cons);
 

@@ -286,6 +286,14 @@ pub trait MeshTopology: Sized {
     /// For teaching: what the structure stores, record by record, with the lecture's field names.
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
 
+    /// Construction the way a baseline's own API does it, for timing (OpenMesh: `reserve`,
+    /// `add_vertex`, `add_face`, without the lab's up-front manifold checks, which are not
+    /// OpenMesh's cost). `None` (the default): [`MeshTopology::from_soup`] is what is timed.
+    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
+        let _ = soup;
+        None
+    }
+
     /// A whole sweep of `op` over every element, run by the structure itself and folded into
     /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
     /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
