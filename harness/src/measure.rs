@@ -130,10 +130,13 @@ pub fn measure_structure<M: MeshTopology>(
     cons.bytes = Some(held as u64);
     cons.peak_bytes = Some(peak as u64);
     cons.declared_bytes = Some(m.heap_bytes() as u64);
+    // Construction is timed with at least three runs and a second's budget whatever the cell
+    // budget: one build of a 1M-triangle mesh is a single noisy sample otherwise.
     let (t, _) = time(
         Budget {
+            time: budget.time.max(Duration::from_secs(1)),
+            min_reps: 3,
             max_reps: plan.max_reps.min(7),
-            ..budget
         },
         || {
             M::native_construction(case.soup)
