@@ -51,21 +51,39 @@ pub struct Plan {
 /// next size's before running it.
 #[derive(Clone, Debug, Default)]
 pub struct Estimator {
-    last: HashMap<(String, String, String, String), (usize, f64)>,
+    last: HashMap<EstimatorKey, (usize, f64)>,
 }
 
+/// (structure, family, operator, kernel).
+type EstimatorKey = (String, String, String, String);
+
 impl Estimator {
-    fn key(s: &str, fam: &str, op: &str, k: &str) -> (String, String, String, String) {
+    fn key(s: &str, fam: &str, op: &str, k: &str) -> EstimatorKey {
         (s.into(), fam.into(), op.into(), k.into())
     }
 
-    /// Estimated ns of one run at `triangles`, scaling the last run by `exponent`.
-    fn estimate(
+    /// Marks `cell` skipped, with its estimated ns per item, when one run at `triangles` is
+    /// estimated above the plan's `cell_max`; returns whether it did.
+    fn skips(
         &self,
-        key: &(String, String, String, String),
+        key: &EstimatorKey,
         triangles: usize,
         exponent: f64,
-    ) -> Option<f64> {
+        plan: &Plan,
+        cell: &mut Measurement,
+    ) -> bool {
+        match self.estimate(key, triangles, exponent) {
+            Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
+                cell.status = Status::Skipped;
+                cell.estimate_ns_per_item = Some(ns / cell.items.max(1) as f64);
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Estimated ns of one run at `triangles`, scaling the last run by `exponent`.
+    fn estimate(&self, key: &EstimatorKey, triangles: usize, exponent: f64) -> Option<f64> {
         self.last
             .get(key)
             .map(|&(n, ns)| ns * (triangles as f64 / n as f64).max(1.0).powf(exponent))
@@ -174,13 +192,9 @@ pub fn measure_structure<M: MeshTopology>(
             let e =
                 M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
             let key = Estimator::key(M::NAME, case.family, op.name(), kernel.name());
-            if let Some(ns) = est.estimate(&key, n, e) {
-                if ns > plan.cell_max.as_nanos() as f64 {
-                    cell.status = Status::Skipped;
-                    cell.estimate_ns_per_item = Some(ns / items.max(1) as f64);
-                    out.push(cell);
-                    continue;
-                }
+            if est.skips(&key, n, e, plan, &mut cell) {
+                out.push(cell);
+                continue;
             }
             let (t, sum, native) =
                 time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(|e| {
@@ -211,13 +225,9 @@ pub fn measure_structure<M: MeshTopology>(
                 .map(|&op| M::cost(op).expected_exponent())
                 .fold(0.0, f64::max);
         let key = Estimator::key(M::NAME, case.family, w.name(), "workload");
-        if let Some(ns) = est.estimate(&key, n, e) {
-            if ns > plan.cell_max.as_nanos() as f64 {
-                cell.status = Status::Skipped;
-                cell.estimate_ns_per_item = Some(ns / items.max(1) as f64);
-                out.push(cell);
-                continue;
-            }
+        if est.skips(&key, n, e, plan, &mut cell) {
+            out.push(cell);
+            continue;
         }
         let native = m.native_workload(w.name()).is_some();
         let (t, r) = if native {
