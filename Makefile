@@ -20,5 +20,7 @@ data:
 	python3 bench-data/fetch.py
 
 # The report on the default meshes: reports/latest/index.html and results.json.
-report: deps data
+# Real meshes that cannot be fetched (no network) are reported and left out; the report goes on.
+report: deps
+	@python3 bench-data/fetch.py || echo "make report: some real meshes are missing (see above); the report goes on without them"
 	$(CARGO) run --release --quiet -- report
