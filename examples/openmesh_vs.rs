@@ -92,7 +92,11 @@ fn main() -> std::process::ExitCode {
             }
             _ => nf,
         };
-        let (t, sum) = median(|| mesh.native_sweep(op.name()).expect("a known kernel"));
+        let (t, sum) = median(|| {
+            mesh.native_sweep(op.name())
+                .expect("a known kernel")
+                .expect("OpenMesh failed")
+        });
         println!("{:<18} {:>14.2} {:>22}", op.name(), ns(t, per), sum);
     }
     println!("(ns per vertex for r00 r01 r02 boundary-vertex, per edge for r10 r11 r12 boundary-edge, per face otherwise)\n");
@@ -100,8 +104,15 @@ fn main() -> std::process::ExitCode {
     println!("{:<18} {:>14} {:>22}", "workload", "ns/vertex", "result");
     let mut mesh = mesh;
     for name in WORKLOADS {
-        mesh.prepare_workload(name);
-        let (t, value) = median(|| mesh.native_workload(name).expect("a known workload"));
+        if let Some(Err(e)) = mesh.prepare_workload(name) {
+            eprintln!("OpenMesh failed: {e}");
+            return std::process::ExitCode::FAILURE;
+        }
+        let (t, value) = median(|| {
+            mesh.native_workload(name)
+                .expect("a known workload")
+                .expect("OpenMesh failed")
+        });
         println!("{:<18} {:>14.2} {:>22.9}", name, ns(t, nv), value);
     }
     println!("(smoothing runs 7 steps in a row; its result is after the 7th)");

@@ -3,8 +3,19 @@
 //! [OpenMesh](https://www.graphics.rwth-aachen.de/software/openmesh/) is the halfedge library
 //! graphics engineers compare against. [`OpenMesh`] wraps a `TriMesh_ArrayKernelT` (triangle
 //! input) or `PolyMesh_ArrayKernelT` (polygon input) with double-precision points, built and
-//! queried through the C API of `openmesh/shim.h`. This module is the only place of the lab
-//! with `unsafe` code; everything it exports is safe.
+//! queried through the C API of `openmesh/shim.h`. This module holds the `unsafe` code of the
+//! FFI (the lab's only other `unsafe` module is the pointer half-edge's `links`, where real
+//! pointers are the point); everything it exports is safe.
+//!
+//! The C API is a wall: every function is `noexcept`, catches every C++ exception and returns
+//! a status code, which becomes [`Error::Foreign`] here (a failed build, sweep, sampled kernel
+//! or workload) — no exception ever reaches Rust. The one piece of process-wide OpenMesh
+//! state the shim touches, the error stream `omerr()` (connected to `std::cerr` on first use
+//! behind an unsynchronised flag, then silenced so that `add_face`'s refusals become typed
+//! errors), is set up exactly once per process, thread-safely, inside that guard; meshes are
+//! independent, so threads may build and query meshes in parallel
+//! (`tests/openmesh_threads.rs`, and `.ci/repeat-baseline-tests` in CI). The heap measurement
+//! (`mallinfo2`) is process-wide: exact only when no other thread allocates meanwhile.
 //!
 //! What OpenMesh's array kernel stores (4-byte handles):
 //!
@@ -64,6 +75,14 @@ mod ffi {
     pub type Emit = unsafe extern "C" fn(context: *mut c_void, index: u32);
     pub type EndCurve = unsafe extern "C" fn(context: *mut c_void);
 
+    // Every function returns a status (`OK` or a failure below) and writes its results
+    // through out-pointers; all are `noexcept` in C++ and catch every exception.
+    pub const OK: i32 = 0;
+    pub const REFUSED: i32 = 1;
+    pub const OUT_OF_MEMORY: i32 = 2;
+    pub const EXCEPTION: i32 = 3;
+    pub const UNKNOWN_CODE: i32 = 4;
+
     extern "C" {
         pub fn topolab_om_build(
             xyz: *const f64,
@@ -73,50 +92,80 @@ mod ffi {
             faces: u32,
             triangles: i32,
             edges_hint: u32,
+            out: *mut *mut RawMesh,
             failed_face: *mut u32,
-        ) -> *mut RawMesh;
+        ) -> i32;
         pub fn topolab_om_free(mesh: *mut RawMesh);
-        pub fn topolab_om_heap_bytes(mesh: *const RawMesh) -> u64;
-        pub fn topolab_om_is_trimesh(mesh: *const RawMesh) -> i32;
-        pub fn topolab_om_num_vertices(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_num_edges(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_num_faces(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64);
-        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32);
-        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32) -> i32;
-        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32) -> i32;
+        pub fn topolab_om_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
+        pub fn topolab_om_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
+        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
+        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
+        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
         pub fn topolab_om_query(
             mesh: *const RawMesh,
             op: i32,
             id: u32,
             emit: Emit,
             context: *mut c_void,
-        );
+        ) -> i32;
         pub fn topolab_om_edge_neighbour(
             mesh: *const RawMesh,
             e: u32,
             f: u32,
             successor: i32,
-        ) -> i64;
+            out: *mut i64,
+        ) -> i32;
         pub fn topolab_om_boundary_curves(
             mesh: *const RawMesh,
             emit: Emit,
             end_curve: EndCurve,
             context: *mut c_void,
-        );
-        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32);
-        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32) -> u32;
-        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32) -> u32;
-        pub fn topolab_om_validate(mesh: *const RawMesh, element: *mut u32) -> i32;
-        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32) -> u64;
+        ) -> i32;
+        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_validate(
+            mesh: *const RawMesh,
+            problem: *mut i32,
+            element: *mut u32,
+        ) -> i32;
+        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
         pub fn topolab_om_sampled(
             mesh: *const RawMesh,
             op: i32,
             ids: *const u32,
             count: usize,
-        ) -> u64;
-        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32);
-        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32) -> f64;
+            out: *mut u64,
+        ) -> i32;
+        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
+        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
+    }
+}
+
+/// The lab's error for a failure status of shim function `call`.
+fn status(call: &'static str, code: i32) -> Result<()> {
+    let reason = match code {
+        ffi::OK => return Ok(()),
+        ffi::OUT_OF_MEMORY => "out of memory",
+        ffi::EXCEPTION => "a C++ exception",
+        ffi::UNKNOWN_CODE => "an operator or workload code the shim does not know",
+        ffi::REFUSED => "add_face refused a face",
+        _ => "an unknown status",
+    };
+    Err(Error::Foreign {
+        library: "OpenMesh",
+        call,
+        reason,
+    })
+}
+
+/// For the trait's infallible queries (they cannot return an error): the shim's reads of
+/// OpenMesh's arrays allocate nothing and throw nothing, so a failure here is a broken
+/// invariant of the shim, reported like Rust's own out-of-memory (which aborts).
+fn infallible(call: &'static str, code: i32) {
+    if let Err(e) = status(call, code) {
+        panic!("{e} (a query that cannot fail did)");
     }
 }
 
@@ -139,6 +188,8 @@ pub const WORKLOADS: [&str; 4] = ["circulators", "barycenter", "normals", "smoot
 pub struct OpenMesh {
     /// The C++ mesh, owned (freed in `Drop`).
     raw: NonNull<ffi::RawMesh>,
+    /// A TriMesh (triangle input) rather than a PolyMesh.
+    trimesh: bool,
     /// Number of vertices, edges and faces, kept here to check ids without an FFI call.
     vertices: u32,
     edges: u32,
@@ -247,11 +298,13 @@ impl OpenMesh {
     pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
         soup.check()?;
         let mut failed_face = u32::MAX;
+        let mut raw = std::ptr::null_mut();
         // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
         // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
         // asserted above); offsets has faces + 1 entries; a TriMesh is asked for only when
-        // every face is a triangle. The C++ side copies everything it keeps.
-        let raw = unsafe {
+        // every face is a triangle; both out-pointers are valid. The C++ side copies
+        // everything it keeps.
+        let code = unsafe {
             ffi::topolab_om_build(
                 soup.positions.as_ptr().cast::<f64>(),
                 soup.num_vertices() as u32,
@@ -260,51 +313,57 @@ impl OpenMesh {
                 soup.num_faces() as u32,
                 soup.is_triangle_mesh() as i32,
                 edges_hint.min(u32::MAX as usize) as u32,
+                &mut raw,
                 &mut failed_face,
             )
         };
-        match NonNull::new(raw) {
-            Some(raw) => {
-                // SAFETY: `raw` is a live mesh just built.
-                let counts = unsafe {
-                    (
-                        ffi::topolab_om_num_vertices(raw.as_ptr()),
-                        ffi::topolab_om_num_edges(raw.as_ptr()),
-                        ffi::topolab_om_num_faces(raw.as_ptr()),
-                    )
-                };
-                Ok(Self {
-                    raw,
-                    vertices: counts.0,
-                    edges: counts.1,
-                    faces: counts.2,
-                })
-            }
-            None if failed_face == u32::MAX => Err(Error::Unsupported(
-                "OpenMesh could not allocate the mesh".into(),
-            )),
-            None => Err(refusal(soup, failed_face as usize)),
+        if code == ffi::REFUSED {
+            return Err(refusal(soup, failed_face as usize));
         }
+        status("topolab_om_build", code)?;
+        let Some(raw) = NonNull::new(raw) else {
+            return status("topolab_om_build", ffi::EXCEPTION).map(|_| unreachable!());
+        };
+        // Owned from here on: dropped (freed) if the summary below fails.
+        let mut mesh = Self {
+            raw,
+            trimesh: false,
+            vertices: 0,
+            edges: 0,
+            faces: 0,
+        };
+        let mut summary = [0u32; 4];
+        // SAFETY: `raw` is a live mesh just built; `summary` has the 4 slots the shim fills.
+        status("topolab_om_summary", unsafe {
+            ffi::topolab_om_summary(raw.as_ptr(), summary.as_mut_ptr())
+        })?;
+        let [trimesh, vertices, edges, faces] = summary;
+        mesh.trimesh = trimesh != 0;
+        (mesh.vertices, mesh.edges, mesh.faces) = (vertices, edges, faces);
+        Ok(mesh)
     }
 
     /// `true` for a TriMesh (triangle input), `false` for a PolyMesh.
     pub fn is_trimesh(&self) -> bool {
-        // SAFETY: `raw` is live for `self`'s lifetime.
-        unsafe { ffi::topolab_om_is_trimesh(self.raw.as_ptr()) != 0 }
+        self.trimesh
     }
 
     /// The checksum of operator `kernel` (an [`Operator::name`]) over every element, computed
-    /// by one C++ loop with OpenMesh's circulators; `None` for an unknown name.
-    pub fn native_sweep(&self, kernel: &str) -> Option<u64> {
+    /// by one C++ loop with OpenMesh's circulators; `None` for an unknown name, an error when
+    /// OpenMesh failed inside the loop.
+    pub fn native_sweep(&self, kernel: &str) -> Option<Result<u64>> {
         let op = Operator::from_name(kernel)?;
-        // SAFETY: `raw` is live; the shim checks nothing but needs nothing but a valid code.
-        Some(unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), op as i32) })
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer; the shim checks the code.
+        let code = unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), op as i32, &mut out) };
+        Some(status("topolab_om_sweep", code).map(|()| out))
     }
 
     /// The checksum of operator `kernel` over the query elements `ids` only (vertex, edge or
     /// face ids by the operator; faces for successor and predecessor). `None` for an unknown
-    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range.
-    pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<u64> {
+    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range; an
+    /// error when OpenMesh failed inside the loop.
+    pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<Result<u64>> {
         let op = Operator::from_name(kernel)?;
         let count = match query_element(op) {
             QueryElement::Vertex => self.vertices,
@@ -315,31 +374,41 @@ impl OpenMesh {
         if ids.iter().any(|&id| id >= count) {
             return None;
         }
-        // SAFETY: `raw` is live and every id was just checked to be in range.
-        Some(unsafe {
-            ffi::topolab_om_sampled(self.raw.as_ptr(), op as i32, ids.as_ptr(), ids.len())
-        })
+        let mut out = 0;
+        // SAFETY: `raw` is live, every id was just checked to be in range, `out` is valid.
+        let code = unsafe {
+            ffi::topolab_om_sampled(
+                self.raw.as_ptr(),
+                op as i32,
+                ids.as_ptr(),
+                ids.len(),
+                &mut out,
+            )
+        };
+        Some(status("topolab_om_sampled", code).map(|()| out))
     }
 
     /// Requests what workload `name` needs (normals for `normals`), so that a timed
-    /// [`OpenMesh::native_workload`] runs only the workload; `false` for an unknown name.
-    pub fn prepare_workload(&mut self, name: &str) -> bool {
-        let Some(code) = WORKLOADS.iter().position(|&w| w == name) else {
-            return false;
-        };
+    /// [`OpenMesh::native_workload`] runs only the workload; `None` for an unknown name, an
+    /// error when OpenMesh could not add the properties.
+    pub fn prepare_workload(&mut self, name: &str) -> Option<Result<()>> {
+        let workload = WORKLOADS.iter().position(|&w| w == name)?;
         // SAFETY: `raw` is live and exclusively borrowed.
-        unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), code as i32) };
-        true
+        let code = unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), workload as i32) };
+        Some(status("topolab_om_prepare_workload", code))
     }
 
     /// Runs a Surface_mesh benchmark workload (see [`WORKLOADS`] for what each returns) in
-    /// one C++ call; `None` for an unknown name. `smoothing` moves the vertices, `normals`
-    /// adds normal properties (requested on first use unless [`OpenMesh::prepare_workload`]
-    /// did it).
-    pub fn native_workload(&mut self, name: &str) -> Option<f64> {
-        let code = WORKLOADS.iter().position(|&w| w == name)?;
-        // SAFETY: `raw` is live and exclusively borrowed (the workload may write positions).
-        Some(unsafe { ffi::topolab_om_workload(self.raw.as_ptr(), code as i32) })
+    /// one C++ call; `None` for an unknown name, an error when OpenMesh failed inside it.
+    /// `normals` adds normal properties (requested on first use unless
+    /// [`OpenMesh::prepare_workload`] did it).
+    pub fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
+        let workload = WORKLOADS.iter().position(|&w| w == name)?;
+        let mut out = 0.0;
+        // SAFETY: `raw` is live and exclusively borrowed; `out` is a valid out-pointer.
+        let code =
+            unsafe { ffi::topolab_om_workload(self.raw.as_ptr(), workload as i32, &mut out) };
+        Some(status("topolab_om_workload", code).map(|()| out))
     }
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.
@@ -349,7 +418,7 @@ impl OpenMesh {
             // SAFETY: `raw` is live; the caller checked `id` against the element count of
             // `op`'s input; the context is `&mut callback`, matching `emit_index::<F>`, and
             // outlives the call (C++ does not keep it).
-            unsafe {
+            let code = unsafe {
                 ffi::topolab_om_query(
                     raw,
                     op as i32,
@@ -359,6 +428,7 @@ impl OpenMesh {
                 )
             };
             callback.finish();
+            infallible("topolab_om_query", code);
         }
         run(self.raw.as_ptr(), op, id, f);
     }
@@ -390,9 +460,18 @@ impl OpenMesh {
 
     fn neighbour_in_face(&self, e: EdgeId, face: FaceId, successor: bool) -> Option<EdgeId> {
         let (e, face) = (self.edge(e), self.face(face));
-        // SAFETY: `raw` is live and both ids were checked.
-        let answer =
-            unsafe { ffi::topolab_om_edge_neighbour(self.raw.as_ptr(), e, face, successor as i32) };
+        let mut answer = -1;
+        // SAFETY: `raw` is live, both ids were checked, `answer` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_om_edge_neighbour(
+                self.raw.as_ptr(),
+                e,
+                face,
+                successor as i32,
+                &mut answer,
+            )
+        };
+        infallible("topolab_om_edge_neighbour", code);
         u32::try_from(answer).ok().map(EdgeId)
     }
 
@@ -400,7 +479,8 @@ impl OpenMesh {
     fn halfedge(&self, h: u32) -> [u32; 4] {
         let mut out = [0u32; 4];
         // SAFETY: `raw` is live, `h` < 2 × edges (callers iterate that range), `out` has 4 slots.
-        unsafe { ffi::topolab_om_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        infallible("topolab_om_halfedge", code);
         out
     }
 }
@@ -507,7 +587,8 @@ impl MeshTopology for OpenMesh {
         let v = self.vertex(v);
         let mut out = [0.0f64; 3];
         // SAFETY: `raw` is live, `v` checked, `out` has 3 slots.
-        unsafe { ffi::topolab_om_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        infallible("topolab_om_position", code);
         glam::DVec3::from_array(out)
     }
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
@@ -523,7 +604,8 @@ impl MeshTopology for OpenMesh {
         let e = self.edge(e);
         let mut out = [0u32; 2];
         // SAFETY: `raw` is live, `e` checked, `out` has 2 slots.
-        unsafe { ffi::topolab_om_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        infallible("topolab_om_edge_vertices", code);
         out.map(VertexId)
     }
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
@@ -543,20 +625,26 @@ impl MeshTopology for OpenMesh {
     }
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         let v = self.vertex(v);
-        // SAFETY: `raw` is live, `v` checked.
-        unsafe { ffi::topolab_om_is_boundary_vertex(self.raw.as_ptr(), v) != 0 }
+        let mut out = 0;
+        // SAFETY: `raw` is live, `v` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_is_boundary_vertex(self.raw.as_ptr(), v, &mut out) };
+        infallible("topolab_om_is_boundary_vertex", code);
+        out != 0
     }
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         let e = self.edge(e);
-        // SAFETY: `raw` is live, `e` checked.
-        unsafe { ffi::topolab_om_is_boundary_edge(self.raw.as_ptr(), e) != 0 }
+        let mut out = 0;
+        // SAFETY: `raw` is live, `e` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_is_boundary_edge(self.raw.as_ptr(), e, &mut out) };
+        infallible("topolab_om_is_boundary_edge", code);
+        out != 0
     }
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         let mut callback = Callback::new(out);
         // SAFETY: `raw` is live; the context is `&mut Callback<&mut BoundaryCurves>`, what
         // `push_curve_edge` and `end_curve` expect, alive for the whole call.
-        unsafe {
+        let code = unsafe {
             ffi::topolab_om_boundary_curves(
                 self.raw.as_ptr(),
                 push_curve_edge,
@@ -565,6 +653,9 @@ impl MeshTopology for OpenMesh {
             )
         };
         callback.finish();
+        // Its visited flags are the one allocation of a query in the shim: out of memory
+        // there is reported like Rust's own.
+        infallible("topolab_om_boundary_curves", code);
     }
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.neighbour_in_face(e, face, true)
@@ -574,9 +665,11 @@ impl MeshTopology for OpenMesh {
     }
 
     fn validate(&self) -> Result<()> {
-        let mut element = 0u32;
-        // SAFETY: `raw` is live; `element` is a valid out-pointer.
-        let problem = unsafe { ffi::topolab_om_validate(self.raw.as_ptr(), &mut element) };
+        let (mut problem, mut element) = (0, 0u32);
+        // SAFETY: `raw` is live; `problem` and `element` are valid out-pointers.
+        status("topolab_om_validate", unsafe {
+            ffi::topolab_om_validate(self.raw.as_ptr(), &mut problem, &mut element)
+        })?;
         let message = match problem {
             0 => return Ok(()),
             1 => format!("halfedge {element}: next/prev/face links disagree"),
@@ -589,8 +682,11 @@ impl MeshTopology for OpenMesh {
     /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
     /// no other thread allocates during construction.
     fn heap_bytes(&self) -> usize {
-        // SAFETY: `raw` is live.
-        unsafe { ffi::topolab_om_heap_bytes(self.raw.as_ptr()) as usize }
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_heap_bytes(self.raw.as_ptr(), &mut out) };
+        infallible("topolab_om_heap_bytes", code);
+        out as usize
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
@@ -617,8 +713,10 @@ impl MeshTopology for OpenMesh {
         )?;
         for v in 0..self.vertices {
             let p = self.position(VertexId(v));
-            // SAFETY: `raw` is live and `v` < vertices.
-            let h = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v) };
+            let mut h = u32::MAX;
+            // SAFETY: `raw` is live, `v` < vertices, `h` is a valid out-pointer.
+            let code = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
+            infallible("topolab_om_vertex_halfedge", code);
             writeln!(
                 w,
                 "  v{v}: ({:.3}, {:.3}, {:.3})  out {}",
@@ -644,8 +742,10 @@ impl MeshTopology for OpenMesh {
         }
         writeln!(w, "faces: {} (one halfedge)", self.faces)?;
         for f in 0..self.faces {
-            // SAFETY: `raw` is live and `f` < faces.
-            let h = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f) };
+            let mut h = u32::MAX;
+            // SAFETY: `raw` is live, `f` < faces, `h` is a valid out-pointer.
+            let code = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f, &mut h) };
+            infallible("topolab_om_face_halfedge", code);
             writeln!(w, "  f{f}: h{h}")?;
         }
         Ok(())
@@ -656,15 +756,15 @@ impl MeshTopology for OpenMesh {
         Some(OpenMesh::build_native(soup, soup.num_corners() / 2))
     }
 
-    fn native_sweep(&self, op: Operator) -> Option<u64> {
+    fn native_sweep(&self, op: Operator) -> Option<Result<u64>> {
         OpenMesh::native_sweep(self, op.name())
     }
 
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
+    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
         OpenMesh::native_sampled(self, op.name(), ids)
     }
 
-    fn native_workload(&mut self, name: &str) -> Option<f64> {
+    fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
         OpenMesh::native_workload(self, name)
     }
 }

@@ -231,9 +231,18 @@ pub fn measure_structure<M: MeshTopology>(
         }
         let native = m.native_workload(w.name()).is_some();
         let (t, r) = if native {
-            time(budget, || {
-                m.native_workload(w.name()).unwrap_or_default().to_bits()
-            })
+            let failure = std::cell::Cell::new(None);
+            let timed = time(budget, || match m.native_workload(w.name()) {
+                Some(Ok(value)) => value.to_bits(),
+                failed => {
+                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+                    0
+                }
+            });
+            if let Some(e) = failure.take() {
+                return Err(format!("{} {} on {}: {e}", M::NAME, w.name(), case.name));
+            }
+            timed
         } else {
             time(budget, || run_workload(&m, w, &mut buf).to_bits())
         }
@@ -274,14 +283,38 @@ pub fn time_kernel<M: MeshTopology>(
         Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
     };
     let (t, sum) = if native {
-        time(budget, || match kernel {
-            Kernel::Sweep => m.native_sweep(op).unwrap_or_default(),
-            Kernel::Sampled => m.native_sampled(op, &ids).unwrap_or_default(),
-        })
+        let failure = std::cell::Cell::new(None);
+        let timed = time(budget, || {
+            let sum = match kernel {
+                Kernel::Sweep => m.native_sweep(op),
+                Kernel::Sampled => m.native_sampled(op, &ids),
+            };
+            match sum {
+                Some(Ok(sum)) => sum,
+                failed => {
+                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+                    0
+                }
+            }
+        });
+        if let Some(e) = failure.take() {
+            return Err(e);
+        }
+        timed
     } else {
         time(budget, || run(m, op, q, curves))
     }?;
     Ok((t, sum, native))
+}
+
+/// The message for a native kernel that failed while timed: a baseline's exception caught at
+/// the FFI wall (`Some(Err)`), or a hook that stopped answering (`None`). The cell then fails
+/// loudly instead of timing a zero checksum.
+fn native_failure(failed: Option<topolab_structures::Result<()>>) -> String {
+    match failed {
+        Some(Err(e)) => format!("native kernel failed: {e}"),
+        _ => "native kernel stopped answering between runs".into(),
+    }
 }
 
 /// Builds `M` from `case` and times one sweep of `op` over every element (for comparisons

@@ -219,6 +219,17 @@ pub enum Error {
     /// A request outside what the structure or mesh offers (e.g. an unknown structure name).
     #[error("{0}")]
     Unsupported(String),
+    /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
+    /// caught at the boundary and reported as a status code.
+    #[error("{library} failed in {call}: {reason}")]
+    Foreign {
+        /// The library (e.g. "OpenMesh").
+        library: &'static str,
+        /// The C function of the shim that failed.
+        call: &'static str,
+        /// What the shim reported (out of memory, an exception, an unknown code).
+        reason: &'static str,
+    },
 }
 
 impl Error {
@@ -244,6 +255,7 @@ impl Error {
             Error::DegeneratePoints { .. } => "degenerate-points",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
+            Error::Foreign { .. } => "foreign",
         }
     }
 

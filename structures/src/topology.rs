@@ -297,14 +297,15 @@ pub trait MeshTopology: Sized {
     /// A whole sweep of `op` over every element, run by the structure itself and folded into
     /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
     /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
-    /// the harness run its one generic kernel.
-    fn native_sweep(&self, op: Operator) -> Option<u64> {
+    /// the harness run its one generic kernel; `Some(Err(..))` when the library failed inside
+    /// the loop (a loud error of the measurement, never a silent zero).
+    fn native_sweep(&self, op: Operator) -> Option<Result<u64>> {
         let _ = op;
         None
     }
 
     /// Like [`MeshTopology::native_sweep`], for the sampled vertex or face queries `ids`.
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
+    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
         let _ = (op, ids);
         None
     }
@@ -312,7 +313,7 @@ pub trait MeshTopology: Sized {
     /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
     /// Takes `&mut self` because a baseline may keep its results (normals) in the mesh; running
     /// it twice must give the same result.
-    fn native_workload(&mut self, name: &str) -> Option<f64> {
+    fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
         let _ = name;
         None
     }
