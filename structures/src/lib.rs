@@ -2,7 +2,7 @@
 //!
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
 //! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
-//! [`conformance`]) and tested on ([`meshes`]), refined to any size ([`refine`]) and
+//! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`]) and
 //! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
 //! lecture's consistency checks on a file as written.
 //!
@@ -27,35 +27,27 @@
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
 #![deny(missing_docs)]
-// Unsafe code lives only in `pointer_half_edge::links` (real pointers are that structure's point).
+// Unsafe code lives only in `families::half_edge::pointer::links` (real pointers are that
+// structure's point).
 #![deny(unsafe_code)]
 
-pub mod attributes;
-mod boundary_walk;
-pub mod che;
-pub mod checks;
-pub mod conformance;
-mod corner_scan;
-pub mod edge_list;
-pub mod error;
-pub mod explicit;
-pub mod half_edge;
-pub mod hull;
-pub mod ids;
-pub mod index_half_edge;
+pub mod algorithms;
+pub mod core;
+pub mod families;
 pub mod io;
-pub mod meshes;
-pub mod oracle;
-pub mod ordering;
-pub mod pointer_half_edge;
-pub mod refine;
 pub mod registry;
-pub mod regular_grid;
-pub mod soup;
-pub mod summary;
-pub mod topology;
-pub mod vertex_list;
-pub mod winged_edge;
+pub mod testing;
+
+// The modules' paths from before the folders, kept for the code that names them.
+pub use self::core::{attributes, error, ids, soup, topology};
+pub use algorithms::{checks, hull, ordering, refine, summary};
+pub use families::corner_lists::{explicit, vertex_list};
+pub use families::edge_lists::{edge_list, winged_edge};
+pub use families::half_edge::{self, index as index_half_edge, pointer as pointer_half_edge};
+pub use families::{che, regular_grid};
+pub use testing::{conformance, meshes, oracle};
+use families::corner_lists::corner_scan;
+use families::edge_lists::boundary_walk;
 
 pub use attributes::{MeshAttributes, Plane};
 pub use che::{CheL0, CheL1, CheL2, CheL3};

@@ -19,6 +19,8 @@
 //!   one half-edge per vertex reaches only one fan by rotation.
 
 mod build;
+pub mod index;
+pub mod pointer;
 
 pub use build::HalfEdgeArrays;
 pub(crate) use build::NONE;
