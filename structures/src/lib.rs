@@ -41,13 +41,13 @@ pub mod testing;
 // The modules' paths from before the folders, kept for the code that names them.
 pub use self::core::{attributes, error, ids, soup, topology};
 pub use algorithms::{checks, hull, ordering, refine, summary};
+use families::corner_lists::corner_scan;
 pub use families::corner_lists::{explicit, vertex_list};
+use families::edge_lists::boundary_walk;
 pub use families::edge_lists::{edge_list, winged_edge};
 pub use families::half_edge::{self, index as index_half_edge, pointer as pointer_half_edge};
 pub use families::{che, regular_grid};
 pub use testing::{conformance, meshes, oracle};
-use families::corner_lists::corner_scan;
-use families::edge_lists::boundary_walk;
 
 pub use attributes::{MeshAttributes, Plane};
 pub use che::{CheL0, CheL1, CheL2, CheL3};

@@ -27,18 +27,16 @@
 //!   insertion order leaves), so the algorithms agree on vertices and volume, not faces.
 
 //!
-//! **Speed** (`cargo run --release -p topolab-structures --example hull_bench`): the
+//! **Speed** (`cargo run --release -p topolab-harness --example hull_bench`): the
 //! randomized algorithm runs within a small factor of Qhull. Visible faces are removed in
 //! breadth-first order: [`WingedEdge::remove_face`] scans all edges for a new `av(v)` when a
 //! vertex's faces go out of rotation order (the structure keeps no edge list per vertex), and
 //! in arbitrary order that scan took 59% of a run on a sphere (perf); a per-vertex edge list
 //! in the winged-edge's incremental index would remove the scan altogether.
 
-pub mod bench;
 pub mod gift_wrap;
 pub mod incremental;
 pub mod predicates;
-pub mod qhull;
 pub mod randomized;
 
 use crate::error::{Error, Result};
@@ -48,7 +46,6 @@ use crate::topology::MeshTopology;
 use crate::winged_edge::WingedEdge;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
-use std::time::Instant;
 
 /// Which of the seed's algorithms builds the hull.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
@@ -179,17 +176,6 @@ pub fn convex_hull(points: &[DVec3], algorithm: Algorithm) -> Result<Hull> {
         mesh,
         faces_created,
     })
-}
-
-/// One benchmark measurement, for the report: builds the hull of `points` with `algorithm`
-/// and returns `(seconds, faces_created, hull_vertices)`. The time covers the whole call of
-/// [`convex_hull`] (input checks and duplicate removal included), measured once with
-/// [`Instant`]; repeat and take the best or median in the caller.
-pub fn benchmark_row(points: &[DVec3], algorithm: Algorithm) -> Result<(f64, usize, usize)> {
-    let start = Instant::now();
-    let hull = convex_hull(points, algorithm)?;
-    let seconds = start.elapsed().as_secs_f64();
-    Ok((seconds, hull.faces_created, hull.vertices().len()))
 }
 
 /// A shape to draw random points from.

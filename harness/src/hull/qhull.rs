@@ -2,11 +2,11 @@
 //! point set, for the tests and the benchmark. Needs the workspace's `.venv` with SciPy
 //! (`.ci/install-deps`, or `python3 -m venv .venv && .venv/bin/pip install scipy numpy`).
 
-use crate::io::write_obj;
-use crate::soup::PolygonSoup;
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use topolab_structures::io::write_obj;
+use topolab_structures::PolygonSoup;
 
 /// What Qhull answered.
 #[derive(Clone, Debug, serde::Deserialize)]

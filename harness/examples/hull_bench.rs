@@ -1,16 +1,17 @@
 //! Times seed 004's three hull algorithms against n, next to Qhull in the same run, and
 //! counts the faces each creates against the seed's bound 6n − 20.
 //!
-//! `cargo run --release -p topolab-structures --example hull_bench -- [SHAPE ...] [--max N]`
+//! `cargo run --release -p topolab-harness --example hull_bench -- [SHAPE ...] [--max N]`
 //!
 //! SHAPE: cube, ball, sphere (default ball and sphere). n runs 1k, 10k, 100k, 1M up to
 //! `--max` (default 1M). Gift wrapping (O(n·h)) and the plain incremental algorithm (O(n²))
 //! stop growing n once one size took more than 1 s; the randomized one always goes on. Each
-//! time is the best of 3 runs (1 run from 100k on) of [`benchmark_row`], Qhull's the best of
+//! time is the best of 3 runs (1 run from 100k on) of [`bench::benchmark_row`], Qhull's the best of
 //! as many `ConvexHull` calls; Qhull is skipped without the workspace's `.venv` with SciPy.
 
 use std::path::Path;
-use topolab_structures::hull::{bench, qhull, Shape};
+use topolab_harness::hull::{bench, qhull};
+use topolab_structures::hull::Shape;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

@@ -2,8 +2,12 @@
 //! Qhull, when SciPy is there) on random points of one shape at growing n, with the faces
 //! each algorithm creates against the seed's expected bound 6n − 20.
 
-use super::{benchmark_row, qhull, random_points, Algorithm, Shape};
+use super::qhull;
+use glam::DVec3;
 use std::path::Path;
+use std::time::Instant;
+use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
+use topolab_structures::Result;
 
 /// One timed hull.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -20,6 +24,17 @@ pub struct HullRow {
     pub faces_created: Option<usize>,
     /// Vertices of the hull.
     pub hull_vertices: usize,
+}
+
+/// One benchmark measurement: builds the hull of `points` with `algorithm` and returns
+/// `(seconds, faces_created, hull_vertices)`. The time covers the whole call of
+/// [`convex_hull`] (input checks and duplicate removal included), measured once with
+/// [`Instant`]; repeat and take the best or median in the caller.
+pub fn benchmark_row(points: &[DVec3], algorithm: Algorithm) -> Result<(f64, usize, usize)> {
+    let start = Instant::now();
+    let hull = convex_hull(points, algorithm)?;
+    let seconds = start.elapsed().as_secs_f64();
+    Ok((seconds, hull.faces_created, hull.vertices().len()))
 }
 
 /// Runs the benchmark for `shape` over `sizes` (increasing). Gift wrapping (O(n·h)) and the

@@ -4,7 +4,8 @@
 
 use glam::DVec3;
 use std::path::Path;
-use topolab_structures::hull::{convex_hull, qhull, random_points, Algorithm, Shape};
+use topolab_harness::hull::qhull;
+use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
 
 fn sorted_positions(points: &[DVec3], indices: impl Iterator<Item = usize>) -> Vec<[f64; 3]> {
     let mut v: Vec<[f64; 3]> = indices.map(|i| points[i].to_array()).collect();
