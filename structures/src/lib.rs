@@ -1,7 +1,7 @@
 //! # topolab-structures
 //!
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
-//! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
+//! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`](testing::oracle),
 //! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`]) and
 //! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
 //! lecture's consistency checks on a file as written.
@@ -38,27 +38,23 @@ pub mod io;
 pub mod registry;
 pub mod testing;
 
-// The modules' paths from before the folders, kept for the code that names them.
-pub use self::core::{attributes, error, ids, soup, topology};
+// The module paths the other crates use (`topolab_structures::hull::convex_hull`, ...).
 pub use algorithms::{checks, hull, ordering, refine, summary};
-use families::corner_lists::corner_scan;
-pub use families::corner_lists::{explicit, vertex_list};
-use families::edge_lists::boundary_walk;
-pub use families::edge_lists::{edge_list, winged_edge};
-pub use families::half_edge::{self, index as index_half_edge, pointer as pointer_half_edge};
-pub use families::{che, regular_grid};
-pub use testing::{conformance, meshes, oracle};
+pub use families::che;
+pub use testing::{conformance, meshes};
+// The error types' short path inside the crate (`crate::error::Error`).
+use self::core::error;
 
-pub use attributes::{MeshAttributes, Plane};
-pub use che::{CheL0, CheL1, CheL2, CheL3};
-pub use edge_list::EdgeList;
-pub use error::{Error, Format, Location, Result};
-pub use explicit::ExplicitStorage;
-pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
-pub use index_half_edge::IndexHalfEdge;
-pub use pointer_half_edge::PointerHalfEdge;
-pub use regular_grid::{HeightField, RegularGrid};
-pub use soup::{Connectivity, PolygonSoup};
-pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
-pub use vertex_list::VertexList;
-pub use winged_edge::WingedEdge;
+pub use self::core::attributes::{MeshAttributes, Plane};
+pub use self::core::error::{Error, Format, Location, Result};
+pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use self::core::soup::{Connectivity, PolygonSoup};
+pub use self::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+pub use families::che::{CheL0, CheL1, CheL2, CheL3};
+pub use families::corner_lists::explicit::ExplicitStorage;
+pub use families::corner_lists::vertex_list::VertexList;
+pub use families::edge_lists::edge_list::EdgeList;
+pub use families::edge_lists::winged_edge::WingedEdge;
+pub use families::half_edge::index::IndexHalfEdge;
+pub use families::half_edge::pointer::PointerHalfEdge;
+pub use families::regular_grid::{HeightField, RegularGrid};

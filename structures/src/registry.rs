@@ -1,10 +1,10 @@
-//! The structures of this crate by name: one line per structure in [`structures!`].
+//! The structures of this crate by name: one line per structure in `structures!`.
 //!
 //! Code that must work with a structure chosen at run time (the CLI) implements
 //! [`StructureVisitor`] and calls [`visit`]; the visitor's generic method is monomorphised for
 //! each structure, so nothing goes through `dyn`.
 
-use crate::topology::MeshTopology;
+use crate::core::topology::MeshTopology;
 use crate::{
     CheL0, CheL1, CheL2, CheL3, ExplicitStorage, HeightField, IndexHalfEdge, PointerHalfEdge,
     RegularGrid, VertexList,

@@ -22,10 +22,10 @@
 //! intersections between different faces (the lecture's "two facets share nothing, a vertex
 //! or an edge") are not tested.
 
-use crate::attributes::NewellSum;
-use crate::error::Error;
+use crate::core::attributes::NewellSum;
+use crate::core::error::Error;
+use crate::core::soup::{Connectivity, PolygonSoup};
 use crate::io::RawSoup;
-use crate::soup::{Connectivity, PolygonSoup};
 use glam::{DVec2, DVec3};
 use std::collections::{BTreeMap, HashMap, HashSet};
 

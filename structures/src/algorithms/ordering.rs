@@ -19,7 +19,7 @@
 //! vertex's neighbours are. Corners keep their order within each face (orientation and the
 //! starting corner are unchanged).
 
-use crate::soup::PolygonSoup;
+use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
@@ -259,8 +259,8 @@ fn breadth_first(soup: &PolygonSoup) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::meshes;
-    use crate::oracle::{pair, Oracle};
+    use crate::testing::meshes;
+    use crate::testing::oracle::{pair, Oracle};
 
     fn is_permutation(p: &[u32]) -> bool {
         let mut seen = vec![false; p.len()];

@@ -21,8 +21,8 @@
 //! Cost per level: one edge analysis (a sort of the corners, O(c log c)), then O(V + E + F).
 //! Memory: the input, its [`Connectivity`] and the output (about 4 times the input).
 
-use crate::error::{Error, Result};
-use crate::soup::{Connectivity, PolygonSoup};
+use crate::core::error::{Error, Result};
+use crate::core::soup::{Connectivity, PolygonSoup};
 use glam::DVec3;
 use std::f64::consts::TAU;
 
@@ -180,8 +180,8 @@ fn loop_positions(soup: &PolygonSoup, conn: &Connectivity) -> Vec<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::meshes;
-    use crate::oracle::Oracle;
+    use crate::testing::meshes;
+    use crate::testing::oracle::Oracle;
 
     fn euler(s: &PolygonSoup) -> i64 {
         let e = s.connectivity().unwrap().num_edges();

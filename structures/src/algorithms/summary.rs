@@ -1,8 +1,8 @@
 //! Whole-mesh facts computed through a structure's operators: counts, boundary curves, Euler
 //! characteristic, genus. What `topolab info` prints.
 
-use crate::ids::{FaceId, VertexId};
-use crate::topology::{BoundaryCurves, MeshTopology};
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::{BoundaryCurves, MeshTopology};
 
 /// Counts and topological invariants of a mesh, as one structure computed them.
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]

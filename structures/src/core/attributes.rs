@@ -2,8 +2,8 @@
 //! and vertex attributes (*Flächen-, Kanten-, Punkt-Attribute*). One implementation serves every
 //! structure (a blanket impl), so timing them measures each structure's relations.
 
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::topology::MeshTopology;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::topology::MeshTopology;
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -157,7 +157,7 @@ impl<M: MeshTopology> MeshAttributes for M {}
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::meshes;
+    use crate::testing::meshes;
     use crate::VertexList;
 
     #[test]

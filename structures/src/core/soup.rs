@@ -1,8 +1,8 @@
 //! [`PolygonSoup`]: the face list every structure is built from, and the shared analysis of
 //! its edges ([`Connectivity`]) that constructions use to find twins and reject non-manifold input.
 
-use crate::error::{Error, Result};
-use crate::ids::{FaceId, VertexId};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{FaceId, VertexId};
 use glam::DVec3;
 
 /// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.

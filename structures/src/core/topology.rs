@@ -3,12 +3,12 @@
 //!
 //! Relations follow the CHE chapter's notation `Rpq`: given a p-simplex, the q-simplices around
 //! it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a callback (internal
-//! iteration), so they never allocate and are monomorphised in benchmarks; use
-//! [`MeshTopology::collect`]-style helpers of the caller (e.g. `Vec::push`) for a buffer.
+//! iteration), so they never allocate and are monomorphised in benchmarks; a caller that
+//! wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
 
-use crate::error::Result;
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
+use crate::core::error::Result;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 
 /// Every operator a structure answers, in catalogue order.
@@ -148,7 +148,7 @@ pub struct Capabilities {
     /// Vertices whose faces form several fans are stored and answered correctly (otherwise
     /// refused with [`crate::Error::NonManifoldVertex`]).
     pub non_manifold_vertices: bool,
-    /// Only the regular grids of [`crate::meshes::grid`] (others refused with
+    /// Only the regular grids of [`crate::testing::meshes::grid`] (others refused with
     /// [`crate::Error::NotAGrid`]).
     pub grids_only: bool,
     /// Vertices are identified by position, so two vertices may not coincide (explicit

@@ -1,6 +1,6 @@
 //! The shared conformance suite: every operator of a structure compared with the [`Oracle`].
 //!
-//! [`check`] is the whole suite for one mesh; the [`conformance!`](crate::conformance) macro
+//! [`check`] is the whole suite for one mesh; the [`conformance!`](macro@crate::conformance) macro
 //! turns it into tests over every canonical mesh and random meshes (proptest) for a structure,
 //! so a new structure gets every test by adding one line:
 //!
@@ -12,11 +12,11 @@
 //! direction); edges are compared by their end vertices. A structure that cannot store a mesh
 //! must refuse it with the error its [`Capabilities`] announce, and only then.
 
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::meshes::{self, RandomMeshParams};
-use crate::oracle::{pair, Oracle, Pair};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, MeshTopology};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, MeshTopology};
+use crate::testing::meshes::{self, RandomMeshParams};
+use crate::testing::oracle::{pair, Oracle, Pair};
 use std::collections::BTreeSet;
 
 /// What happened when a structure met a mesh.
@@ -344,7 +344,7 @@ macro_rules! conformance {
         mod $module {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::conformance::assert_canonical;
+            use $crate::testing::conformance::assert_canonical;
 
             $crate::conformance!(@canonical $ty;
                 single_triangle "single-triangle",
@@ -363,7 +363,7 @@ macro_rules! conformance {
 
             #[test]
             fn every_canonical_mesh_is_tested() {
-                assert_eq!($crate::meshes::canonical().len(), 12, "add the new canonical mesh to conformance!");
+                assert_eq!($crate::testing::meshes::canonical().len(), 12, "add the new canonical mesh to conformance!");
             }
 
             proptest::proptest! {
@@ -371,8 +371,8 @@ macro_rules! conformance {
                 #[test]
                 fn random_meshes(seed in proptest::prelude::any::<u64>()) {
                     let caps = <$ty as $crate::MeshTopology>::capabilities();
-                    let (soup, is_grid) = $crate::conformance::random_case(seed, caps);
-                    if let Err(msg) = $crate::conformance::check::<$ty>(&soup, is_grid) {
+                    let (soup, is_grid) = $crate::testing::conformance::random_case(seed, caps);
+                    if let Err(msg) = $crate::testing::conformance::check::<$ty>(&soup, is_grid) {
                         panic!("{} on random mesh {seed}: {msg}\n{soup:?}", <$ty as $crate::MeshTopology>::NAME);
                     }
                 }

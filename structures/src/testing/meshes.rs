@@ -1,7 +1,7 @@
 //! Meshes to test and measure on: the canonical tiny meshes (each named for what it exercises)
 //! and deterministic generators of grids, tori, spheres and random meshes of any size.
 
-use crate::soup::PolygonSoup;
+use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
@@ -590,7 +590,7 @@ pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::oracle::Oracle;
+    use crate::testing::oracle::Oracle;
 
     #[test]
     fn canonical_meshes_are_valid_soups() {
@@ -645,7 +645,7 @@ mod tests {
         let c = s.connectivity().unwrap();
         c.check_vertex_fans(s).unwrap();
         let euler = s.num_vertices() as i64 - c.num_edges() as i64 + s.num_faces() as i64;
-        let oracle = crate::oracle::Oracle::new(s);
+        let oracle = crate::testing::oracle::Oracle::new(s);
         assert_eq!(oracle.edge_faces.len(), c.num_edges());
         assert!(
             oracle.vertex_faces.iter().all(|f| !f.is_empty()),

@@ -2,7 +2,7 @@
 //! in the "vertex language" (edges as sorted end-vertex pairs) so that any structure's answers
 //! can be compared with it. Slow and obviously right, on purpose.
 
-use crate::soup::PolygonSoup;
+use crate::core::soup::PolygonSoup;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// An undirected edge by its end vertices, smaller first.

@@ -27,9 +27,9 @@
 //! no facet found so far has the side b → a.
 
 use super::predicates::{collinear, farther_on_ray, volume6};
-use crate::error::{Error, Result};
-use crate::ids::VertexId;
-use crate::winged_edge::WingedEdge;
+use crate::core::error::{Error, Result};
+use crate::core::ids::VertexId;
+use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
 use std::collections::{HashSet, VecDeque};
 

@@ -19,10 +19,10 @@
 //! extreme points, whatever the order; coplanar facets come out triangulated.
 
 use super::predicates::volume6;
-use crate::error::{Error, Result};
-use crate::ids::{FaceId, VertexId};
-use crate::topology::MeshTopology;
-use crate::winged_edge::WingedEdge;
+use crate::core::error::{Error, Result};
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::MeshTopology;
+use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
 
 /// A face of the hull being built: its corners (counter-clockwise from outside) and the face

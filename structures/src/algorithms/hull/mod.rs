@@ -39,11 +39,11 @@ pub mod incremental;
 pub mod predicates;
 pub mod randomized;
 
-use crate::error::{Error, Result};
-use crate::ids::{FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::MeshTopology;
-use crate::winged_edge::WingedEdge;
+use crate::core::error::{Error, Result};
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::MeshTopology;
+use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
 

@@ -27,10 +27,10 @@
 
 use super::incremental::{cover_slots, face_volume6, replace_visible_by_cone, triangle};
 use super::predicates::{find_simplex, volume6};
-use crate::error::Result;
-use crate::ids::{FaceId, VertexId};
-use crate::topology::MeshTopology;
-use crate::winged_edge::WingedEdge;
+use crate::core::error::Result;
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::MeshTopology;
+use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
 use rand::seq::SliceRandom;
 use rand::SeedableRng;

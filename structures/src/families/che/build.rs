@@ -2,9 +2,9 @@
 //! construction of `O[]` and `EH` that produces identical containers without hashing.
 
 use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
-use crate::error::{Error, Result};
-use crate::ids::HalfEdgeId;
-use crate::soup::PolygonSoup;
+use crate::core::error::{Error, Result};
+use crate::core::ids::HalfEdgeId;
+use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 use std::collections::{BTreeMap, HashMap};
 

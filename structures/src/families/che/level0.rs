@@ -4,10 +4,10 @@
 use super::build::{build_fast, Checked};
 use super::{che_topology, half_edges_of, next, prev, print_container, triangle};
 use super::{vec_bytes, CheLevel, StarRead};
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
 
 /// CHE level 0: geometry and the start vertex of each half-edge; see the [module docs](super).

@@ -5,10 +5,10 @@
 use super::build::{build_chapter, build_fast, Checked};
 use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
 use super::{CheL0, CheLevel, StarRead};
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, HalfEdgeId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
 
 /// CHE level 1: level 0 plus opposite half-edges; see the [module docs](super).

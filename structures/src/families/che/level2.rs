@@ -5,10 +5,10 @@
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, HalfEdgeId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
 
 /// CHE level 2: level 1 plus a half-edge per vertex and the edge map; see the

@@ -8,10 +8,10 @@ use super::build::{
 };
 use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
 use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Cost, MeshTopology, Operator};
 use glam::DVec3;
 
 /// CHE level 3: level 2 plus one half-edge per boundary curve; see the [module docs](super).

@@ -91,8 +91,8 @@ pub use level1::CheL1;
 pub use level2::CheL2;
 pub use level3::CheL3;
 
-use crate::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
-use crate::topology::BoundaryCurves;
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::topology::BoundaryCurves;
 
 /// `next(he)`: the following half-edge of the same triangle (§4.1).
 #[inline(always)]
@@ -333,52 +333,56 @@ fn neighbour_in_face<L: CheLevel>(
 /// the relations of all four levels, so they differ only where the chapter's algorithms do.
 macro_rules! che_topology {
     ($ty:ty, $name:literal, $cost:path) => {
-        impl $crate::topology::MeshTopology for $ty {
+        impl $crate::core::topology::MeshTopology for $ty {
             const NAME: &'static str = $name;
 
-            fn capabilities() -> $crate::topology::Capabilities {
-                $crate::topology::Capabilities {
+            fn capabilities() -> $crate::core::topology::Capabilities {
+                $crate::core::topology::Capabilities {
                     triangles_only: true,
-                    ..$crate::topology::Capabilities::POLYGONS
+                    ..$crate::core::topology::Capabilities::POLYGONS
                 }
             }
-            fn cost(op: $crate::topology::Operator) -> $crate::topology::Cost {
+            fn cost(op: $crate::core::topology::Operator) -> $crate::core::topology::Cost {
                 $cost(op)
             }
-            fn from_soup(soup: &$crate::soup::PolygonSoup) -> $crate::error::Result<Self> {
+            fn from_soup(
+                soup: &$crate::core::soup::PolygonSoup,
+            ) -> $crate::core::error::Result<Self> {
                 Self::build(soup)
             }
             fn num_vertices(&self) -> usize {
                 self.geometry().len()
             }
             fn num_edges(&self) -> usize {
-                $crate::che::CheLevel::edge_count(self)
+                $crate::families::che::CheLevel::edge_count(self)
             }
             fn num_faces(&self) -> usize {
                 self.start_vertices().len() / 3
             }
-            fn for_each_edge(&self, f: impl FnMut($crate::ids::EdgeId)) {
-                $crate::che::CheLevel::each_edge(self, f)
+            fn for_each_edge(&self, f: impl FnMut($crate::core::ids::EdgeId)) {
+                $crate::families::che::CheLevel::each_edge(self, f)
             }
-            fn position(&self, v: $crate::ids::VertexId) -> glam::DVec3 {
+            fn position(&self, v: $crate::core::ids::VertexId) -> glam::DVec3 {
                 self.geometry()[v.index()]
             }
             fn vertex_vertices(
                 &self,
-                v: $crate::ids::VertexId,
-                mut f: impl FnMut($crate::ids::VertexId),
+                v: $crate::core::ids::VertexId,
+                mut f: impl FnMut($crate::core::ids::VertexId),
             ) {
                 let vs = self.start_vertices();
-                let neighbour = |h: $crate::ids::HalfEdgeId| $crate::ids::VertexId(vs[h.index()]);
-                let closing = self.vertex_star(v, |_| {}, |h| f(neighbour($crate::che::next(h))));
+                let neighbour =
+                    |h: $crate::core::ids::HalfEdgeId| $crate::core::ids::VertexId(vs[h.index()]);
+                let closing =
+                    self.vertex_star(v, |_| {}, |h| f(neighbour($crate::families::che::next(h))));
                 if let Some(p) = closing {
                     f(neighbour(p));
                 }
             }
             fn vertex_edges(
                 &self,
-                v: $crate::ids::VertexId,
-                mut f: impl FnMut($crate::ids::EdgeId),
+                v: $crate::core::ids::VertexId,
+                mut f: impl FnMut($crate::core::ids::EdgeId),
             ) {
                 let closing = self.vertex_star(v, |_| {}, |h| f(self.edge_of(h)));
                 if let Some(p) = closing {
@@ -387,82 +391,99 @@ macro_rules! che_topology {
             }
             fn vertex_faces(
                 &self,
-                v: $crate::ids::VertexId,
-                mut f: impl FnMut($crate::ids::FaceId),
+                v: $crate::core::ids::VertexId,
+                mut f: impl FnMut($crate::core::ids::FaceId),
             ) {
-                self.vertex_star(v, |_| {}, |h| f($crate::che::triangle(h)));
+                self.vertex_star(v, |_| {}, |h| f($crate::families::che::triangle(h)));
             }
-            fn edge_vertices(&self, e: $crate::ids::EdgeId) -> [$crate::ids::VertexId; 2] {
+            fn edge_vertices(
+                &self,
+                e: $crate::core::ids::EdgeId,
+            ) -> [$crate::core::ids::VertexId; 2] {
                 let vs = self.start_vertices();
-                let he = $crate::che::half_edge(e);
+                let he = $crate::families::che::half_edge(e);
                 [
-                    $crate::ids::VertexId(vs[he.index()]),
-                    $crate::ids::VertexId(vs[$crate::che::next(he).index()]),
+                    $crate::core::ids::VertexId(vs[he.index()]),
+                    $crate::core::ids::VertexId(vs[$crate::families::che::next(he).index()]),
                 ]
             }
-            fn edge_edges(&self, e: $crate::ids::EdgeId, mut f: impl FnMut($crate::ids::EdgeId)) {
-                let mut sides = |h: $crate::ids::HalfEdgeId| {
-                    f(self.edge_of($crate::che::next(h)));
-                    f(self.edge_of($crate::che::prev(h)));
+            fn edge_edges(
+                &self,
+                e: $crate::core::ids::EdgeId,
+                mut f: impl FnMut($crate::core::ids::EdgeId),
+            ) {
+                let mut sides = |h: $crate::core::ids::HalfEdgeId| {
+                    f(self.edge_of($crate::families::che::next(h)));
+                    f(self.edge_of($crate::families::che::prev(h)));
                 };
-                let he = $crate::che::half_edge(e);
+                let he = $crate::families::che::half_edge(e);
                 sides(he);
                 if let Some(o) = self.twin(he) {
                     sides(o);
                 }
             }
-            fn edge_faces(&self, e: $crate::ids::EdgeId, mut f: impl FnMut($crate::ids::FaceId)) {
-                let he = $crate::che::half_edge(e);
-                f($crate::che::triangle(he));
+            fn edge_faces(
+                &self,
+                e: $crate::core::ids::EdgeId,
+                mut f: impl FnMut($crate::core::ids::FaceId),
+            ) {
+                let he = $crate::families::che::half_edge(e);
+                f($crate::families::che::triangle(he));
                 if let Some(o) = self.twin(he) {
-                    f($crate::che::triangle(o));
+                    f($crate::families::che::triangle(o));
                 }
             }
             fn face_vertices(
                 &self,
-                face: $crate::ids::FaceId,
-                mut f: impl FnMut($crate::ids::VertexId),
+                face: $crate::core::ids::FaceId,
+                mut f: impl FnMut($crate::core::ids::VertexId),
             ) {
-                for he in $crate::che::half_edges_of(face) {
-                    f($crate::ids::VertexId(self.start_vertices()[he.index()]));
+                for he in $crate::families::che::half_edges_of(face) {
+                    f($crate::core::ids::VertexId(
+                        self.start_vertices()[he.index()],
+                    ));
                 }
             }
             fn face_edges(
                 &self,
-                face: $crate::ids::FaceId,
-                mut f: impl FnMut($crate::ids::EdgeId),
+                face: $crate::core::ids::FaceId,
+                mut f: impl FnMut($crate::core::ids::EdgeId),
             ) {
-                for he in $crate::che::half_edges_of(face) {
+                for he in $crate::families::che::half_edges_of(face) {
                     f(self.edge_of(he));
                 }
             }
-            fn face_faces(&self, face: $crate::ids::FaceId, f: impl FnMut($crate::ids::FaceId)) {
-                $crate::che::CheLevel::triangles_across(self, face, f)
+            fn face_faces(
+                &self,
+                face: $crate::core::ids::FaceId,
+                f: impl FnMut($crate::core::ids::FaceId),
+            ) {
+                $crate::families::che::CheLevel::triangles_across(self, face, f)
             }
-            fn is_boundary_vertex(&self, v: $crate::ids::VertexId) -> bool {
-                $crate::che::CheLevel::vertex_on_boundary(self, v)
+            fn is_boundary_vertex(&self, v: $crate::core::ids::VertexId) -> bool {
+                $crate::families::che::CheLevel::vertex_on_boundary(self, v)
             }
-            fn is_boundary_edge(&self, e: $crate::ids::EdgeId) -> bool {
-                self.twin($crate::che::half_edge(e)).is_none()
+            fn is_boundary_edge(&self, e: $crate::core::ids::EdgeId) -> bool {
+                self.twin($crate::families::che::half_edge(e)).is_none()
             }
-            fn boundary_curves(&self, out: &mut $crate::topology::BoundaryCurves) {
-                $crate::che::CheLevel::walk_boundary_curves(self, out)
+            fn boundary_curves(&self, out: &mut $crate::core::topology::BoundaryCurves) {
+                $crate::families::che::CheLevel::walk_boundary_curves(self, out)
             }
             fn edge_successor(
                 &self,
-                e: $crate::ids::EdgeId,
-                face: $crate::ids::FaceId,
-            ) -> Option<$crate::ids::EdgeId> {
-                $crate::che::successor(self, e, face, true)
+                e: $crate::core::ids::EdgeId,
+                face: $crate::core::ids::FaceId,
+            ) -> Option<$crate::core::ids::EdgeId> {
+                $crate::families::che::successor(self, e, face, true)
             }
             fn edge_predecessor(
                 &self,
-                e: $crate::ids::EdgeId,
-                face: $crate::ids::FaceId,
-            ) -> Option<$crate::ids::EdgeId> {
-                $crate::che::successor(self, e, face, false)
+                e: $crate::core::ids::EdgeId,
+                face: $crate::core::ids::FaceId,
+            ) -> Option<$crate::core::ids::EdgeId> {
+                $crate::families::che::successor(self, e, face, false)
             }
-            fn validate(&self) -> $crate::error::Result<()> {
+            fn validate(&self) -> $crate::core::error::Result<()> {
                 self.check_containers()
             }
             fn heap_bytes(&self) -> usize {

@@ -7,8 +7,22 @@
 //! is `{a, b}`. Because faces are contiguous and a face uses a vertex once, that is the corner
 //! in the first face (in face order) that contains the edge.
 
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::topology::BoundaryCurves;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::topology::{BoundaryCurves, Cost, Operator};
+
+/// The cost table of the scans: both structures of this family (vertex list, explicit
+/// storage) answer every operator by the scans below, so they declare the same costs.
+pub(crate) fn scan_cost(op: Operator) -> Cost {
+    match op {
+        Operator::R00 | Operator::R01 | Operator::R02 => Cost::Linear,
+        Operator::R10 => Cost::Log,
+        Operator::R11 | Operator::R21 | Operator::R22 => Cost::LocalTimesLinear,
+        Operator::R12 | Operator::BoundaryEdge | Operator::BoundaryVertex => Cost::Linear,
+        Operator::EdgeSuccessor | Operator::EdgePredecessor => Cost::Linear,
+        Operator::R20 => Cost::Local,
+        Operator::BoundaryCurves => Cost::Quadratic,
+    }
+}
 
 /// How corner keys relate to the lab's vertex ids.
 pub(crate) trait Naming<K> {

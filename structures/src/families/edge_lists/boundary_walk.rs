@@ -9,8 +9,8 @@
 //! both prefixes are removed at the end. Cost: O(n1) for the scan, O(∂n1 log ∂n1) for the
 //! look-ups, plus the rotations (a few successor queries per boundary edge).
 
-use crate::ids::{EdgeId, FaceId};
-use crate::topology::{BoundaryCurves, MeshTopology};
+use crate::core::ids::{EdgeId, FaceId};
+use crate::core::topology::{BoundaryCurves, MeshTopology};
 
 /// The one face of boundary edge `e`.
 fn only_face<M: MeshTopology>(m: &M, e: EdgeId) -> Option<FaceId> {

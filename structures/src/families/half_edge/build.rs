@@ -2,8 +2,8 @@
 //! edge analysis ([`crate::Connectivity`]) without hash maps: O(c log c) for c corners (the
 //! sort inside `connectivity()`), everything after it linear.
 
-use crate::error::{Error, Result};
-use crate::soup::PolygonSoup;
+use crate::core::error::{Error, Result};
+use crate::core::soup::PolygonSoup;
 
 /// The "no element" value of the `u32` link arrays.
 pub(crate) const NONE: u32 = u32::MAX;

@@ -25,10 +25,10 @@ pub mod pointer;
 pub use build::HalfEdgeArrays;
 pub(crate) use build::NONE;
 
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -519,9 +519,9 @@ fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use crate::meshes;
-    use crate::soup::PolygonSoup;
-    use crate::topology::{BoundaryCurves, MeshTopology};
+    use crate::core::soup::PolygonSoup;
+    use crate::core::topology::{BoundaryCurves, MeshTopology};
+    use crate::testing::meshes;
     use crate::{IndexHalfEdge, PointerHalfEdge};
     use glam::DVec3;
 

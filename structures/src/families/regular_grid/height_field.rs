@@ -3,7 +3,7 @@
 //! The lecture's *gemischte Struktur* (mixed structure): the regular grid's implicit topology
 //! (every operator is the same arithmetic, shared through [`Grid`]) with explicit geometry,
 //! one stored position per vertex, "e.g. the simulation of a flag". It accepts the grids of
-//! [`crate::meshes::grid`] with any positions: heights, perturbations, a waving flag.
+//! [`crate::testing::meshes::grid`] with any positions: heights, perturbations, a waving flag.
 //!
 //! | stores | bytes |
 //! |---|---|
@@ -15,7 +15,7 @@
 //! fixed by the counts.
 
 use super::{Grid, GridGeometry, GridShape};
-use crate::ids::VertexId;
+use crate::core::ids::VertexId;
 use glam::DVec3;
 use std::fmt::Write;
 

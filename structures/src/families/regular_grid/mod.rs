@@ -3,7 +3,7 @@
 //! The lecture's *regelmäßige Struktur*: a rectangular, uniform grid whose topology is given
 //! by the number of points in x and y, and whose geometry by the origin and the cell lengths.
 //! Nothing is stored per element: every operator is arithmetic on the vertex number
-//! `v = j·(nx+1) + i`. It represents exactly the grids of [`crate::meshes::grid`] (quads, or
+//! `v = j·(nx+1) + i`. It represents exactly the grids of [`crate::testing::meshes::grid`] (quads, or
 //! each cell split into the triangles `(a, b, c)`, `(a, c, d)`); anything else is refused with
 //! [`crate::Error::NotAGrid`] naming the reason. Positions are answered by the formula
 //! `origin + (i·dx, j·dy, 0)`; an input is accepted when each vertex lies there up to
@@ -43,10 +43,10 @@ mod height_field;
 
 pub use height_field::{HeightField, Positions};
 
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -293,7 +293,7 @@ impl GridShape {
         i == 0 || j == 0 || i == self.nx || j == self.ny
     }
 
-    /// The shape of `soup` if it is one of [`crate::meshes::grid`]'s grids, else why not.
+    /// The shape of `soup` if it is one of [`crate::testing::meshes::grid`]'s grids, else why not.
     /// Linear: every face is compared with the grid's face of the same number.
     fn of_soup(soup: &PolygonSoup) -> std::result::Result<Self, String> {
         if soup.num_faces() == 0 {
@@ -693,8 +693,8 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::conformance::compare;
-    use crate::meshes;
+    use crate::testing::conformance::compare;
+    use crate::testing::meshes;
 
     /// The lecture's example: origin (-1, 1), cells 0.2 x 0.2, 10 points... here 10 x 20 cells.
     fn lecture_grid() -> PolygonSoup {

@@ -23,12 +23,11 @@
 //! R00–R02 O(n), R10 O(log n), R11/R21/R22 O(k·n), R12 O(n), R20 O(k), boundary curves O(n²).
 //! Non-manifold vertices are stored and answered correctly.
 
-use crate::corner_scan::{Corners, Naming};
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
-use crate::vertex_list::scan_cost;
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::families::corner_lists::corner_scan::{scan_cost, Corners, Naming};
 use glam::DVec3;
 use std::collections::HashMap;
 use std::fmt::Write;

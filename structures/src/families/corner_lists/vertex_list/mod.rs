@@ -27,11 +27,11 @@
 //! assumes a vertex has one fan. Non-manifold edges and inconsistent orientation are refused
 //! like everywhere in the lab (the relations and boundary curves would not be defined).
 
-use crate::corner_scan::{Corners, Naming};
-use crate::error::Result;
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::error::Result;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::families::corner_lists::corner_scan::{scan_cost, Corners, Naming};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -61,19 +61,6 @@ impl VertexList {
     /// The positions and index buffer, as stored.
     pub fn corners(&self) -> (&[DVec3], &[u32], &[u32]) {
         (&self.positions, &self.corners.keys, &self.corners.offsets)
-    }
-}
-
-/// The cost table shared by the two scan-based structures (vertex list, explicit storage).
-pub(crate) fn scan_cost(op: Operator) -> Cost {
-    match op {
-        Operator::R00 | Operator::R01 | Operator::R02 => Cost::Linear,
-        Operator::R10 => Cost::Log,
-        Operator::R11 | Operator::R21 | Operator::R22 => Cost::LocalTimesLinear,
-        Operator::R12 | Operator::BoundaryEdge | Operator::BoundaryVertex => Cost::Linear,
-        Operator::EdgeSuccessor | Operator::EdgePredecessor => Cost::Linear,
-        Operator::R20 => Cost::Local,
-        Operator::BoundaryCurves => Cost::Quadratic,
     }
 }
 

@@ -21,7 +21,7 @@
 //! so they stream 8 bytes per edge instead of a 16-byte record.
 //!
 //! `EdgeId`: index into the edge arrays, numbered by first appearance (edge 0 leaves the first
-//! corner of face 0), as [`crate::soup::Connectivity`] numbers them; an edge's start and end
+//! corner of face 0), as [`crate::core::soup::Connectivity`] numbers them; an edge's start and end
 //! are the order in which its first face traverses it, so that face is its left polygon.
 //!
 //! Costs, as the lecture's table *Operationen in der Kantenliste* states them (n = number of
@@ -48,11 +48,11 @@
 //! Non-manifold edges and inconsistent orientation are refused (an edge has room for two
 //! polygons, one on each side).
 
-use crate::boundary_walk;
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::families::edge_lists::boundary_walk;
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -380,7 +380,7 @@ impl MeshTopology for EdgeList {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::meshes;
+    use crate::testing::meshes;
 
     /// The lecture's example (two triangles P1 = (E5, E4, E1), P2 = (E2, E4, E3) over V1..V4),
     /// 0-based: P1 runs V1 → V4 → V2, P2 runs V3 → V2 → V4.

@@ -37,7 +37,7 @@
 //! four with one array per field. The seed also stresses that each record has constant size.
 //!
 //! `EdgeId`: index into `edges`; from a soup, numbered by first appearance (as
-//! [`crate::soup::Connectivity`] numbers them), v1 → v2 in the order the first face runs.
+//! [`crate::core::soup::Connectivity`] numbers them), v1 → v2 in the order the first face runs.
 //!
 //! ## Costs
 //!
@@ -92,11 +92,11 @@
 //! remaining face is on its left again. Vertices are never removed; one without edges has
 //! `av = none`.
 
-use crate::boundary_walk;
-use crate::error::{Error, Result};
-use crate::ids::{EdgeId, FaceId, VertexId};
-use crate::soup::PolygonSoup;
-use crate::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::families::edge_lists::boundary_walk;
 use glam::DVec3;
 use std::collections::HashMap;
 use std::fmt::Write;
@@ -1080,8 +1080,8 @@ impl WingedEdge {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::conformance::compare;
-    use crate::meshes;
+    use crate::testing::conformance::compare;
+    use crate::testing::meshes;
 
     fn ids(vs: &[u32]) -> Vec<VertexId> {
         vs.iter().map(|&v| VertexId(v)).collect()

@@ -7,7 +7,7 @@
 //! boundary vertex's half-edge is its outgoing boundary half-edge (as in OpenMesh), so the
 //! boundary test is one read. Every circulator is built from two primitives, `next` and
 //! `twin`; the operators are the ones shared with the pointer half-edge
-//! ([`crate::half_edge::HalfEdge`]), monomorphised for arrays.
+//! ([`crate::families::half_edge::HalfEdge`]), monomorphised for arrays.
 //!
 //! | stores | lecture field | bytes |
 //! |---|---|---|
@@ -38,10 +38,10 @@
 //! Construction: `soup.connectivity()` (one sort of the corners, O(c log c)), then linear;
 //! no hash maps. Non-manifold vertices are refused ([`crate::Error::NonManifoldVertex`]).
 
-use crate::error::Result;
-use crate::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
-use crate::ids::{FaceId, VertexId};
-use crate::topology::Cost;
+use crate::core::error::Result;
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::Cost;
+use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -193,8 +193,8 @@ impl HalfEdgeLinks for IndexLinks {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::meshes;
-    use crate::topology::MeshTopology;
+    use crate::core::topology::MeshTopology;
+    use crate::testing::meshes;
 
     fn tetrahedron() -> IndexHalfEdge {
         IndexHalfEdge::from_soup(&meshes::open_tetrahedron()).expect("manifold")

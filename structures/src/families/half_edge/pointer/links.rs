@@ -9,7 +9,7 @@
 //! 3. references to records are handed out only through `&Records`, so each one lives at most
 //!    as long as that borrow, and following a link from it yields a record that lives as long.
 
-use crate::half_edge::{HalfEdgeArrays, NONE};
+use crate::families::half_edge::{HalfEdgeArrays, NONE};
 use glam::DVec3;
 use std::ptr;
 

@@ -11,7 +11,7 @@
 //!
 //! Measuring what chasing those pointers costs against the same connectivity in index
 //! arrays ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every
-//! operator with the same code ([`crate::half_edge::HalfEdge`]), monomorphised for pointers
+//! operator with the same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers
 //! here and for arrays there. All unsafe code of the crate is in the private `links` module:
 //! records are written only while they are built, never move, and are freed in `Drop`.
 //!
@@ -50,10 +50,10 @@
 #[allow(unsafe_code)]
 mod links;
 
-use crate::error::{Error, Result};
-use crate::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
-use crate::ids::{FaceId, VertexId};
-use crate::topology::Cost;
+use crate::core::error::{Error, Result};
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::Cost;
+use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
 use glam::DVec3;
 use links::{HeEdge, Records};
 use std::fmt::Write;
@@ -164,8 +164,8 @@ impl HalfEdgeLinks for PointerLinks {
 mod tests {
     use super::links::LIVE_RECORDS;
     use super::*;
-    use crate::meshes::{self, RandomMeshParams};
-    use crate::topology::MeshTopology;
+    use crate::core::topology::MeshTopology;
+    use crate::testing::meshes::{self, RandomMeshParams};
     use crate::IndexHalfEdge;
 
     fn live() -> isize {
