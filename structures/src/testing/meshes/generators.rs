@@ -1,5 +1,5 @@
-//! Meshes to test and measure on: the canonical tiny meshes (each named for what it exercises)
-//! and deterministic generators of grids, tori, spheres and random meshes of any size.
+//! Deterministic generators of grids, tori, spheres, surfaces of any genus and boundary,
+//! mixed polygons and random meshes, of any size.
 
 use crate::core::soup::PolygonSoup;
 use glam::DVec3;
@@ -7,179 +7,6 @@ use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::f64::consts::TAU;
-
-/// A named tiny mesh with what it is for.
-#[derive(Clone, Debug)]
-pub struct CanonicalMesh {
-    /// Short kebab-case name.
-    pub name: &'static str,
-    /// What it exercises.
-    pub about: &'static str,
-    /// The mesh.
-    pub soup: PolygonSoup,
-    /// `true` when it is one of the regular grids of [`grid`].
-    pub grid: bool,
-}
-
-/// The open tetrahedron of the CHE chapter's Figure 4.10: a tetrahedron without its base,
-/// 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve (vertices 0, 1, 2).
-///
-/// The figure is a drawing not reproduced in the text; this numbering is ours and is the one
-/// every `topolab explain` printout uses: apex 3, triangle t = (t, t+1 mod 3, 3).
-pub fn open_tetrahedron() -> PolygonSoup {
-    let h = (2.0f64 / 3.0).sqrt();
-    PolygonSoup::from_polygons(
-        vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(1.0, 0.0, 0.0),
-            DVec3::new(0.5, 0.75f64.sqrt(), 0.0),
-            DVec3::new(0.5, 0.75f64.sqrt() / 3.0, h),
-        ],
-        &[[0, 1, 3], [1, 2, 3], [2, 0, 3]],
-    )
-}
-
-/// The closed tetrahedron: the open one plus its base (0, 2, 1).
-pub fn closed_tetrahedron() -> PolygonSoup {
-    let mut s = open_tetrahedron();
-    s.push_face(&[0, 2, 1]);
-    s
-}
-
-/// One triangle: every edge and vertex on the boundary.
-pub fn single_triangle() -> PolygonSoup {
-    PolygonSoup::from_polygons(vec![DVec3::ZERO, DVec3::X, DVec3::Y], &[[0u32, 1, 2]])
-}
-
-/// A cube of six quads, closed, outward oriented.
-pub fn quad_cube() -> PolygonSoup {
-    let p = (0..8)
-        .map(|i| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64))
-        .collect();
-    PolygonSoup::from_polygons(
-        p,
-        &[
-            [0u32, 2, 3, 1], // z = 0, normal -z
-            [4, 5, 7, 6],    // z = 1
-            [0, 1, 5, 4],    // y = 0
-            [2, 6, 7, 3],    // y = 1
-            [0, 4, 6, 2],    // x = 0
-            [1, 3, 7, 5],    // x = 1
-        ],
-    )
-}
-
-/// A strip of `n` quads (open, one boundary curve).
-pub fn quad_strip(n: u32) -> PolygonSoup {
-    grid(n as usize, 1, false)
-}
-
-/// A strip of `2n` triangles (open, one boundary curve).
-pub fn triangle_strip(n: u32) -> PolygonSoup {
-    grid(n as usize, 1, true)
-}
-
-/// An annulus of `n` sectors, triangulated: two boundary curves.
-pub fn annulus(n: u32) -> PolygonSoup {
-    let mut s = PolygonSoup::new();
-    for i in 0..n {
-        let a = TAU * i as f64 / n as f64;
-        s.push_vertex(DVec3::new(a.cos(), a.sin(), 0.0) * 2.0);
-        s.push_vertex(DVec3::new(a.cos(), a.sin(), 0.0));
-    }
-    for i in 0..n {
-        let (o0, i0) = (2 * i, 2 * i + 1);
-        let (o1, i1) = (2 * ((i + 1) % n), 2 * ((i + 1) % n) + 1);
-        s.push_face(&[i0, o0, o1]);
-        s.push_face(&[i0, o1, i1]);
-    }
-    s
-}
-
-/// Two triangles that share only vertex 0: a non-manifold vertex (two fans).
-pub fn bowtie() -> PolygonSoup {
-    PolygonSoup::from_polygons(
-        vec![
-            DVec3::ZERO,
-            DVec3::new(1.0, 0.5, 0.0),
-            DVec3::new(1.0, -0.5, 0.0),
-            DVec3::new(-1.0, 0.5, 0.0),
-            DVec3::new(-1.0, -0.5, 0.0),
-        ],
-        &[[0u32, 2, 1], [0, 3, 4]],
-    )
-}
-
-/// A quad, a triangle and a pentagon glued along edges (mixed k-gons, open).
-pub fn mixed_polygons() -> PolygonSoup {
-    PolygonSoup::from_polygons(
-        vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(1.0, 0.0, 0.0),
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::new(0.0, 1.0, 0.0),
-            DVec3::new(0.5, 1.7, 0.0),
-            DVec3::new(2.0, 0.0, 0.0),
-            DVec3::new(2.5, 0.7, 0.0),
-            DVec3::new(2.0, 1.4, 0.0),
-        ],
-        &[vec![0u32, 1, 2, 3], vec![3, 2, 4], vec![1, 5, 6, 7, 2]],
-    )
-}
-
-/// Every canonical tiny mesh, in a fixed order.
-pub fn canonical() -> Vec<CanonicalMesh> {
-    let m = |name, about, soup, grid| CanonicalMesh {
-        name,
-        about,
-        soup,
-        grid,
-    };
-    vec![
-        m(
-            "single-triangle",
-            "one face, all boundary",
-            single_triangle(),
-            false,
-        ),
-        m(
-            "open-tetrahedron",
-            "the CHE chapter's Figure 4.10: 4 vertices, 3 triangles, 6 edges, 1 boundary curve",
-            open_tetrahedron(),
-            false,
-        ),
-        m(
-            "closed-tetrahedron",
-            "closed, no boundary",
-            closed_tetrahedron(),
-            false,
-        ),
-        m("quad-cube", "closed quads (k-gons)", quad_cube(), false),
-        m("quad-strip", "open quads", quad_strip(3), true),
-        m("triangle-strip", "open triangles", triangle_strip(3), true),
-        m("annulus", "two boundary curves", annulus(6), false),
-        m("torus", "closed, genus 1", torus(4, 3), false),
-        m("grid", "triangulated open grid", grid(3, 2, true), true),
-        m("quad-grid", "open quad grid", grid(3, 3, false), true),
-        m(
-            "mixed-polygons",
-            "a quad, a triangle and a pentagon",
-            mixed_polygons(),
-            false,
-        ),
-        m(
-            "bowtie",
-            "a non-manifold vertex (two fans)",
-            bowtie(),
-            false,
-        ),
-    ]
-}
-
-/// The canonical mesh of a name.
-pub fn canonical_by_name(name: &str) -> Option<CanonicalMesh> {
-    canonical().into_iter().find(|m| m.name == name)
-}
 
 /// An open `nx` × `ny` grid in the z = 0 plane with unit cells: `(nx+1)(ny+1)` vertices,
 /// vertex `(i, j)` is `j (nx+1) + i` at `(i, j, 0)`. Cells row by row; each cell is a quad
@@ -533,87 +360,12 @@ pub fn perturb(soup: &PolygonSoup, amplitude: f64, seed: u64) -> PolygonSoup {
     out
 }
 
-/// A built-in mesh named on the command line: a canonical mesh name, or a generator with a
-/// face count for about N faces:
-///
-/// | spec | mesh |
-/// |---|---|
-/// | `torus:N` | closed torus, genus 1, ordered ring by ring |
-/// | `sphere:N` | closed UV sphere |
-/// | `grid:N`, `quad-grid:N` | open grid of triangles or quads |
-/// | `mixed:N` | open grid of triangles, quads, pentagons and hexagons ([`mixed_grid`]) |
-/// | `genus:G:N` | closed surface of genus G ([`perforated_plate`]) |
-/// | `holes:K:N` | genus-0 surface with K boundary curves ([`perforated_plate`]) |
-/// | `surface:G:K:N` | genus G and K boundary curves |
-///
-/// `_` may separate digits (`torus:1_000_000`). `None` for anything else, and for more than
-/// 2^30 faces or 2^20 tunnels and openings.
-pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
-    if let Some(m) = canonical_by_name(spec) {
-        return Some(m.soup);
-    }
-    let mut parts = spec.split(':');
-    let kind = parts.next()?;
-    let numbers: Vec<usize> = parts
-        .map(|n| n.replace('_', "").parse().ok())
-        .collect::<Option<_>>()?;
-    // Sizes past u32 handles (and slot counts that would need more) are refused, not attempted.
-    const MAX_FACES: usize = 1 << 30;
-    const MAX_SLOTS: usize = 1 << 20;
-    let (&n, counts) = numbers.split_last()?;
-    if n > MAX_FACES || counts.iter().sum::<usize>() > MAX_SLOTS {
-        return None;
-    }
-    let side = |cells: usize| ((cells as f64).sqrt().round() as usize).max(1);
-    match (kind, numbers.as_slice()) {
-        ("torus", &[n]) => Some(torus_with_triangles(n.max(2))),
-        ("sphere", &[n]) => {
-            let s = side(n / 2).max(3);
-            Some(sphere(s, s))
-        }
-        ("grid", &[n]) => {
-            let s = side(n / 2);
-            Some(grid(s, s, true))
-        }
-        ("quad-grid", &[n]) => {
-            let s = side(n);
-            Some(grid(s, s, false))
-        }
-        ("mixed", &[n]) => Some(mixed_grid(n)),
-        ("genus", &[g, n]) => Some(perforated_plate(g, 0, n)),
-        ("holes", &[k, n]) => Some(perforated_plate(0, k, n)),
-        ("surface", &[g, k, n]) => Some(perforated_plate(g, k, n)),
-        _ => None,
-    }
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::euler_and_curves;
     use super::*;
+    use crate::testing::meshes::closed_tetrahedron;
     use crate::testing::oracle::Oracle;
-
-    #[test]
-    fn canonical_meshes_are_valid_soups() {
-        for m in canonical() {
-            m.soup.check().unwrap_or_else(|e| panic!("{}: {e}", m.name));
-            m.soup
-                .connectivity()
-                .unwrap_or_else(|e| panic!("{}: {e}", m.name));
-        }
-    }
-
-    #[test]
-    fn open_tetrahedron_counts_match_the_chapter() {
-        let s = open_tetrahedron();
-        let c = s.connectivity().unwrap();
-        assert_eq!(
-            (s.num_vertices(), s.num_faces(), s.num_corners()),
-            (4, 3, 9)
-        );
-        assert_eq!(c.num_edges(), 6);
-        let boundary = c.edge_corners.iter().filter(|e| e[1] == u32::MAX).count();
-        assert_eq!(boundary, 3);
-    }
 
     #[test]
     fn generators_give_closed_surfaces_with_the_right_euler_characteristic() {
@@ -632,29 +384,10 @@ mod tests {
     }
 
     #[test]
-    fn bowtie_has_a_two_fan_vertex_and_random_meshes_are_reproducible() {
-        let b = bowtie();
-        assert_eq!(b.connectivity().unwrap().vertex_fans(&b)[0], 2);
+    fn random_meshes_are_reproducible() {
         let p = RandomMeshParams::default();
         assert_eq!(random_mesh(7, p), random_mesh(7, p));
         assert_ne!(random_mesh(7, p), random_mesh(8, p));
-    }
-
-    /// V - E + F and the boundary curves, both from the edge analysis and from the oracle.
-    fn euler_and_curves(s: &PolygonSoup) -> (i64, usize) {
-        let c = s.connectivity().unwrap();
-        c.check_vertex_fans(s).unwrap();
-        let euler = s.num_vertices() as i64 - c.num_edges() as i64 + s.num_faces() as i64;
-        let oracle = crate::testing::oracle::Oracle::new(s);
-        assert_eq!(oracle.edge_faces.len(), c.num_edges());
-        assert!(
-            oracle.vertex_faces.iter().all(|f| !f.is_empty()),
-            "unused vertex"
-        );
-        (
-            euler,
-            oracle.boundary_curve_count().expect("simple boundary"),
-        )
     }
 
     #[test]
@@ -695,22 +428,6 @@ mod tests {
             assert!(s.faces().any(|f| f.len() == k), "no {k}-gon");
         }
         assert!((1800..=2200).contains(&s.num_faces()), "{}", s.num_faces());
-    }
-
-    #[test]
-    fn specs_name_the_generators() {
-        let g = from_spec("genus:2:1_000").unwrap();
-        assert_eq!(euler_and_curves(&g), (-2, 0));
-        let h = from_spec("holes:4:1000").unwrap();
-        assert_eq!(euler_and_curves(&h), (-2, 4));
-        let m = from_spec("surface:1:2:1000").unwrap();
-        assert_eq!(euler_and_curves(&m), (-2, 2));
-        assert_eq!(from_spec("mixed:500").unwrap(), mixed_grid(500));
-        assert!(from_spec("genus:2").is_none());
-        assert!(from_spec("holes:x:10").is_none());
-        assert!(from_spec("torus:100:3").is_none());
-        assert!(from_spec("genus:99999999999:10").is_none());
-        assert!(from_spec("torus:99999999999").is_none());
     }
 
     #[test]
