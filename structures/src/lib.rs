@@ -6,6 +6,10 @@
 //! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
 //! lecture's consistency checks on a file as written.
 //!
+//! The structures, one folder per family in [`families`], each registered once in
+//! [`registry`] ([`for_each_structure!`]), from which the CLI, the report, the benches and the
+//! conformance suite take their lists:
+//!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
@@ -26,6 +30,14 @@
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
+//!
+//! | folder | holds |
+//! |---|---|
+//! | [`core`](mod@core) | ids, the soup, the trait and its operators and costs, errors, attributes |
+//! | [`families`] | the structures by family, each family's shared engine beside them |
+//! | [`io`] | OBJ, OFF and PLY readers and writers |
+//! | [`algorithms`] | the 3D convex hull, consistency checks and summary, refinement, orderings |
+//! | [`testing`] | the oracle, the conformance suite, canonical and generated meshes |
 #![deny(missing_docs)]
 // Unsafe code lives only in `families::half_edge::pointer::links` (real pointers are that
 // structure's point).

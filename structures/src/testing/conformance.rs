@@ -1,11 +1,12 @@
 //! The shared conformance suite: every operator of a structure compared with the [`Oracle`].
 //!
 //! [`check`] is the whole suite for one mesh; the [`conformance!`](macro@crate::conformance) macro
-//! turns it into tests over every canonical mesh and random meshes (proptest) for a structure,
-//! so a new structure gets every test by adding one line:
+//! turns it into tests over every canonical mesh and random meshes (proptest) for a structure.
+//! `structures/tests/conformance.rs` runs it on every structure of the registry, so a
+//! registered structure is conformance-tested without a line of its own:
 //!
 //! ```ignore
-//! topolab_structures::conformance!(vertex_list, topolab_structures::VertexList);
+//! topolab_structures::for_each_structure!(topolab_structures::conformance);
 //! ```
 //!
 //! Relations are compared as multisets, R20 and R21 as cyclic sequences (any rotation, same
@@ -336,35 +337,63 @@ pub fn assert_canonical<M: MeshTopology>(name: &str) {
     }
 }
 
-/// Generates the conformance tests of a structure: one per canonical mesh and a proptest on
-/// random meshes. The calling crate needs `proptest` as a dev-dependency.
+/// The structures of `registered` that `tested` leaves out, and those it tests that are not
+/// registered: `Err` names them. The conformance suite's enrolment check (see
+/// [`conformance!`](macro@crate::conformance)).
+pub fn check_enrolment(tested: &[&str], registered: &[&str]) -> Result<(), String> {
+    let missing: Vec<&str> = registered
+        .iter()
+        .copied()
+        .filter(|n| !tested.contains(n))
+        .collect();
+    let unknown: Vec<&str> = tested
+        .iter()
+        .copied()
+        .filter(|n| !registered.contains(n))
+        .collect();
+    if missing.is_empty() && unknown.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "registered but not conformance-tested: {missing:?}; tested but not registered: \
+             {unknown:?} (generate the suite with for_each_structure!(conformance))"
+        ))
+    }
+}
+
+/// Generates conformance tests: for one structure, one test per canonical mesh (from
+/// [`for_each_canonical_mesh!`](crate::for_each_canonical_mesh)) and a proptest on random
+/// meshes; for a list `module => Type, ...` (what
+/// [`for_each_structure!`](crate::for_each_structure) passes), those of each structure plus
+/// `every_registered_structure_is_conformance_tested`, which fails unless the list is exactly
+/// [`registry::NAMES`](crate::registry::NAMES). The calling crate needs `proptest` as a
+/// dev-dependency.
+///
+/// ```ignore
+/// topolab_structures::for_each_structure!(topolab_structures::conformance); // every structure
+/// topolab_structures::conformance!(openmesh, topolab::openmesh::OpenMesh);  // one more
+/// ```
 #[macro_export]
 macro_rules! conformance {
+    ($($module:ident => $ty:ty),+ $(,)?) => {
+        $( $crate::conformance!($module, $ty); )+
+
+        #[test]
+        fn every_registered_structure_is_conformance_tested() {
+            let tested = [$(<$ty as $crate::MeshTopology>::NAME),+];
+            if let Err(msg) =
+                $crate::testing::conformance::check_enrolment(&tested, $crate::registry::NAMES)
+            {
+                panic!("{msg}");
+            }
+        }
+    };
     ($module:ident, $ty:ty) => {
         mod $module {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::testing::conformance::assert_canonical;
 
-            $crate::conformance!(@canonical $ty;
-                single_triangle "single-triangle",
-                open_tetrahedron "open-tetrahedron",
-                closed_tetrahedron "closed-tetrahedron",
-                quad_cube "quad-cube",
-                quad_strip "quad-strip",
-                triangle_strip "triangle-strip",
-                annulus "annulus",
-                torus "torus",
-                grid "grid",
-                quad_grid "quad-grid",
-                mixed_polygons "mixed-polygons",
-                bowtie "bowtie"
-            );
-
-            #[test]
-            fn every_canonical_mesh_is_tested() {
-                assert_eq!($crate::testing::meshes::canonical().len(), 12, "add the new canonical mesh to conformance!");
-            }
+            $crate::for_each_canonical_mesh!($crate::conformance; @canonical $ty);
 
             proptest::proptest! {
                 #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
@@ -379,12 +408,26 @@ macro_rules! conformance {
             }
         }
     };
-    (@canonical $ty:ty; $($test:ident $name:literal),*) => {
+    (@canonical $ty:ty; $($test:ident => $name:literal, $about:literal, $soup:expr, $grid:expr;)*) => {
         $(
             #[test]
             fn $test() {
-                assert_canonical::<$ty>($name);
+                $crate::testing::conformance::assert_canonical::<$ty>($name);
             }
         )*
     };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn enrolment_names_what_is_registered_but_not_tested_and_the_reverse() {
+        let registered = ["a", "b", "c"];
+        assert_eq!(check_enrolment(&["c", "a", "b"], &registered), Ok(()));
+        let err = check_enrolment(&["a", "c", "z"], &registered).unwrap_err();
+        assert!(err.contains(r#"not conformance-tested: ["b"]"#), "{err}");
+        assert!(err.contains(r#"not registered: ["z"]"#), "{err}");
+    }
 }

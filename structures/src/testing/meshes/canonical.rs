@@ -1,6 +1,6 @@
 //! The canonical tiny meshes, each named for what it exercises.
 
-use super::generators::{grid, torus};
+use super::generators::grid;
 use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 use std::f64::consts::TAU;
@@ -124,53 +124,47 @@ pub fn mixed_polygons() -> PolygonSoup {
     )
 }
 
+/// Calls `$callback!` with the one list of canonical meshes, in their fixed order, one entry
+/// `test_name => "name", "what it exercises", soup expression, is_grid;` per mesh (after the
+/// tokens given behind a `;`, if any). [`canonical`] builds its meshes from it and the
+/// [`conformance!`](macro@crate::conformance) macro one test per mesh, so a new canonical mesh
+/// is one line here.
+#[macro_export]
+macro_rules! for_each_canonical_mesh {
+    ($($callback:ident)::+ $(; $($args:tt)*)?) => {
+        $($callback)::+! { $($($args)*)? ;
+            single_triangle => "single-triangle", "one face, all boundary",
+                $crate::meshes::single_triangle(), false;
+            open_tetrahedron => "open-tetrahedron",
+                "the CHE chapter's Figure 4.10: 4 vertices, 3 triangles, 6 edges, 1 boundary curve",
+                $crate::meshes::open_tetrahedron(), false;
+            closed_tetrahedron => "closed-tetrahedron", "closed, no boundary",
+                $crate::meshes::closed_tetrahedron(), false;
+            quad_cube => "quad-cube", "closed quads (k-gons)", $crate::meshes::quad_cube(), false;
+            quad_strip => "quad-strip", "open quads", $crate::meshes::quad_strip(3), true;
+            triangle_strip => "triangle-strip", "open triangles",
+                $crate::meshes::triangle_strip(3), true;
+            annulus => "annulus", "two boundary curves", $crate::meshes::annulus(6), false;
+            torus => "torus", "closed, genus 1", $crate::meshes::torus(4, 3), false;
+            grid => "grid", "triangulated open grid", $crate::meshes::grid(3, 2, true), true;
+            quad_grid => "quad-grid", "open quad grid", $crate::meshes::grid(3, 3, false), true;
+            mixed_polygons => "mixed-polygons", "a quad, a triangle and a pentagon",
+                $crate::meshes::mixed_polygons(), false;
+            bowtie => "bowtie", "a non-manifold vertex (two fans)", $crate::meshes::bowtie(), false;
+        }
+    };
+}
+
+/// Builds the [`CanonicalMesh`]es of [`for_each_canonical_mesh!`]'s list.
+macro_rules! canonical_meshes {
+    (; $($test:ident => $name:literal, $about:literal, $soup:expr, $grid:expr;)*) => {
+        vec![$(CanonicalMesh { name: $name, about: $about, soup: $soup, grid: $grid }),*]
+    };
+}
+
 /// Every canonical tiny mesh, in a fixed order.
 pub fn canonical() -> Vec<CanonicalMesh> {
-    let m = |name, about, soup, grid| CanonicalMesh {
-        name,
-        about,
-        soup,
-        grid,
-    };
-    vec![
-        m(
-            "single-triangle",
-            "one face, all boundary",
-            single_triangle(),
-            false,
-        ),
-        m(
-            "open-tetrahedron",
-            "the CHE chapter's Figure 4.10: 4 vertices, 3 triangles, 6 edges, 1 boundary curve",
-            open_tetrahedron(),
-            false,
-        ),
-        m(
-            "closed-tetrahedron",
-            "closed, no boundary",
-            closed_tetrahedron(),
-            false,
-        ),
-        m("quad-cube", "closed quads (k-gons)", quad_cube(), false),
-        m("quad-strip", "open quads", quad_strip(3), true),
-        m("triangle-strip", "open triangles", triangle_strip(3), true),
-        m("annulus", "two boundary curves", annulus(6), false),
-        m("torus", "closed, genus 1", torus(4, 3), false),
-        m("grid", "triangulated open grid", grid(3, 2, true), true),
-        m("quad-grid", "open quad grid", grid(3, 3, false), true),
-        m(
-            "mixed-polygons",
-            "a quad, a triangle and a pentagon",
-            mixed_polygons(),
-            false,
-        ),
-        m(
-            "bowtie",
-            "a non-manifold vertex (two fans)",
-            bowtie(),
-            false,
-        ),
-    ]
+    crate::for_each_canonical_mesh!(canonical_meshes)
 }
 
 /// The canonical mesh of a name.
