@@ -213,7 +213,7 @@ impl BoundaryCurves {
 ///
 /// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's
 /// own and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer
-/// and never allocate. Relations are multisets; R20 and R21 answer in the face's cyclic order.
+/// and never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20 and R21 answer in the face's cyclic order.
 pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
@@ -241,6 +241,12 @@ pub trait MeshTopology: Sized {
     }
 
     /// Calls `f` with every edge id, each once.
+    ///
+    /// An enumeration, not one of the queries: the callers (the harness building its query
+    /// lists, the conformance suite) run it once, outside any timing, so a structure that
+    /// stores no edges may allocate here. CHE level 0 does: without `O[]` it sorts its
+    /// half-edges by vertex pair in a temporary buffer (O(n2 log n2)) instead of scanning for
+    /// each half-edge's twin (O(n2²)), and its `num_edges` counts this enumeration.
     fn for_each_edge(&self, f: impl FnMut(EdgeId));
 
     /// Position of vertex `v`.

@@ -1,6 +1,6 @@
 //! # Compact Half-Edge (CHE), levels 0–3
 //!
-//! The thesis chapter 4 ("A Estrutura de Dados CHE", `shared/seeds/000_*.txt`): a triangle mesh
+//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a triangle mesh
 //! stored as integer arrays, in four levels that each add containers and answer the relations
 //! with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by cell.
 //!
@@ -37,9 +37,13 @@
 //! allocate: every edge and neighbour of a vertex is met as a half-edge leaving it except, at a
 //! boundary vertex, the boundary edge entering it, whose far end is recovered from sums over
 //! the same scan (the "missing number" of two lists) and its half-edge by a second scan.
-//! A level-0 edge's boundary test is Algorithm 8's scan, so `for_each_edge`, `num_edges` and
-//! the boundary curves of level 0 cost a scan per half-edge, O(n2²): keep level 0 to small
-//! meshes or to the operators Table 4.1 lists.
+//! A level-0 edge's boundary test is Algorithm 8's scan, O(n2), so the boundary curves (and
+//! `num_boundary_edges`) of level 0 cost a scan per half-edge, O(n2²): keep level 0 to small
+//! meshes or to the operators Table 4.1 lists. Enumerating the edges (`for_each_edge`,
+//! `num_edges`) is no relation of the chapter and would cost the same O(n2²) by Algorithm 8;
+//! level 0 instead sorts its half-edges by their vertex pair in a temporary buffer,
+//! O(n2 log n2), the one place a CHE level allocates to answer (the exception the trait's
+//! [`for_each_edge`](crate::MeshTopology::for_each_edge) documents).
 //!
 //! Successor and predecessor are O(1) at every level: the three half-edges of the face are
 //! `3t..3t+3`, so the edge is found among them by its end vertices. The boundary curves of

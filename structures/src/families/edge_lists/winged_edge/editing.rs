@@ -157,8 +157,11 @@ impl WingedEdge {
     /// Removes face `face`: its side of each of its edges is emptied, an edge left without
     /// faces is removed, and an edge that keeps only its right face is turned around so the
     /// face is on its left. The face's slot stays as a tombstone (see the module docs). O(k),
-    /// plus a scan of the edges for a vertex that loses the last edge of one fan while it
-    /// still has edges in another (only possible between add_face calls that leave several fans).
+    /// plus a scan of all edges, O(n1), for each vertex of the face whose `av(v)` is removed
+    /// while v keeps edges in another fan, none of them in this face: the face was the last
+    /// of v's fan through `av(v)`. A vertex has several fans after add_face joined faces at a
+    /// vertex only (gift wrapping) or after remove_face took a face from the middle of a fan
+    /// (the incremental hull algorithms removing visible faces in breadth-first order).
     ///
     /// Fails with [`Error::Unsupported`] if `face` does not exist (never added, or removed).
     pub fn remove_face(&mut self, face: FaceId) -> Result<()> {

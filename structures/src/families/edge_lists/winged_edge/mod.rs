@@ -74,8 +74,10 @@
 //! [`WingedEdge::new`], [`WingedEdge::add_vertex`], [`WingedEdge::add_face`] (links the new
 //! face's wings to the existing edges it shares) and [`WingedEdge::remove_face`]. Adding or
 //! removing a face touches only that face's side of its edges: the wings on one side of an
-//! edge describe only that side's face. Between calls a vertex may have several fans (gift
-//! wrapping adds faces that touch the hull at a vertex only): add_face still finds every
+//! edge describe only that side's face. Between calls a vertex may have several fans: gift
+//! wrapping adds faces that touch the hull at a vertex only, and removing a face from the
+//! middle of a vertex's fan splits it in two, as the incremental hull algorithms do when they
+//! remove the visible faces in an order other than around each vertex. add_face still finds every
 //! edge, through an index by end vertices that the first add_face or remove_face builds
 //! (O(n) once; it is not part of the seed's record, and structures built by `from_soup`,
 //! which pairs edges by sorting, never pay for it). While a vertex has several fans the vertex

@@ -265,3 +265,43 @@ fn explain_prints_the_seeds_fields_for_the_open_tetrahedron() {
     let fields: Vec<&str> = row.split_whitespace().collect();
     assert_eq!(fields, ["e0", "v0", "v1", "f0", "-", "e2", "e1", "-", "-"]);
 }
+
+#[test]
+fn removing_faces_splits_a_fan_and_a_removed_fan_hands_av_to_the_other() {
+    // Vertex 4, the centre of the 2 x 2 triangulated grid, has the closed fan
+    // f0 f1 f4 f7 f6 f3; removing f1 and f6 leaves the fans {f4, f7} and {f3, f0}.
+    let soup = meshes::grid(2, 2, true);
+    let centre = VertexId(4);
+    let mut m = WingedEdge::from_soup(&soup).unwrap();
+    m.remove_face(FaceId(1)).unwrap();
+    m.remove_face(FaceId(6)).unwrap();
+    let err = m.validate().unwrap_err();
+    assert!(
+        matches!(err, Error::NonManifoldVertex { vertex: 4, fans: 2 }),
+        "{err}"
+    );
+    // Remove the whole fan av(4) belongs to: av(4) must move to an edge of the other fan,
+    // which no removed face has.
+    let mut fan = Vec::new();
+    m.walk_fan(centre, m.av[4], |_| {}, |f| fan.push(f.0));
+    fan.sort_unstable();
+    let other: Vec<u32> = [0u32, 3, 4, 7]
+        .into_iter()
+        .filter(|f| !fan.contains(f))
+        .collect();
+    assert_eq!((fan.len(), other.len()), (2, 2), "{fan:?}");
+    for &f in &fan {
+        m.remove_face(FaceId(f)).unwrap();
+    }
+    m.validate().unwrap();
+    let mut faces = Vec::new();
+    m.vertex_faces(centre, |f| faces.push(f.0));
+    faces.sort_unstable();
+    assert_eq!(faces, other);
+    let live: Vec<bool> = (0..8u32)
+        .map(|f| ![1, 6].contains(&f) && !fan.contains(&f))
+        .collect();
+    let mut dense = m.clone();
+    dense.compact();
+    compare(&dense, &soup.with_faces(|j| live[j])).unwrap();
+}
