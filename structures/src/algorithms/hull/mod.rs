@@ -25,10 +25,12 @@
 //!   degenerate, all in the facet's plane. Which triangles depends on the algorithm (gift
 //!   wrapping: a fan from the facet's first corner; the incremental ones: whatever the
 //!   insertion order leaves), so the algorithms agree on vertices and volume, not faces.
-
 //!
-//! **Speed** (`cargo run --release -p topolab-harness --example hull_bench`): the
-//! randomized algorithm runs within a small factor of Qhull. Visible faces are removed in
+//! **Speed** (`cargo run --release -p topolab-harness --example hull_bench`, and the report's
+//! hull section): the randomized algorithm is about 10 times slower than Qhull on points in a
+//! ball (the reference report, `reports/reference/`: 0.31 s against 0.029 s at 100k points,
+//! 5.98 s against 0.52 s at 1M, 11.5×) and 2.5 times slower on a sphere at 100k (2.36 s
+//! against 0.96 s), where every point is a hull vertex. Visible faces are removed in
 //! breadth-first order: [`WingedEdge::remove_face`] scans all edges for a new `av(v)` when a
 //! vertex's faces go out of rotation order (the structure keeps no edge list per vertex), and
 //! in arbitrary order that scan took 59% of a run on a sphere (perf); a per-vertex edge list

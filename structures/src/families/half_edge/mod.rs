@@ -17,6 +17,18 @@
 //!   boundary?" is one test, and its rotation starts at the boundary;
 //! - non-manifold vertices (the `bowtie`) are refused with [`crate::Error::NonManifoldVertex`]:
 //!   one half-edge per vertex reaches only one fan by rotation.
+//!
+//! ## Costs
+//!
+//! As the summary table of the lecture on polygon-mesh data structures (*half-edge Struktur –
+//! Zusammenfassung*), except one row. The table gives an edge's successor and predecessor
+//! together as O(k): "Vorgänger in Kante und Vorgänger in k-gon entlang hangeln für
+//! Nachfolger", a predecessor stored in the half-edge and a walk around the k-gon for the
+//! successor. The lecture's own record declares the other link, `HE_edge::next`, and walks the
+//! face with `edge = edge->next`; the lab stores `next` as the record does, so the successor
+//! is one read, O(1), and it is the predecessor that needs the walk, O(k)
+//! ([`PointerHalfEdge`](crate::PointerHalfEdge)), unless `prev` is stored as well, O(1)
+//! ([`IndexHalfEdge`](crate::IndexHalfEdge), as OpenMesh does).
 
 mod build;
 pub mod index;

@@ -10,8 +10,9 @@ use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Op
 use glam::DVec3;
 use std::fmt::Write;
 
-/// The cost table of both half-edge structures (the lecture's half-edge table; the
-/// predecessor depends on whether `prev` is stored).
+/// The cost table of both half-edge structures: the summary table of the lecture on
+/// polygon-mesh data structures, except the successor (see "Costs" in the module docs); the
+/// predecessor depends on whether `prev` is stored.
 fn half_edge_cost(op: Operator, predecessor: Cost) -> Cost {
     match op {
         Operator::R00 | Operator::R01 | Operator::R02 => Cost::Local,

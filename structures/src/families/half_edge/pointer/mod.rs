@@ -34,7 +34,7 @@
 //!
 //! `EdgeId` `e`: half-edges `2e` and `2e + 1`; edges numbered by first appearance in the soup.
 //!
-//! | operator | how (the lecture's table) | cost |
+//! | operator | how (the lecture's loops) | cost |
 //! |---|---|---|
 //! | R00, R01, R02 | from `vert->edge`, `edge = edge->pair->next` | O(k) |
 //! | R10, R12 | `edge->vert`, `edge->pair->vert`; `edge->face`, `edge->pair->face` | O(1) |
@@ -43,6 +43,9 @@
 //! | predecessor | no `prev` pointer: walk `next` around the face | O(k) |
 //! | boundary vertex, boundary edge | `face == null` | O(1) |
 //! | boundary curves | scan the half-edges for boundary ones, walk each loop | O(n) |
+//!
+//! The lecture's summary table gives the successor O(k) too; it assumes a stored predecessor
+//! instead of the record's `next` (see "Costs" in [`crate::families::half_edge`]).
 //!
 //! Construction: `soup.connectivity()` (one sort, O(c log c)), then linear. Non-manifold
 //! vertices are refused ([`crate::Error::NonManifoldVertex`]).
