@@ -97,7 +97,14 @@ impl CheL0 {
         self.half_edges().find(|&he| {
             let start = self.start(he);
             trace(StarRead::Vertex { he, vertex: start });
-            start == a && self.start(next(he)) == b
+            start == a && {
+                let end = self.start(next(he));
+                trace(StarRead::Vertex {
+                    he: next(he),
+                    vertex: end,
+                });
+                end == b
+            }
         })
     }
 
@@ -193,7 +200,12 @@ impl CheLevel for CheL0 {
                     he: prev(he),
                     vertex: entering_from,
                 });
-                lone.add(entering_from.0, self.start(next(he)).0);
+                let leaving_to = self.start(next(he));
+                trace(StarRead::Vertex {
+                    he: next(he),
+                    vertex: leaving_to,
+                });
+                lone.add(entering_from.0, leaving_to.0);
             }
         }
         let closing = self.find_half_edge(VertexId(lone.vertex()?), v, &mut trace);
