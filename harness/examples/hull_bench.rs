@@ -1,5 +1,5 @@
-//! Times seed 004's three hull algorithms against n, next to Qhull in the same run, and
-//! counts the faces each creates against the seed's bound 6n − 20.
+//! Times the three hull algorithms of the lecture on 3D convex hulls against n, next to Qhull
+//! in the same run, and counts the faces each creates against the lecture's bound 6n − 20.
 //!
 //! `cargo run --release -p topolab-harness --example hull_bench -- [SHAPE ...] [--max N]`
 //!

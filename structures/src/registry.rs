@@ -1,5 +1,6 @@
-//! The structures of this crate, registered once: [`for_each_structure!`](crate::for_each_structure) holds the one list,
-//! and everything that needs "every structure" is generated from it:
+//! The structures of this crate, registered once:
+//! [`for_each_structure!`](crate::for_each_structure) holds the one list, and everything that needs
+//! "every structure" is generated from it:
 //!
 //! - [`NAMES`] and [`visit`] here, which the root crate's registry extends with the OpenMesh
 //!   baseline and which the CLI (`topolab list`, `info`, `explain`), the report and the

@@ -1,6 +1,7 @@
 //! The hull benchmark shared by the report and `examples/hull_bench.rs`: each algorithm (and
 //! Qhull, when SciPy is there) on random points of one shape at growing n, with the faces
-//! each algorithm creates against the seed's expected bound 6n − 20.
+//! each algorithm creates against the expected bound 6n − 20 of the lecture on 3D convex
+//! hulls.
 
 use super::qhull;
 use glam::DVec3;

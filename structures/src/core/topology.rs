@@ -1,10 +1,10 @@
 //! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers and
 //! the theoretical [`Cost`] each structure declares for each of them.
 //!
-//! Relations follow the CHE chapter's notation `Rpq`: given a p-simplex, the q-simplices around
-//! it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a callback (internal
-//! iteration), so they never allocate and are monomorphised in benchmarks; a caller that
-//! wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
+//! Relations follow the notation `Rpq` of the CHE thesis chapter: given a p-simplex, the
+//! q-simplices around it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a
+//! callback (internal iteration), so they never allocate and are monomorphised in benchmarks; a
+//! caller that wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
 
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -39,7 +39,8 @@ pub enum Operator {
     BoundaryEdge,
     /// All boundary curves as closed loops of edges.
     BoundaryCurves,
-    /// The edge after a given edge in a given face (the lecture's successor).
+    /// The edge after a given edge in a given face (the successor of the lecture on
+    /// polygon-mesh data structures).
     EdgeSuccessor,
     /// The edge before a given edge in a given face (the lecture's predecessor).
     EdgePredecessor,
@@ -90,7 +91,8 @@ impl Operator {
     }
 }
 
-/// A theoretical cost, as the lecture's tables and the CHE chapter's Table 4.1 state it.
+/// A theoretical cost, as the tables of the lecture on polygon-mesh data structures and
+/// Table 4.1 of the CHE thesis chapter state it.
 ///
 /// `n0`, `n1`, `n2` are the numbers of vertices, edges and faces; `k` the size of the local
 /// neighbourhood (valence of a vertex, corners of a face); `∂n1` the boundary edges.
@@ -211,9 +213,10 @@ impl BoundaryCurves {
 
 /// One interface to every mesh data structure of the lab.
 ///
-/// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's
-/// own and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer
-/// and never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20 and R21 answer in the face's cyclic order.
+/// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's own
+/// and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer and
+/// never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20
+/// and R21 answer in the face's cyclic order.
 pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
@@ -221,7 +224,8 @@ pub trait MeshTopology: Sized {
     /// What kinds of meshes it stores.
     fn capabilities() -> Capabilities;
 
-    /// The theoretical cost of `op` in this structure (lecture tables, Table 4.1).
+    /// The theoretical cost of `op` in this structure (the polygon-mesh lecture's tables, the CHE
+    /// thesis chapter's Table 4.1).
     fn cost(op: Operator) -> Cost;
 
     /// Builds the structure; fails with a typed error on input it cannot store.

@@ -1,5 +1,6 @@
-//! The lecture's consistency checks (*Konsistenzprüfung*) and validity rules of polygon meshes,
-//! run on a soup as read ([`RawSoup`]), reporting every problem instead of stopping at the first.
+//! The consistency checks (*Konsistenzprüfung*) and validity rules of polygon meshes of the
+//! lecture on polygon-mesh data structures, run on a soup as read ([`RawSoup`]), reporting every
+//! problem instead of stopping at the first.
 //!
 //! | group | finding | the lecture's question |
 //! |---|---|---|
@@ -213,8 +214,9 @@ impl Report {
     }
 }
 
-/// Union-find over `0..n` (shared by the duplicate and manifold checks) that also keeps, per element, the parity of its path to the root:
-/// plain unions for components, parity unions for orientability.
+/// Union-find over `0..n` (shared by the duplicate and manifold checks) that also keeps, per
+/// element, the parity of its path to the root: plain unions for components, parity unions for
+/// orientability.
 struct UnionFind {
     parent: Vec<u32>,
     /// Parity of the link to `parent` (the root's is `false`).

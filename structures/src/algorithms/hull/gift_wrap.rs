@@ -1,4 +1,4 @@
-//! The seed's `Embrulho3D`: gift wrapping (Chand & Kapur), O(n·h).
+//! `Embrulho3D` of the lecture on 3D convex hulls: gift wrapping (Chand & Kapur), O(n·h).
 //!
 //! ```text
 //! Q ← queue of faces found; T ← winged-edge
@@ -7,18 +7,18 @@
 //!     for each free edge e of f: f' ← FaceAdjacente(f, e); insert f' in Q and T
 //! ```
 //!
-//! `FaceInicial`, by rotating planes as in the seed: p0 is the point of least z (ties: least
+//! `FaceInicial`, by rotating planes as in the lecture: p0 is the point of least z (ties: least
 //! y, then x, so it is extreme). The horizontal half-plane through the line L through p0
 //! parallel to the x axis, pointing towards +y, is turned from Y towards Z until it meets a
 //! point p1; then the plane is turned around p0 p1 until it meets p2.
 //!
 //! `FaceAdjacente(f, e)`: the plane of f is turned around e until every point is on its inner
 //! side; one pass over the points keeps the candidate that the most turned plane meets (the
-//! seed's O(n) per edge, so O(n·h) in all).
+//! lecture's O(n) per edge, so O(n·h) in all).
 //!
-//! Beyond the seed (which assumes no four points coplanar): a plane found this way may hold
+//! Beyond the lecture (which assumes no four points coplanar): a plane found this way may hold
 //! more than three points. The face is then the convex polygon of all points in that plane
-//! (the seed's 2D gift wrapping, Jarvis, inside the plane, keeping the farthest of collinear
+//! (the lecture's 2D gift wrapping, Jarvis, inside the plane, keeping the farthest of collinear
 //! points), so every face is a whole facet, every free edge is a true hull edge, and points
 //! inside a facet or an edge never become vertices. Each facet is stored as a fan of
 //! triangles from its first corner, so all three algorithms return triangles; a facet's
@@ -131,7 +131,7 @@ impl Wrapper<'_> {
         Ok(polygon)
     }
 
-    /// The seed's `FaceInicial`, by rotating planes (see the module docs).
+    /// The lecture's `FaceInicial`, by rotating planes (see the module docs).
     fn initial_face(&self) -> Result<Vec<u32>> {
         let lowest = |&i: &u32| {
             let p = self.at(i);
@@ -177,7 +177,7 @@ impl Wrapper<'_> {
         self.jarvis(&on, inner, p0, p0)
     }
 
-    /// The seed's `FaceAdjacente`: the facet across side a → b of a facet; it runs b → a.
+    /// The lecture's `FaceAdjacente`: the facet across side a → b of a facet; it runs b → a.
     fn adjacent_face(&self, a: u32, b: u32) -> Result<Vec<u32>> {
         let (pa, pb) = (self.at(a), self.at(b));
         let q = self
@@ -188,10 +188,10 @@ impl Wrapper<'_> {
     }
 }
 
-/// The facets found so far (the seed's queue Q, and what tells free sides from the others).
+/// The facets found so far (the lecture's queue Q, and what tells free sides from the others).
 #[derive(Default)]
 struct Found {
-    /// Facets whose sides are still to be wrapped (the seed's Q).
+    /// Facets whose sides are still to be wrapped (the lecture's Q).
     queue: VecDeque<Vec<u32>>,
     /// Directed sides of every facet found: the facet across a → b is found iff b → a is here.
     sides: HashSet<(u32, u32)>,
@@ -202,7 +202,7 @@ struct Found {
 }
 
 impl Found {
-    /// Records `facet` (the seed's InsiraFila and InsiraWE): its sides, its fan in `mesh`.
+    /// Records `facet` (the lecture's InsiraFila and InsiraWE): its sides, its fan in `mesh`.
     fn insert(&mut self, facet: Vec<u32>, mesh: &mut WingedEdge) -> Result<()> {
         for i in 0..facet.len() {
             if !self.sides.insert((facet[i], facet[(i + 1) % facet.len()])) {

@@ -1,4 +1,4 @@
-//! The seed's `Incremental3D`: O(n²).
+//! `Incremental3D` of the lecture on 3D convex hulls: O(n²).
 //!
 //! ```text
 //! P3 ← Tetraedro(p0, p1, p2, p3)
@@ -9,7 +9,7 @@
 //!           (the horizon), remove the visible faces
 //! ```
 //!
-//! Beyond the seed (which assumes no four points coplanar): once some face is strictly
+//! Beyond the lecture (which assumes no four points coplanar): once some face is strictly
 //! visible (`Volume6 > 0`, so pk is outside), faces with `Volume6 = 0` (pk in their plane)
 //! are removed too. They are exactly the faces that a point moved slightly further out would
 //! see strictly, so the visible region is still one disk bounded by one horizon cycle, no
@@ -153,7 +153,7 @@ pub(super) fn cover_slots(marks: &mut Vec<bool>, mesh: &WingedEdge) {
     }
 }
 
-/// The seed's `Incremental3D` over `order` (distinct points; `simplex` its first tetrahedron).
+/// The lecture's `Incremental3D` over `order` (distinct points; `simplex` its first tetrahedron).
 /// Returns the hull (every input point a vertex, the hull's faces) and the faces created.
 pub(super) fn incremental(
     points: &[DVec3],

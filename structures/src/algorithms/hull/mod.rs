@@ -1,8 +1,9 @@
-//! # 3D convex hull on the winged-edge (seed 004)
+//! # 3D convex hull on the winged-edge
 //!
-//! The seed's three algorithms, each building a [`WingedEdge`] of the hull of a point set:
+//! The three algorithms of the lecture on 3D convex hulls, each building a [`WingedEdge`] of the
+//! hull of a point set:
 //!
-//! | [`Algorithm`] | seed | module | cost |
+//! | [`Algorithm`] | the lecture | module | cost |
 //! |---|---|---|---|
 //! | `Gift` | `Embrulho3D` (Chand & Kapur), `FaceInicial` by rotating planes | [`gift_wrap`] | O(n·h) |
 //! | `Incremental` | `Incremental3D`, visibility by the sign of `Volume6` | [`incremental`] | O(n²) |
@@ -11,10 +12,10 @@
 //! **The result.** Vertex i of the winged-edge is input point i (the lab's rule); points that
 //! are not hull vertices stay as vertices without edges. Faces are triangles, counter-clockwise
 //! seen from outside, numbered densely (tombstones compacted). [`Hull::faces_created`] counts
-//! every face the algorithm made, including those it removed later: the seed's lemma bounds
+//! every face the algorithm made, including those it removed later: the lecture's lemma bounds
 //! its expectation by 6n − 20 for the randomized algorithm.
 //!
-//! **Beyond the seed** (it assumes no four points coplanar, which real inputs break):
+//! **Beyond the lecture** (it assumes no four points coplanar, which real inputs break):
 //! - every orientation test is exact ([`predicates`], Shewchuk's `orient3d`);
 //! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; fewer than four distinct
 //!   points, or all on a line or a plane: [`Error::DegeneratePoints`];
@@ -49,7 +50,7 @@ use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
 
-/// Which of the seed's algorithms builds the hull.
+/// Which of the lecture's algorithms builds the hull.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
     /// Gift wrapping (Chand & Kapur), O(n·h).
@@ -235,7 +236,7 @@ pub fn random_points(shape: Shape, n: usize, seed: u64) -> Vec<DVec3> {
 }
 
 /// A winged-edge with every point of `points` as a vertex and the outward tetrahedron
-/// `simplex` as its faces (the seed's `Tetraedro`); 4 faces created.
+/// `simplex` as its faces (the lecture's `Tetraedro`); 4 faces created.
 fn start_with_tetrahedron(points: &[DVec3], simplex: [u32; 4]) -> Result<(WingedEdge, usize)> {
     let mut mesh = WingedEdge::new();
     points.iter().for_each(|&p| {

@@ -1,4 +1,5 @@
-//! The seed's randomized incremental algorithm with the conflict graph: expected O(n log n).
+//! The randomized incremental algorithm of the lecture on 3D convex hulls, with the conflict graph:
+//! expected O(n log n).
 //!
 //! The points are processed in a uniformly random order (a seeded ChaCha8 permutation, so a
 //! run is reproducible). The bipartite conflict graph G links each point p not yet inserted
@@ -11,7 +12,7 @@
 //!
 //! Inserting pk: F_conflito(pk) are the faces to remove (empty: pk is inside, skip it). The
 //! faces in pk's plane (`Volume6 = 0`) next to them are removed too, as in
-//! [`super::incremental`] (the degenerate case the seed excludes). For each horizon edge e,
+//! [`super::incremental`] (the degenerate case the lecture excludes). For each horizon edge e,
 //! between the removed face f1 and the kept face f2, the cone face f = (e, pk) gets
 //! P_conflito(f) ⊆ P(e) = P_conflito(f1) ∪ P_conflito(f2), each candidate tested once with
 //! `Volume6`. (The inclusion also holds when f1 is only coplanar with pk: the plane of f is
@@ -22,7 +23,7 @@
 //!
 //! Removing a face from G: its own list is freed; the points' lists keep the dead id (face
 //! ids are never reused) and skip it when read, which keeps removal O(1) per face. The
-//! expected number of faces created is at most 6n − 20 (the seed's lemma); [`super::Hull`]
+//! expected number of faces created is at most 6n − 20 (the lecture's lemma); [`super::Hull`]
 //! reports the count.
 
 use super::incremental::{cover_slots, face_volume6, replace_visible_by_cone, triangle};

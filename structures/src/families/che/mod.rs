@@ -1,8 +1,9 @@
 //! # Compact Half-Edge (CHE), levels 0–3
 //!
-//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a triangle mesh
-//! stored as integer arrays, in four levels that each add containers and answer the relations
-//! with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by cell.
+//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a
+//! triangle mesh stored as integer arrays, in four levels that each add containers and answer the
+//! relations with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by
+//! cell.
 //!
 //! Vertices, half-edges and triangles are non-negative integers. Triangle `t` owns the
 //! half-edges `3t, 3t+1, 3t+2`; half-edge `he` belongs to triangle `he / 3`, and
@@ -53,19 +54,19 @@
 //! ## Edge ids
 //!
 //! An edge is represented by one of its half-edges, as the chapter does (`E_id e = he`):
-//! `EdgeId(he)`. At level 0 there is no `O[]`, so *either* half-edge of an interior edge names
-//! it, and the relations answer with the half-edge they read; [`MeshTopology::for_each_edge`](crate::MeshTopology::for_each_edge)
-//! lists the smaller one. From level 1 on, answers always give the smaller half-edge
-//! `min(he, O[he])` (the boundary half-edge for a boundary edge): exactly the keys of level 2's
-//! `EH` (Algorithm 2).
+//! `EdgeId(he)`. At level 0 there is no `O[]`, so *either* half-edge of an interior edge names it,
+//! and the relations answer with the half-edge they read;
+//! [`MeshTopology::for_each_edge`](crate::MeshTopology::for_each_edge) lists the smaller one. From
+//! level 1 on, answers always give the smaller half-edge `min(he, O[he])` (the boundary half-edge
+//! for a boundary edge): exactly the keys of level 2's `EH` (Algorithm 2).
 //!
 //! ## What is refused
 //!
-//! Triangles only ([`Error::NotTriangles`](crate::Error::NotTriangles)). Non-manifold edges ([`Error::NonManifoldEdge`](crate::Error::NonManifoldEdge),
-//! naming the edge and its faces) and inconsistent orientation are refused as everywhere in
-//! the lab. Non-manifold vertices are refused ([`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex)): `VH[v]` stores one
-//! half-edge and the vertex star (Algorithms 6, 7) walks one fan, so a second fan would be
-//! silently missed.
+//! Triangles only ([`Error::NotTriangles`](crate::Error::NotTriangles)). Non-manifold edges
+//! ([`Error::NonManifoldEdge`](crate::Error::NonManifoldEdge), naming the edge and its faces) and
+//! inconsistent orientation are refused as everywhere in the lab. Non-manifold vertices are refused
+//! ([`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex)): `VH[v]` stores one half-edge
+//! and the vertex star (Algorithms 6, 7) walks one fan, so a second fan would be silently missed.
 //!
 //! ## Construction
 //!
@@ -75,10 +76,10 @@
 //! `from_soup_chapter` the chapter's algorithms; a proptest checks they agree.
 //!
 //! Note on the pseudo-code: Algorithms 6 and 7 step `h ← next(O[h])`, which from the boundary
-//! half-edge stored in `VH[v]` stops at once; the walk here ([`fan_walk_algorithm_7`]) turns the other
-//! way, `h ← O[prev(h)]`, which from that half-edge reaches every triangle of the star.
-//! Algorithm 10 steps `next(O[next(he)])` even when `next(he)` is on the boundary; the walk
-//! here ([`next_boundary_half_edge`]) is Algorithm 4's inner loop, which stops there.
+//! half-edge stored in `VH[v]` stops at once; the walk here ([`fan_walk_algorithm_7`]) turns the
+//! other way, `h ← O[prev(h)]`, which from that half-edge reaches every triangle of the star.
+//! Algorithm 10 steps `next(O[next(he)])` even when `next(he)` is on the boundary; the walk here
+//! ([`next_boundary_half_edge`]) is Algorithm 4's inner loop, which stops there.
 
 mod build;
 mod level0;

@@ -1,10 +1,10 @@
 //! # Explicit storage
 //!
-//! The lecture's first and simplest general structure (*explizite Speicherung*): every polygon
-//! lists the coordinates of its own corners, `P = ((x1,y1,z1), ..., (xk,yk,zk))`. There is no
-//! shared vertex, so a vertex shared by six triangles is stored six times, and topology is
-//! found by comparing coordinates: "How does one find shared edges? All edges of a vertex?"
-//! Slow on purpose, faithful to the lecture.
+//! The first and simplest general structure of the lecture on polygon-mesh data structures
+//! (*explizite Speicherung*): every polygon lists the coordinates of its own corners, `P =
+//! ((x1,y1,z1), ..., (xk,yk,zk))`. There is no shared vertex, so a vertex shared by six triangles
+//! is stored six times, and topology is found by comparing coordinates: "How does one find shared
+//! edges? All edges of a vertex?" Slow on purpose, faithful to the lecture.
 //!
 //! | stores | bytes |
 //! |---|---|

@@ -1,9 +1,9 @@
 //! # Vertex list (indexed face set)
 //!
-//! The lecture's *Eckenliste*, the layout of `.obj` files: a shared list of vertex positions
-//! and, per face, the indices of its corners. Nothing else is stored, so every relation that
-//! needs a neighbour is found by scanning the faces, as the lecture says ("finding shared
-//! edges and vertices of polygons is still hard").
+//! The *Eckenliste* of the lecture on polygon-mesh data structures, the layout of `.obj` files: a
+//! shared list of vertex positions and, per face, the indices of its corners. Nothing else is
+//! stored, so every relation that needs a neighbour is found by scanning the faces, as the lecture
+//! says ("finding shared edges and vertices of polygons is still hard").
 //!
 //! | stores | bytes |
 //! |---|---|

@@ -1,12 +1,12 @@
 //! # Edge list
 //!
-//! The lecture's *Kantenliste*: vertices in a point list, edges in a list of their own, each
-//! edge `E = (start, end, left polygon, right polygon)`, and every polygon as the list of its
-//! edges' indices. The left polygon is the one that traverses the edge from start to end
-//! (counter-clockwise seen from outside, its interior on the left, as the lecture orients
-//! polygons); the right polygon traverses it from end to start and is `N` (none) on the
-//! boundary. "Finding shared edges is now easier (check the second polygon index); finding
-//! the shared vertices of polygons is still hard": nothing points from a vertex to its edges.
+//! The *Kantenliste* of the lecture on polygon-mesh data structures: vertices in a point list,
+//! edges in a list of their own, each edge `E = (start, end, left polygon, right polygon)`, and
+//! every polygon as the list of its edges' indices. The left polygon is the one that traverses the
+//! edge from start to end (counter-clockwise seen from outside, its interior on the left, as the
+//! lecture orients polygons); the right polygon traverses it from end to start and is `N` (none) on
+//! the boundary. "Finding shared edges is now easier (check the second polygon index); finding the
+//! shared vertices of polygons is still hard": nothing points from a vertex to its edges.
 //!
 //! | stores | bytes |
 //! |---|---|

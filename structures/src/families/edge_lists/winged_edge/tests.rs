@@ -1,5 +1,5 @@
-//! The winged-edge's own tests: the lecture's example records, incremental construction and
-//! removal, refusals and `validate`.
+//! The winged-edge's own tests: the polygon-mesh lecture's example records, incremental
+//! construction and removal, refusals and `validate`.
 
 use super::*;
 use crate::core::error::Error;
@@ -23,7 +23,7 @@ fn four_vertices() -> WingedEdge {
 
 #[test]
 fn records_match_the_lectures_example() {
-    // The lecture's P1 = (E5, E4, E1) and P2 = (E2, E4, E3) over V1..V4, 0-based.
+    // The polygon-mesh lecture's P1 = (E5, E4, E1) and P2 = (E2, E4, E3) over V1..V4, 0-based.
     let soup = PolygonSoup::from_polygons(
         vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y],
         &[[0u32, 3, 1], [2, 1, 3]],
@@ -248,7 +248,7 @@ fn heap_bytes_are_the_documented_bytes_per_element() {
 }
 
 #[test]
-fn explain_prints_the_seeds_fields_for_the_open_tetrahedron() {
+fn explain_prints_the_hull_lectures_fields_for_the_open_tetrahedron() {
     let m = WingedEdge::from_soup(&meshes::open_tetrahedron()).unwrap();
     let mut text = String::new();
     m.explain(&mut text).unwrap();

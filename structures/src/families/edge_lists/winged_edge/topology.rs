@@ -185,9 +185,9 @@ impl MeshTopology for WingedEdge {
         };
         writeln!(
             w,
-            "winged-edge (doppelt verkettete Kantenliste, arestas aladas): seed 004's records"
+            "winged-edge (doppelt verkettete Kantenliste, arestas aladas): the records of the lecture on 3D convex hulls"
         )?;
-        writeln!(w, "- = none (the lecture's N); pccw/nccw = before/after e in fccw (left face, runs v1 -> v2),")?;
+        writeln!(w, "- = none (the polygon-mesh lecture's N); pccw/nccw = before/after e in fccw (left face, runs v1 -> v2),")?;
         writeln!(w, "pcw/ncw = before/after e in fcw (right face, runs v2 -> v1), each in the face's own cycle")?;
         writeln!(
             w,

@@ -1,12 +1,12 @@
 //! # Index half-edge
 //!
-//! The lecture's half-edge structure stored the way OpenMesh and pmp-library store it:
-//! structure of arrays with `u32` handles instead of pointers. Edge `e` owns half-edges `2e`
-//! and `2e + 1`, so the lecture's `pair` is not stored: `pair(h) = h ^ 1`. Boundary edges get
-//! an explicit boundary half-edge with no face, linked by `next` around the hole, and a
-//! boundary vertex's half-edge is its outgoing boundary half-edge (as in OpenMesh), so the
-//! boundary test is one read. Every circulator is built from two primitives, `next` and
-//! `twin`; the operators are the ones shared with the pointer half-edge
+//! The half-edge structure of the lecture on polygon-mesh data structures stored the way OpenMesh
+//! and pmp-library store it: structure of arrays with `u32` handles instead of pointers. Edge `e`
+//! owns half-edges `2e` and `2e + 1`, so the lecture's `pair` is not stored: `pair(h) = h ^ 1`.
+//! Boundary edges get an explicit boundary half-edge with no face, linked by `next` around the
+//! hole, and a boundary vertex's half-edge is its outgoing boundary half-edge (as in OpenMesh), so
+//! the boundary test is one read. Every circulator is built from two primitives, `next` and `twin`;
+//! the operators are the ones shared with the pointer half-edge
 //! ([`crate::families::half_edge::HalfEdge`]), monomorphised for arrays.
 //!
 //! | stores | lecture field | bytes |
@@ -178,7 +178,8 @@ impl HalfEdgeLinks for IndexLinks {
     fn describe(w: &mut dyn Write) -> std::fmt::Result {
         writeln!(
             w,
-            "index half-edge (OpenMesh style): the lecture's records as arrays of u32 handles\n\
+            "index half-edge (OpenMesh style): the records of the lecture on polygon-mesh data\n\
+             structures as arrays of u32 handles\n\
              HE_vert v: positions[v] (x, y, z), vertex_half_edge[v] (edge)\n\
              HE_face f: face_half_edge[f] (edge)\n\
              HE_edge h: vertex[h] (vert), next[h], prev[h], face[h]; pair = h ^ 1 is not stored"

@@ -1,6 +1,7 @@
 //! # Pointer half-edge
 //!
-//! The lecture's half-edge structure exactly as its slides declare it, records linked by
+//! The half-edge structure of the lecture on polygon-mesh data structures exactly as its slides
+//! declare it, records linked by
 //! real pointers, each record its own heap allocation:
 //!
 //! ```text
@@ -9,11 +10,11 @@
 //! struct HE_face { HE_edge* edge; };
 //! ```
 //!
-//! Measuring what chasing those pointers costs against the same connectivity in index
-//! arrays ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every
-//! operator with the same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers
-//! here and for arrays there. All unsafe code of the crate is in the private `links` module:
-//! records are written only while they are built, never move, and are freed in `Drop`.
+//! Measuring what chasing those pointers costs against the same connectivity in index arrays
+//! ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every operator with the
+//! same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers here and for
+//! arrays there. All unsafe code of the crate is in the private `links` module: records are written
+//! only while they are built, never move, and are freed in `Drop`.
 //!
 //! | record (one allocation each) | fields | bytes |
 //! |---|---|---|
@@ -153,8 +154,9 @@ impl HalfEdgeLinks for PointerLinks {
     fn describe(w: &mut dyn Write) -> std::fmt::Result {
         writeln!(
             w,
-            "pointer half-edge: the lecture's HE_vert, HE_face and HE_edge records, each its own\n\
-             heap allocation, linked by pointers (printed as the id of the record pointed to)"
+            "pointer half-edge: the HE_vert, HE_face and HE_edge records of the lecture on\n\
+             polygon-mesh data structures, each its own heap allocation, linked by pointers\n\
+             (printed as the id of the record pointed to)"
         )
     }
 
