@@ -42,10 +42,12 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// The lecture's consistency checks on a mesh file: every problem, with the elements it
-    /// concerns. Exit code 0 when clean, 1 when problems were found, 2 when unreadable.
+    /// The consistency checks of the lecture on polygon-mesh data structures on a mesh file: every
+    /// problem, with the elements it concerns. Exit code 0 when clean, 1 when problems were found,
+    /// 2 when unreadable.
     Check(crate::check::CheckArgs),
-    /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
+    /// For teaching: what a structure stores for the CHE thesis chapter's open tetrahedron
+    /// (Figure 4.10).
     Explain {
         /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
         name: String,
@@ -80,7 +82,8 @@ pub enum Command {
         #[arg(long, default_value = "input")]
         order: String,
     },
-    /// The 3D convex hull of a point file or random points, by one of seed 004's algorithms.
+    /// The 3D convex hull of a point file or random points, by one of the algorithms of the
+    /// lecture on 3D convex hulls.
     Hull(crate::hull::HullArgs),
 }
 
@@ -376,7 +379,7 @@ pub(crate) fn mesh_or_tetrahedron(
         ),
         None => (
             meshes::open_tetrahedron(),
-            "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
+            "the open tetrahedron of the CHE thesis chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
         ),
     })
 }

@@ -1,7 +1,8 @@
 //! `topolab explain che`: the Compact Half-Edge for teaching. Without `--trace`, every
 //! container of every level (`G`, `V`, `O`, `VH`, `EH`, `CH`) with its indices, as the
 //! chapter's Figure 4.10 draws them; with `--trace r00 --vertex N`, the reads each level's
-//! vertex-star algorithm makes (Algorithms 5, 6, 7) to answer the 1-ring of vertex N.
+//! vertex-star algorithm makes (Algorithms 5, 6, 7) to answer the 1-ring of vertex N, and the
+//! `V[]` read R00 adds per neighbour; the count at the end is all of them.
 
 use crate::cli::{mesh_or_tetrahedron, Failure};
 use std::fmt::Write as _;
@@ -109,19 +110,26 @@ fn star_trace<L: MeshTopology + CheLevel>(
                     reads += 1;
                     format!("read VH[{}] = {he}", vertex.0)
                 }
-                StarRead::Corner { he } => format!(
-                    "triangle {} through half-edge {} (leaves v{v}): neighbour V[{}] = {}",
-                    triangle(he).0,
-                    he.0,
-                    next(he).0,
-                    starts[next(he).index()]
-                ),
-                StarRead::Closing { he } => format!(
-                    "boundary half-edge {} enters v{v}: neighbour V[{}] = {}",
-                    he.0,
-                    he.0,
-                    starts[he.index()]
-                ),
+                // R00 reads each neighbour from V[] on top of the star's own reads.
+                StarRead::Corner { he } => {
+                    reads += 1;
+                    format!(
+                        "triangle {} through half-edge {} (leaves v{v}): R00 reads neighbour V[{}] = {}",
+                        triangle(he).0,
+                        he.0,
+                        next(he).0,
+                        starts[next(he).index()]
+                    )
+                }
+                StarRead::Closing { he } => {
+                    reads += 1;
+                    format!(
+                        "boundary half-edge {} enters v{v}: R00 reads neighbour V[{}] = {}",
+                        he.0,
+                        he.0,
+                        starts[he.index()]
+                    )
+                }
             };
             let _ = writeln!(out, "  {line}");
         },

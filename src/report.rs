@@ -288,8 +288,9 @@ fn short(n: usize) -> String {
 fn hull(
     quick: bool,
     notes: &mut Vec<String>,
-) -> Result<Vec<topolab_structures::hull::bench::HullRow>, Failure> {
-    use topolab_structures::hull::{bench, qhull, Shape};
+) -> Result<Vec<topolab_harness::hull::bench::HullRow>, Failure> {
+    use topolab_harness::hull::{bench, qhull};
+    use topolab_structures::hull::Shape;
     let root = Path::new(".");
     let python = qhull::python(root);
     if python.is_none() {

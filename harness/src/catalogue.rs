@@ -1,5 +1,5 @@
 //! The operator catalogue: for every [`Operator`], what it takes, what it answers and which
-//! relation of the CHE chapter it is.
+//! relation of the CHE thesis chapter it is.
 
 use topolab_structures::Operator;
 

@@ -209,7 +209,7 @@ fn targets(h: &mut String, r: &Results) {
 }
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
-    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the lecture's tables and the CHE chapter's Table 4.1), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate from smaller sizes is shown). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
+    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate from smaller sizes is shown). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
     h.push_str("<table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
@@ -583,7 +583,7 @@ fn hull(h: &mut String, r: &Results) {
     if r.hull.is_empty() {
         return;
     }
-    h.push_str("<h2>3D convex hull on the winged-edge (seed 004)</h2><div class=read><b>How to read it.</b> The seed's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the seed's expected bound 6n − 20.</div><div class=plots>");
+    h.push_str("<h2>3D convex hull on the winged-edge (the lecture on 3D convex hulls)</h2><div class=read><b>How to read it.</b> The lecture's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the lecture's expected bound 6n − 20.</div><div class=plots>");
     let algos = ["gift", "incremental", "randomized", "qhull"];
     let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
     shapes.dedup();
@@ -629,7 +629,7 @@ fn hull(h: &mut String, r: &Results) {
 }
 
 fn teaching(h: &mut String, r: &Results) {
-    let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
+    let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE thesis chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
     for t in &r.teaching {
         let _ = write!(
             h,

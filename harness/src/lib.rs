@@ -10,6 +10,7 @@ pub mod catalogue;
 pub mod checksum;
 pub mod fit;
 pub mod html;
+pub mod hull;
 pub mod kernels;
 pub mod machine;
 pub mod measure;

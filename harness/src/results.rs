@@ -24,7 +24,7 @@ pub struct Results {
     /// libigl's reference timings, when it ran.
     pub libigl: Vec<LibiglRow>,
     /// The 3D convex hull algorithms (and Qhull) against n.
-    pub hull: Vec<topolab_structures::hull::bench::HullRow>,
+    pub hull: Vec<crate::hull::bench::HullRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Anything the reader should know (skipped baselines, missing data).

@@ -1,18 +1,22 @@
 //! # topolab-structures
 //!
-//! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
-//! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`],
-//! [`conformance`]) and tested on ([`meshes`]), refined to any size ([`refine`]) and
-//! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
-//! lecture's consistency checks on a file as written.
+//! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are built
+//! from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`](testing::oracle),
+//! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`])
+//! and renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
+//! consistency checks of the lecture on polygon-mesh data structures on a file as written.
+//!
+//! The structures, one folder per family in [`families`], each registered once in
+//! [`registry`] ([`for_each_structure!`]), from which the CLI, the report, the benches and the
+//! conformance suite take their lists:
 //!
 //! | structure | name | stores | polygons | non-manifold vertices |
 //! |---|---|---|---|---|
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
 //! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
-//! | [`WingedEdge`] | `winged-edge` | seed 004's records: edges with 8 pointers, av(v), af(f) | yes | no |
-//! | [`PointerHalfEdge`] | `pointer-half-edge` | the lecture's `HE_edge`/`HE_vert`/`HE_face` records linked by pointers | yes | refused |
+//! | [`WingedEdge`] | `winged-edge` | the records of the lecture on 3D convex hulls: edges with 8 pointers, av(v), af(f) | yes | no |
+//! | [`PointerHalfEdge`] | `pointer-half-edge` | the `HE_edge`/`HE_vert`/`HE_face` records of the lecture on polygon-mesh data structures, linked by pointers | yes | refused |
 //! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
 //! | [`RegularGrid`] | `regular-grid` | a grid's counts, origin and cell size; nothing per element | grids of quads or triangles | (none in a grid) |
 //! | [`HeightField`] | `height-field` | a grid's counts and one position per vertex | grids of quads or triangles | (none in a grid) |
@@ -21,52 +25,49 @@
 //! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
 //! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
-//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with seed 004's
-//! three algorithms (gift wrapping, incremental, randomized incremental).
+//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with the three
+//! algorithms of the lecture on 3D convex hulls (gift wrapping, incremental, randomized
+//! incremental).
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
+//!
+//! | folder | holds |
+//! |---|---|
+//! | [`core`](mod@core) | ids, the soup, the trait and its operators and costs, errors, attributes |
+//! | [`families`] | the structures by family, each family's shared engine beside them |
+//! | [`io`] | OBJ, OFF and PLY readers and writers |
+//! | [`algorithms`] | the 3D convex hull, consistency checks and summary, refinement, orderings |
+//! | [`testing`] | the oracle, the conformance suite, canonical and generated meshes |
 #![deny(missing_docs)]
-// Unsafe code lives only in `pointer_half_edge::links` (real pointers are that structure's point).
+// Unsafe code lives only in `families::half_edge::pointer::links` (real pointers are that
+// structure's point).
 #![deny(unsafe_code)]
 
-pub mod attributes;
-mod boundary_walk;
-pub mod che;
-pub mod checks;
-pub mod conformance;
-mod corner_scan;
-pub mod edge_list;
-pub mod error;
-pub mod explicit;
-pub mod half_edge;
-pub mod hull;
-pub mod ids;
-pub mod index_half_edge;
+pub mod algorithms;
+pub mod core;
+pub mod families;
 pub mod io;
-pub mod meshes;
-pub mod oracle;
-pub mod ordering;
-pub mod pointer_half_edge;
-pub mod refine;
 pub mod registry;
-pub mod regular_grid;
-pub mod soup;
-pub mod summary;
-pub mod topology;
-pub mod vertex_list;
-pub mod winged_edge;
+pub mod testing;
 
-pub use attributes::{MeshAttributes, Plane};
-pub use che::{CheL0, CheL1, CheL2, CheL3};
-pub use edge_list::EdgeList;
-pub use error::{Error, Format, Location, Result};
-pub use explicit::ExplicitStorage;
-pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
-pub use index_half_edge::IndexHalfEdge;
-pub use pointer_half_edge::PointerHalfEdge;
-pub use regular_grid::{HeightField, RegularGrid};
-pub use soup::{Connectivity, PolygonSoup};
-pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
-pub use vertex_list::VertexList;
-pub use winged_edge::WingedEdge;
+// The module paths the other crates use (`topolab_structures::hull::convex_hull`, ...).
+pub use algorithms::{checks, hull, ordering, refine, summary};
+pub use families::che;
+pub use testing::{conformance, meshes};
+// The error types' short path inside the crate (`crate::error::Error`).
+use self::core::error;
+
+pub use self::core::attributes::{MeshAttributes, Plane};
+pub use self::core::error::{Error, Format, Location, Result};
+pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use self::core::soup::{Connectivity, PolygonSoup};
+pub use self::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+pub use families::che::{CheL0, CheL1, CheL2, CheL3};
+pub use families::corner_lists::explicit::ExplicitStorage;
+pub use families::corner_lists::vertex_list::VertexList;
+pub use families::edge_lists::edge_list::EdgeList;
+pub use families::edge_lists::winged_edge::WingedEdge;
+pub use families::half_edge::index::IndexHalfEdge;
+pub use families::half_edge::pointer::PointerHalfEdge;
+pub use families::regular_grid::{HeightField, RegularGrid};

@@ -1,7 +1,8 @@
-//! The three convex hull algorithms (seed 004): each result is a valid winged-edge that
-//! matches the oracle of its own faces, is closed (Euler characteristic 2), convex (every
-//! input point on the inner side of every face, exactly), has only extreme points as vertices,
-//! and the three agree with each other; degenerate input gives typed errors, never a panic.
+//! The three convex hull algorithms of the lecture on 3D convex hulls: each result is a valid
+//! winged-edge that matches the oracle of its own faces, is closed (Euler characteristic 2),
+//! convex (every input point on the inner side of every face, exactly), has only extreme points
+//! as vertices, and the three agree with each other; degenerate input gives typed errors, never
+//! a panic.
 
 use glam::DVec3;
 use proptest::prelude::*;
@@ -190,7 +191,7 @@ fn degenerate_inputs_give_typed_errors() {
 
 #[test]
 fn the_randomized_algorithm_creates_about_the_expected_number_of_faces() {
-    // On a sphere every point is inserted; the seed's lemma: E[created] ≤ 6n − 20. One run
+    // On a sphere every point is inserted; the lecture's lemma: E[created] ≤ 6n − 20. One run
     // is a sample, so allow a margin; the count itself must at least cover the final hull.
     let n = 2000;
     let points = random_points(Shape::Sphere, n, 11);

@@ -8,8 +8,8 @@
 //! [`read_raw`] and [`read_bytes_raw`] stop short of that check and return a [`RawSoup`]: the
 //! file as written, so that `topolab check` can report every problem instead of the first.
 
-use crate::error::{Error, Format, Result};
-use crate::soup::PolygonSoup;
+use crate::core::error::{Error, Format, Result};
+use crate::core::soup::PolygonSoup;
 use std::io::Write;
 use std::path::Path;
 

@@ -10,7 +10,7 @@
 
 use super::text::{lines, parse_int, parse_or_syntax, position, strip_comment, syntax, tokens};
 use super::{RawSoup, SoupBuilder};
-use crate::error::{Format, Result};
+use crate::core::error::{Format, Result};
 
 /// OBJ statements that carry nothing a polygon soup stores.
 const SKIPPED: &[&[u8]] = &[

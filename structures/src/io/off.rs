@@ -8,7 +8,7 @@ use super::text::{
     syntax, tokens, truncated, Line,
 };
 use super::{RawSoup, SoupBuilder};
-use crate::error::{Error, Format, Result};
+use crate::core::error::{Error, Format, Result};
 
 const OFF: Format = Format::Off;
 /// The shortest vertex line, `0 0 0\n`.

@@ -8,7 +8,7 @@ use super::text::{
     lines, parse_count, parse_f64, parse_int, parse_or_syntax, plausible, syntax, tokens, truncated,
 };
 use super::{RawSoup, SoupBuilder};
-use crate::error::{Error, Format, Location, Result};
+use crate::core::error::{Error, Format, Location, Result};
 use glam::DVec3;
 
 const PLY: Format = Format::Ply;

@@ -1,7 +1,7 @@
 //! What the text readers share: lines with their numbers and byte offsets, whitespace tokens,
 //! comment stripping, number parsing, and the errors that point at a line.
 
-use crate::error::{Error, Format, Location};
+use crate::core::error::{Error, Format, Location};
 use glam::DVec3;
 
 /// One line of a text file.

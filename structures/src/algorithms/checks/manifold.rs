@@ -1,0 +1,169 @@
+//! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
+//! orientability, and per component its Euler characteristic, boundary and genus.
+
+use super::{CheckSummary, Component, FindingKind, Push, UnionFind};
+use crate::core::error::Error;
+use crate::core::soup::{Connectivity, PolygonSoup};
+use std::collections::{BTreeMap, HashSet};
+
+/// The edge analysis (non-manifold edges and vertices, orientation), components, boundary
+/// curves, Euler characteristic and genus, on `clean` (the faces `kept` of `soup`).
+pub(super) fn topology(
+    clean: &PolygonSoup,
+    kept: &[u32],
+    soup: &PolygonSoup,
+    push: &mut Push<'_>,
+) -> CheckSummary {
+    let (conn, problems) = Connectivity::analyse(clean, false);
+    let original = |f: u32| kept[f as usize];
+    let nf = clean.num_faces();
+    // Components: faces joined through shared vertices, keyed by the root of their vertices.
+    let mut joined = UnionFind::new(clean.num_vertices());
+    for face in clean.faces() {
+        for w in face.windows(2) {
+            joined.union(w[0], w[1], false);
+        }
+    }
+    let root_of_face: Vec<u32> = clean.faces().map(|f| joined.find(f[0]).0).collect();
+    let mut components: BTreeMap<u32, Component> = BTreeMap::new();
+    // Orientation: faces across an interior edge agree (parity 0), across an edge both
+    // traverse the same way they disagree (parity 1); an odd cycle means no orientation exists.
+    let mut orientation = UnionFind::new(nf);
+    let mut first_face_of_non_orientable: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut relate = |f: u32, g: u32, flip: bool, orientation: &mut UnionFind| {
+        if !orientation.union(f, g, flip) {
+            first_face_of_non_orientable
+                .entry(root_of_face[f as usize])
+                .or_insert(original(f));
+        }
+    };
+    for problem in problems {
+        match problem {
+            Error::NonManifoldEdge { a, b, faces } => {
+                component(&mut components, joined.find(a).0).manifold = false;
+                let faces: Vec<u32> = faces.into_iter().map(original).collect();
+                push(
+                    FindingKind::NonManifoldEdge,
+                    vec![a, b],
+                    faces.clone(),
+                    format!(
+                        "edge ({a}, {b}) is shared by {} faces {faces:?}",
+                        faces.len()
+                    ),
+                );
+            }
+            Error::InconsistentOrientation { a, b, f, g } => {
+                let (f, g) = (original(f), original(g));
+                push(
+                    FindingKind::InconsistentOrientation,
+                    vec![a, b],
+                    vec![f, g],
+                    format!("faces {f} and {g} both traverse edge ({a} -> {b})"),
+                );
+            }
+            _ => {}
+        }
+    }
+    for (v, &fans) in conn.vertex_fans(clean).iter().enumerate() {
+        if fans > 1 {
+            component(&mut components, joined.find(v as u32).0).manifold = false;
+            push(
+                FindingKind::NonManifoldVertex,
+                vec![v as u32],
+                vec![],
+                format!("vertex {v}: its faces form {fans} separate fans"),
+            );
+        }
+    }
+    // Corners per edge: 1 on the boundary, 2 for an interior edge (or an inconsistent pair),
+    // more on a non-manifold edge.
+    let mut corners_per_edge = vec![0u32; conn.num_edges()];
+    for &e in &conn.corner_edge {
+        corners_per_edge[e as usize] += 1;
+    }
+    // Boundary curves: the connected sets of boundary edges.
+    let mut curves = UnionFind::new(clean.num_vertices());
+    let mut boundary_edges = 0;
+    for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
+        let (f, c0) = (conn.corner_face[c0 as usize], c0 as usize);
+        component(&mut components, root_of_face[f as usize]).edges += 1;
+        if c1 != u32::MAX {
+            let same_direction = clean.indices()[c0] == clean.indices()[c1 as usize];
+            relate(
+                f,
+                conn.corner_face[c1 as usize],
+                same_direction,
+                &mut orientation,
+            );
+        } else if corners_per_edge[e] == 1 {
+            let next = clean.next_corner(c0, f as usize);
+            curves.union(clean.indices()[c0], clean.indices()[next], false);
+            boundary_edges += 1;
+        }
+    }
+    let mut counted_curves = HashSet::new();
+    for (e, &[c0, _]) in conn.edge_corners.iter().enumerate() {
+        if corners_per_edge[e] == 1 {
+            let curve = curves.find(clean.indices()[c0 as usize]).0;
+            if counted_curves.insert(curve) {
+                let f = conn.corner_face[c0 as usize];
+                component(&mut components, root_of_face[f as usize]).boundary_curves += 1;
+            }
+        }
+    }
+    for &root in &root_of_face {
+        component(&mut components, root).faces += 1;
+    }
+    let mut in_use = vec![false; clean.num_vertices()];
+    for &v in clean.indices() {
+        in_use[v as usize] = true;
+    }
+    for v in (0..clean.num_vertices() as u32).filter(|&v| in_use[v as usize]) {
+        component(&mut components, joined.find(v).0).vertices += 1;
+    }
+    for (root, face) in first_face_of_non_orientable {
+        component(&mut components, root).orientable = false;
+        push(
+            FindingKind::NonOrientable,
+            vec![],
+            vec![face],
+            format!("the component of face {face} cannot be oriented consistently (like a Möbius strip)"),
+        );
+    }
+    let components: Vec<Component> = components
+        .into_values()
+        .map(|mut c| {
+            c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.faces as i64;
+            // χ = 2 - 2g - b for a connected orientable surface.
+            let twice_genus = 2 - c.euler_characteristic - c.boundary_curves as i64;
+            c.genus = (c.manifold && c.orientable && twice_genus >= 0 && twice_genus % 2 == 0)
+                .then_some(twice_genus / 2);
+            c
+        })
+        .collect();
+    CheckSummary {
+        vertices: soup.num_vertices(),
+        faces: soup.num_faces(),
+        usable_faces: nf,
+        edges: conn.num_edges(),
+        boundary_edges,
+        boundary_curves: components.iter().map(|c| c.boundary_curves).sum(),
+        euler_characteristic: components.iter().map(|c| c.euler_characteristic).sum(),
+        components,
+        counts: BTreeMap::new(),
+    }
+}
+
+/// The component with vertex root `root`, created empty (and manifold) on first use.
+fn component(components: &mut BTreeMap<u32, Component>, root: u32) -> &mut Component {
+    components.entry(root).or_insert(Component {
+        faces: 0,
+        vertices: 0,
+        edges: 0,
+        boundary_curves: 0,
+        euler_characteristic: 0,
+        orientable: true,
+        manifold: true,
+        genus: None,
+    })
+}

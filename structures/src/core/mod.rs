@@ -1,0 +1,10 @@
+//! What every part of the crate speaks: element ids ([`ids`]), the input every structure is
+//! built from ([`soup`]), the one trait every structure implements with its operators and
+//! declared costs ([`topology`]), the typed errors ([`error`]) and the geometric attributes
+//! computed through the trait ([`attributes`]).
+
+pub mod attributes;
+pub mod error;
+pub mod ids;
+pub mod soup;
+pub mod topology;

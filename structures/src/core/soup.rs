@@ -1,0 +1,442 @@
+//! [`PolygonSoup`]: the face list every structure is built from, and the shared analysis of
+//! its edges ([`Connectivity`]) that constructions use to find twins and reject non-manifold input.
+
+use crate::core::error::{Error, Result};
+use crate::core::ids::{FaceId, VertexId};
+use glam::DVec3;
+
+/// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.
+///
+/// Face `j` is `indices[offsets[j]..offsets[j + 1]]`, its corners in order (counter-clockwise
+/// seen from outside). A *corner* is a position in `indices`: corner `c` of face `j` is the
+/// vertex `indices[c]`, and the edge leaving it goes to the next corner of the same face.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PolygonSoup {
+    /// Vertex positions; vertex `i` is `VertexId(i)` in every structure.
+    pub positions: Vec<DVec3>,
+    indices: Vec<u32>,
+    offsets: Vec<u32>,
+}
+
+impl PolygonSoup {
+    /// An empty soup.
+    pub fn new() -> Self {
+        Self {
+            positions: Vec::new(),
+            indices: Vec::new(),
+            offsets: vec![0],
+        }
+    }
+
+    /// An empty soup with room for `vertices`, `faces` and `corners`.
+    pub fn with_capacity(vertices: usize, faces: usize, corners: usize) -> Self {
+        let mut offsets = Vec::with_capacity(faces + 1);
+        offsets.push(0);
+        Self {
+            positions: Vec::with_capacity(vertices),
+            indices: Vec::with_capacity(corners),
+            offsets,
+        }
+    }
+
+    /// A soup from positions and faces given as slices of vertex indices.
+    pub fn from_polygons<F: AsRef<[u32]>>(positions: Vec<DVec3>, faces: &[F]) -> Self {
+        let mut soup = Self::with_capacity(positions.len(), faces.len(), faces.len() * 3);
+        soup.positions = positions;
+        for f in faces {
+            soup.push_face(f.as_ref());
+        }
+        soup
+    }
+
+    /// Adds a vertex and returns its id.
+    pub fn push_vertex(&mut self, p: DVec3) -> VertexId {
+        self.positions.push(p);
+        VertexId::new(self.positions.len() - 1)
+    }
+
+    /// Adds a face (not checked here: see [`PolygonSoup::check`]) and returns its id.
+    pub fn push_face(&mut self, corners: &[u32]) -> FaceId {
+        self.indices.extend_from_slice(corners);
+        self.offsets.push(self.indices.len() as u32);
+        FaceId::new(self.offsets.len() - 2)
+    }
+
+    /// Number of vertices.
+    #[inline]
+    pub fn num_vertices(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Number of faces.
+    #[inline]
+    pub fn num_faces(&self) -> usize {
+        self.offsets.len() - 1
+    }
+
+    /// Number of corners (sum of the face sizes).
+    #[inline]
+    pub fn num_corners(&self) -> usize {
+        self.indices.len()
+    }
+
+    /// The vertex indices of face `f`, in order.
+    #[inline]
+    pub fn face(&self, f: usize) -> &[u32] {
+        &self.indices[self.offsets[f] as usize..self.offsets[f + 1] as usize]
+    }
+
+    /// All faces in input order.
+    pub fn faces(&self) -> impl ExactSizeIterator<Item = &[u32]> + '_ {
+        self.offsets
+            .windows(2)
+            .map(move |w| &self.indices[w[0] as usize..w[1] as usize])
+    }
+
+    /// The flat index buffer (all corners of all faces).
+    #[inline]
+    pub fn indices(&self) -> &[u32] {
+        &self.indices
+    }
+
+    /// The face offsets: `num_faces() + 1` entries, starting with 0.
+    #[inline]
+    pub fn offsets(&self) -> &[u32] {
+        &self.offsets
+    }
+
+    /// First corner of face `f`.
+    #[inline]
+    pub fn face_start(&self, f: usize) -> usize {
+        self.offsets[f] as usize
+    }
+
+    /// The corner after `c` in its face `f` (wrapping around).
+    #[inline]
+    pub fn next_corner(&self, c: usize, f: usize) -> usize {
+        if c + 1 == self.offsets[f + 1] as usize {
+            self.offsets[f] as usize
+        } else {
+            c + 1
+        }
+    }
+
+    /// The corner before `c` in its face `f` (wrapping around).
+    #[inline]
+    pub fn prev_corner(&self, c: usize, f: usize) -> usize {
+        if c == self.offsets[f] as usize {
+            self.offsets[f + 1] as usize - 1
+        } else {
+            c - 1
+        }
+    }
+
+    /// `true` when every face is a triangle (and there is at least one face).
+    pub fn is_triangle_mesh(&self) -> bool {
+        self.num_faces() > 0 && self.indices.len() == 3 * self.num_faces()
+    }
+
+    /// The first face that is not a triangle, with its size, if any.
+    pub fn first_non_triangle(&self) -> Option<(usize, usize)> {
+        self.faces()
+            .enumerate()
+            .find(|(_, f)| f.len() != 3)
+            .map(|(j, f)| (j, f.len()))
+    }
+
+    /// Rejects what no structure can store: indices out of range, faces with fewer than three
+    /// corners or a repeated vertex, non-finite coordinates, counts beyond `u32` handles.
+    pub fn check(&self) -> Result<()> {
+        for (what, count) in [
+            ("vertices", self.positions.len()),
+            ("faces", self.num_faces()),
+            ("corners", self.indices.len()),
+        ] {
+            if count >= u32::MAX as usize {
+                return Err(Error::TooLarge {
+                    what,
+                    count: count as u64,
+                });
+            }
+        }
+        for (i, p) in self.positions.iter().enumerate() {
+            for value in p.to_array() {
+                if !value.is_finite() {
+                    return Err(Error::NonFiniteCoordinate { vertex: i, value });
+                }
+            }
+        }
+        let n = self.positions.len();
+        for (j, face) in self.faces().enumerate() {
+            if face.len() < 3 {
+                return Err(Error::TooFewCorners {
+                    face: j,
+                    corners: face.len(),
+                });
+            }
+            for (k, &v) in face.iter().enumerate() {
+                if v as usize >= n {
+                    return Err(Error::IndexOutOfRange {
+                        face: j,
+                        index: v as i64,
+                        vertices: n,
+                    });
+                }
+                if face[..k].contains(&v) {
+                    return Err(Error::RepeatedVertex { face: j, vertex: v });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// [`PolygonSoup::check`], then the edge analysis that every structure with explicit
+    /// adjacency needs: fails on an edge with more than two faces or two faces that traverse
+    /// their shared edge in the same direction. Vertex fans are checked separately
+    /// ([`Connectivity::check_vertex_fans`]) because some structures support non-manifold vertices.
+    pub fn connectivity(&self) -> Result<Connectivity> {
+        self.check()?;
+        Connectivity::build(self)
+    }
+
+    /// The soup with its faces restricted to the given subset (vertex list unchanged).
+    pub fn with_faces(&self, keep: impl Fn(usize) -> bool) -> Self {
+        let mut out =
+            Self::with_capacity(self.num_vertices(), self.num_faces(), self.num_corners());
+        out.positions = self.positions.clone();
+        for (j, f) in self.faces().enumerate() {
+            if keep(j) {
+                out.push_face(f);
+            }
+        }
+        out
+    }
+
+    /// The same mesh with vertices renamed: old vertex `i` becomes `perm[i]`.
+    pub fn relabel_vertices(&self, perm: &[u32]) -> Self {
+        assert_eq!(perm.len(), self.num_vertices());
+        let mut positions = vec![DVec3::ZERO; self.num_vertices()];
+        for (i, &p) in perm.iter().enumerate() {
+            positions[p as usize] = self.positions[i];
+        }
+        Self {
+            positions,
+            indices: self.indices.iter().map(|&v| perm[v as usize]).collect(),
+            offsets: self.offsets.clone(),
+        }
+    }
+
+    /// The same mesh with faces in another order: new face `k` is old face `order[k]`.
+    pub fn reorder_faces(&self, order: &[u32]) -> Self {
+        let mut out =
+            Self::with_capacity(self.num_vertices(), self.num_faces(), self.num_corners());
+        out.positions = self.positions.clone();
+        for &j in order {
+            out.push_face(self.face(j as usize));
+        }
+        out
+    }
+
+    /// Bytes of the soup's own arrays (positions, indices, offsets).
+    pub fn heap_bytes(&self) -> usize {
+        self.positions.capacity() * std::mem::size_of::<DVec3>()
+            + self.indices.capacity() * 4
+            + self.offsets.capacity() * 4
+    }
+}
+
+/// The undirected edges of a checked soup, found by sorting the corners by vertex pair
+/// (O(c log c) for c corners), with each edge's one or two corners.
+///
+/// Edges are numbered in order of first appearance: edge 0 is the edge leaving corner 0, and
+/// so on, so every structure that numbers its edges from this table agrees with the others.
+#[derive(Clone, Debug)]
+pub struct Connectivity {
+    /// Per edge: the corner whose outgoing side is the edge (its smallest such corner), and the
+    /// corner of the face on the other side (`u32::MAX` on the boundary).
+    pub edge_corners: Vec<[u32; 2]>,
+    /// Per corner: the edge leaving it.
+    pub corner_edge: Vec<u32>,
+    /// Per corner: its face.
+    pub corner_face: Vec<u32>,
+}
+
+impl Connectivity {
+    fn build(soup: &PolygonSoup) -> Result<Self> {
+        let (connectivity, mut problems) = Self::analyse(soup, true);
+        match problems.pop() {
+            Some(first) => Err(first),
+            None => Ok(connectivity),
+        }
+    }
+
+    /// The edge analysis of a checked soup that goes on past problems: every edge with more
+    /// than two faces ([`Error::NonManifoldEdge`]) and every pair of faces traversing their
+    /// shared edge in the same direction ([`Error::InconsistentOrientation`]) is reported, in
+    /// order of its end vertices. An inconsistent pair is still stored as twins; a
+    /// non-manifold edge is stored with no twin (all its corners map to it, `edge_corners`
+    /// holds its first corner only), so that [`Connectivity::vertex_fans`] still works.
+    /// `stop_at_first` ends the analysis at the first problem (what constructions want).
+    pub fn analyse(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
+        let nc = soup.num_corners();
+        let mut corner_face = Vec::with_capacity(nc);
+        for (j, f) in soup.faces().enumerate() {
+            corner_face.extend(std::iter::repeat_n(j as u32, f.len()));
+        }
+        let next = |c: usize| soup.next_corner(c, corner_face[c] as usize);
+        // Sort key: (min vertex, max vertex) in the high bits, corner in the low bits.
+        let mut keys: Vec<(u64, u32)> = (0..nc)
+            .map(|c| {
+                let (a, b) = (soup.indices[c], soup.indices[next(c)]);
+                let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+                (((lo as u64) << 32) | hi as u64, c as u32)
+            })
+            .collect();
+        keys.sort_unstable();
+        let mut edge_corners: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
+        // Per edge whose corners are not one corner or one twin pair: the edge and its corners.
+        let mut unpaired: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        let mut problems = Vec::new();
+        let mut i = 0;
+        while i < keys.len() && (problems.is_empty() || !stop_at_first) {
+            let mut j = i + 1;
+            while j < keys.len() && keys[j].0 == keys[i].0 {
+                j += 1;
+            }
+            let (a, b) = ((keys[i].0 >> 32) as u32, keys[i].0 as u32);
+            let problem = match j - i {
+                1 => None,
+                2 => {
+                    let (c0, c1) = (keys[i].1 as usize, keys[i + 1].1 as usize);
+                    (soup.indices[c0] == soup.indices[c1]).then(|| Error::InconsistentOrientation {
+                        a: soup.indices[c0],
+                        b: soup.indices[next(c0)],
+                        f: corner_face[c0],
+                        g: corner_face[c1],
+                    })
+                }
+                _ => {
+                    let mut faces: Vec<u32> = keys[i..j]
+                        .iter()
+                        .map(|k| corner_face[k.1 as usize])
+                        .collect();
+                    faces.sort_unstable();
+                    Some(Error::NonManifoldEdge { a, b, faces })
+                }
+            };
+            match j - i {
+                1 => edge_corners.push([keys[i].1, u32::MAX]),
+                2 => edge_corners.push([keys[i].1, keys[i + 1].1]),
+                _ => {
+                    unpaired.push((edge_corners.len(), i..j));
+                    edge_corners.push([keys[i].1, u32::MAX]);
+                }
+            }
+            problems.extend(problem);
+            i = j;
+        }
+        // Number edges by first appearance (smallest corner).
+        let mut order: Vec<u32> = (0..edge_corners.len() as u32).collect();
+        order.sort_unstable_by_key(|&e| edge_corners[e as usize][0]);
+        let mut renumber = vec![0u32; order.len()];
+        for (new, &old) in order.iter().enumerate() {
+            renumber[old as usize] = new as u32;
+        }
+        let mut corner_edge = vec![u32::MAX; nc];
+        for (old, cs) in edge_corners.iter().enumerate() {
+            for c in cs.iter().filter(|&&c| c != u32::MAX) {
+                corner_edge[*c as usize] = renumber[old];
+            }
+        }
+        for (old, range) in unpaired {
+            for k in &keys[range] {
+                corner_edge[k.1 as usize] = renumber[old];
+            }
+        }
+        let edge_corners = order.iter().map(|&e| edge_corners[e as usize]).collect();
+        let connectivity = Self {
+            edge_corners,
+            corner_edge,
+            corner_face,
+        };
+        (connectivity, problems)
+    }
+
+    /// Number of undirected edges.
+    pub fn num_edges(&self) -> usize {
+        self.edge_corners.len()
+    }
+
+    /// The corner on the other side of corner `c`'s outgoing edge, if the edge is interior.
+    #[inline]
+    pub fn twin_corner(&self, c: usize) -> Option<usize> {
+        let [c0, c1] = self.edge_corners[self.corner_edge[c] as usize];
+        // A corner that is neither (on an edge the lenient analysis left unpaired) has no twin.
+        let other = match c as u32 {
+            c if c == c0 => c1,
+            c if c == c1 => c0,
+            _ => u32::MAX,
+        };
+        (other != u32::MAX).then_some(other as usize)
+    }
+
+    /// Per vertex, the number of fans its faces fall into (0 for an unused vertex, 1 for a
+    /// manifold vertex). Union-find over corners joined across interior edges, O(c α(c)).
+    pub fn vertex_fans(&self, soup: &PolygonSoup) -> Vec<u32> {
+        let nc = soup.num_corners();
+        let mut parent: Vec<u32> = (0..nc as u32).collect();
+        fn find(parent: &mut [u32], mut x: u32) -> u32 {
+            while parent[x as usize] != x {
+                let p = parent[parent[x as usize] as usize];
+                parent[x as usize] = p;
+                x = p;
+            }
+            x
+        }
+        for &[c0, c1] in &self.edge_corners {
+            if c1 == u32::MAX {
+                continue;
+            }
+            let (c0, c1) = (c0 as usize, c1 as usize);
+            let n0 = soup.next_corner(c0, self.corner_face[c0] as usize);
+            let n1 = soup.next_corner(c1, self.corner_face[c1] as usize);
+            // c0 goes a->b, c1 goes b->a: at a, corners c0 and n1 meet; at b, n0 and c1. (A
+            // pair of the lenient analysis may both go a->b: then c0, c1 meet at a, n0, n1 at b.)
+            let same_direction = soup.indices[c0] == soup.indices[c1];
+            let meetings = if same_direction {
+                [(c0, c1), (n0, n1)]
+            } else {
+                [(c0, n1), (n0, c1)]
+            };
+            for (x, y) in meetings {
+                let (rx, ry) = (find(&mut parent, x as u32), find(&mut parent, y as u32));
+                if rx != ry {
+                    parent[rx as usize] = ry;
+                }
+            }
+        }
+        let mut fans = vec![0u32; soup.num_vertices()];
+        for c in 0..nc {
+            if find(&mut parent, c as u32) == c as u32 {
+                fans[soup.indices[c] as usize] += 1;
+            }
+        }
+        fans
+    }
+
+    /// Fails with [`Error::NonManifoldVertex`] on the first vertex whose star is not one fan.
+    pub fn check_vertex_fans(&self, soup: &PolygonSoup) -> Result<()> {
+        match self
+            .vertex_fans(soup)
+            .iter()
+            .enumerate()
+            .find(|(_, &n)| n > 1)
+        {
+            Some((v, &fans)) => Err(Error::NonManifoldVertex {
+                vertex: v as u32,
+                fans: fans as usize,
+            }),
+            None => Ok(()),
+        }
+    }
+}

@@ -1,0 +1,330 @@
+//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers and
+//! the theoretical [`Cost`] each structure declares for each of them.
+//!
+//! Relations follow the notation `Rpq` of the CHE thesis chapter: given a p-simplex, the
+//! q-simplices around it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a
+//! callback (internal iteration), so they never allocate and are monomorphised in benchmarks; a
+//! caller that wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
+
+use crate::core::error::Result;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use glam::DVec3;
+
+/// Every operator a structure answers, in catalogue order.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Operator {
+    /// R00: vertex → neighbour vertices.
+    R00,
+    /// R01: vertex → incident edges.
+    R01,
+    /// R02: vertex → incident faces.
+    R02,
+    /// R10: edge → its two vertices.
+    R10,
+    /// R11: edge → the other edges of its incident faces (the edge star).
+    R11,
+    /// R12: edge → its one or two faces.
+    R12,
+    /// R20: face → its vertices in order.
+    R20,
+    /// R21: face → its edges in order.
+    R21,
+    /// R22: face → the faces across its edges.
+    R22,
+    /// Is a vertex on the boundary?
+    BoundaryVertex,
+    /// Is an edge on the boundary?
+    BoundaryEdge,
+    /// All boundary curves as closed loops of edges.
+    BoundaryCurves,
+    /// The edge after a given edge in a given face (the successor of the lecture on
+    /// polygon-mesh data structures).
+    EdgeSuccessor,
+    /// The edge before a given edge in a given face (the lecture's predecessor).
+    EdgePredecessor,
+}
+
+impl Operator {
+    /// All operators, in catalogue order.
+    pub const ALL: [Operator; 14] = [
+        Operator::R00,
+        Operator::R01,
+        Operator::R02,
+        Operator::R10,
+        Operator::R11,
+        Operator::R12,
+        Operator::R20,
+        Operator::R21,
+        Operator::R22,
+        Operator::BoundaryVertex,
+        Operator::BoundaryEdge,
+        Operator::BoundaryCurves,
+        Operator::EdgeSuccessor,
+        Operator::EdgePredecessor,
+    ];
+
+    /// The kebab-case name used in the CLI, JSON and report.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Operator::R00 => "r00",
+            Operator::R01 => "r01",
+            Operator::R02 => "r02",
+            Operator::R10 => "r10",
+            Operator::R11 => "r11",
+            Operator::R12 => "r12",
+            Operator::R20 => "r20",
+            Operator::R21 => "r21",
+            Operator::R22 => "r22",
+            Operator::BoundaryVertex => "boundary-vertex",
+            Operator::BoundaryEdge => "boundary-edge",
+            Operator::BoundaryCurves => "boundary-curves",
+            Operator::EdgeSuccessor => "edge-successor",
+            Operator::EdgePredecessor => "edge-predecessor",
+        }
+    }
+
+    /// The operator of a kebab-case name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|op| op.name() == name)
+    }
+}
+
+/// A theoretical cost, as the tables of the lecture on polygon-mesh data structures and
+/// Table 4.1 of the CHE thesis chapter state it.
+///
+/// `n0`, `n1`, `n2` are the numbers of vertices, edges and faces; `k` the size of the local
+/// neighbourhood (valence of a vertex, corners of a face); `∂n1` the boundary edges.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Cost {
+    /// O(1).
+    Constant,
+    /// O(log n): a binary search.
+    Log,
+    /// O(k): proportional to the local neighbourhood (deg v, or the k of a k-gon).
+    Local,
+    /// O(∂n1): proportional to the boundary.
+    Boundary,
+    /// O(n): a scan of one of the element lists.
+    Linear,
+    /// O(k·n): a scan for each of the k local elements.
+    LocalTimesLinear,
+    /// O(n²): a scan for each element of a scan.
+    Quadratic,
+}
+
+impl Cost {
+    /// How the cost reads in the lecture's notation.
+    pub const fn notation(self) -> &'static str {
+        match self {
+            Cost::Constant => "O(1)",
+            Cost::Log => "O(log n)",
+            Cost::Local => "O(k)",
+            Cost::Boundary => "O(∂n1)",
+            Cost::Linear => "O(n)",
+            Cost::LocalTimesLinear => "O(k·n)",
+            Cost::Quadratic => "O(n²)",
+        }
+    }
+
+    /// The exponent of time per query against mesh size this cost predicts on meshes of
+    /// bounded valence (0 for O(1), O(k), O(log n) (≈0); 1 for scans). Boundary: the
+    /// generated meshes' boundaries grow like √n, so 0.5.
+    pub const fn expected_exponent(self) -> f64 {
+        match self {
+            Cost::Constant | Cost::Log | Cost::Local => 0.0,
+            Cost::Boundary => 0.5,
+            Cost::Linear | Cost::LocalTimesLinear => 1.0,
+            Cost::Quadratic => 2.0,
+        }
+    }
+}
+
+/// What kinds of meshes a structure can store.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Capabilities {
+    /// Only triangles (others are refused with [`crate::Error::NotTriangles`]).
+    pub triangles_only: bool,
+    /// Vertices whose faces form several fans are stored and answered correctly (otherwise
+    /// refused with [`crate::Error::NonManifoldVertex`]).
+    pub non_manifold_vertices: bool,
+    /// Only the regular grids of [`crate::testing::meshes::grid`] (others refused with
+    /// [`crate::Error::NotAGrid`]).
+    pub grids_only: bool,
+    /// Vertices are identified by position, so two vertices may not coincide (explicit
+    /// storage); such input is refused with [`crate::Error::CoincidentVertices`].
+    pub distinct_positions: bool,
+}
+
+impl Capabilities {
+    /// Polygons of any size, manifold vertices only.
+    pub const POLYGONS: Self = Self {
+        triangles_only: false,
+        non_manifold_vertices: false,
+        grids_only: false,
+        distinct_positions: false,
+    };
+}
+
+/// Boundary curves written into a caller-owned buffer: curve `i` is
+/// `edges[starts[i]..starts[i + 1]]`, its edges in walking order (consecutive edges share a
+/// vertex, the last one meets the first).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BoundaryCurves {
+    /// Edges of all curves, curve after curve.
+    pub edges: Vec<EdgeId>,
+    /// Start of each curve in `edges`, plus one final entry (`edges.len()`).
+    pub starts: Vec<u32>,
+}
+
+impl BoundaryCurves {
+    /// Empties the buffer, keeping its memory.
+    pub fn clear(&mut self) {
+        self.edges.clear();
+        self.starts.clear();
+        self.starts.push(0);
+    }
+
+    /// Closes the curve whose edges were pushed since the last call.
+    pub fn end_curve(&mut self) {
+        if self.starts.is_empty() {
+            self.starts.push(0);
+        }
+        self.starts.push(self.edges.len() as u32);
+    }
+
+    /// Number of curves.
+    pub fn len(&self) -> usize {
+        self.starts.len().saturating_sub(1)
+    }
+
+    /// `true` without curves.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The edges of curve `i`.
+    pub fn curve(&self, i: usize) -> &[EdgeId] {
+        &self.edges[self.starts[i] as usize..self.starts[i + 1] as usize]
+    }
+}
+
+/// One interface to every mesh data structure of the lab.
+///
+/// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's own
+/// and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer and
+/// never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20
+/// and R21 answer in the face's cyclic order.
+pub trait MeshTopology: Sized {
+    /// The kebab-case name used in the CLI, JSON and report.
+    const NAME: &'static str;
+
+    /// What kinds of meshes it stores.
+    fn capabilities() -> Capabilities;
+
+    /// The theoretical cost of `op` in this structure (the polygon-mesh lecture's tables, the CHE
+    /// thesis chapter's Table 4.1).
+    fn cost(op: Operator) -> Cost;
+
+    /// Builds the structure; fails with a typed error on input it cannot store.
+    fn from_soup(soup: &PolygonSoup) -> Result<Self>;
+
+    /// Number of vertices (including unused ones).
+    fn num_vertices(&self) -> usize;
+    /// Number of undirected edges.
+    fn num_edges(&self) -> usize;
+    /// Number of faces.
+    fn num_faces(&self) -> usize;
+    /// Number of boundary edges (edges with one face).
+    fn num_boundary_edges(&self) -> usize {
+        let mut n = 0;
+        self.for_each_edge(|e| n += self.is_boundary_edge(e) as usize);
+        n
+    }
+
+    /// Calls `f` with every edge id, each once.
+    ///
+    /// An enumeration, not one of the queries: the callers (the harness building its query
+    /// lists, the conformance suite) run it once, outside any timing, so a structure that
+    /// stores no edges may allocate here. CHE level 0 does: without `O[]` it sorts its
+    /// half-edges by vertex pair in a temporary buffer (O(n2 log n2)) instead of scanning for
+    /// each half-edge's twin (O(n2²)), and its `num_edges` counts this enumeration.
+    fn for_each_edge(&self, f: impl FnMut(EdgeId));
+
+    /// Position of vertex `v`.
+    fn position(&self, v: VertexId) -> DVec3;
+
+    /// R00: the neighbour vertices of `v`.
+    fn vertex_vertices(&self, v: VertexId, f: impl FnMut(VertexId));
+    /// R01: the edges incident to `v`.
+    fn vertex_edges(&self, v: VertexId, f: impl FnMut(EdgeId));
+    /// R02: the faces incident to `v`.
+    fn vertex_faces(&self, v: VertexId, f: impl FnMut(FaceId));
+    /// R10: the two end vertices of `e`.
+    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2];
+    /// R11: the other edges of the faces incident to `e`.
+    fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId));
+    /// R12: the one or two faces of `e`.
+    fn edge_faces(&self, e: EdgeId, f: impl FnMut(FaceId));
+    /// R20: the vertices of `face` in order.
+    fn face_vertices(&self, face: FaceId, f: impl FnMut(VertexId));
+    /// R21: the edges of `face` in order (edge i joins vertex i and i + 1 of R20).
+    fn face_edges(&self, face: FaceId, f: impl FnMut(EdgeId));
+    /// R22: the faces across the edges of `face` (boundary edges contribute nothing).
+    fn face_faces(&self, face: FaceId, f: impl FnMut(FaceId));
+
+    /// Is `v` on the boundary (incident to a boundary edge)?
+    fn is_boundary_vertex(&self, v: VertexId) -> bool;
+    /// Is `e` on the boundary (one face only)?
+    fn is_boundary_edge(&self, e: EdgeId) -> bool;
+    /// Writes every boundary curve into `out` (cleared first).
+    fn boundary_curves(&self, out: &mut BoundaryCurves);
+    /// The edge after `e` in `face`'s cycle, `None` if `e` is not an edge of `face`.
+    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId>;
+    /// The edge before `e` in `face`'s cycle, `None` if `e` is not an edge of `face`.
+    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId>;
+
+    /// Checks every invariant of the structure's containers.
+    fn validate(&self) -> Result<()>;
+
+    /// Bytes its containers hold (capacity of every array, each record counted once): what
+    /// the structure *should* take, to compare with the allocator's measurement.
+    fn heap_bytes(&self) -> usize;
+
+    /// For teaching: what the structure stores, record by record, with the lecture's field names.
+    fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
+
+    /// Construction the way a baseline's own API does it, for timing (OpenMesh: `reserve`,
+    /// `add_vertex`, `add_face`, without the lab's up-front manifold checks, which are not
+    /// OpenMesh's cost). `None` (the default): [`MeshTopology::from_soup`] is what is timed.
+    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
+        let _ = soup;
+        None
+    }
+
+    /// A whole sweep of `op` over every element, run by the structure itself and folded into
+    /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
+    /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
+    /// the harness run its one generic kernel; `Some(Err(..))` when the library failed inside
+    /// the loop (a loud error of the measurement, never a silent zero).
+    fn native_sweep(&self, op: Operator) -> Option<Result<u64>> {
+        let _ = op;
+        None
+    }
+
+    /// Like [`MeshTopology::native_sweep`], for the sampled vertex or face queries `ids`.
+    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        let _ = (op, ids);
+        None
+    }
+
+    /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
+    /// Takes `&mut self` because a baseline may keep its results (normals) in the mesh; running
+    /// it twice must give the same result.
+    fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
+        let _ = name;
+        None
+    }
+}

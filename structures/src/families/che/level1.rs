@@ -1,0 +1,172 @@
+//! CHE level 1, adjacency between triangles (§4.2): adds `O[]`, the opposite of each
+//! half-edge (`-1` on the boundary). Edge and triangle relations become O(1); the vertex star
+//! still scans `V[]` for its first half-edge (Algorithm 6).
+
+use super::build::{build_chapter, build_fast, Checked};
+use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
+use super::{CheL0, CheLevel, StarRead};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{Cost, MeshTopology, Operator};
+use glam::DVec3;
+
+/// CHE level 1: level 0 plus opposite half-edges; see the [module docs](super).
+///
+/// Its topology is exactly 24 bytes per triangle: `V[]` and `O[]`, 4 bytes per half-edge each.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheL1 {
+    /// `G[]` and `V[]`.
+    l0: CheL0,
+    /// `O[he]`: the opposite half-edge of he (same vertices, other direction), negative on the
+    /// boundary (`-1` here; level 3 stores `-k` for boundary curve k).
+    o: Vec<i32>,
+}
+
+/// Table 4.1's level-1 column, and the cost of the operators the table does not list.
+pub(crate) fn level1_cost(op: Operator) -> Cost {
+    match op {
+        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => Cost::Linear,
+        Operator::BoundaryCurves => Cost::Linear,
+        _ => Cost::Constant,
+    }
+}
+
+che_topology!(CheL1, "che-l1", level1_cost);
+
+impl CheL1 {
+    /// Level 1 of checked containers, and the `VH[]` the checks computed (level 2 keeps it).
+    pub(crate) fn from_checked(c: Checked) -> (Self, Vec<i32>) {
+        let Checked { g, v, o, vh } = c;
+        let l0 = CheL0::from_parts(g, v);
+        (Self { l0, o }, vh)
+    }
+
+    fn build(soup: &PolygonSoup) -> Result<Self> {
+        build_fast(soup, <Self as MeshTopology>::NAME).map(|c| Self::from_checked(c).0)
+    }
+
+    /// Builds level 1 with the chapter's Algorithm 1 (a map keyed by vertex pairs) instead of
+    /// the fast construction of `from_soup`; the containers are identical.
+    pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
+        build_chapter(soup, <Self as MeshTopology>::NAME).map(|c| Self::from_checked(c).0)
+    }
+
+    /// `G[]`: the vertex positions.
+    pub fn geometry(&self) -> &[DVec3] {
+        self.l0.geometry()
+    }
+
+    /// `O[]`: the opposite of each half-edge, negative on the boundary.
+    pub fn opposite(&self) -> &[i32] {
+        &self.o
+    }
+
+    /// Level 0 (`G[]`, `V[]`).
+    pub fn level0(&self) -> &CheL0 {
+        &self.l0
+    }
+
+    /// `O[]` to relabel with boundary curve numbers (level 3, Algorithm 4).
+    pub(crate) fn opposite_mut(&mut self) -> &mut [i32] {
+        &mut self.o
+    }
+
+    fn check_containers(&self) -> Result<()> {
+        self.check_opposites(<Self as MeshTopology>::NAME)
+    }
+
+    /// `V[]` is valid and `O[]` pairs half-edges with the same vertices in opposite directions.
+    pub(crate) fn check_opposites(&self, structure: &'static str) -> Result<()> {
+        self.l0.check_start_vertices(structure)?;
+        let v = self.start_vertices();
+        if self.o.len() != v.len() {
+            return Err(Error::invariant(structure, "O[] and V[] differ in length"));
+        }
+        for he in (0..v.len() as u32).map(HalfEdgeId) {
+            let Some(o) = opposite_of(&self.o, he) else {
+                continue;
+            };
+            let paired = o.index() < v.len()
+                && o != he
+                && self.o[o.index()] == he.0 as i32
+                && v[o.index()] == v[next(he).index()]
+                && v[next(o).index()] == v[he.index()];
+            if !paired {
+                return Err(Error::invariant(
+                    structure,
+                    format!("O[{he}] = {o} is not its opposite half-edge"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    pub(crate) fn container_bytes(&self) -> usize {
+        self.l0.container_bytes() + vec_bytes(&self.o)
+    }
+
+    pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        self.l0.print_containers(w)?;
+        writeln!(w, "O[] opposite half-edge (negative on the boundary):")?;
+        print_container(w, "O[]", "he", &self.o)
+    }
+}
+
+impl CheLevel for CheL1 {
+    const LEVEL: u8 = 1;
+    const STAR_ALGORITHM: &'static str =
+        "Algorithm 6 (§4.6): scan V[] for a first half-edge, turn back to the boundary, walk the fan";
+
+    fn start_vertices(&self) -> &[u32] {
+        self.l0.start_vertices()
+    }
+
+    /// Algorithm 6: the first half-edge leaving `v` is found by scanning `V[]`. It may be an
+    /// interior half-edge of a boundary vertex (the pseudo-code assumes it is not), so the
+    /// walk first turns back, `h ← next(O[h])`, to the boundary half-edge leaving `v` (or all
+    /// the way round), then walks the fan forward as Algorithm 7 does.
+    fn vertex_star(
+        &self,
+        v: VertexId,
+        mut trace: impl FnMut(StarRead),
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
+        let mut first = None;
+        for (he, &start) in (0u32..).map(HalfEdgeId).zip(self.start_vertices()) {
+            let vertex = VertexId(start);
+            trace(StarRead::Vertex { he, vertex });
+            if vertex == v {
+                first = Some(he);
+                break;
+            }
+        }
+        let he0 = first?;
+        let mut h = he0;
+        loop {
+            trace(StarRead::Opposite {
+                he: h,
+                opposite: self.o[h.index()],
+            });
+            match opposite_of(&self.o, h) {
+                None => break,
+                Some(o) => h = next(o),
+            }
+            if h == he0 {
+                break;
+            }
+        }
+        fan_walk_algorithm_7(&self.o, h, trace, corner)
+    }
+
+    #[inline(always)]
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
+        opposite_of(&self.o, he)
+    }
+
+    /// The smaller half-edge of the edge, `min(he, O[he])` (the key of level 2's `EH`).
+    #[inline(always)]
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        EdgeId(opposite_of(&self.o, he).map_or(he, |o| o.min(he)).0)
+    }
+}

@@ -1,0 +1,186 @@
+//! CHE level 2, the cells (§4.3): adds `VH[]`, one half-edge leaving each vertex (the boundary
+//! one for a boundary vertex, Algorithm 3), and the edge map `EH` (Algorithm 2). The vertex
+//! star starts at `VH[v]` (Algorithm 7): O(deg v).
+
+use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
+use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
+use super::{CheL1, CheLevel, StarRead};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{Cost, MeshTopology, Operator};
+use glam::DVec3;
+
+/// CHE level 2: level 1 plus a half-edge per vertex and the edge map; see the
+/// [module docs](super).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheL2 {
+    /// `G[]`, `V[]`, `O[]`.
+    l1: CheL1,
+    /// `VH[v]`: a half-edge leaving v, the boundary one if v is on the boundary (so
+    /// `O[VH[v]] < 0` tells boundary vertices); `-1` for a vertex no triangle uses.
+    vh: Vec<i32>,
+    /// `EH`: the edge map's keys in increasing order, each edge's smaller half-edge
+    /// `min(he, O[he])`; edge `EH[i]`'s properties would live at rank i.
+    eh: Vec<u32>,
+}
+
+/// Table 4.1's level-2 column (level 1 with the vertex star in O(deg v)), and the cost of the
+/// operators the table does not list.
+pub(crate) fn level2_cost(op: Operator) -> Cost {
+    match op {
+        Operator::R00 | Operator::R01 | Operator::R02 => Cost::Local,
+        Operator::BoundaryVertex => Cost::Constant,
+        _ => level1_cost(op),
+    }
+}
+
+che_topology!(CheL2, "che-l2", level2_cost);
+
+impl CheL2 {
+    /// Level 2 of checked containers, with `EH` built by `edge_map`.
+    pub(crate) fn from_checked(c: Checked, edge_map: fn(&[i32]) -> Vec<u32>) -> Self {
+        let (l1, vh) = CheL1::from_checked(c);
+        let eh = edge_map(l1.opposite());
+        Self { l1, vh, eh }
+    }
+
+    fn build(soup: &PolygonSoup) -> Result<Self> {
+        build_fast(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_checked(c, edge_map_by_scan))
+    }
+
+    /// Builds level 2 with the chapter's Algorithms 1, 2 and 3 (maps) instead of the fast
+    /// construction of `from_soup`; the containers are identical.
+    pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
+        build_chapter(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_checked(c, edge_map_algorithm_2))
+    }
+
+    /// `G[]`: the vertex positions.
+    pub fn geometry(&self) -> &[DVec3] {
+        self.l1.geometry()
+    }
+
+    /// Level 1 (`G[]`, `V[]`, `O[]`).
+    pub fn level1(&self) -> &CheL1 {
+        &self.l1
+    }
+
+    /// `VH[]`: a half-edge leaving each vertex, `-1` for an unused vertex.
+    pub fn vertex_half_edge(&self) -> &[i32] {
+        &self.vh
+    }
+
+    /// `EH`: the edge map's keys (each edge's smaller half-edge), in increasing order.
+    pub fn edge_map(&self) -> &[u32] {
+        &self.eh
+    }
+
+    /// `O[]` to relabel with boundary curve numbers (level 3, Algorithm 4).
+    pub(crate) fn opposite_mut(&mut self) -> &mut [i32] {
+        self.l1.opposite_mut()
+    }
+
+    fn check_containers(&self) -> Result<()> {
+        self.check_cells(<Self as MeshTopology>::NAME)
+    }
+
+    /// Levels 0–1 are valid, `VH[]` follows Algorithm 3's rule and `EH` holds every edge once.
+    pub(crate) fn check_cells(&self, structure: &'static str) -> Result<()> {
+        self.l1.check_opposites(structure)?;
+        let (v, o) = (self.start_vertices(), self.l1.opposite());
+        if self.vh.len() != self.geometry().len() {
+            return Err(Error::invariant(structure, "VH[] and G[] differ in length"));
+        }
+        for (he, (&start, &opposite)) in v.iter().zip(o).enumerate() {
+            let stored = self.vh[start as usize];
+            let fits = stored >= 0
+                && v.get(stored as usize) == Some(&start)
+                && (opposite >= 0 || o[stored as usize] < 0);
+            if !fits {
+                return Err(Error::invariant(
+                    structure,
+                    format!("VH[{start}] = {stored} breaks Algorithm 3's rule for half-edge {he}"),
+                ));
+            }
+        }
+        if self.eh != edge_map_by_scan(o) {
+            return Err(Error::invariant(
+                structure,
+                "EH does not hold each edge's smaller half-edge",
+            ));
+        }
+        Ok(())
+    }
+
+    pub(crate) fn container_bytes(&self) -> usize {
+        self.l1.container_bytes() + vec_bytes(&self.vh) + vec_bytes(&self.eh)
+    }
+
+    pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        self.l1.print_containers(w)?;
+        writeln!(
+            w,
+            "VH[] a half-edge leaving each vertex (the boundary one on the boundary):"
+        )?;
+        print_container(w, "VH[]", "v", &self.vh)?;
+        writeln!(
+            w,
+            "EH edge map: edge i is the half-edge EH[i] = min(he, O[he]):"
+        )?;
+        print_container(w, "EH[]", "i", &self.eh)
+    }
+}
+
+impl CheLevel for CheL2 {
+    const LEVEL: u8 = 2;
+    const STAR_ALGORITHM: &'static str = "Algorithm 7 (§4.6): start at VH[v], walk the fan";
+
+    fn start_vertices(&self) -> &[u32] {
+        self.l1.start_vertices()
+    }
+
+    /// Algorithm 7: the walk starts at `VH[v]`, the boundary half-edge of a boundary vertex,
+    /// so one pass in one direction reaches the whole star.
+    #[inline(always)]
+    fn vertex_star(
+        &self,
+        v: VertexId,
+        mut trace: impl FnMut(StarRead),
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
+        let he = self.vh[v.index()];
+        trace(StarRead::VertexHalfEdge { vertex: v, he });
+        if he < 0 {
+            return None;
+        }
+        fan_walk_algorithm_7(self.l1.opposite(), HalfEdgeId(he as u32), trace, corner)
+    }
+
+    #[inline(always)]
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
+        self.l1.twin(he)
+    }
+
+    #[inline(always)]
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        self.l1.edge_of(he)
+    }
+
+    /// `O[VH[v]] < 0` (§4.3).
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
+        let he = self.vh[v.index()];
+        he >= 0 && self.l1.opposite()[he as usize] < 0
+    }
+
+    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        for &he in &self.eh {
+            f(EdgeId(he));
+        }
+    }
+
+    fn edge_count(&self) -> usize {
+        self.eh.len()
+    }
+}

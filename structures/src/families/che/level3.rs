@@ -1,0 +1,168 @@
+//! CHE level 3, the boundary curves (§4.4): adds `CH[]`, one half-edge per boundary curve
+//! (Algorithm 4), and stores in `O[he]` the number of the curve of each boundary half-edge as
+//! a negative value (curve k → `-k`), so boundary tests stay `O[he] < 0`. The boundary curves
+//! are walked from `CH[]` (Algorithm 10) in O(∂n1).
+
+use super::build::{
+    boundary_curves_algorithm_4, build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan,
+};
+use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
+use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{BoundaryCurves, Cost, MeshTopology, Operator};
+use glam::DVec3;
+
+/// CHE level 3: level 2 plus one half-edge per boundary curve; see the [module docs](super).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheL3 {
+    /// `G[]`, `V[]`, `O[]` (boundary half-edges labelled `-k`), `VH[]`, `EH`.
+    l2: CheL2,
+    /// `CH[k - 1]`: a half-edge of boundary curve k (curves numbered from 1).
+    ch: Vec<u32>,
+}
+
+/// Table 4.1's level-3 column (level 2), with boundary curves in O(∂n1).
+fn level3_cost(op: Operator) -> Cost {
+    match op {
+        Operator::BoundaryCurves => Cost::Boundary,
+        _ => level2_cost(op),
+    }
+}
+
+che_topology!(CheL3, "che-l3", level3_cost);
+
+impl CheL3 {
+    fn from_level2(mut l2: CheL2) -> Self {
+        let ch = boundary_curves_algorithm_4(l2.opposite_mut());
+        Self { l2, ch }
+    }
+
+    fn build(soup: &PolygonSoup) -> Result<Self> {
+        build_fast(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_by_scan)))
+    }
+
+    /// Builds level 3 with the chapter's Algorithms 1–4 (maps) instead of the fast
+    /// construction of `from_soup`; the containers are identical.
+    pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
+        build_chapter(soup, <Self as MeshTopology>::NAME)
+            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_algorithm_2)))
+    }
+
+    /// `G[]`: the vertex positions.
+    pub fn geometry(&self) -> &[DVec3] {
+        self.l2.geometry()
+    }
+
+    /// Level 2 (`G[]`, `V[]`, `O[]` with curve labels, `VH[]`, `EH`).
+    pub fn level2(&self) -> &CheL2 {
+        &self.l2
+    }
+
+    /// `CH[]`: one half-edge of each boundary curve; `CH[k - 1]` is on curve k.
+    pub fn curve_half_edge(&self) -> &[u32] {
+        &self.ch
+    }
+
+    fn check_containers(&self) -> Result<()> {
+        let structure = <Self as MeshTopology>::NAME;
+        self.l2.check_cells(structure)?;
+        let o = self.l2.level1().opposite();
+        let mut walked = 0;
+        for (k, &start) in self.ch.iter().enumerate() {
+            let label = -(k as i32 + 1);
+            let mut he = HalfEdgeId(start);
+            loop {
+                if o.get(he.index()) != Some(&label) {
+                    return Err(Error::invariant(
+                        structure,
+                        format!(
+                            "half-edge {he} of boundary curve {} is not labelled {label}",
+                            k + 1
+                        ),
+                    ));
+                }
+                walked += 1;
+                he = next_boundary_half_edge(he, |h| self.twin(h));
+                if he.0 == start {
+                    break;
+                }
+            }
+        }
+        if walked != o.iter().filter(|&&x| x < 0).count() {
+            return Err(Error::invariant(
+                structure,
+                "a boundary half-edge is on no curve of CH[]",
+            ));
+        }
+        Ok(())
+    }
+
+    fn container_bytes(&self) -> usize {
+        self.l2.container_bytes() + vec_bytes(&self.ch)
+    }
+
+    fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        self.l2.print_containers(w)?;
+        writeln!(
+            w,
+            "CH[] a half-edge of each boundary curve (O[he] = -k on curve k = index + 1):"
+        )?;
+        print_container(w, "CH[]", "k-1", &self.ch)
+    }
+}
+
+impl CheLevel for CheL3 {
+    const LEVEL: u8 = 3;
+    const STAR_ALGORITHM: &'static str = CheL2::STAR_ALGORITHM;
+
+    fn start_vertices(&self) -> &[u32] {
+        self.l2.start_vertices()
+    }
+
+    #[inline(always)]
+    fn vertex_star(
+        &self,
+        v: VertexId,
+        trace: impl FnMut(StarRead),
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId> {
+        self.l2.vertex_star(v, trace, corner)
+    }
+
+    #[inline(always)]
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId> {
+        self.l2.twin(he)
+    }
+
+    #[inline(always)]
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        self.l2.edge_of(he)
+    }
+
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
+        self.l2.vertex_on_boundary(v)
+    }
+
+    fn triangles_across(&self, t: FaceId, f: impl FnMut(FaceId)) {
+        self.l2.triangles_across(t, f)
+    }
+
+    fn each_edge(&self, f: impl FnMut(EdgeId)) {
+        self.l2.each_edge(f)
+    }
+
+    fn edge_count(&self) -> usize {
+        self.l2.edge_count()
+    }
+
+    /// Algorithm 10 (§4.6): each curve walked from its half-edge in `CH[]`, O(∂n1).
+    fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
+        out.clear();
+        for &he in &self.ch {
+            walk_boundary_curve(HalfEdgeId(he), |h| self.twin(h), out);
+        }
+    }
+}

@@ -1,0 +1,342 @@
+//! # Compact Half-Edge (CHE), levels 0–3
+//!
+//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a
+//! triangle mesh stored as integer arrays, in four levels that each add containers and answer the
+//! relations with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by
+//! cell.
+//!
+//! Vertices, half-edges and triangles are non-negative integers. Triangle `t` owns the
+//! half-edges `3t, 3t+1, 3t+2`; half-edge `he` belongs to triangle `he / 3`, and
+//! `next(he) = 3⌊he/3⌋ + (he+1) % 3`, `prev(he) = 3⌊he/3⌋ + (he+2) % 3` (§4.1, [`next`],
+//! [`prev`], [`triangle`]). Half-edge `3t + i` leaves vertex `i` of input face `t`.
+//!
+//! | level | type | adds (§) | bytes |
+//! |---|---|---|---|
+//! | 0 "triangle soup" | [`CheL0`] | `G[v]` geometry, `V[he]` start vertex (§4.1) | 24 per vertex + 12 per triangle |
+//! | 1 adjacency | [`CheL1`] | `O[he]` opposite half-edge, `-1` on the boundary (§4.2, Algorithm 1) | + 12 per triangle (topology: exactly 24 per triangle) |
+//! | 2 cells | [`CheL2`] | `VH[v]` one half-edge per vertex (Algorithm 3), `EH` the edge map (Algorithm 2) (§4.3) | + 4 per vertex + 4 per edge |
+//! | 3 boundary curves | [`CheL3`] | `CH[k-1]` one half-edge of boundary curve k, and `O[he] = -k` on curve k (§4.4, Algorithm 4) | + 4 per curve |
+//!
+//! Every container is a `u32` or `i32` array (the chapter's `-1` is kept as a signed value in
+//! `O[]` and `VH[]`), so a mesh may have at most `i32::MAX` half-edges.
+//!
+//! ## Relations and their cost (Table 4.1 of §4.6, plus what the table does not list)
+//!
+//! | operator | L0 | L1 | L2 | L3 |
+//! |---|---|---|---|---|
+//! | R00, R01, R02 | O(n2) Algorithm 5 | O(n2) Algorithm 6 | O(deg v) Algorithm 7 | O(deg v) Algorithm 7 |
+//! | R10 | O(1) | O(1) | O(1) | O(1) |
+//! | R11, R12 | O(n2) Algorithm 8 | O(1) | O(1) | O(1) |
+//! | R20, R21 | O(1) | O(1) | O(1) | O(1) |
+//! | R22 | O(n2) Algorithm 9 | O(1) | O(1) | O(1) |
+//! | boundary vertex | O(n2) (Algorithm 5's scan) | O(n2) (Algorithm 6) | O(1): `O[VH[v]] < 0` | O(1) |
+//! | boundary edge | O(n2) (Algorithm 8's scan) | O(1): `O[he] < 0` | O(1) | O(1) |
+//! | boundary curves | O(n2²): a scan per half-edge | O(n2) scan, §4.6 | O(n2) | O(∂n1) Algorithm 10 (each step turns around one vertex) |
+//! | successor, predecessor | O(1) | O(1) | O(1) | O(1) |
+//!
+//! At level 0 the chapter gathers a star's simplices in a set, which a query may not
+//! allocate: every edge and neighbour of a vertex is met as a half-edge leaving it except, at a
+//! boundary vertex, the boundary edge entering it, whose far end is recovered from sums over
+//! the same scan (the "missing number" of two lists) and its half-edge by a second scan.
+//! A level-0 edge's boundary test is Algorithm 8's scan, O(n2), so the boundary curves (and
+//! `num_boundary_edges`) of level 0 cost a scan per half-edge, O(n2²): keep level 0 to small
+//! meshes or to the operators Table 4.1 lists. Enumerating the edges (`for_each_edge`,
+//! `num_edges`) is no relation of the chapter and would cost the same O(n2²) by Algorithm 8;
+//! level 0 instead sorts its half-edges by their vertex pair in a temporary buffer,
+//! O(n2 log n2), the one place a CHE level allocates to answer (the exception the trait's
+//! [`for_each_edge`](crate::MeshTopology::for_each_edge) documents).
+//!
+//! Successor and predecessor are O(1) at every level: the three half-edges of the face are
+//! `3t..3t+3`, so the edge is found among them by its end vertices. The boundary curves of
+//! levels 0–2 also check each boundary half-edge against the curves already written (a query
+//! may not allocate a visited array), which adds O(∂n1²): on the lab's meshes ∂n1 ~ √n2.
+//!
+//! ## Edge ids
+//!
+//! An edge is represented by one of its half-edges, as the chapter does (`E_id e = he`):
+//! `EdgeId(he)`. At level 0 there is no `O[]`, so *either* half-edge of an interior edge names it,
+//! and the relations answer with the half-edge they read;
+//! [`MeshTopology::for_each_edge`](crate::MeshTopology::for_each_edge) lists the smaller one. From
+//! level 1 on, answers always give the smaller half-edge `min(he, O[he])` (the boundary half-edge
+//! for a boundary edge): exactly the keys of level 2's `EH` (Algorithm 2).
+//!
+//! ## What is refused
+//!
+//! Triangles only ([`Error::NotTriangles`](crate::Error::NotTriangles)). Non-manifold edges
+//! ([`Error::NonManifoldEdge`](crate::Error::NonManifoldEdge), naming the edge and its faces) and
+//! inconsistent orientation are refused as everywhere in the lab. Non-manifold vertices are refused
+//! ([`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex)): `VH[v]` stores one half-edge
+//! and the vertex star (Algorithms 6, 7) walks one fan, so a second fan would be silently missed.
+//!
+//! ## Construction
+//!
+//! [`opposites_algorithm_1`] is Algorithm 1 as written (a `HashMap` keyed by the sorted vertex
+//! pair); [`opposites_by_buckets`] builds the identical `O[]` without hashing, by a counting
+//! sort of the half-edges on their smaller vertex. `from_soup` uses the fast one and
+//! `from_soup_chapter` the chapter's algorithms; a proptest checks they agree.
+//!
+//! Note on the pseudo-code: Algorithms 6 and 7 step `h ← next(O[h])`, which from the boundary
+//! half-edge stored in `VH[v]` stops at once; the walk here ([`fan_walk_algorithm_7`]) turns the
+//! other way, `h ← O[prev(h)]`, which from that half-edge reaches every triangle of the star.
+//! Algorithm 10 steps `next(O[next(he)])` even when `next(he)` is on the boundary; the walk here
+//! ([`next_boundary_half_edge`]) is Algorithm 4's inner loop, which stops there.
+
+mod build;
+mod level0;
+mod level1;
+mod level2;
+mod level3;
+mod topology;
+
+pub use build::{
+    boundary_curves_algorithm_4, edge_map_algorithm_2, edge_map_by_scan, opposites_algorithm_1,
+    opposites_and_vertex_half_edges, opposites_by_buckets, vertex_half_edges_algorithm_3,
+};
+pub use level0::CheL0;
+pub use level1::CheL1;
+pub use level2::CheL2;
+pub use level3::CheL3;
+
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::topology::BoundaryCurves;
+use topology::che_topology;
+
+/// `next(he)`: the following half-edge of the same triangle (§4.1).
+#[inline(always)]
+pub const fn next(he: HalfEdgeId) -> HalfEdgeId {
+    HalfEdgeId(if he.0 % 3 == 2 { he.0 - 2 } else { he.0 + 1 })
+}
+
+/// `prev(he)`: the preceding half-edge of the same triangle (§4.1).
+#[inline(always)]
+pub const fn prev(he: HalfEdgeId) -> HalfEdgeId {
+    HalfEdgeId(if he.0.is_multiple_of(3) {
+        he.0 + 2
+    } else {
+        he.0 - 1
+    })
+}
+
+/// The triangle `⌊he/3⌋` that owns half-edge `he` (§4.1).
+#[inline(always)]
+pub const fn triangle(he: HalfEdgeId) -> FaceId {
+    FaceId(he.0 / 3)
+}
+
+/// The half-edge that represents edge `e` (`E_id e = he`, §4.6).
+#[inline(always)]
+pub const fn half_edge(e: EdgeId) -> HalfEdgeId {
+    HalfEdgeId(e.0)
+}
+
+/// `O[he]` as a half-edge, `None` on the boundary (any negative value: `-1`, or `-k` at level 3).
+#[inline(always)]
+pub fn opposite_of(o: &[i32], he: HalfEdgeId) -> Option<HalfEdgeId> {
+    let x = o[he.index()];
+    (x >= 0).then_some(HalfEdgeId(x as u32))
+}
+
+/// The half-edges of triangle `t`: `3t, 3t+1, 3t+2` (§4.1).
+#[inline(always)]
+pub fn half_edges_of(t: FaceId) -> impl Iterator<Item = HalfEdgeId> {
+    (3 * t.0..3 * t.0 + 3).map(HalfEdgeId)
+}
+
+/// One read a vertex-star algorithm makes, reported to a trace (`topolab explain che --trace`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum StarRead {
+    /// `V[he]` was read (the scans of levels 0 and 1).
+    Vertex {
+        /// The half-edge.
+        he: HalfEdgeId,
+        /// Its start vertex.
+        vertex: VertexId,
+    },
+    /// `O[he]` was read.
+    Opposite {
+        /// The half-edge.
+        he: HalfEdgeId,
+        /// Its opposite (negative on the boundary).
+        opposite: i32,
+    },
+    /// `VH[v]` was read (levels 2 and 3).
+    VertexHalfEdge {
+        /// The vertex.
+        vertex: VertexId,
+        /// Its stored half-edge (`-1` for an unused vertex).
+        he: i32,
+    },
+    /// A triangle of the star was reached through `he`, the half-edge leaving the vertex.
+    Corner {
+        /// The half-edge leaving the vertex.
+        he: HalfEdgeId,
+    },
+    /// The star ends at this boundary half-edge entering the vertex (boundary vertices only).
+    Closing {
+        /// The half-edge entering the vertex.
+        he: HalfEdgeId,
+    },
+}
+
+/// What every CHE level provides; the relations common to all levels are built on it once.
+///
+/// Public so that teaching code (`topolab explain che`) can trace each level's vertex star.
+pub trait CheLevel {
+    /// The level's number (0–3).
+    const LEVEL: u8;
+    /// The section of the chapter and the algorithm of its vertex star.
+    const STAR_ALGORITHM: &'static str;
+
+    /// `V[]`: the start vertex of each half-edge.
+    fn start_vertices(&self) -> &[u32];
+
+    /// The vertex star of `v` by this level's algorithm: calls `corner(he)` for the half-edge
+    /// leaving `v` in each triangle of its star, reports every container read to `trace`, and
+    /// returns the boundary half-edge entering `v` if `v` is on the boundary.
+    fn vertex_star(
+        &self,
+        v: VertexId,
+        trace: impl FnMut(StarRead),
+        corner: impl FnMut(HalfEdgeId),
+    ) -> Option<HalfEdgeId>;
+
+    /// The opposite of `he` if its edge is interior (level 0: Algorithm 8's scan).
+    fn twin(&self, he: HalfEdgeId) -> Option<HalfEdgeId>;
+
+    /// The edge id this level answers for half-edge `he` (see the module docs).
+    #[inline(always)]
+    fn edge_of(&self, he: HalfEdgeId) -> EdgeId {
+        EdgeId(he.0)
+    }
+
+    /// Is `v` on the boundary? Defaults to walking the star (levels 0 and 1).
+    fn vertex_on_boundary(&self, v: VertexId) -> bool {
+        self.vertex_star(v, |_| {}, |_| {}).is_some()
+    }
+
+    /// R22 of triangle `t`. Defaults to the triangles across its three half-edges.
+    fn triangles_across(&self, t: FaceId, mut f: impl FnMut(FaceId)) {
+        for he in half_edges_of(t) {
+            if let Some(o) = self.twin(he) {
+                f(triangle(o));
+            }
+        }
+    }
+
+    /// Every edge once. Defaults to the half-edges that are the smaller of their pair.
+    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
+            if self.twin(he).is_none_or(|o| he < o) {
+                f(EdgeId(he.0));
+            }
+        }
+    }
+
+    /// Number of edges. Defaults to counting [`CheLevel::each_edge`].
+    fn edge_count(&self) -> usize {
+        let mut n = 0;
+        self.each_edge(|_| n += 1);
+        n
+    }
+
+    /// The boundary curves. Defaults to the scan of levels 0–2 (§4.6): every boundary
+    /// half-edge not yet on a written curve starts a new curve.
+    fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
+        out.clear();
+        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
+            if self.twin(he).is_none() && !out.edges.contains(&EdgeId(he.0)) {
+                walk_boundary_curve(he, |h| self.twin(h), out);
+            }
+        }
+    }
+}
+
+/// Writes the boundary curve through boundary half-edge `start` into `out` as one curve.
+pub(crate) fn walk_boundary_curve(
+    start: HalfEdgeId,
+    twin: impl Fn(HalfEdgeId) -> Option<HalfEdgeId>,
+    out: &mut BoundaryCurves,
+) {
+    let mut he = start;
+    loop {
+        out.edges.push(EdgeId(he.0));
+        he = next_boundary_half_edge(he, &twin);
+        if he == start {
+            break;
+        }
+    }
+    out.end_curve();
+}
+
+/// The boundary half-edge that follows boundary half-edge `he` on its curve: it leaves the
+/// vertex `he` enters, found by turning around that vertex (Algorithm 4's inner loop).
+#[inline]
+pub fn next_boundary_half_edge(
+    he: HalfEdgeId,
+    twin: impl Fn(HalfEdgeId) -> Option<HalfEdgeId>,
+) -> HalfEdgeId {
+    let mut g = next(he);
+    while let Some(o) = twin(g) {
+        g = next(o);
+    }
+    g
+}
+
+/// The loop of Algorithm 7 (§4.6): from `start`, a half-edge leaving a vertex, visits the
+/// half-edge leaving it in each triangle of its fan, stepping `h ← O[prev(h)]` (across the
+/// edge entering the vertex). Returns the boundary half-edge entering the vertex where the
+/// walk stops, or `None` when it came back to `start` (an interior vertex).
+///
+/// From a boundary half-edge (what `VH[v]` stores for a boundary vertex) it reaches the whole
+/// fan; see the module docs for why it does not step `next(O[h])` as the pseudo-code writes.
+#[inline(always)]
+pub fn fan_walk_algorithm_7(
+    o: &[i32],
+    start: HalfEdgeId,
+    mut trace: impl FnMut(StarRead),
+    mut corner: impl FnMut(HalfEdgeId),
+) -> Option<HalfEdgeId> {
+    let mut h = start;
+    loop {
+        trace(StarRead::Corner { he: h });
+        corner(h);
+        let entering = prev(h);
+        let opposite = o[entering.index()];
+        trace(StarRead::Opposite {
+            he: entering,
+            opposite,
+        });
+        if opposite < 0 {
+            trace(StarRead::Closing { he: entering });
+            return Some(entering);
+        }
+        h = HalfEdgeId(opposite as u32);
+        if h == start {
+            return None;
+        }
+    }
+}
+
+/// Prints a container as two rows: its indices and its values.
+pub(crate) fn print_container<T: std::fmt::Display>(
+    w: &mut dyn std::fmt::Write,
+    name: &str,
+    index: &str,
+    values: &[T],
+) -> std::fmt::Result {
+    write!(w, "  {index:<5}")?;
+    for i in 0..values.len() {
+        write!(w, "{i:>4}")?;
+    }
+    writeln!(w)?;
+    write!(w, "  {name:<5}")?;
+    for x in values {
+        write!(w, "{x:>4}")?;
+    }
+    writeln!(w)
+}
+
+/// `Vec` bytes as allocated (capacity).
+pub(crate) fn vec_bytes<T>(v: &Vec<T>) -> usize {
+    v.capacity() * std::mem::size_of::<T>()
+}

@@ -1,0 +1,150 @@
+//! The edge record of the lecture on 3D convex hulls, and what the incremental API keeps
+//! beside the records.
+
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use std::collections::HashMap;
+
+/// An edge's eight pointers, in the hull lecture's names (see the module docs for their meaning).
+/// `v1 == VertexId::INVALID` marks a removed edge.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub(super) struct EdgeRecord {
+    /// First end: e runs v1 → v2.
+    pub(super) v1: VertexId,
+    /// Second end.
+    pub(super) v2: VertexId,
+    /// The face on the left, running v1 → v2.
+    pub(super) fccw: FaceId,
+    /// The face on the right, running v2 → v1; none on the boundary.
+    pub(super) fcw: FaceId,
+    /// The edge before e in `fccw`.
+    pub(super) pccw: EdgeId,
+    /// The edge after e in `fccw`.
+    pub(super) nccw: EdgeId,
+    /// The edge before e in `fcw`.
+    pub(super) pcw: EdgeId,
+    /// The edge after e in `fcw`.
+    pub(super) ncw: EdgeId,
+}
+
+impl EdgeRecord {
+    /// A removed edge: every pointer none.
+    pub(super) const REMOVED: Self = Self {
+        v1: VertexId::INVALID,
+        v2: VertexId::INVALID,
+        fccw: FaceId::INVALID,
+        fcw: FaceId::INVALID,
+        pccw: EdgeId::INVALID,
+        nccw: EdgeId::INVALID,
+        pcw: EdgeId::INVALID,
+        ncw: EdgeId::INVALID,
+    };
+
+    #[inline]
+    pub(super) fn is_live(&self) -> bool {
+        self.v1.is_valid()
+    }
+
+    /// Is `f` on the left (`Some(true)`), on the right (`Some(false)`) or not a face of e?
+    #[inline]
+    pub(super) fn side(&self, f: FaceId) -> Option<bool> {
+        if !f.is_valid() {
+            None
+        } else if self.fccw == f {
+            Some(true)
+        } else if self.fcw == f {
+            Some(false)
+        } else {
+            None
+        }
+    }
+
+    /// The edge after e in face `f`'s cycle.
+    #[inline]
+    pub(super) fn next_in(&self, f: FaceId) -> Option<EdgeId> {
+        self.side(f)
+            .map(|left| if left { self.nccw } else { self.ncw })
+    }
+
+    /// The edge before e in face `f`'s cycle.
+    #[inline]
+    pub(super) fn prev_in(&self, f: FaceId) -> Option<EdgeId> {
+        self.side(f)
+            .map(|left| if left { self.pccw } else { self.pcw })
+    }
+
+    /// Where face `f` enters and leaves e: `[v1, v2]` on the left, `[v2, v1]` on the right.
+    #[inline]
+    pub(super) fn ends_in(&self, f: FaceId) -> [VertexId; 2] {
+        if self.fccw == f {
+            [self.v1, self.v2]
+        } else {
+            [self.v2, self.v1]
+        }
+    }
+
+    /// The end of e that is not `v`.
+    #[inline]
+    pub(super) fn other_end(&self, v: VertexId) -> VertexId {
+        if self.v1 == v {
+            self.v2
+        } else {
+            self.v1
+        }
+    }
+
+    /// The other face than `f` (none on the boundary).
+    #[inline]
+    pub(super) fn other_face(&self, f: FaceId) -> FaceId {
+        if self.fccw == f {
+            self.fcw
+        } else {
+            self.fccw
+        }
+    }
+
+    /// Turns the edge around (v1 ↔ v2, the right side's face and wings become the left's),
+    /// leaving the right side empty: used when the left face is removed.
+    pub(super) fn turn_right_side_left(&mut self) {
+        *self = Self {
+            v1: self.v2,
+            v2: self.v1,
+            fccw: self.fcw,
+            pccw: self.pcw,
+            nccw: self.ncw,
+            ..Self::REMOVED
+        };
+    }
+}
+
+/// The key of an undirected edge in the incremental index: smaller end in the high half.
+#[inline]
+pub(super) fn ends_key(a: VertexId, b: VertexId) -> u64 {
+    let (lo, hi) = if a < b { (a.0, b.0) } else { (b.0, a.0) };
+    ((lo as u64) << 32) | hi as u64
+}
+
+/// What the incremental API keeps beside the hull lecture's records (see the module docs).
+#[derive(Clone, Debug, Default)]
+pub(super) struct IncrementalIndex {
+    /// Each live edge by its end vertices ([`ends_key`]).
+    pub(super) edge_by_ends: HashMap<u64, EdgeId>,
+    /// `degree[v]`: the number of live edges at v, so a vertex that loses the edge `av(v)`
+    /// knows whether another one is left without a search.
+    pub(super) degree: Vec<u32>,
+}
+
+/// The incremental index of `edges` over `vertices` vertices (see [`IncrementalIndex`]).
+pub(super) fn build_index(vertices: usize, edges: &[EdgeRecord]) -> IncrementalIndex {
+    let mut index = IncrementalIndex {
+        edge_by_ends: HashMap::with_capacity(edges.len()),
+        degree: vec![0; vertices],
+    };
+    for (e, r) in edges.iter().enumerate().filter(|(_, r)| r.is_live()) {
+        index
+            .edge_by_ends
+            .insert(ends_key(r.v1, r.v2), EdgeId::new(e));
+        index.degree[r.v1.index()] += 1;
+        index.degree[r.v2.index()] += 1;
+    }
+    index
+}
