@@ -57,7 +57,7 @@ use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::ptr::NonNull;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, MeshTopology,
+    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
     Operator, PolygonSoup, Result, VertexId,
 };
 
@@ -262,31 +262,6 @@ unsafe extern "C" fn end_curve(context: *mut c_void) {
     callback.run(|out| out.end_curve());
 }
 
-/// The kind of element an operator is asked about (what its sampled ids index).
-enum QueryElement {
-    Vertex,
-    Edge,
-    Face,
-    Mesh,
-}
-
-fn query_element(op: Operator) -> QueryElement {
-    match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            QueryElement::Vertex
-        }
-        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
-            QueryElement::Edge
-        }
-        Operator::R20
-        | Operator::R21
-        | Operator::R22
-        | Operator::EdgeSuccessor
-        | Operator::EdgePredecessor => QueryElement::Face,
-        Operator::BoundaryCurves => QueryElement::Mesh,
-    }
-}
-
 impl OpenMesh {
     /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
     /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
@@ -359,17 +334,18 @@ impl OpenMesh {
         Some(status("topolab_om_sweep", code).map(|()| out))
     }
 
-    /// The checksum of operator `kernel` over the query elements `ids` only (vertex, edge or
-    /// face ids by the operator; faces for successor and predecessor). `None` for an unknown
-    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range; an
-    /// error when OpenMesh failed inside the loop.
+    /// The checksum of operator `kernel` over the query elements `ids` only: vertex, edge or
+    /// face ids by [`Operator::input`], face ids for successor and predecessor (the shim asks
+    /// them about every edge of each face). `None` for an unknown name, for `boundary-curves`
+    /// (a whole-mesh operator) or when an id is out of range; an error when OpenMesh failed
+    /// inside the loop.
     pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<Result<u64>> {
         let op = Operator::from_name(kernel)?;
-        let count = match query_element(op) {
-            QueryElement::Vertex => self.vertices,
-            QueryElement::Edge => self.edges,
-            QueryElement::Face => self.faces,
-            QueryElement::Mesh => return None,
+        let count = match op.input() {
+            Input::Vertex => self.vertices,
+            Input::Edge => self.edges,
+            Input::Face | Input::EdgeOfFace => self.faces,
+            Input::Mesh => return None,
         };
         if ids.iter().any(|&id| id >= count) {
             return None;

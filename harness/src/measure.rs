@@ -7,7 +7,7 @@ use crate::results::{Measurement, Status};
 use crate::timing::{time, Budget};
 use std::collections::HashMap;
 use std::time::Duration;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
 
 /// Reads the process's heap use (the report binary's counting allocator).
 pub trait MemoryMeter {
@@ -271,12 +271,12 @@ pub fn time_kernel<M: MeshTopology>(
     curves: &mut BoundaryCurves,
     budget: Budget,
 ) -> Result<(crate::timing::Timing, u64, bool), String> {
-    let ids: Vec<u32> = match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            q.vertices.iter().map(|v| v.0).collect()
-        }
-        Operator::R20 | Operator::R21 | Operator::R22 => q.faces.iter().map(|f| f.0).collect(),
-        _ => Vec::new(),
+    // Vertex and face ids are the input's in every structure, so a baseline's loop can take
+    // them as they are; edge and (edge, face) samples run the generic kernel.
+    let ids: Vec<u32> = match op.input() {
+        Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
+        Input::Face => q.faces.iter().map(|f| f.0).collect(),
+        Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
     };
     let native = match kernel {
         Kernel::Sweep => m.native_sweep(op).is_some(),

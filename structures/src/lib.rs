@@ -56,6 +56,7 @@ pub mod summary;
 pub mod topology;
 pub mod vertex_list;
 pub mod winged_edge;
+pub mod workload;
 
 pub use attributes::{MeshAttributes, Plane};
 pub use che::{CheL0, CheL1, CheL2, CheL3};
@@ -67,6 +68,7 @@ pub use index_half_edge::IndexHalfEdge;
 pub use pointer_half_edge::PointerHalfEdge;
 pub use regular_grid::{HeightField, RegularGrid};
 pub use soup::{Connectivity, PolygonSoup};
-pub use topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+pub use topology::{BoundaryCurves, Capabilities, Cost, Element, Input, MeshTopology, Operator};
 pub use vertex_list::VertexList;
 pub use winged_edge::WingedEdge;
+pub use workload::Workload;

@@ -1,5 +1,6 @@
-//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers and
-//! the theoretical [`Cost`] each structure declares for each of them.
+//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers (and
+//! the [`Input`] each takes) and the theoretical [`Cost`] each structure declares for each of
+//! them.
 //!
 //! Relations follow the CHE chapter's notation `Rpq`: given a p-simplex, the q-simplices around
 //! it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a callback (internal
@@ -10,6 +11,50 @@ use crate::error::Result;
 use crate::ids::{EdgeId, FaceId, VertexId};
 use crate::soup::PolygonSoup;
 use glam::DVec3;
+
+/// A kind of mesh element.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Element {
+    /// A vertex (0-simplex).
+    Vertex,
+    /// An edge (1-simplex).
+    Edge,
+    /// A face (2-cell).
+    Face,
+    /// The whole mesh.
+    Mesh,
+}
+
+/// What one query of an [`Operator`] is given ([`Operator::input`]): the element whose
+/// neighbourhood it asks about, which is also what a sweep of the operator walks over.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Input {
+    /// A vertex.
+    Vertex,
+    /// An edge.
+    Edge,
+    /// A face.
+    Face,
+    /// An edge and a face it bounds (successor, predecessor). Every (edge, face) pair of a
+    /// mesh is one edge of one face, so a sweep walks the faces and each face's edges.
+    EdgeOfFace,
+    /// Nothing: the question is about the whole mesh (boundary curves).
+    Mesh,
+}
+
+impl Input {
+    /// The elements a query is given, in argument order.
+    pub const fn elements(self) -> &'static [Element] {
+        match self {
+            Input::Vertex => &[Element::Vertex],
+            Input::Edge => &[Element::Edge],
+            Input::Face => &[Element::Face],
+            Input::EdgeOfFace => &[Element::Edge, Element::Face],
+            Input::Mesh => &[Element::Mesh],
+        }
+    }
+}
 
 /// Every operator a structure answers, in catalogue order.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
@@ -87,6 +132,20 @@ impl Operator {
     /// The operator of a kebab-case name.
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|op| op.name() == name)
+    }
+
+    /// What one query of the operator is given (the lab's one answer to "which element does
+    /// this operator take?").
+    pub const fn input(self) -> Input {
+        match self {
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+                Input::Vertex
+            }
+            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => Input::Edge,
+            Operator::R20 | Operator::R21 | Operator::R22 => Input::Face,
+            Operator::EdgeSuccessor | Operator::EdgePredecessor => Input::EdgeOfFace,
+            Operator::BoundaryCurves => Input::Mesh,
+        }
     }
 }
 
