@@ -20,23 +20,49 @@ use topolab_structures::{
     VertexId,
 };
 
-/// How an operator is exercised.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+/// How a measurement exercises its subject: an operator by one of the two query kernels, a
+/// workload, or a construction.
+#[derive(
+    Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
+)]
 #[serde(rename_all = "kebab-case")]
 pub enum Kernel {
     /// Every element once (throughput).
     Sweep,
     /// A fixed, seeded random sample of query elements (latency per query).
     Sampled,
+    /// An application workload, run once over the mesh.
+    Workload,
+    /// Building the structure from the face list.
+    Construction,
 }
 
 impl Kernel {
+    /// Every kernel.
+    pub const ALL: [Kernel; 4] = [
+        Kernel::Sweep,
+        Kernel::Sampled,
+        Kernel::Workload,
+        Kernel::Construction,
+    ];
+
+    /// The two kernels an operator is timed with.
+    pub const QUERIES: [Kernel; 2] = [Kernel::Sweep, Kernel::Sampled];
+
     /// The name used in results.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             Kernel::Sweep => "sweep",
             Kernel::Sampled => "sampled",
+            Kernel::Workload => "workload",
+            Kernel::Construction => "construction",
         }
+    }
+}
+
+impl std::fmt::Display for Kernel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

@@ -3,7 +3,7 @@
 //! skipped with the estimate; checksums are compared across structures by [`cross_check`].
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
-use crate::results::{Measurement, Status};
+use crate::results::{Measurement, Status, Subject};
 use crate::timing::{time, Budget};
 use std::collections::HashMap;
 use std::time::Duration;
@@ -55,11 +55,11 @@ pub struct Estimator {
 }
 
 /// (structure, family, operator, kernel).
-type EstimatorKey = (String, String, String, String);
+type EstimatorKey = (&'static str, String, Subject, Kernel);
 
 impl Estimator {
-    fn key(s: &str, fam: &str, op: &str, k: &str) -> EstimatorKey {
-        (s.into(), fam.into(), op.into(), k.into())
+    fn key(s: &'static str, fam: &str, subject: Subject, kernel: Kernel) -> EstimatorKey {
+        (s, fam.into(), subject, kernel)
     }
 
     /// Marks `cell` skipped, with its estimated ns per item, when one run at `triangles` is
@@ -90,11 +90,11 @@ impl Estimator {
     }
 }
 
-fn measurement(structure: &str, op: &str, kernel: &str, case: &MeshCase) -> Measurement {
+fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
     Measurement {
         structure: structure.into(),
-        operator: op.into(),
-        kernel: kernel.into(),
+        operator: subject,
+        kernel,
         mesh: case.name.into(),
         family: case.family.into(),
         triangles: case.soup.num_faces(),
@@ -130,7 +130,7 @@ pub fn measure_structure<M: MeshTopology>(
     };
     let n = case.soup.num_faces();
     // Construction: memory first (one build, measured by the allocator), then the timing.
-    let mut cons = measurement(M::NAME, "construction", "construction", case);
+    let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
     meter.reset_peak();
     let before = meter.current();
     let built = M::from_soup(case.soup);
@@ -171,10 +171,11 @@ pub fn measure_structure<M: MeshTopology>(
     let sampled = Queries::sampled(&m, case.queries);
     let mut curves = BoundaryCurves::default();
     for op in Operator::ALL {
-        let kernels: &[Kernel] = if op == Operator::BoundaryCurves {
+        // Boundary curves are one question about the whole mesh: nothing to sample.
+        let kernels: &[Kernel] = if op.input() == Input::Mesh {
             &[Kernel::Sweep]
         } else {
-            &[Kernel::Sweep, Kernel::Sampled]
+            &Kernel::QUERIES
         };
         for &kernel in kernels {
             if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
@@ -186,26 +187,18 @@ pub fn measure_structure<M: MeshTopology>(
                 &sampled
             };
             let items = q.count(op);
-            let mut cell = measurement(M::NAME, op.name(), kernel.name(), case);
+            let mut cell = measurement(M::NAME, Subject::Query(op), kernel, case);
             cell.items = items;
             // A sweep's run grows with n^(1+e), a sampled run (fixed count) with n^e.
             let e =
                 M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
-            let key = Estimator::key(M::NAME, case.family, op.name(), kernel.name());
+            let key = Estimator::key(M::NAME, case.family, Subject::Query(op), kernel);
             if est.skips(&key, n, e, plan, &mut cell) {
                 out.push(cell);
                 continue;
             }
-            let (t, sum, native) =
-                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(|e| {
-                    format!(
-                        "{} {} {} on {}: {e}",
-                        M::NAME,
-                        op.name(),
-                        kernel.name(),
-                        case.name
-                    )
-                })?;
+            let (t, sum, native) = time_kernel(&m, op, kernel, q, &mut curves, budget)
+                .map_err(|e| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name))?;
             cell.native = native;
             fill(&mut cell, t, items.max(1), Some(sum.to_string()));
             est.last.insert(key, (n, t.median_ns));
@@ -214,7 +207,7 @@ pub fn measure_structure<M: MeshTopology>(
     }
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
-        let mut cell = measurement(M::NAME, w.name(), "workload", case);
+        let mut cell = measurement(M::NAME, Subject::Workload(w), Kernel::Workload, case);
         let items = w.items(&m);
         cell.items = items;
         // A workload asks its relations once per element: its run grows like n^(1+e) for the
@@ -224,7 +217,7 @@ pub fn measure_structure<M: MeshTopology>(
                 .iter()
                 .map(|&op| M::cost(op).expected_exponent())
                 .fold(0.0, f64::max);
-        let key = Estimator::key(M::NAME, case.family, w.name(), "workload");
+        let key = Estimator::key(M::NAME, case.family, Subject::Workload(w), Kernel::Workload);
         if est.skips(&key, n, e, plan, &mut cell) {
             out.push(cell);
             continue;
@@ -281,13 +274,16 @@ pub fn time_kernel<M: MeshTopology>(
     let native = match kernel {
         Kernel::Sweep => m.native_sweep(op).is_some(),
         Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
+        Kernel::Workload | Kernel::Construction => {
+            return Err(format!("{kernel} is not a kernel of an operator"))
+        }
     };
     let (t, sum) = if native {
         let failure = std::cell::Cell::new(None);
         let timed = time(budget, || {
             let sum = match kernel {
-                Kernel::Sweep => m.native_sweep(op),
                 Kernel::Sampled => m.native_sampled(op, &ids),
+                _ => m.native_sweep(op),
             };
             match sum {
                 Some(Ok(sum)) => sum,
@@ -324,7 +320,7 @@ pub fn measure_sweep<M: MeshTopology>(
     op: Operator,
     plan: &Plan,
 ) -> Result<Measurement, String> {
-    let mut cell = measurement(M::NAME, op.name(), Kernel::Sweep.name(), case);
+    let mut cell = measurement(M::NAME, Subject::Query(op), Kernel::Sweep, case);
     let m = match M::from_soup(case.soup) {
         Ok(m) => m,
         Err(e) => {
@@ -368,7 +364,7 @@ fn fill(cell: &mut Measurement, t: crate::timing::Timing, items: usize, checksum
 /// kernel, mesh and the structures that disagree. Workload results (floats) agree within a
 /// relative 1e-6.
 pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), String> {
-    let mut first: HashMap<(&str, &str), (&str, &str)> = HashMap::new();
+    let mut first: HashMap<(Subject, Kernel), (&str, &str)> = HashMap::new();
     for m in measurements
         .iter()
         .filter(|m| m.mesh == mesh && m.status == Status::Measured)
@@ -376,12 +372,12 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
         let Some(sum) = m.checksum.as_deref() else {
             continue;
         };
-        match first.get(&(m.operator.as_str(), m.kernel.as_str())) {
+        match first.get(&(m.operator, m.kernel)) {
             None => {
-                first.insert((&m.operator, &m.kernel), (&m.structure, sum));
+                first.insert((m.operator, m.kernel), (&m.structure, sum));
             }
             Some(&(s0, sum0)) => {
-                let same = if m.kernel == "workload" {
+                let same = if m.kernel == Kernel::Workload {
                     let (a, b) = (
                         sum0.parse::<f64>().unwrap_or(f64::NAN),
                         sum.parse::<f64>().unwrap_or(f64::NAN),
@@ -454,7 +450,7 @@ mod tests {
         // A tampered checksum is caught and named.
         let i = out
             .iter()
-            .position(|m| m.structure == "explicit" && m.operator == "r22")
+            .position(|m| m.structure == "explicit" && m.operator == Subject::Query(Operator::R22))
             .unwrap();
         out[i].checksum = Some("1".into());
         let err = cross_check(&out, "t").unwrap_err();
@@ -467,7 +463,7 @@ mod tests {
     #[test]
     fn a_cell_estimated_over_budget_is_skipped_with_its_estimate() {
         let mut est = Estimator::default();
-        let key = Estimator::key("s", "torus", "r00", "sweep");
+        let key = Estimator::key("s", "torus", Subject::Query(Operator::R00), Kernel::Sweep);
         est.last.insert(key.clone(), (1000, 1e6));
         // 16x the size at exponent 2: 256 ms.
         assert_eq!(est.estimate(&key, 16000, 2.0), Some(256e6));
