@@ -18,7 +18,9 @@ mod native {
     use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
     use topolab::openmesh::OpenMesh;
     use topolab_structures::meshes::{self, RandomMeshParams};
-    use topolab_structures::{MeshTopology, Operator, PolygonSoup, VertexId, VertexList};
+    use topolab_structures::{
+        Input, MeshTopology, Operator, PolygonSoup, VertexId, VertexList, Workload,
+    };
 
     /// The heap measurement (glibc `mallinfo2`) counts every thread's allocations, so it runs
     /// alone ([`alone`]); every other test of this file runs in parallel with the others
@@ -33,8 +35,8 @@ mod native {
     }
 
     /// A native answer with OpenMesh's own failures turned into a test failure.
-    fn ok<T>(answer: Option<topolab_structures::Result<T>>) -> Option<T> {
-        answer.map(|r| r.expect("OpenMesh failed inside the shim"))
+    fn ok<T>(answer: topolab_structures::Result<T>) -> T {
+        answer.expect("OpenMesh failed inside the shim")
     }
 
     /// A torus (closed), a triangle grid (boundary), a quad grid and mixed polygons (PolyMesh),
@@ -60,12 +62,7 @@ mod native {
             let reference = VertexList::from_soup(&soup).unwrap();
             for op in Operator::ALL {
                 let expected = checksum(&reference, op);
-                assert_eq!(
-                    ok(om.native_sweep(op.name())),
-                    Some(expected),
-                    "{} on {name}",
-                    op.name()
-                );
+                assert_eq!(ok(om.native_sweep(op)), expected, "{} on {name}", op.name());
                 // The per-query FFI path agrees too.
                 assert_eq!(
                     checksum(&om, op),
@@ -81,10 +78,13 @@ mod native {
     fn checksums_see_the_boundary() {
         let _shared = shared();
         let om = OpenMesh::from_soup(&meshes::grid(6, 4, true)).unwrap();
-        for kernel in ["boundary-vertex", "boundary-edge", "boundary-curves"] {
-            assert_ne!(ok(om.native_sweep(kernel)), Some(0), "{kernel} on a grid");
+        for op in [
+            Operator::BoundaryVertex,
+            Operator::BoundaryEdge,
+            Operator::BoundaryCurves,
+        ] {
+            assert_ne!(ok(om.native_sweep(op)), 0, "{op:?} on a grid");
         }
-        assert_eq!(ok(om.native_sweep("no-such-kernel")), None);
     }
 
     #[test]
@@ -95,13 +95,13 @@ mod native {
             let reference = VertexList::from_soup(&soup).unwrap();
             for op in Operator::ALL {
                 if op == Operator::BoundaryCurves {
-                    assert_eq!(ok(om.native_sampled(op.name(), &[0])), None);
+                    assert!(om.native_sampled(op, &[0]).is_none());
                     continue;
                 }
                 let n = query_count(&reference, op) as u32;
                 // Repeated ids count twice, like repeated queries.
                 let ids = [n - 1, 0, n / 2, n / 2];
-                let native = ok(om.native_sampled(op.name(), &ids));
+                let native = om.native_sampled(op, &ids).map(ok);
                 assert_eq!(
                     native,
                     Some(sampled(&om, op, &ids)),
@@ -109,10 +109,7 @@ mod native {
                     op.name()
                 );
                 // Vertex and face ids are the input's in every structure (edge ids are not).
-                if !matches!(
-                    op,
-                    Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge
-                ) {
+                if op.input() != Input::Edge {
                     assert_eq!(
                         native,
                         Some(sampled(&reference, op, &ids)),
@@ -120,11 +117,7 @@ mod native {
                         op.name()
                     );
                 }
-                assert_eq!(
-                    ok(om.native_sampled(op.name(), &[n])),
-                    None,
-                    "id out of range"
-                );
+                assert!(om.native_sampled(op, &[n]).is_none(), "id out of range");
             }
         }
     }
@@ -149,7 +142,7 @@ mod native {
         for (name, soup) in meshes() {
             let mut om = OpenMesh::from_soup(&soup).unwrap();
             let reference = VertexList::from_soup(&soup).unwrap();
-            let circulators = ok(om.native_workload("circulators")).unwrap();
+            let circulators = ok(om.native_workload(Workload::Circulators));
             assert_eq!(
                 circulators,
                 soup.num_corners() as f64,
@@ -157,15 +150,15 @@ mod native {
             );
 
             let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
-            let barycenter = ok(om.native_workload("barycenter")).unwrap();
+            let barycenter = ok(om.native_workload(Workload::Barycenter));
             assert!(
                 close(barycenter, mean.element_sum()),
                 "barycenter on {name}"
             );
 
             let expected = uniform_vertex_normals_sum(&soup);
-            assert!(ok(om.prepare_workload("normals")).is_some());
-            let normals = ok(om.native_workload("normals")).unwrap();
+            ok(om.prepare_workload(Workload::Normals));
+            let normals = ok(om.native_workload(Workload::Normals));
             assert!(
                 close(normals, expected),
                 "normals on {name}: {normals} vs {expected}"
@@ -187,15 +180,14 @@ mod native {
                 })
                 .collect();
             let expected: f64 = smoothed.iter().map(|p| p.element_sum()).sum();
-            let smoothing = ok(om.native_workload("smoothing")).unwrap();
+            let smoothing = ok(om.native_workload(Workload::Smoothing));
             assert!(close(smoothing, expected), "smoothing on {name}");
             // The step is computed into a buffer: the mesh keeps its positions, so a second
             // run computes the same step.
             for (v, p) in soup.positions.iter().enumerate() {
                 assert_eq!(om.position(VertexId::new(v)), *p, "smoothing moved v{v}");
             }
-            assert_eq!(ok(om.native_workload("smoothing")).unwrap(), smoothing);
-            assert_eq!(ok(om.native_workload("no-such-workload")), None);
+            assert_eq!(ok(om.native_workload(Workload::Smoothing)), smoothing);
         }
     }
 

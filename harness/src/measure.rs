@@ -4,7 +4,7 @@
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
 use crate::results::{Measurement, Status, Subject};
-use crate::timing::{time, Budget};
+use crate::timing::{time, Budget, Timing};
 use std::collections::HashMap;
 use std::time::Duration;
 use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
@@ -114,8 +114,8 @@ fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCas
     }
 }
 
-/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails only when a
-/// kernel is not deterministic.
+/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel
+/// is not deterministic or a baseline's native kernel fails.
 pub fn measure_structure<M: MeshTopology>(
     case: &MeshCase,
     plan: &Plan,
@@ -150,20 +150,32 @@ pub fn measure_structure<M: MeshTopology>(
     cons.declared_bytes = Some(m.heap_bytes() as u64);
     // Construction is timed with at least three runs and a second's budget whatever the cell
     // budget: one build of a 1M-triangle mesh is a single noisy sample otherwise.
-    let (t, _) = time(
-        Budget {
-            time: budget.time.max(Duration::from_secs(1)),
-            min_reps: 3,
-            max_reps: plan.max_reps.min(7),
-        },
-        || {
-            M::native_construction(case.soup)
-                .unwrap_or_else(|| M::from_soup(case.soup))
-                .map(|m| m.num_faces())
-                .unwrap_or(0)
-        },
-    )?;
-    cons.native = M::native_construction(case.soup).is_some();
+    let construction_budget = Budget {
+        time: budget.time.max(Duration::from_secs(1)),
+        min_reps: 3,
+        max_reps: plan.max_reps.min(7),
+    };
+    let native = M::native();
+    let native_build = native.and_then(|k| {
+        time_native(construction_budget, || {
+            k.construction(case.soup).map(|r| r.map(|m| m.num_faces()))
+        })
+    });
+    let t = match native_build {
+        Some(timed) => {
+            cons.native = true;
+            timed
+                .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?
+                .0
+        }
+        // `from_soup` succeeded above: a later run that fails differs from the first.
+        None => {
+            time(construction_budget, || {
+                M::from_soup(case.soup).map(|m| m.num_faces()).ok()
+            })?
+            .0
+        }
+    };
     fill(&mut cons, t, n.max(1), None);
     out.push(cons);
 
@@ -222,25 +234,15 @@ pub fn measure_structure<M: MeshTopology>(
             out.push(cell);
             continue;
         }
-        let native = m.native_workload(w.name()).is_some();
-        let (t, r) = if native {
-            let failure = std::cell::Cell::new(None);
-            let timed = time(budget, || match m.native_workload(w.name()) {
-                Some(Ok(value)) => value.to_bits(),
-                failed => {
-                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
-                    0
-                }
-            });
-            if let Some(e) = failure.take() {
-                return Err(format!("{} {} on {}: {e}", M::NAME, w.name(), case.name));
-            }
-            timed
-        } else {
-            time(budget, || run_workload(&m, w, &mut buf).to_bits())
-        }
-        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
-        cell.native = native;
+        let native_run = native.and_then(|k| {
+            time_native(budget, || {
+                k.workload(&mut m, w).map(|r| r.map(f64::to_bits))
+            })
+        });
+        cell.native = native_run.is_some();
+        let (t, r) = native_run
+            .unwrap_or_else(|| time(budget, || run_workload(&m, w, &mut buf).to_bits()))
+            .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
         fill(
             &mut cell,
             t,
@@ -255,7 +257,7 @@ pub fn measure_structure<M: MeshTopology>(
 
 /// Times one kernel of `op` on a built structure: the structure's native loop when it has one
 /// (a baseline behind FFI), the harness's generic kernel otherwise. Returns the timing, the
-/// checksum and whether it ran natively.
+/// checksum and whether it ran natively. `kernel` is [`Kernel::Sweep`] or [`Kernel::Sampled`].
 pub fn time_kernel<M: MeshTopology>(
     m: &M,
     op: Operator,
@@ -263,48 +265,63 @@ pub fn time_kernel<M: MeshTopology>(
     q: &Queries,
     curves: &mut BoundaryCurves,
     budget: Budget,
-) -> Result<(crate::timing::Timing, u64, bool), String> {
-    // Vertex and face ids are the input's in every structure, so a baseline's loop can take
-    // them as they are; edge and (edge, face) samples run the generic kernel.
-    let ids: Vec<u32> = match op.input() {
-        Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
-        Input::Face => q.faces.iter().map(|f| f.0).collect(),
-        Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
-    };
-    let native = match kernel {
-        Kernel::Sweep => m.native_sweep(op).is_some(),
-        Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
+) -> Result<(Timing, u64, bool), String> {
+    let native = M::native();
+    let timed = match kernel {
+        Kernel::Sweep => native.and_then(|k| time_native(budget, || k.sweep(m, op))),
+        Kernel::Sampled => {
+            // Vertex and face ids are the input's in every structure, so a baseline's loop
+            // can take them as they are; edge and (edge, face) samples run the generic kernel.
+            let ids: Vec<u32> = match op.input() {
+                Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
+                Input::Face => q.faces.iter().map(|f| f.0).collect(),
+                Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
+            };
+            native
+                .filter(|_| !ids.is_empty())
+                .and_then(|k| time_native(budget, || k.sampled(m, op, &ids)))
+        }
         Kernel::Workload | Kernel::Construction => {
             return Err(format!("{kernel} is not a kernel of an operator"))
         }
     };
-    let (t, sum) = if native {
-        let failure = std::cell::Cell::new(None);
-        let timed = time(budget, || {
-            let sum = match kernel {
-                Kernel::Sampled => m.native_sampled(op, &ids),
-                _ => m.native_sweep(op),
-            };
-            match sum {
-                Some(Ok(sum)) => sum,
-                failed => {
-                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
-                    0
-                }
-            }
-        });
-        if let Some(e) = failure.take() {
-            return Err(e);
+    match timed {
+        Some(timed) => timed.map(|(t, sum)| (t, sum, true)),
+        None => time(budget, || run(m, op, q, curves)).map(|(t, sum)| (t, sum, false)),
+    }
+}
+
+/// Times a baseline's native kernel `native` (see [`topolab_structures::NativeKernels`]):
+/// `None` when it has no loop of its own for this case (its first answer is `None`), else the
+/// timing and result. A failure inside the loop, in any run, fails the measurement with the
+/// library's error instead of timing a zero.
+fn time_native<T: PartialEq + std::fmt::Debug>(
+    budget: Budget,
+    mut native: impl FnMut() -> Option<topolab_structures::Result<T>>,
+) -> Option<Result<(Timing, T), String>> {
+    if let Err(e) = native()? {
+        return Some(Err(native_failure(Some(Err(e)))));
+    }
+    let failure = std::cell::Cell::new(None);
+    let timed = time(budget, || match native() {
+        Some(Ok(answer)) => Some(answer),
+        failed => {
+            failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+            None
         }
-        timed
-    } else {
-        time(budget, || run(m, op, q, curves))
-    }?;
-    Ok((t, sum, native))
+    });
+    Some(match failure.take() {
+        Some(e) => Err(e),
+        None => timed.and_then(|(t, answer)| {
+            answer
+                .map(|answer| (t, answer))
+                .ok_or_else(|| native_failure(None))
+        }),
+    })
 }
 
 /// The message for a native kernel that failed while timed: a baseline's exception caught at
-/// the FFI wall (`Some(Err)`), or a hook that stopped answering (`None`). The cell then fails
+/// the FFI wall (`Some(Err)`), or a kernel that stopped answering (`None`). The cell then fails
 /// loudly instead of timing a zero checksum.
 fn native_failure(failed: Option<topolab_structures::Result<()>>) -> String {
     match failed {
@@ -402,8 +419,12 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
 mod tests {
     use super::*;
     use crate::kernels::sample_queries;
+    use glam::DVec3;
     use std::cell::Cell;
-    use topolab_structures::{meshes, ExplicitStorage, VertexList};
+    use topolab_structures::{
+        meshes, Capabilities, Cost, EdgeId, Error, ExplicitStorage, FaceId, NativeKernels, Result,
+        VertexId, VertexList,
+    };
 
     struct NoMeter(Cell<usize>);
     impl MemoryMeter for NoMeter {
@@ -456,6 +477,187 @@ mod tests {
         let err = cross_check(&out, "t").unwrap_err();
         assert!(
             err.contains("r22") && err.contains("explicit") && err.contains("mesh t"),
+            "{err}"
+        );
+    }
+
+    /// The vertex-list with the native kernels of [`Baseline`]: a stand-in for a baseline
+    /// behind an FFI. With `FAILS`, its R01 sweep fails from its second run on.
+    struct Native<const FAILS: bool>(VertexList);
+
+    struct Baseline;
+
+    static R01_RUNS: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
+
+    impl<const FAILS: bool> NativeKernels<Native<FAILS>> for Baseline {
+        fn construction(&self, soup: &PolygonSoup) -> Option<Result<Native<FAILS>>> {
+            Some(VertexList::from_soup(soup).map(Native))
+        }
+        fn sweep(&self, _: &Native<FAILS>, op: Operator) -> Option<Result<u64>> {
+            match op {
+                Operator::R00 => Some(Ok(7)),
+                Operator::R01 if FAILS => {
+                    let runs = R01_RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    Some(if runs == 0 {
+                        Ok(5)
+                    } else {
+                        Err(Error::Foreign {
+                            library: "Baseline",
+                            call: "sweep",
+                            reason: "a test failure",
+                        })
+                    })
+                }
+                _ => None,
+            }
+        }
+        fn sampled(&self, _: &Native<FAILS>, _: Operator, _: &[u32]) -> Option<Result<u64>> {
+            None
+        }
+        fn workload(&self, _: &mut Native<FAILS>, w: Workload) -> Option<Result<f64>> {
+            (w == Workload::Barycenter).then_some(Ok(0.5))
+        }
+    }
+
+    impl<const FAILS: bool> MeshTopology for Native<FAILS> {
+        const NAME: &'static str = "native";
+        fn capabilities() -> Capabilities {
+            VertexList::capabilities()
+        }
+        fn cost(op: Operator) -> Cost {
+            VertexList::cost(op)
+        }
+        fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+            VertexList::from_soup(soup).map(Native)
+        }
+        fn num_vertices(&self) -> usize {
+            self.0.num_vertices()
+        }
+        fn num_edges(&self) -> usize {
+            self.0.num_edges()
+        }
+        fn num_faces(&self) -> usize {
+            self.0.num_faces()
+        }
+        fn for_each_edge(&self, f: impl FnMut(EdgeId)) {
+            self.0.for_each_edge(f)
+        }
+        fn position(&self, v: VertexId) -> DVec3 {
+            self.0.position(v)
+        }
+        fn vertex_vertices(&self, v: VertexId, f: impl FnMut(VertexId)) {
+            self.0.vertex_vertices(v, f)
+        }
+        fn vertex_edges(&self, v: VertexId, f: impl FnMut(EdgeId)) {
+            self.0.vertex_edges(v, f)
+        }
+        fn vertex_faces(&self, v: VertexId, f: impl FnMut(FaceId)) {
+            self.0.vertex_faces(v, f)
+        }
+        fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
+            self.0.edge_vertices(e)
+        }
+        fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId)) {
+            self.0.edge_edges(e, f)
+        }
+        fn edge_faces(&self, e: EdgeId, f: impl FnMut(FaceId)) {
+            self.0.edge_faces(e, f)
+        }
+        fn face_vertices(&self, face: FaceId, f: impl FnMut(VertexId)) {
+            self.0.face_vertices(face, f)
+        }
+        fn face_edges(&self, face: FaceId, f: impl FnMut(EdgeId)) {
+            self.0.face_edges(face, f)
+        }
+        fn face_faces(&self, face: FaceId, f: impl FnMut(FaceId)) {
+            self.0.face_faces(face, f)
+        }
+        fn is_boundary_vertex(&self, v: VertexId) -> bool {
+            self.0.is_boundary_vertex(v)
+        }
+        fn is_boundary_edge(&self, e: EdgeId) -> bool {
+            self.0.is_boundary_edge(e)
+        }
+        fn boundary_curves(&self, out: &mut BoundaryCurves) {
+            self.0.boundary_curves(out)
+        }
+        fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+            self.0.edge_successor(e, face)
+        }
+        fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+            self.0.edge_predecessor(e, face)
+        }
+        fn validate(&self) -> Result<()> {
+            self.0.validate()
+        }
+        fn heap_bytes(&self) -> usize {
+            self.0.heap_bytes()
+        }
+        fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+            self.0.explain(w)
+        }
+        fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
+            Some(&Baseline)
+        }
+    }
+
+    fn native_cells<const FAILS: bool>() -> Result<Vec<Measurement>, String> {
+        let soup = meshes::torus(6, 5);
+        let q = sample_queries(&soup, 8, 3);
+        let case = MeshCase {
+            name: "t",
+            family: "torus",
+            soup: &soup,
+            queries: &q,
+        };
+        let plan = Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max: Duration::from_secs(1),
+            min_reps: 2,
+            max_reps: 3,
+            light: false,
+        };
+        let mut out = Vec::new();
+        measure_structure::<Native<FAILS>>(
+            &case,
+            &plan,
+            &NoMeter(Cell::new(0)),
+            &mut Estimator::default(),
+            &mut out,
+        )
+        .map(|()| out)
+    }
+
+    #[test]
+    fn a_baselines_native_kernels_are_timed_where_it_has_them() {
+        let out = native_cells::<false>().unwrap();
+        let cell = |subject, kernel| {
+            out.iter()
+                .find(|m| m.operator == subject && m.kernel == kernel)
+                .unwrap()
+        };
+        assert!(cell(Subject::Construction, Kernel::Construction).native);
+        let r00 = cell(Subject::Query(Operator::R00), Kernel::Sweep);
+        assert!(r00.native);
+        assert_eq!(r00.checksum.as_deref(), Some("7"));
+        // No native loop: the generic kernel, which answers the real checksum.
+        let r02 = cell(Subject::Query(Operator::R02), Kernel::Sweep);
+        assert!(!r02.native);
+        assert_ne!(r02.checksum.as_deref(), Some("7"));
+        assert!(!cell(Subject::Query(Operator::R00), Kernel::Sampled).native);
+        let barycenter = cell(Subject::Workload(Workload::Barycenter), Kernel::Workload);
+        assert!(barycenter.native);
+        assert_eq!(barycenter.checksum.as_deref(), Some("5.000000000e-1"));
+        assert!(!cell(Subject::Workload(Workload::Normals), Kernel::Workload).native);
+    }
+
+    #[test]
+    fn a_native_kernel_failing_in_a_later_run_fails_the_measurement() {
+        let err = native_cells::<true>().unwrap_err();
+        assert!(
+            err.contains("native r01 sweep on t")
+                && err.contains("native kernel failed")
+                && err.contains("a test failure"),
             "{err}"
         );
     }

@@ -68,7 +68,9 @@ pub use index_half_edge::IndexHalfEdge;
 pub use pointer_half_edge::PointerHalfEdge;
 pub use regular_grid::{HeightField, RegularGrid};
 pub use soup::{Connectivity, PolygonSoup};
-pub use topology::{BoundaryCurves, Capabilities, Cost, Element, Input, MeshTopology, Operator};
+pub use topology::{
+    BoundaryCurves, Capabilities, Cost, Element, Input, MeshTopology, NativeKernels, Operator,
+};
 pub use vertex_list::VertexList;
 pub use winged_edge::WingedEdge;
 pub use workload::Workload;
