@@ -44,7 +44,7 @@ pub enum Command {
     },
     /// The lecture's consistency checks on a mesh file: every problem, with the elements it
     /// concerns. Exit code 0 when clean, 1 when problems were found, 2 when unreadable.
-    Check(crate::check::CheckArgs),
+    Check(crate::commands::check::CheckArgs),
     /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
     Explain {
         /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
@@ -61,7 +61,7 @@ pub enum Command {
         vertex: Option<u32>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
-    Report(crate::report::ReportArgs),
+    Report(crate::commands::report::ReportArgs),
     /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
     Refine {
         /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
@@ -81,7 +81,7 @@ pub enum Command {
         order: String,
     },
     /// The 3D convex hull of a point file or random points, by one of seed 004's algorithms.
-    Hull(crate::hull::HullArgs),
+    Hull(crate::commands::hull::HullArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -98,21 +98,21 @@ pub fn run(cli: Cli) -> u8 {
             mesh,
             trace,
             vertex,
-        } if name == crate::explain_che::NAME => {
-            crate::explain_che::explain_che(mesh.as_deref(), trace.as_deref(), vertex)
+        } if name == crate::commands::explain_che::NAME => {
+            crate::commands::explain_che::explain_che(mesh.as_deref(), trace.as_deref(), vertex)
         }
         Command::Explain {
             name, mesh, trace, ..
         } => match trace {
             Some(_) => Err(Failure::usage(format!(
                 "--trace works with `explain {}` only",
-                crate::explain_che::NAME
+                crate::commands::explain_che::NAME
             ))),
             None => explain(&name, mesh.as_deref()),
         },
         Command::Report(args) => {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
-            crate::report::report(&args, command)
+            crate::commands::report::report(&args, command)
         }
         Command::Refine {
             mesh,
@@ -120,9 +120,9 @@ pub fn run(cli: Cli) -> u8 {
             scheme,
             out,
             order,
-        } => crate::refine::refine(&mesh, levels, &scheme, &order, &out),
-        Command::Check(args) => return crate::check::run(args),
-        Command::Hull(args) => crate::hull::hull(&args),
+        } => crate::commands::refine::refine(&mesh, levels, &scheme, &order, &out),
+        Command::Check(args) => return crate::commands::check::run(args),
+        Command::Hull(args) => crate::commands::hull::hull(&args),
     };
     match result {
         Ok(text) => {

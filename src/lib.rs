@@ -7,10 +7,8 @@
 // Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
 #![deny(unsafe_code)]
 
-pub mod check;
 pub mod cli;
-pub mod hull;
-pub mod report;
+pub mod commands;
 
 /// The process's allocator, counting bytes so the report can measure each structure's heap
 /// (current and peak). The counters add two atomic operations to every allocation.
@@ -29,5 +27,3 @@ TOPOLAB_NO_OPENMESH, and rebuild";
 
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
-pub mod explain_che;
-pub mod refine;
