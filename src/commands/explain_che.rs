@@ -3,7 +3,7 @@
 //! chapter's Figure 4.10 draws them; with `--trace r00 --vertex N`, the reads each level's
 //! vertex-star algorithm makes (Algorithms 5, 6, 7) to answer the 1-ring of vertex N.
 
-use crate::cli::{mesh_or_tetrahedron, Failure};
+use crate::input::{mesh_or_tetrahedron, Failure};
 use std::fmt::Write as _;
 use topolab_structures::che::{next, triangle, CheLevel, StarRead};
 use topolab_structures::{CheL0, CheL1, CheL2, CheL3, MeshTopology, PolygonSoup, VertexId};

@@ -1,7 +1,7 @@
 //! `topolab report`: measures every structure on the size sweep and writes `results.json` and
 //! a self-contained `index.html`.
 
-use crate::cli::Failure;
+use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
