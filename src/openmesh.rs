@@ -44,8 +44,8 @@
 //! function each ([`OpenMesh::native_sweep`], [`OpenMesh::native_sampled`],
 //! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
 //! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
-//! the integer codes of `openmesh/shim.h`'s tables, by a typed match ([`operator_code`],
-//! [`workload_code`]).
+//! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
+//! `workload_code`).
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
