@@ -16,7 +16,13 @@ mod native {
     use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
     use glam::DVec3;
     use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+    use std::time::Duration;
     use topolab::openmesh::OpenMesh;
+    use topolab_harness::kernels::{sample_queries, Kernel};
+    use topolab_harness::measure::{
+        cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
+    };
+    use topolab_harness::results::Subject;
     use topolab_structures::meshes::{self, RandomMeshParams};
     use topolab_structures::{
         Input, MeshTopology, Operator, PolygonSoup, VertexId, VertexList, Workload,
@@ -120,6 +126,56 @@ mod native {
                 assert!(om.native_sampled(op, &[n]).is_none(), "id out of range");
             }
         }
+    }
+
+    /// A memory meter that measures nothing (the heap is measured alone, in its own test).
+    struct NoMeter;
+    impl MemoryMeter for NoMeter {
+        fn current(&self) -> usize {
+            0
+        }
+        fn peak(&self) -> usize {
+            0
+        }
+        fn reset_peak(&self) {}
+    }
+
+    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`: construction,
+    /// sweeps, vertex and face samples and workloads run natively, and their checksums are
+    /// the lab's.
+    #[test]
+    fn the_harness_times_openmeshs_own_loops() {
+        let _shared = shared();
+        let soup = meshes::torus(6, 5);
+        let queries = sample_queries(&soup, 8, 3);
+        let case = MeshCase {
+            name: "torus",
+            family: "torus",
+            soup: &soup,
+            queries: &queries,
+        };
+        let plan = Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max: Duration::from_secs(10),
+            min_reps: 1,
+            max_reps: 2,
+            light: false,
+        };
+        let (mut out, mut est) = (Vec::new(), Estimator::default());
+        measure_structure::<OpenMesh>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+        assert_eq!(out.len(), 1 + 13 * 2 + 1 + Workload::ALL.len());
+        for m in &out {
+            // The harness hands a baseline vertex and face samples only (measure::time_kernel).
+            let native = match (m.operator, m.kernel) {
+                (Subject::Query(op), Kernel::Sampled) => {
+                    matches!(op.input(), Input::Vertex | Input::Face)
+                }
+                _ => true,
+            };
+            assert_eq!(m.native, native, "{} {}", m.operator, m.kernel);
+        }
+        measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+        cross_check(&out, "torus").unwrap();
     }
 
     #[test]
