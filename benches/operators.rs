@@ -14,6 +14,7 @@ use topolab::registry::{self, StructureVisitor};
 use topolab_harness::kernels::{
     run, run_workload, sample_queries, Queries, QuerySet, Workload, WorkloadBuffers,
 };
+use topolab_harness::results::Subject;
 use topolab_structures::{meshes, BoundaryCurves, MeshTopology, Operator, PolygonSoup};
 
 fn env_list(name: &str) -> Option<Vec<String>> {
@@ -33,17 +34,9 @@ fn structures() -> Vec<String> {
         .unwrap_or_else(|| registry::NAMES.iter().map(|s| s.to_string()).collect())
 }
 
-/// What one benchmark group measures.
-#[derive(Copy, Clone)]
-enum What {
-    Op(Operator),
-    Construction,
-    Workload(Workload),
-}
-
 struct Bench<'a, 'g> {
     group: &'a mut BenchmarkGroup<'g, WallTime>,
-    what: What,
+    what: Subject,
     soup: &'a PolygonSoup,
     set: &'a QuerySet,
 }
@@ -56,14 +49,14 @@ impl StructureVisitor for Bench<'_, '_> {
             return;
         };
         match self.what {
-            What::Construction => {
+            Subject::Construction => {
                 self.group
                     .throughput(Throughput::Elements(self.soup.num_faces() as u64));
                 self.group.bench_function(id, |b| {
                     b.iter(|| M::from_soup(self.soup).map(|m| m.num_faces()))
                 });
             }
-            What::Op(op) => {
+            Subject::Query(op) => {
                 let q = Queries::sampled(&m, self.set);
                 let mut curves = BoundaryCurves::default();
                 self.group
@@ -71,7 +64,7 @@ impl StructureVisitor for Bench<'_, '_> {
                 self.group
                     .bench_function(id, |b| b.iter(|| run(&m, op, &q, &mut curves)));
             }
-            What::Workload(w) => {
+            Subject::Workload(w) => {
                 let mut buf = WorkloadBuffers::default();
                 self.group
                     .throughput(Throughput::Elements(w.items(&m) as u64));
@@ -92,16 +85,12 @@ fn operators(c: &mut Criterion) {
         })
         .collect();
     let groups = Operator::ALL
+        .map(Subject::Query)
         .into_iter()
-        .map(|op| (op.name(), What::Op(op)))
-        .chain([("construction", What::Construction)])
-        .chain(
-            Workload::ALL
-                .into_iter()
-                .map(|w| (w.name(), What::Workload(w))),
-        );
-    for (name, what) in groups {
-        let mut group = c.benchmark_group(name);
+        .chain([Subject::Construction])
+        .chain(Workload::ALL.map(Subject::Workload));
+    for what in groups {
+        let mut group = c.benchmark_group(what.name());
         group
             .sample_size(10)
             .warm_up_time(Duration::from_millis(300))

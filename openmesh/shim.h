@@ -3,7 +3,7 @@
  * Handles are plain indices: vertex i of the input is vertex i here, face j is face j (OpenMesh
  * keeps insertion order), an edge is OpenMesh's edge index.
  *
- * Operator codes (topolab's Operator catalogue order, see structures/src/topology.rs):
+ * Operator codes (topolab's Operator catalogue order, see structures/src/core/topology.rs):
  *   0 r00  1 r01  2 r02  3 r10  4 r11  5 r12  6 r20  7 r21  8 r22
  *   9 boundary-vertex  10 boundary-edge  11 boundary-curves  12 edge-successor  13 edge-predecessor
  * Workload codes (Sieger & Botsch's Surface_mesh benchmark):

@@ -2,15 +2,15 @@
 //!
 //! The lab's command-line tool and everything that ties the crates together: the registry of
 //! every structure (the ones of `topolab-structures` plus the OpenMesh baseline, when compiled
-//! in) and the commands of the `topolab` binary.
+//! in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
+//! with the helpers of [`input`]).
 #![deny(missing_docs)]
 // Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
 #![deny(unsafe_code)]
 
-pub mod check;
 pub mod cli;
-pub mod hull;
-pub mod report;
+pub mod commands;
+pub mod input;
 
 /// The process's allocator, counting bytes so the report can measure each structure's heap
 /// (current and peak). The counters add two atomic operations to every allocation.
@@ -29,5 +29,3 @@ TOPOLAB_NO_OPENMESH, and rebuild";
 
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
-pub mod explain_che;
-pub mod refine;

@@ -42,7 +42,10 @@
 //!
 //! For timing, per-query FFI calls would measure the FFI, so whole sweeps run as one C++
 //! function each ([`OpenMesh::native_sweep`], [`OpenMesh::native_sampled`],
-//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`.
+//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
+//! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
+//! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
+//! `workload_code`).
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
@@ -57,8 +60,8 @@ use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::ptr::NonNull;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, MeshTopology,
-    Operator, PolygonSoup, Result, VertexId,
+    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
+    NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -169,20 +172,39 @@ fn infallible(call: &'static str, code: i32) {
     }
 }
 
-// The shim numbers operators in `Operator::ALL` order; the enum's discriminants are that order.
-const _: () = assert!(Operator::R00 as i32 == 0 && Operator::EdgePredecessor as i32 == 13);
 // Positions go to C++ as 3 doubles per vertex, without a copy.
 const _: () = assert!(std::mem::size_of::<glam::DVec3>() == 24);
 
-/// The Surface_mesh benchmark workloads (Sieger & Botsch), by name, in the shim's order.
-///
-/// | name | what | returns |
-/// |---|---|---|
-/// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
-/// | `barycenter` | the mean of all positions | the sum of its coordinates |
-/// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
-/// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
-pub const WORKLOADS: [&str; 4] = ["circulators", "barycenter", "normals", "smoothing"];
+/// The shim's code of operator `op`: its "Operator codes" table in `openmesh/shim.h` (a test
+/// reads that table and checks this match against it).
+const fn operator_code(op: Operator) -> i32 {
+    match op {
+        Operator::R00 => 0,
+        Operator::R01 => 1,
+        Operator::R02 => 2,
+        Operator::R10 => 3,
+        Operator::R11 => 4,
+        Operator::R12 => 5,
+        Operator::R20 => 6,
+        Operator::R21 => 7,
+        Operator::R22 => 8,
+        Operator::BoundaryVertex => 9,
+        Operator::BoundaryEdge => 10,
+        Operator::BoundaryCurves => 11,
+        Operator::EdgeSuccessor => 12,
+        Operator::EdgePredecessor => 13,
+    }
+}
+
+/// The shim's code of workload `w`: its "Workload codes" table in `openmesh/shim.h`.
+const fn workload_code(w: Workload) -> i32 {
+    match w {
+        Workload::Circulators => 0,
+        Workload::Barycenter => 1,
+        Workload::Normals => 2,
+        Workload::Smoothing => 3,
+    }
+}
 
 /// An OpenMesh mesh (TriMesh for triangle input, PolyMesh otherwise); see the module docs.
 pub struct OpenMesh {
@@ -262,31 +284,6 @@ unsafe extern "C" fn end_curve(context: *mut c_void) {
     callback.run(|out| out.end_curve());
 }
 
-/// The kind of element an operator is asked about (what its sampled ids index).
-enum QueryElement {
-    Vertex,
-    Edge,
-    Face,
-    Mesh,
-}
-
-fn query_element(op: Operator) -> QueryElement {
-    match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            QueryElement::Vertex
-        }
-        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
-            QueryElement::Edge
-        }
-        Operator::R20
-        | Operator::R21
-        | Operator::R22
-        | Operator::EdgeSuccessor
-        | Operator::EdgePredecessor => QueryElement::Face,
-        Operator::BoundaryCurves => QueryElement::Mesh,
-    }
-}
-
 impl OpenMesh {
     /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
     /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
@@ -348,28 +345,25 @@ impl OpenMesh {
         self.trimesh
     }
 
-    /// The checksum of operator `kernel` (an [`Operator::name`]) over every element, computed
-    /// by one C++ loop with OpenMesh's circulators; `None` for an unknown name, an error when
-    /// OpenMesh failed inside the loop.
-    pub fn native_sweep(&self, kernel: &str) -> Option<Result<u64>> {
-        let op = Operator::from_name(kernel)?;
+    /// The checksum of operator `op` over every element, computed by one C++ loop with
+    /// OpenMesh's circulators; an error when OpenMesh failed inside the loop.
+    pub fn native_sweep(&self, op: Operator) -> Result<u64> {
         let mut out = 0;
         // SAFETY: `raw` is live; `out` is a valid out-pointer; the shim checks the code.
-        let code = unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), op as i32, &mut out) };
-        Some(status("topolab_om_sweep", code).map(|()| out))
+        let code = unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), operator_code(op), &mut out) };
+        status("topolab_om_sweep", code).map(|()| out)
     }
 
-    /// The checksum of operator `kernel` over the query elements `ids` only (vertex, edge or
-    /// face ids by the operator; faces for successor and predecessor). `None` for an unknown
-    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range; an
-    /// error when OpenMesh failed inside the loop.
-    pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<Result<u64>> {
-        let op = Operator::from_name(kernel)?;
-        let count = match query_element(op) {
-            QueryElement::Vertex => self.vertices,
-            QueryElement::Edge => self.edges,
-            QueryElement::Face => self.faces,
-            QueryElement::Mesh => return None,
+    /// The checksum of operator `op` over the query elements `ids` only: vertex, edge or face
+    /// ids by [`Operator::input`], face ids for successor and predecessor (the shim asks them
+    /// about every edge of each face). `None` for `boundary-curves` (a whole-mesh operator) or
+    /// when an id is out of range; an error when OpenMesh failed inside the loop.
+    pub fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        let count = match op.input() {
+            Input::Vertex => self.vertices,
+            Input::Edge => self.edges,
+            Input::Face | Input::EdgeOfFace => self.faces,
+            Input::Mesh => return None,
         };
         if ids.iter().any(|&id| id >= count) {
             return None;
@@ -379,7 +373,7 @@ impl OpenMesh {
         let code = unsafe {
             ffi::topolab_om_sampled(
                 self.raw.as_ptr(),
-                op as i32,
+                operator_code(op),
                 ids.as_ptr(),
                 ids.len(),
                 &mut out,
@@ -388,27 +382,33 @@ impl OpenMesh {
         Some(status("topolab_om_sampled", code).map(|()| out))
     }
 
-    /// Requests what workload `name` needs (normals for `normals`), so that a timed
-    /// [`OpenMesh::native_workload`] runs only the workload; `None` for an unknown name, an
-    /// error when OpenMesh could not add the properties.
-    pub fn prepare_workload(&mut self, name: &str) -> Option<Result<()>> {
-        let workload = WORKLOADS.iter().position(|&w| w == name)?;
+    /// Requests what `workload` needs (normals for [`Workload::Normals`]), so that a timed
+    /// [`OpenMesh::native_workload`] runs only the workload; an error when OpenMesh could not
+    /// add the properties.
+    pub fn prepare_workload(&mut self, workload: Workload) -> Result<()> {
         // SAFETY: `raw` is live and exclusively borrowed.
-        let code = unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), workload as i32) };
-        Some(status("topolab_om_prepare_workload", code))
+        let code =
+            unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), workload_code(workload)) };
+        status("topolab_om_prepare_workload", code)
     }
 
-    /// Runs a Surface_mesh benchmark workload (see [`WORKLOADS`] for what each returns) in
-    /// one C++ call; `None` for an unknown name, an error when OpenMesh failed inside it.
-    /// `normals` adds normal properties (requested on first use unless
-    /// [`OpenMesh::prepare_workload`] did it).
-    pub fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
-        let workload = WORKLOADS.iter().position(|&w| w == name)?;
+    /// Runs a Surface_mesh benchmark workload (Sieger & Botsch) in one C++ call; an error when
+    /// OpenMesh failed inside it. [`Workload::Normals`] adds normal properties (requested on
+    /// first use unless [`OpenMesh::prepare_workload`] did it). What each returns:
+    ///
+    /// | workload | what | returns |
+    /// |---|---|---|
+    /// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
+    /// | `barycenter` | the mean of all positions | the sum of its coordinates |
+    /// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
+    /// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
+    pub fn native_workload(&mut self, workload: Workload) -> Result<f64> {
         let mut out = 0.0;
         // SAFETY: `raw` is live and exclusively borrowed; `out` is a valid out-pointer.
-        let code =
-            unsafe { ffi::topolab_om_workload(self.raw.as_ptr(), workload as i32, &mut out) };
-        Some(status("topolab_om_workload", code).map(|()| out))
+        let code = unsafe {
+            ffi::topolab_om_workload(self.raw.as_ptr(), workload_code(workload), &mut out)
+        };
+        status("topolab_om_workload", code).map(|()| out)
     }
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.
@@ -421,7 +421,7 @@ impl OpenMesh {
             let code = unsafe {
                 ffi::topolab_om_query(
                     raw,
-                    op as i32,
+                    operator_code(op),
                     id,
                     emit_index::<F>,
                     (&mut callback as *mut Callback<F>).cast(),
@@ -751,20 +751,66 @@ impl MeshTopology for OpenMesh {
         Ok(())
     }
 
-    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
+    fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
+        Some(&Kernels)
+    }
+}
+
+/// OpenMesh's own loops, as the harness times them ([`MeshTopology::native`]).
+struct Kernels;
+
+impl NativeKernels<OpenMesh> for Kernels {
+    fn construction(&self, soup: &PolygonSoup) -> Option<Result<OpenMesh>> {
         // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
         Some(OpenMesh::build_native(soup, soup.num_corners() / 2))
     }
 
-    fn native_sweep(&self, op: Operator) -> Option<Result<u64>> {
-        OpenMesh::native_sweep(self, op.name())
+    fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Option<Result<u64>> {
+        Some(mesh.native_sweep(op))
     }
 
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        OpenMesh::native_sampled(self, op.name(), ids)
+    fn sampled(&self, mesh: &OpenMesh, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        mesh.native_sampled(op, ids)
     }
 
-    fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
-        OpenMesh::native_workload(self, name)
+    fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Option<Result<f64>> {
+        Some(mesh.native_workload(workload))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The (code, name) pairs of the table titled `title` in `openmesh/shim.h`'s header
+    /// comment: the indented lines after the title.
+    fn shim_table(title: &str) -> Vec<(i32, String)> {
+        let header = include_str!("../openmesh/shim.h");
+        let mut lines = header.lines().skip_while(|l| !l.contains(title)).skip(1);
+        let mut pairs = Vec::new();
+        while let Some(entries) = lines.next().and_then(|l| l.strip_prefix(" *   ")) {
+            let tokens: Vec<&str> = entries.split_whitespace().collect();
+            for pair in tokens.chunks(2) {
+                let code = pair[0].parse().expect("a code, then a name");
+                pairs.push((code, pair[1].to_string()));
+            }
+        }
+        pairs
+    }
+
+    #[test]
+    fn codes_are_the_tables_of_the_shim_header() {
+        let ops = shim_table("Operator codes");
+        assert_eq!(ops.len(), Operator::ALL.len(), "{ops:?}");
+        for (code, name) in &ops {
+            let op = Operator::from_name(name).expect("an operator name");
+            assert_eq!(operator_code(op), *code, "{name}");
+        }
+        let workloads = shim_table("Workload codes");
+        assert_eq!(workloads.len(), Workload::ALL.len(), "{workloads:?}");
+        for (code, name) in &workloads {
+            let w = Workload::from_name(name).expect("a workload name");
+            assert_eq!(workload_code(w), *code, "{name}");
+        }
     }
 }

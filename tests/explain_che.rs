@@ -2,7 +2,7 @@
 //! the chapter's open tetrahedron (our numbering: triangle t = (t, t+1 mod 3, 3)).
 
 use std::process::Command;
-use topolab::explain_che::explain_che;
+use topolab::commands::explain_che::explain_che;
 
 /// The values of the (indented) container row `name` (e.g. "O[]") in each level's block.
 fn rows(text: &str, name: &str) -> Vec<Vec<i64>> {

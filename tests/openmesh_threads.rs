@@ -91,10 +91,9 @@ mod threads {
             Ok(om) => {
                 let sums: Vec<String> = Operator::ALL
                     .iter()
-                    .map(|op| match om.native_sweep(op.name()) {
-                        Some(Ok(sum)) => sum.to_string(),
-                        Some(Err(e)) => format!("failed: {e}"),
-                        None => "none".into(),
+                    .map(|&op| match om.native_sweep(op) {
+                        Ok(sum) => sum.to_string(),
+                        Err(e) => format!("failed: {e}"),
                     })
                     .collect();
                 format!(

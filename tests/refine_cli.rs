@@ -1,6 +1,6 @@
 //! `topolab refine`: writes the refined mesh, and refuses bad input with the right exit code.
 
-use topolab::refine::refine;
+use topolab::commands::refine::refine;
 
 #[test]
 fn refine_writes_four_to_the_level_times_the_faces() {

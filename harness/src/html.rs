@@ -1,9 +1,10 @@
 //! The self-contained HTML report (inline CSS and SVG, no network) drawn from [`Results`].
 
-use crate::results::{Measurement, Results, Status};
+use crate::kernels::Kernel;
+use crate::results::{Measurement, Results, Status, Subject};
 use crate::svg;
 use std::fmt::Write;
-use topolab_structures::Operator;
+use topolab_structures::{Input, Operator, Workload};
 
 fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -95,8 +96,8 @@ fn machine_section(h: &mut String, r: &Results) {
 fn cells<'a>(
     r: &'a Results,
     s: &str,
-    op: &str,
-    kernel: &str,
+    op: Subject,
+    kernel: Kernel,
     family: &str,
 ) -> Vec<&'a Measurement> {
     let mut v: Vec<&Measurement> = r
@@ -113,8 +114,8 @@ fn cells<'a>(
 /// One plot line per structure: its measured ns per item against triangles.
 fn lines(
     r: &Results,
-    op: &str,
-    kernel: &str,
+    op: Subject,
+    kernel: Kernel,
     family: &str,
     ci: &dyn Fn(&str) -> usize,
 ) -> Vec<svg::Series> {
@@ -131,6 +132,16 @@ fn lines(
         .collect()
 }
 
+/// The kernel an operator's row of Table 4.1 and its plot show: the sampled queries, or the
+/// sweep for boundary curves (one query per mesh, nothing to sample).
+fn table_kernel(op: Operator) -> Kernel {
+    if op.input() == Input::Mesh {
+        Kernel::Sweep
+    } else {
+        Kernel::Sampled
+    }
+}
+
 fn family_of(op: Operator) -> &'static str {
     match op {
         Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
@@ -143,7 +154,7 @@ fn targets(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let get = |s: &str, op: &str, kernel: &str| {
+    let get = |s: &str, op: Subject, kernel: Kernel| {
         r.measurements.iter().find(|m| {
             m.mesh == mesh
                 && m.structure == s
@@ -152,10 +163,12 @@ fn targets(h: &mut String, r: &Results) {
                 && m.status == Status::Measured
         })
     };
-    let Some(om_build) = get("openmesh", "construction", "construction") else {
+    let construction = |s| get(s, Subject::Construction, Kernel::Construction);
+    let r00_sweep = |s| get(s, Subject::Query(Operator::R00), Kernel::Sweep);
+    let Some(om_build) = construction("openmesh") else {
         return;
     };
-    let om_r00 = get("openmesh", "r00", "sweep");
+    let om_r00 = r00_sweep("openmesh");
     let _ = write!(h, "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><table><tr><th class=l>target</th><th>measured</th><th>goal</th><th>met</th></tr>");
     let mut row = |what: String, value: Option<f64>, goal: f64, unit: &str| {
         let (v, met) = match value {
@@ -178,24 +191,21 @@ fn targets(h: &mut String, r: &Results) {
         |a: Option<&Measurement>, b: Option<&Measurement>| Some(a?.ns_per_item? / b?.ns_per_item?);
     row(
         "che-l1 construction / OpenMesh add_face build".into(),
-        ratio(
-            get("che-l1", "construction", "construction"),
-            Some(om_build),
-        ),
+        ratio(construction("che-l1"), Some(om_build)),
         0.1,
         "×",
     );
     for s in ["che-l2", "index-half-edge"] {
         row(
             format!("{s} vertex 1-ring sweep (r00) / OpenMesh's"),
-            ratio(get(s, "r00", "sweep"), om_r00),
+            ratio(r00_sweep(s), om_r00),
             0.6,
             "×",
         );
-        let bound = get(s, "construction", "construction")
+        let bound = construction(s)
             .and_then(|c| c.declared_bytes)
             .map(|b| b as f64 / r.probe.read_bytes_per_s * 1e9);
-        let sweep = get(s, "r00", "sweep").and_then(|m| Some(m.ns_per_item? * m.items as f64));
+        let sweep = r00_sweep(s).and_then(|m| Some(m.ns_per_item? * m.items as f64));
         row(
             format!("{s} r00 sweep / time to stream its containers"),
             sweep.zip(bound).map(|(t, b)| t / b),
@@ -220,11 +230,7 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("</tr>");
     for op in Operator::ALL {
         let row_fam = family_of(op);
-        let kernel = if op == Operator::BoundaryCurves {
-            "sweep"
-        } else {
-            "sampled"
-        };
+        let kernel = table_kernel(op);
         let _ = write!(
             h,
             "<tr><th class=l>{} <span class=small>({row_fam})</span></th>",
@@ -232,9 +238,10 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
         );
         for s in names {
             // Grid-only structures cannot store a torus: their row is measured on the grids.
-            let refused_row_family = cells(r, s, "construction", "construction", row_fam)
-                .iter()
-                .all(|m| m.status == Status::Refused);
+            let refused_row_family =
+                cells(r, s, Subject::Construction, Kernel::Construction, row_fam)
+                    .iter()
+                    .all(|m| m.status == Status::Refused);
             let fam = if refused_row_family { "grid" } else { row_fam };
             let on = if fam != row_fam {
                 format!("<br><span class=small>on {fam}s</span>")
@@ -246,15 +253,12 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
                 .iter()
                 .find(|x| x.name == *s)
                 .and_then(|x| x.costs.iter().find(|c| c.operator == op))
-                .map(|c| c.cost.clone())
+                .map(|c| c.cost.notation())
                 .unwrap_or_default();
             let fit = r.fits.iter().find(|f| {
-                f.structure == *s
-                    && f.operator == op.name()
-                    && f.kernel == kernel
-                    && f.family == fam
+                f.structure == *s && f.operator == op && f.kernel == kernel && f.family == fam
             });
-            let cs = cells(r, s, op.name(), kernel, fam);
+            let cs = cells(r, s, Subject::Query(op), kernel, fam);
             let last_measured = cs.iter().rev().find(|m| m.status == Status::Measured);
             let last = cs.last();
             let (class, body) = match (last, fit) {
@@ -301,7 +305,7 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
             let l: Vec<String> = r
                 .libigl
                 .iter()
-                .filter(|l| l.operator == op.name())
+                .filter(|l| l.operator == Subject::Query(op))
                 .map(|l| {
                     format!(
                         "{}: {} per element{}",
@@ -326,12 +330,8 @@ fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("<h2>Time per query against mesh size</h2><div class=read><b>How to read them.</b> Both axes are logarithmic, so a power law is a straight line whose slope is its exponent: a flat line is a constant-time query, a line rising one decade per decade of size is a linear scan. Lines that stop early were skipped at larger sizes (too slow to measure).</div><div class=plots>");
     for op in Operator::ALL {
         let fam = family_of(op);
-        let kernel = if op == Operator::BoundaryCurves {
-            "sweep"
-        } else {
-            "sampled"
-        };
-        let series = lines(r, op.name(), kernel, fam, ci);
+        let kernel = table_kernel(op);
+        let series = lines(r, Subject::Query(op), kernel, fam, ci);
         h.push_str(&svg::loglog(
             &format!("{} ({fam}, {kernel})", op.name()),
             "triangles",
@@ -366,12 +366,12 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
             let cons = r
                 .measurements
                 .iter()
-                .find(|m| m.structure == *s && m.mesh == mesh && m.kernel == "construction");
+                .find(|m| m.structure == *s && m.mesh == mesh && m.kernel == Kernel::Construction);
             let m = r.measurements.iter().find(|m| {
                 m.structure == *s
                     && m.mesh == mesh
-                    && m.operator == op.name()
-                    && m.kernel == "sweep"
+                    && m.operator == Subject::Query(op)
+                    && m.kernel == Kernel::Sweep
             });
             let cell = match m {
                 Some(m) if m.status == Status::Measured => {
@@ -401,8 +401,8 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
 
 fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("<h2>Application workloads (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The workloads of the published Surface_mesh benchmark, which OpenMesh and pmp-library users compare on: <i>circulators</i> (for each vertex count its faces, for each face subtract its vertices; the total must be 0), <i>barycenter</i> (mean of all positions), <i>normals</i> (face normals, then vertex normals), <i>smoothing</i> (one step of uniform 1-ring averaging of interior vertices). Time per element on closed tori of growing size; every structure's result is cross-checked.</div><div class=plots>");
-    for w in crate::kernels::Workload::ALL {
-        let series = lines(r, w.name(), "workload", "torus", ci);
+    for w in Workload::ALL {
+        let series = lines(r, Subject::Workload(w), Kernel::Workload, "torus", ci);
         h.push_str(&svg::loglog(
             w.name(),
             "triangles",
@@ -417,33 +417,36 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let rows: Vec<(String, usize, f64, Option<f64>)> = r
-        .measurements
-        .iter()
-        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
-        .filter_map(|m| {
-            let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
-            match m.bytes {
-                // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
-                // own allocator measurement (mallinfo2), drawn without a tick.
-                Some(0) => {
-                    declared.map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None))
+    let rows: Vec<(String, usize, f64, Option<f64>)> =
+        r.measurements
+            .iter()
+            .filter(|m| {
+                m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+            })
+            .filter_map(|m| {
+                let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
+                match m.bytes {
+                    // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
+                    // own allocator measurement (mallinfo2), drawn without a tick.
+                    Some(0) => declared
+                        .map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None)),
+                    Some(b) => Some((
+                        m.structure.clone(),
+                        ci(&m.structure),
+                        b as f64 / tri as f64,
+                        declared,
+                    )),
+                    None => None,
                 }
-                Some(b) => Some((
-                    m.structure.clone(),
-                    ci(&m.structure),
-                    b as f64 / tri as f64,
-                    declared,
-                )),
-                None => None,
-            }
-        })
-        .collect();
+            })
+            .collect();
     let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
     let peak: Vec<(String, usize, f64, Option<f64>)> = r
         .measurements
         .iter()
-        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
+        .filter(|m| {
+            m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+        })
         .filter_map(|m| {
             m.peak_bytes.map(|b| {
                 (
@@ -465,7 +468,7 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
 fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction.</div><div class=plots>");
     for fam in ["torus", "grid"] {
-        let series = lines(r, "construction", "construction", fam, ci);
+        let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
         h.push_str(&svg::loglog(
             &format!("construction ({fam})"),
             "faces",
@@ -534,7 +537,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
             mesh.faces
         );
         for n in names {
-            let find = |op: &str, kernel: &str| {
+            let find = |op: Subject, kernel: Kernel| {
                 r.measurements.iter().find(|m| {
                     m.mesh == mesh.name
                         && m.structure == *n
@@ -542,7 +545,10 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
                         && m.kernel == kernel
                 })
             };
-            let cell = match (find("construction", "construction"), find("r00", "sweep")) {
+            let cell = match (
+                find(Subject::Construction, Kernel::Construction),
+                find(Subject::Query(Operator::R00), Kernel::Sweep),
+            ) {
                 (Some(c), _) if c.status == Status::Refused => format!(
                     "<td class=skip title=\"{}\">refused ({})</td>",
                     esc(c.note.as_deref().unwrap_or_default()),

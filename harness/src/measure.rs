@@ -3,11 +3,11 @@
 //! skipped with the estimate; checksums are compared across structures by [`cross_check`].
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
-use crate::results::{Measurement, Status};
-use crate::timing::{time, Budget};
+use crate::results::{Measurement, Status, Subject};
+use crate::timing::{time, Budget, Timing};
 use std::collections::HashMap;
 use std::time::Duration;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
 
 /// Reads the process's heap use (the report binary's counting allocator).
 pub trait MemoryMeter {
@@ -55,11 +55,11 @@ pub struct Estimator {
 }
 
 /// (structure, family, operator, kernel).
-type EstimatorKey = (String, String, String, String);
+type EstimatorKey = (&'static str, String, Subject, Kernel);
 
 impl Estimator {
-    fn key(s: &str, fam: &str, op: &str, k: &str) -> EstimatorKey {
-        (s.into(), fam.into(), op.into(), k.into())
+    fn key(s: &'static str, fam: &str, subject: Subject, kernel: Kernel) -> EstimatorKey {
+        (s, fam.into(), subject, kernel)
     }
 
     /// Marks `cell` skipped, with its estimated ns per item, when one run at `triangles` is
@@ -90,11 +90,11 @@ impl Estimator {
     }
 }
 
-fn measurement(structure: &str, op: &str, kernel: &str, case: &MeshCase) -> Measurement {
+fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
     Measurement {
         structure: structure.into(),
-        operator: op.into(),
-        kernel: kernel.into(),
+        operator: subject,
+        kernel,
         mesh: case.name.into(),
         family: case.family.into(),
         triangles: case.soup.num_faces(),
@@ -114,8 +114,8 @@ fn measurement(structure: &str, op: &str, kernel: &str, case: &MeshCase) -> Meas
     }
 }
 
-/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails only when a
-/// kernel is not deterministic.
+/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel
+/// is not deterministic or a baseline's native kernel fails.
 pub fn measure_structure<M: MeshTopology>(
     case: &MeshCase,
     plan: &Plan,
@@ -130,7 +130,7 @@ pub fn measure_structure<M: MeshTopology>(
     };
     let n = case.soup.num_faces();
     // Construction: memory first (one build, measured by the allocator), then the timing.
-    let mut cons = measurement(M::NAME, "construction", "construction", case);
+    let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
     meter.reset_peak();
     let before = meter.current();
     let built = M::from_soup(case.soup);
@@ -150,20 +150,32 @@ pub fn measure_structure<M: MeshTopology>(
     cons.declared_bytes = Some(m.heap_bytes() as u64);
     // Construction is timed with at least three runs and a second's budget whatever the cell
     // budget: one build of a 1M-triangle mesh is a single noisy sample otherwise.
-    let (t, _) = time(
-        Budget {
-            time: budget.time.max(Duration::from_secs(1)),
-            min_reps: 3,
-            max_reps: plan.max_reps.min(7),
-        },
-        || {
-            M::native_construction(case.soup)
-                .unwrap_or_else(|| M::from_soup(case.soup))
-                .map(|m| m.num_faces())
-                .unwrap_or(0)
-        },
-    )?;
-    cons.native = M::native_construction(case.soup).is_some();
+    let construction_budget = Budget {
+        time: budget.time.max(Duration::from_secs(1)),
+        min_reps: 3,
+        max_reps: plan.max_reps.min(7),
+    };
+    let native = M::native();
+    let native_build = native.and_then(|k| {
+        time_native(construction_budget, || {
+            k.construction(case.soup).map(|r| r.map(|m| m.num_faces()))
+        })
+    });
+    let t = match native_build {
+        Some(timed) => {
+            cons.native = true;
+            timed
+                .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?
+                .0
+        }
+        // `from_soup` succeeded above: a later run that fails differs from the first.
+        None => {
+            time(construction_budget, || {
+                M::from_soup(case.soup).map(|m| m.num_faces()).ok()
+            })?
+            .0
+        }
+    };
     fill(&mut cons, t, n.max(1), None);
     out.push(cons);
 
@@ -171,10 +183,11 @@ pub fn measure_structure<M: MeshTopology>(
     let sampled = Queries::sampled(&m, case.queries);
     let mut curves = BoundaryCurves::default();
     for op in Operator::ALL {
-        let kernels: &[Kernel] = if op == Operator::BoundaryCurves {
+        // Boundary curves are one question about the whole mesh: nothing to sample.
+        let kernels: &[Kernel] = if op.input() == Input::Mesh {
             &[Kernel::Sweep]
         } else {
-            &[Kernel::Sweep, Kernel::Sampled]
+            &Kernel::QUERIES
         };
         for &kernel in kernels {
             if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
@@ -186,26 +199,18 @@ pub fn measure_structure<M: MeshTopology>(
                 &sampled
             };
             let items = q.count(op);
-            let mut cell = measurement(M::NAME, op.name(), kernel.name(), case);
+            let mut cell = measurement(M::NAME, Subject::Query(op), kernel, case);
             cell.items = items;
             // A sweep's run grows with n^(1+e), a sampled run (fixed count) with n^e.
             let e =
                 M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
-            let key = Estimator::key(M::NAME, case.family, op.name(), kernel.name());
+            let key = Estimator::key(M::NAME, case.family, Subject::Query(op), kernel);
             if est.skips(&key, n, e, plan, &mut cell) {
                 out.push(cell);
                 continue;
             }
-            let (t, sum, native) =
-                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(|e| {
-                    format!(
-                        "{} {} {} on {}: {e}",
-                        M::NAME,
-                        op.name(),
-                        kernel.name(),
-                        case.name
-                    )
-                })?;
+            let (t, sum, native) = time_kernel(&m, op, kernel, q, &mut curves, budget)
+                .map_err(|e| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name))?;
             cell.native = native;
             fill(&mut cell, t, items.max(1), Some(sum.to_string()));
             est.last.insert(key, (n, t.median_ns));
@@ -214,7 +219,7 @@ pub fn measure_structure<M: MeshTopology>(
     }
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
-        let mut cell = measurement(M::NAME, w.name(), "workload", case);
+        let mut cell = measurement(M::NAME, Subject::Workload(w), Kernel::Workload, case);
         let items = w.items(&m);
         cell.items = items;
         // A workload asks its relations once per element: its run grows like n^(1+e) for the
@@ -224,30 +229,20 @@ pub fn measure_structure<M: MeshTopology>(
                 .iter()
                 .map(|&op| M::cost(op).expected_exponent())
                 .fold(0.0, f64::max);
-        let key = Estimator::key(M::NAME, case.family, w.name(), "workload");
+        let key = Estimator::key(M::NAME, case.family, Subject::Workload(w), Kernel::Workload);
         if est.skips(&key, n, e, plan, &mut cell) {
             out.push(cell);
             continue;
         }
-        let native = m.native_workload(w.name()).is_some();
-        let (t, r) = if native {
-            let failure = std::cell::Cell::new(None);
-            let timed = time(budget, || match m.native_workload(w.name()) {
-                Some(Ok(value)) => value.to_bits(),
-                failed => {
-                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
-                    0
-                }
-            });
-            if let Some(e) = failure.take() {
-                return Err(format!("{} {} on {}: {e}", M::NAME, w.name(), case.name));
-            }
-            timed
-        } else {
-            time(budget, || run_workload(&m, w, &mut buf).to_bits())
-        }
-        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
-        cell.native = native;
+        let native_run = native.and_then(|k| {
+            time_native(budget, || {
+                k.workload(&mut m, w).map(|r| r.map(f64::to_bits))
+            })
+        });
+        cell.native = native_run.is_some();
+        let (t, r) = native_run
+            .unwrap_or_else(|| time(budget, || run_workload(&m, w, &mut buf).to_bits()))
+            .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
         fill(
             &mut cell,
             t,
@@ -262,7 +257,7 @@ pub fn measure_structure<M: MeshTopology>(
 
 /// Times one kernel of `op` on a built structure: the structure's native loop when it has one
 /// (a baseline behind FFI), the harness's generic kernel otherwise. Returns the timing, the
-/// checksum and whether it ran natively.
+/// checksum and whether it ran natively. `kernel` is [`Kernel::Sweep`] or [`Kernel::Sampled`].
 pub fn time_kernel<M: MeshTopology>(
     m: &M,
     op: Operator,
@@ -270,45 +265,63 @@ pub fn time_kernel<M: MeshTopology>(
     q: &Queries,
     curves: &mut BoundaryCurves,
     budget: Budget,
-) -> Result<(crate::timing::Timing, u64, bool), String> {
-    let ids: Vec<u32> = match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            q.vertices.iter().map(|v| v.0).collect()
-        }
-        Operator::R20 | Operator::R21 | Operator::R22 => q.faces.iter().map(|f| f.0).collect(),
-        _ => Vec::new(),
-    };
-    let native = match kernel {
-        Kernel::Sweep => m.native_sweep(op).is_some(),
-        Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
-    };
-    let (t, sum) = if native {
-        let failure = std::cell::Cell::new(None);
-        let timed = time(budget, || {
-            let sum = match kernel {
-                Kernel::Sweep => m.native_sweep(op),
-                Kernel::Sampled => m.native_sampled(op, &ids),
+) -> Result<(Timing, u64, bool), String> {
+    let native = M::native();
+    let timed = match kernel {
+        Kernel::Sweep => native.and_then(|k| time_native(budget, || k.sweep(m, op))),
+        Kernel::Sampled => {
+            // Vertex and face ids are the input's in every structure, so a baseline's loop
+            // can take them as they are; edge and (edge, face) samples run the generic kernel.
+            let ids: Vec<u32> = match op.input() {
+                Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
+                Input::Face => q.faces.iter().map(|f| f.0).collect(),
+                Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
             };
-            match sum {
-                Some(Ok(sum)) => sum,
-                failed => {
-                    failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
-                    0
-                }
-            }
-        });
-        if let Some(e) = failure.take() {
-            return Err(e);
+            native
+                .filter(|_| !ids.is_empty())
+                .and_then(|k| time_native(budget, || k.sampled(m, op, &ids)))
         }
-        timed
-    } else {
-        time(budget, || run(m, op, q, curves))
-    }?;
-    Ok((t, sum, native))
+        Kernel::Workload | Kernel::Construction => {
+            return Err(format!("{kernel} is not a kernel of an operator"))
+        }
+    };
+    match timed {
+        Some(timed) => timed.map(|(t, sum)| (t, sum, true)),
+        None => time(budget, || run(m, op, q, curves)).map(|(t, sum)| (t, sum, false)),
+    }
+}
+
+/// Times a baseline's native kernel `native` (see [`topolab_structures::NativeKernels`]):
+/// `None` when it has no loop of its own for this case (its first answer is `None`), else the
+/// timing and result. A failure inside the loop, in any run, fails the measurement with the
+/// library's error instead of timing a zero.
+fn time_native<T: PartialEq + std::fmt::Debug>(
+    budget: Budget,
+    mut native: impl FnMut() -> Option<topolab_structures::Result<T>>,
+) -> Option<Result<(Timing, T), String>> {
+    if let Err(e) = native()? {
+        return Some(Err(native_failure(Some(Err(e)))));
+    }
+    let failure = std::cell::Cell::new(None);
+    let timed = time(budget, || match native() {
+        Some(Ok(answer)) => Some(answer),
+        failed => {
+            failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+            None
+        }
+    });
+    Some(match failure.take() {
+        Some(e) => Err(e),
+        None => timed.and_then(|(t, answer)| {
+            answer
+                .map(|answer| (t, answer))
+                .ok_or_else(|| native_failure(None))
+        }),
+    })
 }
 
 /// The message for a native kernel that failed while timed: a baseline's exception caught at
-/// the FFI wall (`Some(Err)`), or a hook that stopped answering (`None`). The cell then fails
+/// the FFI wall (`Some(Err)`), or a kernel that stopped answering (`None`). The cell then fails
 /// loudly instead of timing a zero checksum.
 fn native_failure(failed: Option<topolab_structures::Result<()>>) -> String {
     match failed {
@@ -324,7 +337,7 @@ pub fn measure_sweep<M: MeshTopology>(
     op: Operator,
     plan: &Plan,
 ) -> Result<Measurement, String> {
-    let mut cell = measurement(M::NAME, op.name(), Kernel::Sweep.name(), case);
+    let mut cell = measurement(M::NAME, Subject::Query(op), Kernel::Sweep, case);
     let m = match M::from_soup(case.soup) {
         Ok(m) => m,
         Err(e) => {
@@ -368,7 +381,7 @@ fn fill(cell: &mut Measurement, t: crate::timing::Timing, items: usize, checksum
 /// kernel, mesh and the structures that disagree. Workload results (floats) agree within a
 /// relative 1e-6.
 pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), String> {
-    let mut first: HashMap<(&str, &str), (&str, &str)> = HashMap::new();
+    let mut first: HashMap<(Subject, Kernel), (&str, &str)> = HashMap::new();
     for m in measurements
         .iter()
         .filter(|m| m.mesh == mesh && m.status == Status::Measured)
@@ -376,12 +389,12 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
         let Some(sum) = m.checksum.as_deref() else {
             continue;
         };
-        match first.get(&(m.operator.as_str(), m.kernel.as_str())) {
+        match first.get(&(m.operator, m.kernel)) {
             None => {
-                first.insert((&m.operator, &m.kernel), (&m.structure, sum));
+                first.insert((m.operator, m.kernel), (&m.structure, sum));
             }
             Some(&(s0, sum0)) => {
-                let same = if m.kernel == "workload" {
+                let same = if m.kernel == Kernel::Workload {
                     let (a, b) = (
                         sum0.parse::<f64>().unwrap_or(f64::NAN),
                         sum.parse::<f64>().unwrap_or(f64::NAN),
@@ -407,7 +420,7 @@ mod tests {
     use super::*;
     use crate::kernels::sample_queries;
     use std::cell::Cell;
-    use topolab_structures::{meshes, ExplicitStorage, VertexList};
+    use topolab_structures::{meshes, Error, ExplicitStorage, Result, VertexList};
 
     struct NoMeter(Cell<usize>);
     impl MemoryMeter for NoMeter {
@@ -454,7 +467,7 @@ mod tests {
         // A tampered checksum is caught and named.
         let i = out
             .iter()
-            .position(|m| m.structure == "explicit" && m.operator == "r22")
+            .position(|m| m.structure == "explicit" && m.operator == Subject::Query(Operator::R22))
             .unwrap();
         out[i].checksum = Some("1".into());
         let err = cross_check(&out, "t").unwrap_err();
@@ -464,10 +477,52 @@ mod tests {
         );
     }
 
+    fn foreign() -> Error {
+        Error::Foreign {
+            library: "Baseline",
+            call: "sweep",
+            reason: "a test failure",
+        }
+    }
+
+    /// Times `answers` (one per call, then `None`) as a native kernel.
+    fn time_answers(answers: Vec<Option<Result<u64>>>) -> Option<Result<u64, String>> {
+        let budget = Budget {
+            time: Duration::from_millis(1),
+            min_reps: 2,
+            max_reps: 3,
+        };
+        let mut answers = answers.into_iter();
+        time_native(budget, || answers.next().flatten()).map(|r| r.map(|(_, sum)| sum))
+    }
+
+    #[test]
+    fn native_kernels_are_timed_when_they_answer_and_fail_loudly() {
+        // No loop of its own: the harness's generic kernel runs instead.
+        assert_eq!(time_answers(vec![None]), None);
+        let always = (0..9).map(|_| Some(Ok(5))).collect();
+        assert_eq!(time_answers(always), Some(Ok(5)));
+        // A failure in the first run, or in a later one, is the library's error, not a 0.
+        for answers in [
+            vec![Some(Err(foreign()))],
+            vec![Some(Ok(5)), Some(Ok(5)), Some(Err(foreign())), Some(Ok(5))],
+        ] {
+            let err = time_answers(answers).unwrap().unwrap_err();
+            assert!(
+                err.contains("native kernel failed") && err.contains("a test failure"),
+                "{err}"
+            );
+        }
+        let err = time_answers(vec![Some(Ok(5)), Some(Ok(5))])
+            .unwrap()
+            .unwrap_err();
+        assert!(err.contains("stopped answering"), "{err}");
+    }
+
     #[test]
     fn a_cell_estimated_over_budget_is_skipped_with_its_estimate() {
         let mut est = Estimator::default();
-        let key = Estimator::key("s", "torus", "r00", "sweep");
+        let key = Estimator::key("s", "torus", Subject::Query(Operator::R00), Kernel::Sweep);
         est.last.insert(key.clone(), (1000, 1e6));
         // 16x the size at exponent 2: 256 ms.
         assert_eq!(est.estimate(&key, 16000, 2.0), Some(256e6));

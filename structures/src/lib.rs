@@ -62,7 +62,10 @@ pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::error::{Error, Format, Location, Result};
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use self::core::soup::{Connectivity, PolygonSoup};
-pub use self::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+pub use self::core::topology::{
+    BoundaryCurves, Capabilities, Cost, Element, Input, MeshTopology, NativeKernels, Operator,
+};
+pub use self::core::workload::Workload;
 pub use families::che::{CheL0, CheL1, CheL2, CheL3};
 pub use families::corner_lists::explicit::ExplicitStorage;
 pub use families::corner_lists::vertex_list::VertexList;

@@ -1,6 +1,7 @@
 //! What every part of the crate speaks: element ids ([`ids`]), the input every structure is
 //! built from ([`soup`]), the one trait every structure implements with its operators and
-//! declared costs ([`topology`]), the typed errors ([`error`]) and the geometric attributes
+//! declared costs ([`topology`]), the application workloads named across the lab ([`workload`]),
+//! the typed errors ([`error`]) and the geometric attributes
 //! computed through the trait ([`attributes`]).
 
 pub mod attributes;
@@ -8,3 +9,4 @@ pub mod error;
 pub mod ids;
 pub mod soup;
 pub mod topology;
+pub mod workload;

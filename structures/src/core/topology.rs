@@ -1,5 +1,6 @@
-//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers and
-//! the theoretical [`Cost`] each structure declares for each of them.
+//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers (and
+//! the [`Input`] each takes), the theoretical [`Cost`] each structure declares for each of them,
+//! and the [`NativeKernels`] a baseline behind an FFI runs itself.
 //!
 //! Relations follow the notation `Rpq` of the CHE thesis chapter: given a p-simplex, the
 //! q-simplices around it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a
@@ -9,7 +10,52 @@
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
+use crate::core::workload::Workload;
 use glam::DVec3;
+
+/// A kind of mesh element.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Element {
+    /// A vertex (0-simplex).
+    Vertex,
+    /// An edge (1-simplex).
+    Edge,
+    /// A face (2-cell).
+    Face,
+    /// The whole mesh.
+    Mesh,
+}
+
+/// What one query of an [`Operator`] is given ([`Operator::input`]): the element whose
+/// neighbourhood it asks about, which is also what a sweep of the operator walks over.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Input {
+    /// A vertex.
+    Vertex,
+    /// An edge.
+    Edge,
+    /// A face.
+    Face,
+    /// An edge and a face it bounds (successor, predecessor). Every (edge, face) pair of a
+    /// mesh is one edge of one face, so a sweep walks the faces and each face's edges.
+    EdgeOfFace,
+    /// Nothing: the question is about the whole mesh (boundary curves).
+    Mesh,
+}
+
+impl Input {
+    /// The elements a query is given, in argument order.
+    pub const fn elements(self) -> &'static [Element] {
+        match self {
+            Input::Vertex => &[Element::Vertex],
+            Input::Edge => &[Element::Edge],
+            Input::Face => &[Element::Face],
+            Input::EdgeOfFace => &[Element::Edge, Element::Face],
+            Input::Mesh => &[Element::Mesh],
+        }
+    }
+}
 
 /// Every operator a structure answers, in catalogue order.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
@@ -88,6 +134,20 @@ impl Operator {
     /// The operator of a kebab-case name.
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|op| op.name() == name)
+    }
+
+    /// What one query of the operator is given (the lab's one answer to "which element does
+    /// this operator take?").
+    pub const fn input(self) -> Input {
+        match self {
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+                Input::Vertex
+            }
+            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => Input::Edge,
+            Operator::R20 | Operator::R21 | Operator::R22 => Input::Face,
+            Operator::EdgeSuccessor | Operator::EdgePredecessor => Input::EdgeOfFace,
+            Operator::BoundaryCurves => Input::Mesh,
+        }
     }
 }
 
@@ -296,35 +356,37 @@ pub trait MeshTopology: Sized {
     /// For teaching: what the structure stores, record by record, with the lecture's field names.
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
 
-    /// Construction the way a baseline's own API does it, for timing (OpenMesh: `reserve`,
-    /// `add_vertex`, `add_face`, without the lab's up-front manifold checks, which are not
-    /// OpenMesh's cost). `None` (the default): [`MeshTopology::from_soup`] is what is timed.
-    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
-        let _ = soup;
+    /// The kernels a baseline runs itself, for timing (see [`NativeKernels`]); `None` (the
+    /// default): the harness times [`MeshTopology::from_soup`] and its own generic kernels.
+    /// (A baseline returns a constant; the lifetime `'a` spares the structures generic over
+    /// a type, such as the half-edge over its links, a `'static` bound.)
+    fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
         None
     }
+}
 
-    /// A whole sweep of `op` over every element, run by the structure itself and folded into
-    /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
-    /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
-    /// the harness run its one generic kernel; `Some(Err(..))` when the library failed inside
-    /// the loop (a loud error of the measurement, never a silent zero).
-    fn native_sweep(&self, op: Operator) -> Option<Result<u64>> {
-        let _ = op;
-        None
-    }
+/// The kernels of a baseline behind an FFI boundary (OpenMesh), which the harness times instead
+/// of its own: per-query calls across the FFI would measure the FFI instead of the library, so
+/// whole loops run on the other side and return the harness's checksum. Reached through
+/// [`MeshTopology::native`].
+///
+/// Each kernel answers `None` when the baseline has no loop of its own for that case (the
+/// harness then runs its generic kernel) and `Some(Err(..))` when the library failed inside
+/// the loop: a loud error of the measurement, never a silent zero.
+pub trait NativeKernels<M> {
+    /// Construction the way the baseline's own API does it (OpenMesh: `reserve`, `add_vertex`,
+    /// `add_face`, without the lab's up-front manifold checks, which are not OpenMesh's cost).
+    fn construction(&self, soup: &PolygonSoup) -> Option<Result<M>>;
 
-    /// Like [`MeshTopology::native_sweep`], for the sampled vertex or face queries `ids`.
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        let _ = (op, ids);
-        None
-    }
+    /// A whole sweep of `op` over every element of `mesh`, folded into the harness's checksum.
+    fn sweep(&self, mesh: &M, op: Operator) -> Option<Result<u64>>;
 
-    /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
-    /// Takes `&mut self` because a baseline may keep its results (normals) in the mesh; running
-    /// it twice must give the same result.
-    fn native_workload(&mut self, name: &str) -> Option<Result<f64>> {
-        let _ = name;
-        None
-    }
+    /// Like [`NativeKernels::sweep`], over the sampled query elements `ids` only: vertex, edge
+    /// or face ids by [`Operator::input`] (face ids for [`Input::EdgeOfFace`], each asking
+    /// about every edge of the face).
+    fn sampled(&self, mesh: &M, op: Operator, ids: &[u32]) -> Option<Result<u64>>;
+
+    /// An application workload, returning its result. Takes `&mut M` because a baseline may
+    /// keep its results (normals) in the mesh; running it twice must give the same result.
+    fn workload(&self, mesh: &mut M, workload: Workload) -> Option<Result<f64>>;
 }

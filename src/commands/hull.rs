@@ -2,7 +2,7 @@
 //! of the lecture on 3D convex hulls, built on the winged-edge; prints counts and time, optionally
 //! writes the hull as OBJ (outward triangles, the hull's vertices only).
 
-use crate::cli::{load_mesh, Failure};
+use crate::input::{load_mesh, Failure};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;

@@ -4,10 +4,12 @@
 //! vertex-star algorithm makes (Algorithms 5, 6, 7) to answer the 1-ring of vertex N, and the
 //! `V[]` read R00 adds per neighbour; the count at the end is all of them.
 
-use crate::cli::{mesh_or_tetrahedron, Failure};
+use crate::input::{mesh_or_tetrahedron, Failure};
 use std::fmt::Write as _;
 use topolab_structures::che::{next, triangle, CheLevel, StarRead};
-use topolab_structures::{CheL0, CheL1, CheL2, CheL3, MeshTopology, PolygonSoup, VertexId};
+use topolab_structures::{
+    CheL0, CheL1, CheL2, CheL3, MeshTopology, Operator, PolygonSoup, VertexId,
+};
 
 /// The name `explain` accepts for the four levels at once.
 pub const NAME: &str = "che";
@@ -20,7 +22,8 @@ pub fn explain_che(
 ) -> Result<String, Failure> {
     let (soup, label) = mesh_or_tetrahedron(mesh, false)?;
     let mut out = format!("Compact Half-Edge (CHE), levels 0-3, for {label}\n");
-    match (trace, vertex) {
+    let traced = trace.map(|name| (name, Operator::from_name(name)));
+    match (traced, vertex) {
         (None, _) => {
             out.push_str(
                 "Triangle t owns half-edges 3t, 3t+1, 3t+2; half-edge 3t+i leaves corner i of face t.\n",
@@ -30,7 +33,7 @@ pub fn explain_che(
             containers::<CheL2>(&soup, &mut out)?;
             containers::<CheL3>(&soup, &mut out)?;
         }
-        (Some("r00" | "r01" | "r02"), Some(v)) => {
+        (Some((_, Some(Operator::R00 | Operator::R01 | Operator::R02))), Some(v)) => {
             if v as usize >= soup.num_vertices() {
                 return Err(Failure::usage(format!(
                     "--vertex {v}: the mesh has {} vertices",
@@ -46,9 +49,9 @@ pub fn explain_che(
             star_trace::<CheL2>(&soup, v, &mut out)?;
             star_trace::<CheL3>(&soup, v, &mut out)?;
         }
-        (Some(op), Some(_)) => {
+        (Some((name, _)), Some(_)) => {
             return Err(Failure::usage(format!(
-                "--trace {op}: only the vertex star (r00, r01, r02) can be traced"
+                "--trace {name}: only the vertex star (r00, r01, r02) can be traced"
             )))
         }
         (Some(_), None) => return Err(Failure::usage("--trace needs --vertex N".into())),

@@ -1,20 +1,21 @@
 //! `topolab report`: measures every structure on the size sweep and writes `results.json` and
 //! a self-contained `index.html`.
 
-use crate::cli::Failure;
+use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
+use topolab_harness::kernels::Kernel;
 use topolab_harness::measure::{
     cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
 };
 use topolab_harness::results::{
-    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching,
+    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
-use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.
 #[derive(clap::Args, Debug, Clone)]
@@ -81,7 +82,7 @@ impl StructureVisitor for Describe {
                 .iter()
                 .map(|&op| CostRow {
                     operator: op,
-                    cost: M::cost(op).notation().into(),
+                    cost: M::cost(op),
                     expected_exponent: M::cost(op).expected_exponent(),
                 })
                 .collect(),
@@ -483,11 +484,19 @@ fn libigl(
         };
         let edges = soup.connectivity().map(|c| c.num_edges()).unwrap_or(0);
         for r in v["results"].as_array().into_iter().flatten() {
-            let op = r["operator"].as_str().unwrap_or_default().to_string();
+            let Some(subject) = r["operator"].as_str().and_then(Subject::from_name) else {
+                continue;
+            };
+            // The lab's answer over the whole mesh: an operator's sweep, or the workload.
+            let kernel = match subject {
+                Subject::Query(_) => Kernel::Sweep,
+                Subject::Workload(_) => Kernel::Workload,
+                Subject::Construction => Kernel::Construction,
+            };
             let lab = measurements.iter().find(|m| {
                 m.mesh == *name
-                    && m.operator == op
-                    && (m.kernel == "sweep" || m.kernel == "workload")
+                    && m.operator == subject
+                    && m.kernel == kernel
                     && m.checksum.is_some()
             });
             let (checksum, agrees) = match (
@@ -505,14 +514,18 @@ fn libigl(
                 }
                 _ => continue,
             };
-            let items = match op.as_str() {
-                "r10" => edges,
-                "r22" | "boundary-curves" => soup.num_faces(),
-                _ => soup.num_vertices(),
+            let items = match subject {
+                Subject::Query(op) => match op.input() {
+                    Input::Vertex => soup.num_vertices(),
+                    Input::Edge => edges,
+                    // Boundary curves too: per face, like the face relations.
+                    Input::Face | Input::EdgeOfFace | Input::Mesh => soup.num_faces(),
+                },
+                Subject::Workload(_) | Subject::Construction => soup.num_vertices(),
             };
             rows.push(topolab_harness::results::LibiglRow {
                 mesh: name.clone(),
-                operator: op,
+                operator: subject,
                 function: r["function"].as_str().unwrap_or_default().into(),
                 checksum,
                 agrees,

@@ -2,7 +2,7 @@
 //! the result, optionally renumbered (`--order`), to make the large inputs of the benchmarks
 //! from real or generated meshes, in files other tools (the C++ baseline) can read too.
 
-use crate::cli::{load_mesh, Failure};
+use crate::input::{load_mesh, Failure};
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::Instant;

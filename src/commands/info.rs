@@ -1,0 +1,81 @@
+//! `topolab info`: counts, boundary curves, Euler characteristic and genus of a mesh, computed
+//! through a structure.
+
+use crate::input::{load_mesh, unknown_structure, Failure};
+use crate::registry::{self, StructureVisitor};
+use std::fmt::Write as _;
+use topolab_structures::summary::{summarize, Summary};
+use topolab_structures::{Error, MeshTopology, PolygonSoup};
+
+struct InfoVisit<'a>(&'a PolygonSoup);
+impl StructureVisitor for InfoVisit<'_> {
+    type Output = Result<Summary, Error>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        let m = M::from_soup(self.0)?;
+        Ok(summarize(&m))
+    }
+}
+
+/// The text of `topolab info MESH [--structure NAME] [--json]`.
+pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
+    let soup = load_mesh(spec)?;
+    let summary = registry::visit(structure, InfoVisit(&soup))
+        .ok_or_else(|| unknown_structure(structure))?
+        .map_err(|e| Failure {
+            message: format!("{structure} cannot store {spec}: {e}"),
+            code: 1,
+        })?;
+    let non_manifold_vertices = soup
+        .connectivity()
+        .map(|c| c.vertex_fans(&soup).iter().filter(|&&n| n > 1).count())
+        .unwrap_or(0);
+    if json {
+        let mut v = serde_json::to_value(&summary).expect("serialisable");
+        v["mesh"] = spec.into();
+        v["non_manifold_vertices"] = non_manifold_vertices.into();
+        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
+    }
+    let s = &summary;
+    let mut out = String::new();
+    let _ = writeln!(out, "mesh:                 {spec}");
+    let _ = writeln!(out, "structure:            {}", s.structure);
+    let _ = writeln!(
+        out,
+        "vertices:             {} ({} unused)",
+        s.vertices, s.unused_vertices
+    );
+    let _ = writeln!(out, "edges:                {}", s.edges);
+    let _ = writeln!(
+        out,
+        "faces:                {} ({})",
+        s.faces,
+        if s.triangles_only {
+            "triangles"
+        } else {
+            "polygons"
+        }
+    );
+    let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
+    let _ = writeln!(out, "boundary curves:      {}", s.boundary_curves);
+    let _ = writeln!(out, "components:           {}", s.components);
+    let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
+    match s.genus {
+        Some(g) => writeln!(out, "genus:                {g}"),
+        None => writeln!(
+            out,
+            "genus:                undefined ({} components)",
+            s.components
+        ),
+    }
+    .ok();
+    let _ = writeln!(
+        out,
+        "manifold:             {}",
+        if non_manifold_vertices == 0 {
+            "yes (oriented, every vertex one fan)".to_string()
+        } else {
+            format!("edges yes, {non_manifold_vertices} non-manifold vertices")
+        }
+    );
+    Ok(out)
+}
