@@ -286,8 +286,23 @@ impl StructureVisitor for InfoVisit<'_> {
     }
 }
 
+/// Refuses a mesh with no vertex and no face (exit code 1): every count of it would be 0 and
+/// "manifold" or "genus" would be vacuous; `topolab check` reports it as `empty-mesh`.
+fn refuse_empty(spec: &str, soup: &PolygonSoup) -> Result<(), Failure> {
+    if soup.num_vertices() == 0 && soup.num_faces() == 0 {
+        return Err(Failure {
+            message: format!(
+                "{spec} is an empty mesh: it has no vertices and no faces (`topolab check` reports it as empty-mesh)"
+            ),
+            code: 1,
+        });
+    }
+    Ok(())
+}
+
 fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
     let soup = load_mesh(spec)?;
+    refuse_empty(spec, &soup)?;
     let summary = registry::visit(structure, InfoVisit(&soup))
         .ok_or_else(|| unknown_structure(structure))?
         .map_err(|e| Failure {
@@ -368,7 +383,11 @@ pub(crate) fn mesh_or_tetrahedron(
     grids_only: bool,
 ) -> Result<(PolygonSoup, String), Failure> {
     Ok(match mesh {
-        Some(spec) => (load_mesh(spec)?, spec.to_string()),
+        Some(spec) => {
+            let soup = load_mesh(spec)?;
+            refuse_empty(spec, &soup)?;
+            (soup, spec.to_string())
+        }
         // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
         None if grids_only => (
             meshes::grid(2, 2, true),
