@@ -174,7 +174,8 @@ pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
     })
 }
 
-fn unknown_structure(name: &str) -> Failure {
+/// The usage error for a structure name this build does not have.
+pub(crate) fn unknown_structure(name: &str) -> Failure {
     if name == registry::OPENMESH {
         return Failure::usage(format!("{name}: {}", crate::OPENMESH_MISSING));
     }

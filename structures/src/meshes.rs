@@ -533,6 +533,11 @@ pub fn perturb(soup: &PolygonSoup, amplitude: f64, seed: u64) -> PolygonSoup {
     out
 }
 
+/// The largest face count [`from_spec`] generates: sizes past what `u32` handles number (a
+/// triangle mesh of this many faces has 3·2³⁰ corners, under `u32::MAX`) are refused, not
+/// attempted.
+pub const MAX_FACES: usize = 1 << 30;
+
 /// A built-in mesh named on the command line: a canonical mesh name, or a generator with a
 /// face count for about N faces:
 ///
@@ -547,7 +552,7 @@ pub fn perturb(soup: &PolygonSoup, amplitude: f64, seed: u64) -> PolygonSoup {
 /// | `surface:G:K:N` | genus G and K boundary curves |
 ///
 /// `_` may separate digits (`torus:1_000_000`). `None` for anything else, and for more than
-/// 2^30 faces or 2^20 tunnels and openings.
+/// [`MAX_FACES`] faces or 2^20 tunnels and openings.
 pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     if let Some(m) = canonical_by_name(spec) {
         return Some(m.soup);
@@ -557,8 +562,7 @@ pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     let numbers: Vec<usize> = parts
         .map(|n| n.replace('_', "").parse().ok())
         .collect::<Option<_>>()?;
-    // Sizes past u32 handles (and slot counts that would need more) are refused, not attempted.
-    const MAX_FACES: usize = 1 << 30;
+    // Like sizes past MAX_FACES, more tunnels and openings than this are refused, not attempted.
     const MAX_SLOTS: usize = 1 << 20;
     let (&n, counts) = numbers.split_last()?;
     if n > MAX_FACES || counts.iter().sum::<usize>() > MAX_SLOTS {
