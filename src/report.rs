@@ -278,7 +278,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         .count();
     if skipped > 0 {
         results.notes.push(format!(
-            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate from smaller sizes.",
+            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate (from the smaller sizes, or, at a family's first size, from the time per query of a timed sample of its queries).",
             plan.cell_max.as_secs_f64()
         ));
     }
