@@ -36,8 +36,8 @@ pub struct ReportArgs {
     /// Output folder.
     #[arg(long, default_value = "reports/latest")]
     pub out: PathBuf,
-    /// Size of the memory probe's arrays, MiB (default 256, 64 with --quick).
-    #[arg(long, hide = true)]
+    /// Size of the memory probe's arrays, MiB, from 1 to 4096 (default 256, 64 with --quick).
+    #[arg(long, hide = true, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=4096))]
     pub probe_mb: Option<usize>,
 }
 

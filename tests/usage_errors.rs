@@ -48,6 +48,16 @@ fn report_sizes_the_generators_cannot_build_are_usage_errors() {
 }
 
 #[test]
+fn report_probe_sizes_past_what_can_be_allocated_are_usage_errors() {
+    // MiB times 2^20 overflowed (a panic in debug builds, a huge allocation in release).
+    for mb in ["0", "4097", "18446744073709551615"] {
+        let (code, stderr) = topolab(&["report", "--probe-mb", mb, "--out", "/nonexistent/x"]);
+        assert_eq!(code, Some(2), "--probe-mb {mb}: {stderr}");
+        assert!(stderr.contains("--probe-mb"), "{stderr}");
+    }
+}
+
+#[test]
 fn hull_random_counts_past_u32_are_usage_errors() {
     // It panicked (capacity overflow) or aborted (allocation failure) generating the points.
     for n in ["4294967296", "18446744073709551615"] {
