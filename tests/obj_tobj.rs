@@ -68,7 +68,6 @@ fn tobj_read(path: &Path) -> Result<Vec<tobj::Model>, tobj::LoadError> {
         triangulate: false,
         ignore_points: false,
         ignore_lines: false,
-        ..Default::default()
     };
     tobj::load_obj(path, &options).map(|(models, _materials)| models)
 }
