@@ -460,6 +460,17 @@ mod tests {
         fn reset_peak(&self) {}
     }
 
+    /// Few, short repetitions; cells estimated above `cell_max` skipped.
+    fn short_plan(cell_max: Duration) -> Plan {
+        Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max,
+            min_reps: 1,
+            max_reps: 3,
+            light: false,
+        }
+    }
+
     #[test]
     fn measures_every_cell_and_cross_checks() {
         let soup = meshes::torus(6, 5);
@@ -470,13 +481,7 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(1),
-            min_reps: 1,
-            max_reps: 3,
-            light: false,
-        };
+        let plan = short_plan(Duration::from_secs(1));
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();
@@ -518,13 +523,7 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_millis(20),
-            min_reps: 1,
-            max_reps: 3,
-            light: false,
-        };
+        let plan = short_plan(Duration::from_millis(20));
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();
