@@ -43,6 +43,20 @@ pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
     })
 }
 
+/// Refuses a mesh with no vertex and no face (exit code 1): every count of it would be 0 and
+/// "manifold" or "genus" would be vacuous; `topolab check` reports it as `empty-mesh`.
+pub fn refuse_empty(spec: &str, soup: &PolygonSoup) -> Result<(), Failure> {
+    if soup.num_vertices() == 0 && soup.num_faces() == 0 {
+        return Err(Failure {
+            message: format!(
+                "{spec} is an empty mesh: it has no vertices and no faces (`topolab check` reports it as empty-mesh)"
+            ),
+            code: 1,
+        });
+    }
+    Ok(())
+}
+
 /// The mesh `explain` shows: the one named, or the open tetrahedron (a 2x2 grid for grid-only
 /// structures, which cannot store it); with a label for it.
 pub fn mesh_or_tetrahedron(
@@ -50,7 +64,11 @@ pub fn mesh_or_tetrahedron(
     grids_only: bool,
 ) -> Result<(PolygonSoup, String), Failure> {
     Ok(match mesh {
-        Some(spec) => (load_mesh(spec)?, spec.to_string()),
+        Some(spec) => {
+            let soup = load_mesh(spec)?;
+            refuse_empty(spec, &soup)?;
+            (soup, spec.to_string())
+        }
         // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
         None if grids_only => (
             meshes::grid(2, 2, true),

@@ -133,3 +133,54 @@ fn the_page_renders_in_headless_chromium() {
     );
     let _ = std::fs::remove_dir_all(&out);
 }
+
+#[test]
+fn a_single_large_size_skips_the_quadratic_cells_with_an_estimate() {
+    // One size, nothing smaller to extrapolate from: `--sizes 1000000` never finished,
+    // because the vertex list's O(n)-per-query sweeps ran in full. Here 64k triangles and the
+    // quick budget (150 ms a run) make them seconds each.
+    let out = out_dir("single-size");
+    let status = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args([
+            "report",
+            "--quick",
+            "--sizes",
+            "64000",
+            "--structures",
+            "vertex-list",
+            "--meshes",
+            "torus",
+            "--probe-mb",
+            "4",
+            "--out",
+        ])
+        .arg(&out)
+        .status()
+        .expect("run topolab");
+    assert!(status.success(), "topolab report failed: {status}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let cell = |op: &str, kernel: &str| {
+        json["measurements"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["operator"] == op && m["kernel"] == kernel)
+            .unwrap_or_else(|| panic!("no {op} {kernel} cell"))
+            .clone()
+    };
+    for (op, kernel) in [
+        ("r00", "sweep"),
+        ("r22", "sweep"),
+        ("boundary-curves", "sweep"),
+        ("smoothing", "workload"),
+    ] {
+        let m = cell(op, kernel);
+        assert_eq!(m["status"], "skipped", "{m}");
+        assert!(m["estimate_ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+    }
+    assert_eq!(cell("r20", "sweep")["status"], "measured");
+    let notes = json["notes"].to_string();
+    assert!(notes.contains("timed sample of its queries"), "{notes}");
+    let _ = std::fs::remove_dir_all(&out);
+}

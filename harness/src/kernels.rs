@@ -166,6 +166,22 @@ impl Queries {
         }
     }
 
+    /// At most `n` queries of each kind, evenly spread over this set: a probe, cheap enough to
+    /// time on any mesh. Spread, not the first ones: a sample is sorted by id, and a scan for
+    /// a low id can stop early, so the first queries would be the cheapest.
+    pub fn spread(&self, n: usize) -> Self {
+        fn pick<T: Copy>(all: &[T], n: usize) -> Vec<T> {
+            let k = n.min(all.len());
+            (0..k).map(|i| all[i * all.len() / k]).collect()
+        }
+        Self {
+            vertices: pick(&self.vertices, n),
+            edges: pick(&self.edges, n),
+            faces: pick(&self.faces, n),
+            edge_faces: pick(&self.edge_faces, n),
+        }
+    }
+
     /// How many queries `op` makes over this set.
     pub fn count(&self, op: Operator) -> usize {
         match op.input() {
@@ -385,6 +401,23 @@ mod tests {
         }
         // 14 triangles, 3 corners each.
         assert_eq!(run_workload(&a, Workload::Circulators, &mut buf), 42.0);
+    }
+
+    #[test]
+    fn a_probe_spreads_over_the_sample_instead_of_taking_its_cheap_start() {
+        let q = Queries {
+            vertices: (0..100).map(VertexId).collect(),
+            faces: (0..3).map(FaceId).collect(),
+            ..Default::default()
+        };
+        let probe = q.spread(4);
+        assert_eq!(
+            probe.vertices,
+            [0, 25, 50, 75].map(VertexId),
+            "evenly spread, not the first four"
+        );
+        assert_eq!(probe.faces, q.faces, "all of a short list");
+        assert!(probe.edges.is_empty());
     }
 
     #[test]

@@ -1,6 +1,14 @@
 //! Measuring one structure on one mesh: construction (time and memory), every operator's sweep
 //! and sampled kernels, the workloads. Cells whose estimated time exceeds the budget are
 //! skipped with the estimate; checksums are compared across structures by [`cross_check`].
+//!
+//! The estimate of a cell extrapolates its run at the last smaller size of the mesh's family
+//! by the declared cost ([`Estimator`]). The first size of a family has nothing to
+//! extrapolate from, so there the estimate is the structure's time per query on this mesh
+//! times the cell's number of queries: the time per query of the operator's sampled cell
+//! (measured before its sweep for that reason), or of a probe of [`PROBE_QUERIES`] of its
+//! sampled queries when the sampled cell has not run. Without it, a single
+//! `--sizes 1000000` ran the scanning structures' quadratic sweeps in full (hours).
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
 use crate::results::{Measurement, Status, Subject};
@@ -47,6 +55,18 @@ pub struct Plan {
     pub light: bool,
 }
 
+/// Sampled queries timed to estimate a cell with no smaller size before it: few enough that
+/// even a query that scans the mesh keeps the probe short on the largest meshes.
+pub const PROBE_QUERIES: usize = 8;
+
+/// How a probe is timed: one warm-up, then as many runs as fit in a millisecond (at least one),
+/// so that a probe of constant-time queries is not just the clock's resolution.
+const PROBE_BUDGET: Budget = Budget {
+    time: Duration::from_millis(1),
+    min_reps: 1,
+    max_reps: 9,
+};
+
 /// The last measured run time of every (structure, family, operator, kernel), to estimate the
 /// next size's before running it.
 #[derive(Clone, Debug, Default)]
@@ -62,32 +82,48 @@ impl Estimator {
         (s, fam.into(), subject, kernel)
     }
 
-    /// Marks `cell` skipped, with its estimated ns per item, when one run at `triangles` is
-    /// estimated above the plan's `cell_max`; returns whether it did.
-    fn skips(
-        &self,
-        key: &EstimatorKey,
-        triangles: usize,
-        exponent: f64,
-        plan: &Plan,
-        cell: &mut Measurement,
-    ) -> bool {
-        match self.estimate(key, triangles, exponent) {
-            Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
-                cell.status = Status::Skipped;
-                cell.estimate_ns_per_item = Some(ns / cell.items.max(1) as f64);
-                true
-            }
-            _ => false,
-        }
-    }
-
     /// Estimated ns of one run at `triangles`, scaling the last run by `exponent`.
     fn estimate(&self, key: &EstimatorKey, triangles: usize, exponent: f64) -> Option<f64> {
         self.last
             .get(key)
             .map(|&(n, ns)| ns * (triangles as f64 / n as f64).max(1.0).powf(exponent))
     }
+}
+
+/// Marks `cell` skipped, with its estimated ns per item, when one run is estimated (`ns`)
+/// above the plan's `cell_max`; returns whether it did.
+fn skips(cell: &mut Measurement, ns: Option<f64>, plan: &Plan) -> bool {
+    match ns {
+        Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
+            cell.status = Status::Skipped;
+            cell.estimate_ns_per_item = Some(ns / cell.items.max(1) as f64);
+            true
+        }
+        _ => false,
+    }
+}
+
+/// Time per query of `op` on `m`, in ns: from `known` (the operator's sampled cell, or an
+/// earlier probe), else timed on the `probe` queries and remembered. `None` when the probe
+/// has no query of that kind (a mesh without edges).
+fn per_query_ns<M: MeshTopology>(
+    m: &M,
+    op: Operator,
+    probe: &Queries,
+    known: &mut HashMap<Operator, f64>,
+    curves: &mut BoundaryCurves,
+) -> Result<Option<f64>, String> {
+    if let Some(&ns) = known.get(&op) {
+        return Ok(Some(ns));
+    }
+    let count = probe.count(op);
+    if count == 0 {
+        return Ok(None);
+    }
+    let (t, _, _) = time_kernel(m, op, Kernel::Sampled, probe, curves, PROBE_BUDGET)?;
+    let ns = t.median_ns / count as f64;
+    known.insert(op, ns);
+    Ok(Some(ns))
 }
 
 fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
@@ -181,13 +217,17 @@ pub fn measure_structure<M: MeshTopology>(
 
     let all = Queries::all(&m, case.soup);
     let sampled = Queries::sampled(&m, case.queries);
+    let probe = sampled.spread(PROBE_QUERIES);
+    // Time per query of each operator on this mesh, for cells with no smaller size before.
+    let mut per_query: HashMap<Operator, f64> = HashMap::new();
     let mut curves = BoundaryCurves::default();
     for op in Operator::ALL {
-        // Boundary curves are one question about the whole mesh: nothing to sample.
+        // Boundary curves are one question about the whole mesh: nothing to sample. Sampled
+        // first otherwise: its time per query is the estimate of the sweep after it.
         let kernels: &[Kernel] = if op.input() == Input::Mesh {
             &[Kernel::Sweep]
         } else {
-            &Kernel::QUERIES
+            &[Kernel::Sampled, Kernel::Sweep]
         };
         for &kernel in kernels {
             if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
@@ -205,12 +245,32 @@ pub fn measure_structure<M: MeshTopology>(
             let e =
                 M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
             let key = Estimator::key(M::NAME, case.family, Subject::Query(op), kernel);
-            if est.skips(&key, n, e, plan, &mut cell) {
+            let context =
+                |e: String| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name);
+            let estimate = match est.estimate(&key, n, e) {
+                Some(ns) => Some(ns),
+                // Boundary curves have no sampled kernel. Finding them decides for every edge
+                // whether it is on the boundary, so their estimate is a boundary-edge sweep's
+                // (the scanning structures' O(n) test per edge is their O(n²)).
+                None if op.input() == Input::Mesh => {
+                    let edge = Operator::BoundaryEdge;
+                    per_query_ns(&m, edge, &probe, &mut per_query, &mut curves)
+                        .map_err(context)?
+                        .map(|ns| ns * all.count(edge) as f64)
+                }
+                None => per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
+                    .map_err(context)?
+                    .map(|ns| ns * items as f64),
+            };
+            if skips(&mut cell, estimate, plan) {
                 out.push(cell);
                 continue;
             }
-            let (t, sum, native) = time_kernel(&m, op, kernel, q, &mut curves, budget)
-                .map_err(|e| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name))?;
+            let (t, sum, native) =
+                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(context)?;
+            if kernel == Kernel::Sampled && items > 0 {
+                per_query.insert(op, t.median_ns / items as f64);
+            }
             cell.native = native;
             fill(&mut cell, t, items.max(1), Some(sum.to_string()));
             est.last.insert(key, (n, t.median_ns));
@@ -230,7 +290,21 @@ pub fn measure_structure<M: MeshTopology>(
                 .map(|&op| M::cost(op).expected_exponent())
                 .fold(0.0, f64::max);
         let key = Estimator::key(M::NAME, case.family, Subject::Workload(w), Kernel::Workload);
-        if est.skips(&key, n, e, plan, &mut cell) {
+        let estimate = match est.estimate(&key, n, e) {
+            Some(ns) => Some(ns),
+            // With no smaller size: the relations it asks, once per element, at this mesh's
+            // time per query (the sampled cells measured above).
+            None => {
+                let mut ns = 0.0;
+                for &op in w.relations() {
+                    let per = per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
+                        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
+                    ns += per.unwrap_or(0.0) * all.count(op) as f64;
+                }
+                Some(ns)
+            }
+        };
+        if skips(&mut cell, estimate, plan) {
             out.push(cell);
             continue;
         }
@@ -420,7 +494,7 @@ mod tests {
     use super::*;
     use crate::kernels::sample_queries;
     use std::cell::Cell;
-    use topolab_structures::{meshes, Error, ExplicitStorage, Result, VertexList};
+    use topolab_structures::{meshes, Error, ExplicitStorage, MeshTopology, Result, VertexList};
 
     struct NoMeter(Cell<usize>);
     impl MemoryMeter for NoMeter {
@@ -433,6 +507,69 @@ mod tests {
         fn reset_peak(&self) {}
     }
 
+    /// Few, short repetitions; cells estimated above `cell_max` skipped.
+    fn short_plan(cell_max: Duration) -> Plan {
+        Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max,
+            min_reps: 1,
+            max_reps: 3,
+            light: false,
+        }
+    }
+
+    #[test]
+    fn with_no_smaller_size_the_scans_are_skipped_by_their_time_per_query() {
+        // One size only, as `topolab report --sizes 20000`: nothing to extrapolate from. The
+        // vertex list scans the mesh for every query, so its sweeps of those operators, its
+        // boundary curves and the workloads built on them are quadratic: ~10k queries of
+        // ~60k corners each, seconds each; the budget is 20 ms.
+        let soup = meshes::torus_with_triangles(20_000);
+        let q = sample_queries(&soup, 16, 3);
+        let case = MeshCase {
+            name: "torus-20k",
+            family: "torus",
+            soup: &soup,
+            queries: &q,
+        };
+        let plan = short_plan(Duration::from_millis(20));
+        let (mut out, mut est) = (Vec::new(), Estimator::default());
+        measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
+            .unwrap();
+        let cell = |subject: Subject, kernel: Kernel| {
+            out.iter()
+                .find(|m| m.operator == subject && m.kernel == kernel)
+                .unwrap_or_else(|| panic!("no {subject:?} {kernel:?} cell"))
+        };
+        let scans: Vec<Operator> = Operator::ALL
+            .into_iter()
+            .filter(|&op| VertexList::cost(op).expected_exponent() >= 1.0)
+            .collect();
+        assert!(scans.contains(&Operator::R00) && scans.contains(&Operator::BoundaryCurves));
+        for &op in &scans {
+            let m = cell(Subject::Query(op), Kernel::Sweep);
+            assert_eq!(m.status, Status::Skipped, "{op:?} sweep: {m:?}");
+            assert!(m.estimate_ns_per_item.is_some_and(|ns| ns > 0.0), "{m:?}");
+            assert!(m.checksum.is_none() && m.ns_per_item.is_none(), "{m:?}");
+        }
+        for w in [Workload::Circulators, Workload::Smoothing] {
+            assert_eq!(
+                cell(Subject::Workload(w), Kernel::Workload).status,
+                Status::Skipped
+            );
+        }
+        // What does not scan still runs: 16 sampled queries, an O(k) sweep, no relation at all.
+        for (subject, kernel) in [
+            (Subject::Query(Operator::R00), Kernel::Sampled),
+            (Subject::Query(Operator::R20), Kernel::Sweep),
+            (Subject::Workload(Workload::Barycenter), Kernel::Workload),
+        ] {
+            let m = cell(subject, kernel);
+            assert_eq!(m.status, Status::Measured, "{subject:?} {kernel:?}: {m:?}");
+            assert!(m.checksum.is_some());
+        }
+    }
+
     #[test]
     fn measures_every_cell_and_cross_checks() {
         let soup = meshes::torus(6, 5);
@@ -443,13 +580,7 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(1),
-            min_reps: 1,
-            max_reps: 3,
-            light: false,
-        };
+        let plan = short_plan(Duration::from_secs(1));
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();

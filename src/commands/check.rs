@@ -19,11 +19,22 @@ pub struct CheckArgs {
     pub json: bool,
     /// Distance under which positions are equal (duplicate vertices) and a face counts as
     /// flat to a line (degenerate).
-    #[arg(long, default_value_t = Options::default().tolerance)]
+    #[arg(long, default_value_t = Options::default().tolerance, value_parser = tolerance)]
     pub tolerance: f64,
     /// Largest distance of a corner from its face's plane, relative to the face's size.
-    #[arg(long, default_value_t = Options::default().planarity_tolerance)]
+    #[arg(long, default_value_t = Options::default().planarity_tolerance, value_parser = tolerance)]
     pub planarity_tolerance: f64,
+}
+
+/// A tolerance: a finite number, at least 0. NaN would make every comparison false (no
+/// duplicate, every face planar: a clean report of a broken file), and a negative or infinite
+/// one means nothing.
+fn tolerance(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(t) if t.is_finite() && t >= 0.0 => Ok(t),
+        Ok(_) => Err("a tolerance is a finite number, at least 0".into()),
+        Err(e) => Err(e.to_string()),
+    }
 }
 
 /// Runs the check, prints the report; returns the exit code.

@@ -46,6 +46,13 @@ pub fn hull(args: &HullArgs) -> Result<String, Failure> {
         Algorithm::from_name(&args.algo, args.seed).map_err(|e| Failure::usage(e.to_string()))?;
     let (points, source) = match (&args.file, args.random) {
         (_, Some(n)) => {
+            // Hull vertices are u32 ids; more points would panic or abort in the allocation.
+            if u32::try_from(n).is_err() {
+                return Err(Failure::usage(format!(
+                    "--random {n}: at most {} points (u32 ids)",
+                    u32::MAX
+                )));
+            }
             let shape = Shape::from_name(&args.shape).map_err(|e| Failure::usage(e.to_string()))?;
             let what = format!("{n} random points in {} (seed {})", args.shape, args.seed);
             (random_points(shape, n, args.seed), what)

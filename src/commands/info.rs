@@ -1,7 +1,7 @@
 //! `topolab info`: counts, boundary curves, Euler characteristic and genus of a mesh, computed
 //! through a structure.
 
-use crate::input::{load_mesh, unknown_structure, Failure};
+use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
 use topolab_structures::summary::{summarize, Summary};
@@ -19,6 +19,7 @@ impl StructureVisitor for InfoVisit<'_> {
 /// The text of `topolab info MESH [--structure NAME] [--json]`.
 pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
     let soup = load_mesh(spec)?;
+    refuse_empty(spec, &soup)?;
     let summary = registry::visit(structure, InfoVisit(&soup))
         .ok_or_else(|| unknown_structure(structure))?
         .map_err(|e| Failure {

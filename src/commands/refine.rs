@@ -46,6 +46,17 @@ pub fn refine(
         Err(e) => return Err(Failure::usage(format!("cannot write: {e}"))),
     }
     let soup = load_mesh(spec)?;
+    // Each level makes four triangles of one: refuse at once a result whose corners u32 ids
+    // cannot number, instead of refining until memory or the ids run out.
+    let corners = 4u128
+        .checked_pow(u32::try_from(levels).unwrap_or(u32::MAX))
+        .and_then(|growth| growth.checked_mul(3 * soup.num_faces() as u128));
+    if corners.is_none_or(|c| c > u32::MAX as u128) {
+        return Err(Failure::usage(format!(
+            "--levels {levels}: {spec} has {} faces, and {levels} levels would make more triangles than u32 ids number",
+            soup.num_faces()
+        )));
+    }
     let started = Instant::now();
     eprintln!(
         "refine: level 0: {} vertices, {} faces",

@@ -23,7 +23,8 @@ pub struct ReportArgs {
     /// A smaller, faster run (three sizes up to 16k triangles, short budgets): under 2 minutes.
     #[arg(long)]
     pub quick: bool,
-    /// Triangle counts of the size sweep, comma separated (default 1000,4000,16000,64000,256000,1000000).
+    /// Triangle counts of the size sweep, comma separated, each from 1 to 2^30, measured smallest
+    /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
     pub sizes: Option<Vec<usize>>,
     /// Structures to measure, comma separated (default: all; see `topolab list`).
@@ -36,8 +37,8 @@ pub struct ReportArgs {
     /// Output folder.
     #[arg(long, default_value = "reports/latest")]
     pub out: PathBuf,
-    /// Size of the memory probe's arrays, MiB (default 256, 64 with --quick).
-    #[arg(long, hide = true)]
+    /// Size of the memory probe's arrays, MiB, from 1 to 4096 (default 256, 64 with --quick).
+    #[arg(long, hide = true, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=4096))]
     pub probe_mb: Option<usize>,
 }
 
@@ -112,32 +113,48 @@ impl StructureVisitor for Describe {
 /// Runs the report; returns a summary line or a failure (exit 1 on a checksum mismatch).
 pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
     let quick = args.quick;
-    let sizes = args.sizes.clone().unwrap_or_else(|| {
+    let mut sizes = args.sizes.clone().unwrap_or_else(|| {
         if quick {
             vec![1_000, 4_000, 16_000]
         } else {
             vec![1_000, 4_000, 16_000, 64_000, 256_000, 1_000_000]
         }
     });
+    // Refused here, before anything is measured: a size the generators do not build (ids are
+    // u32) used to panic only after the memory probe.
+    if let Some(bad) = sizes.iter().find(|&&n| n == 0 || n > meshes::MAX_FACES) {
+        return Err(Failure::usage(format!(
+            "--sizes {bad}: a size is a triangle count from 1 to {} (the generated meshes number their elements with u32 ids)",
+            meshes::MAX_FACES
+        )));
+    }
+    // Smallest first, each once: the skip-by-estimate extrapolates from the sizes before.
+    sizes.sort_unstable();
+    sizes.dedup();
     let names: Vec<String> = match &args.structures {
         Some(list) => {
+            let mut names: Vec<String> = Vec::with_capacity(list.len());
             for n in list {
                 if !registry::NAMES.contains(&n.as_str()) {
-                    return Err(Failure::usage(format!(
-                        "unknown structure {n:?}; known: {}",
-                        registry::NAMES.join(", ")
-                    )));
+                    return Err(crate::input::unknown_structure(n));
+                }
+                if !names.contains(n) {
+                    names.push(n.clone());
                 }
             }
-            list.clone()
+            names
         }
         None => registry::NAMES.iter().map(|s| s.to_string()).collect(),
     };
+    let mut families: Vec<&str> = Vec::with_capacity(args.meshes.len());
     for f in &args.meshes {
         if !["torus", "grid", "real"].contains(&f.as_str()) {
             return Err(Failure::usage(format!(
                 "unknown mesh family {f:?}; known: torus, grid, real"
             )));
+        }
+        if !families.contains(&f.as_str()) {
+            families.push(f);
         }
     }
     let plan = Plan {
@@ -178,12 +195,14 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
     for size in &sizes {
-        for fam in args.meshes.iter().filter(|f| *f != "real") {
-            let soup = meshes::from_spec(&format!("{fam}:{size}")).expect("known family");
-            cases.push((format!("{fam}-{}", short(*size)), fam.clone(), soup));
+        for fam in families.iter().filter(|f| **f != "real") {
+            let spec = format!("{fam}:{size}");
+            let soup = meshes::from_spec(&spec)
+                .ok_or_else(|| Failure::usage(format!("cannot generate the mesh {spec}")))?;
+            cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
-    if args.meshes.iter().any(|f| f == "real") {
+    if families.contains(&"real") {
         for (name, soup) in real_meshes(&mut results.notes) {
             cases.push((name, "real".into(), soup));
         }
@@ -260,7 +279,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         .count();
     if skipped > 0 {
         results.notes.push(format!(
-            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate from smaller sizes.",
+            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate (from the smaller sizes, or, at a family's first size, from the time per query of a timed sample of its queries).",
             plan.cell_max.as_secs_f64()
         ));
     }

@@ -122,6 +122,19 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
+    /// A coordinate outside the range in which the convex hull's exact predicates stay exact:
+    /// their products of three coordinate differences would overflow (or underflow) a double.
+    #[error("point {vertex} has the coordinate {value:e}, outside the range the hull's exact predicates handle: 0, or a magnitude from {min:e} to {max:e} (2^-250 to 2^250); scale the points")]
+    CoordinateOutOfRange {
+        /// The point (vertex) with the coordinate.
+        vertex: usize,
+        /// The offending value.
+        value: f64,
+        /// The smallest magnitude accepted besides 0.
+        min: f64,
+        /// The largest magnitude accepted.
+        max: f64,
+    },
     /// A face with fewer than three corners.
     #[error("face {face} has {corners} corners; a face needs at least 3")]
     TooFewCorners {
@@ -244,6 +257,7 @@ impl Error {
             Error::TooLarge { .. } => "too-large",
             Error::IndexOutOfRange { .. } => "index-out-of-range",
             Error::NonFiniteCoordinate { .. } => "non-finite-coordinate",
+            Error::CoordinateOutOfRange { .. } => "coordinate-out-of-range",
             Error::TooFewCorners { .. } => "too-few-corners",
             Error::RepeatedVertex { .. } => "repeated-vertex",
             Error::NonManifoldEdge { .. } => "non-manifold-edge",

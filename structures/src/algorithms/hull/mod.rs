@@ -17,7 +17,9 @@
 //!
 //! **Beyond the lecture** (it assumes no four points coplanar, which real inputs break):
 //! - every orientation test is exact ([`predicates`], Shewchuk's `orient3d`);
-//! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; fewer than four distinct
+//! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; coordinates whose products
+//!   inside the predicates would overflow or underflow (a magnitude above 2^250, or non-zero
+//!   below 2^-250): [`Error::CoordinateOutOfRange`]; fewer than four distinct
 //!   points, or all on a line or a plane: [`Error::DegeneratePoints`];
 //! - duplicate points are allowed: only the first occurrence (smallest index) can be a vertex;
 //! - coplanar points on a hull facet: **triangulated**. The hull's vertices are exactly its

@@ -8,7 +8,7 @@ mod spec;
 
 pub use canonical::*;
 pub use generators::*;
-pub use spec::from_spec;
+pub use spec::{from_spec, MAX_FACES};
 
 #[cfg(test)]
 use crate::core::soup::PolygonSoup;

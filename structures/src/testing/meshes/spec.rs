@@ -4,6 +4,11 @@ use super::canonical::canonical_by_name;
 use super::generators::{grid, mixed_grid, perforated_plate, sphere, torus_with_triangles};
 use crate::core::soup::PolygonSoup;
 
+/// The largest face count [`from_spec`] generates: sizes past what `u32` handles number (a
+/// triangle mesh of this many faces has 3·2³⁰ corners, under `u32::MAX`) are refused, not
+/// attempted.
+pub const MAX_FACES: usize = 1 << 30;
+
 /// A built-in mesh named on the command line: a canonical mesh name, or a generator with a
 /// face count for about N faces:
 ///
@@ -18,7 +23,7 @@ use crate::core::soup::PolygonSoup;
 /// | `surface:G:K:N` | genus G and K boundary curves |
 ///
 /// `_` may separate digits (`torus:1_000_000`). `None` for anything else, and for more than
-/// 2^30 faces or 2^20 tunnels and openings.
+/// [`MAX_FACES`] faces or 2^20 tunnels and openings.
 pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
     if let Some(m) = canonical_by_name(spec) {
         return Some(m.soup);
@@ -29,7 +34,7 @@ pub fn from_spec(spec: &str) -> Option<PolygonSoup> {
         .map(|n| n.replace('_', "").parse().ok())
         .collect::<Option<_>>()?;
     // Sizes past u32 handles (and slot counts that would need more) are refused, not attempted.
-    const MAX_FACES: usize = 1 << 30;
+    // Like sizes past MAX_FACES, more tunnels and openings than this are refused, not attempted.
     const MAX_SLOTS: usize = 1 << 20;
     let (&n, counts) = numbers.split_last()?;
     if n > MAX_FACES || counts.iter().sum::<usize>() > MAX_SLOTS {
