@@ -3,13 +3,15 @@
 //! The lab's command-line tool and everything that ties the crates together: the registry of
 //! every structure (the ones of `topolab-structures` plus the OpenMesh baseline, when compiled
 //! in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
-//! with the helpers of [`input`]).
+//! with the helpers of [`input`]); [`extend`] runs the report with structures of other crates
+//! added.
 #![deny(missing_docs)]
 // Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
 #![deny(unsafe_code)]
 
 pub mod cli;
 pub mod commands;
+pub mod extend;
 pub mod input;
 
 /// The process's allocator, counting bytes so the report can measure each structure's heap

@@ -1,11 +1,12 @@
 //! # topolab-harness
 //!
 //! The operator catalogue (what each operator takes and answers), the kernels that time it on
-//! any structure, timing with medians, complexity fits, the machine probe, and the results
-//! model and HTML report.
+//! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)), timing with
+//! medians, complexity fits, the machine probe, and the results model and HTML report.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod bench;
 pub mod catalogue;
 pub mod checksum;
 pub mod fit;

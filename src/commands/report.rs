@@ -1,8 +1,10 @@
 //! `topolab report`: measures every structure on the size sweep and writes `results.json` and
-//! a self-contained `index.html`.
+//! a self-contained `index.html`. [`report_with`] is the same report with structures from
+//! outside the lab beside the lab's (see [`crate::extend`]).
 
+use crate::extend::Lab;
 use crate::input::Failure;
-use crate::registry::{self, StructureVisitor};
+use crate::registry::StructureVisitor;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -15,6 +17,7 @@ use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
+use topolab_structures::registry::{duplicate_name, names, Structures};
 use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.
@@ -112,6 +115,24 @@ impl StructureVisitor for Describe {
 
 /// Runs the report; returns a summary line or a failure (exit 1 on a checksum mismatch).
 pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
+    report_with::<()>(args, command)
+}
+
+/// The structure called `name` among the lab's and the list `X`'s.
+fn visit<X: Structures, V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    <(Lab, X)>::visit(name, visitor).ok()
+}
+
+/// [`report`] with the structures of the list `X` (structures outside the lab) measured beside
+/// the lab's, after them in every table. A name of `X` that is already taken is a usage error.
+pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<String, Failure> {
+    let all = names::<(Lab, X)>();
+    if let Some(name) = duplicate_name(&all) {
+        return Err(Failure::usage(format!(
+            "two structures are called {name:?}: a structure added to the report needs a name \
+             of its own (see `topolab list`)"
+        )));
+    }
     let quick = args.quick;
     let mut sizes = args.sizes.clone().unwrap_or_else(|| {
         if quick {
@@ -135,7 +156,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         Some(list) => {
             let mut names: Vec<String> = Vec::with_capacity(list.len());
             for n in list {
-                if !registry::NAMES.contains(&n.as_str()) {
+                if !all.contains(&n.as_str()) {
                     return Err(crate::input::unknown_structure(n));
                 }
                 if !names.contains(n) {
@@ -144,7 +165,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
             }
             names
         }
-        None => registry::NAMES.iter().map(|s| s.to_string()).collect(),
+        None => all.iter().map(|s| s.to_string()).collect(),
     };
     let mut families: Vec<&str> = Vec::with_capacity(args.meshes.len());
     for f in &args.meshes {
@@ -189,7 +210,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         notes: Vec::new(),
     };
     for n in &names {
-        let (info, teach) = registry::visit(n, Describe).expect("checked above");
+        let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
         results.teaching.push(teach);
     }
@@ -238,7 +259,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         }
         for s in &names {
             bar.set_message(format!("{name}: {s}"));
-            registry::visit(
+            visit::<X, _>(
                 s,
                 Measure {
                     case: &case,
@@ -268,7 +289,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         });
     }
     bar.finish_and_clear();
-    orderings(&cases, &names, &plan, &mut results)?;
+    orderings::<X>(&cases, &names, &plan, &mut results)?;
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
@@ -413,8 +434,9 @@ impl StructureVisitor for Sweep<'_> {
 }
 
 /// The effect of element order: the largest torus (at most 256k triangles) renumbered by each
-/// ordering, and the R00 sweep of a few structures on each.
-fn orderings(
+/// ordering, and the R00 sweep of a few structures on each (and of every structure of `X`:
+/// whoever adds a structure wants to see how it takes reordering).
+fn orderings<X: Structures>(
     cases: &[(String, String, PolygonSoup)],
     names: &[String],
     plan: &Plan,
@@ -427,9 +449,10 @@ fn orderings(
     else {
         return Ok(());
     };
+    let added = topolab_structures::registry::names::<X>();
     let structures: Vec<&String> = names
         .iter()
-        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()))
+        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(&n.as_str()))
         .collect();
     for ordering in topolab_structures::ordering::Ordering::ALL {
         eprintln!("topolab report: ordering {} of {base}", ordering.name());
@@ -443,7 +466,7 @@ fn orderings(
             queries: &queries,
         };
         for s in &structures {
-            let m = registry::visit(s, Sweep { case: &case, plan })
+            let m = visit::<X, _>(s, Sweep { case: &case, plan })
                 .expect("registered")
                 .map_err(|message| Failure { message, code: 1 })?;
             results.measurements.push(m);

@@ -58,6 +58,10 @@ pub use testing::{conformance, meshes};
 // The error types' short path inside the crate (`crate::error::Error`).
 use self::core::error;
 
+/// The vector crate of the trait's positions ([`MeshTopology::position`] returns a
+/// `glam::DVec3`), re-exported so that a structure outside the lab uses the same version.
+pub use glam;
+
 pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::error::{Error, Format, Location, Result};
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
