@@ -97,6 +97,9 @@ fn star_trace<L: MeshTopology + CheLevel>(
         L::STAR_ALGORITHM
     );
     let mut reads = 0;
+    // The 1-ring as the traced walk meets it (Algorithm 7's order at levels 2 and 3, whose
+    // timed R00 walks the star from both ends and answers in another order).
+    let mut ring = Vec::new();
     level.vertex_star(
         VertexId(v),
         |read| {
@@ -116,6 +119,7 @@ fn star_trace<L: MeshTopology + CheLevel>(
                 // R00 reads each neighbour from V[] on top of the star's own reads.
                 StarRead::Corner { he } => {
                     reads += 1;
+                    ring.push(starts[next(he).index()]);
                     format!(
                         "triangle {} through half-edge {} (leaves v{v}): R00 reads neighbour V[{}] = {}",
                         triangle(he).0,
@@ -126,6 +130,7 @@ fn star_trace<L: MeshTopology + CheLevel>(
                 }
                 StarRead::Closing { he } => {
                     reads += 1;
+                    ring.push(starts[he.index()]);
                     format!(
                         "boundary half-edge {} enters v{v}: R00 reads neighbour V[{}] = {}",
                         he.0,
@@ -138,8 +143,6 @@ fn star_trace<L: MeshTopology + CheLevel>(
         },
         |_| {},
     );
-    let mut ring = Vec::new();
-    level.vertex_vertices(VertexId(v), |w| ring.push(w.0));
     let _ = writeln!(out, "  R00(v{v}) = {ring:?} after {reads} container reads");
     Ok(())
 }

@@ -277,6 +277,31 @@ impl BoundaryCurves {
 /// and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer and
 /// never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20
 /// and R21 answer in the face's cyclic order.
+///
+/// ## Fairness
+///
+/// The lab compares structures, so each one is measured at the speed its design allows, under
+/// the same rules:
+///
+/// - **Inlining.** Every query method of every impl carries `#[inline]`: the counts,
+///   [`MeshTopology::position`] and the operators' methods (every method except how a
+///   structure is described, built, enumerated, validated, measured and explained, and the
+///   baselines' native loops). A benchmark in another crate can then inline any query, and no
+///   structure is left behind a call while another is inlined. `structures/tests/inlining.rs`
+///   reads every registered structure's impl and fails on a query method without it.
+/// - **Walking a fan.** R00, R01 and R02 answer sets, so a structure may walk a vertex's fan
+///   from both ends at once: two independent chains of dependent loads instead of one. That
+///   walk was offered to every structure that walks fans and is kept where it measured
+///   faster: the CHE levels 2 and 3 (interior vertices; a boundary vertex's other end is not
+///   stored) and the winged-edge. The index and the pointer half-edge rotate one way: the
+///   second chain measured no faster there (see
+///   [`families::half_edge`](crate::families::half_edge)). Traces for teaching (the CHE's
+///   `vertex_star`) keep their source's order.
+/// - **Bounds checks.** Safe code, so every index is checked; where a query reads several
+///   arrays at one index, their lengths are asserted equal once per query, so one check
+///   covers them (the CHE's `V[]` and `O[]`, the index half-edge's per-half-edge arrays).
+/// - **Baselines** (OpenMesh) are used as their documented API is used, inside their own
+///   loops ([`MeshTopology::native_sweep`]), and are not re-tuned.
 pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
@@ -298,6 +323,7 @@ pub trait MeshTopology: Sized {
     /// Number of faces.
     fn num_faces(&self) -> usize;
     /// Number of boundary edges (edges with one face).
+    #[inline]
     fn num_boundary_edges(&self) -> usize {
         let mut n = 0;
         self.for_each_edge(|e| n += self.is_boundary_edge(e) as usize);

@@ -72,6 +72,7 @@ impl CheL0 {
     }
 
     /// `G[]`: the vertex positions.
+    #[inline]
     pub fn geometry(&self) -> &[DVec3] {
         &self.g
     }
@@ -174,6 +175,7 @@ impl CheLevel for CheL0 {
         firsts.into_iter().for_each(|he| f(EdgeId(he)));
     }
 
+    #[inline]
     fn start_vertices(&self) -> &[u32] {
         &self.v
     }

@@ -43,12 +43,15 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.links.num_vertices()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         self.links.num_half_edges() / 2
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.links.num_faces()
     }
@@ -57,6 +60,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             f(EdgeId::new(e));
         }
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.links.position(v)
     }
@@ -83,6 +87,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         let h = self.links.half_edge(2 * e.0);
         [self.links.vertex(h), self.links.vertex(self.links.twin(h))]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         let h = self.links.half_edge(2 * e.0);
         for side in [h, self.links.twin(h)] {
@@ -95,6 +100,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             }
         }
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         let h = self.links.half_edge(2 * e.0);
         for side in [h, self.links.twin(h)] {
@@ -136,6 +142,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
     /// One scan for the boundary half-edges (their ids land in `out.edges` as a sorted
     /// scratch list, so nothing is allocated beyond the caller's buffer), then each loop is
     /// walked with `next` once, finding "already walked" by binary search in the scratch list.
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         let l = &self.links;
@@ -171,10 +178,12 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             *s -= scratch as u32;
         }
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let h = self.half_edge_in(e, face)?;
         Some(self.edge_of(self.links.next(h)))
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let h = self.half_edge_in(e, face)?;
         Some(self.edge_of(self.links.prev(h)))

@@ -117,8 +117,17 @@ impl HalfEdgeLinks for IndexLinks {
     fn face(&self, h: u32) -> Option<FaceId> {
         FaceId(self.arrays.face[h as usize]).valid()
     }
+    /// Also asserts that the per-half-edge arrays have one length (it is called once per
+    /// rotation), so a rotation's reads of `next[x]`, `vertex[x]` and `prev[x]` at one index
+    /// `x` share one bounds check.
     #[inline(always)]
     fn outgoing(&self, v: VertexId) -> Option<u32> {
+        let a = &self.arrays;
+        let n = a.vertex.len();
+        assert!(
+            a.next.len() == n && a.face.len() == n && self.prev.len() == n,
+            "one entry per half-edge in every per-half-edge array"
+        );
         let h = self.arrays.vertex_half_edge[v.index()];
         (h != NONE).then_some(h)
     }
