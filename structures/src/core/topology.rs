@@ -301,7 +301,7 @@ impl BoundaryCurves {
 ///   arrays at one index, their lengths are asserted equal once per query, so one check
 ///   covers them (the CHE's `V[]` and `O[]`, the index half-edge's per-half-edge arrays).
 /// - **Baselines** (OpenMesh) are used as their documented API is used, inside their own
-///   loops ([`MeshTopology::native_sweep`]), and are not re-tuned.
+///   loops ([`MeshTopology::native`]), and are not re-tuned.
 pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
