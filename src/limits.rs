@@ -6,7 +6,8 @@
 //! - **ids**: the lab numbers vertices, faces and corners with `u32` ids, so no count may reach
 //!   `u32::MAX` ([`within_u32`]). Nothing overrides this: such a mesh cannot be stored.
 //! - **memory**: the estimated peak heap of the request against the memory the system has
-//!   available ([`available`]: `MemAvailable` of `/proc/meminfo`, or less under a cgroup limit).
+//!   available ([`available`]: `MemAvailable` of `/proc/meminfo`, or less under a container's
+//!   cgroup limit).
 //!   `--allow-memory` ([`set_allow_memory`]) overrides this one: the estimate may be pessimistic,
 //!   and swap or a smaller real mesh may make it fit.
 //!
@@ -48,8 +49,10 @@ pub fn sample_mesh() -> PolygonSoup {
 
 /// Bytes the system can still give this process: `MemAvailable` of `/proc/meminfo` (what the
 /// kernel estimates can be allocated without swapping), lowered to the headroom of the cgroup
-/// (v2) the process runs in when that has a limit (`memory.max - memory.current`; a container
-/// sees the host's `MemAvailable`). `None` where neither can be read (not Linux): nothing is
+/// (v2) mounted at `/sys/fs/cgroup` when that has a limit (`memory.max - memory.current`): in
+/// a container, its own cgroup, whose limit the host's `MemAvailable` does not show. (On a
+/// host, the root cgroup there has no `memory.max`, and a limit on a nested cgroup is not
+/// seen.) `None` where neither can be read (not Linux): nothing is
 /// refused for memory then. The environment variable `TOPOLAB_AVAILABLE_MEMORY` (bytes), when
 /// set, takes the place of all this: to plan for less than the machine has, and for tests.
 pub fn available() -> Option<u64> {
