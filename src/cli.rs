@@ -1,15 +1,23 @@
 //! The `topolab` command line: parsed here (clap), run by [`crate::commands`]. Each command
 //! returns an exit code: 0 success, 1 when the input was read but a structure refused it (or
-//! problems were found), 2 when the input cannot be read.
+//! problems were found), 2 when the input cannot be read or the request cannot fit (ids past
+//! u32, more memory than is available, an output that cannot be written: see
+//! [`crate::limits`] and [`crate::output`]), checked before the work starts.
 
 use crate::commands;
+use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
+use std::process::ExitCode;
 
 /// A lab of mesh data structures: build, query, explain and measure them side by side.
 #[derive(Parser, Debug)]
 #[command(name = "topolab", version, about)]
 pub struct Cli {
+    /// Run even when the estimated memory of the request exceeds what the system has available
+    /// (counts past u32 ids are refused whatever this says).
+    #[arg(long, global = true)]
+    pub allow_memory: bool,
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
@@ -87,6 +95,7 @@ pub enum Command {
 
 /// Runs a parsed command line; returns the process exit code.
 pub fn run(cli: Cli) -> u8 {
+    crate::limits::set_allow_memory(cli.allow_memory);
     let result = match cli.command {
         Command::List { json } => commands::list::list(json),
         Command::Info {
@@ -123,5 +132,49 @@ pub fn run(cli: Cli) -> u8 {
             eprintln!("topolab: {}", e.message);
             e.code
         }
+    }
+}
+
+/// What clap's parse errors become: `--help` and `--version` (and `topolab` alone, which shows
+/// the help) print as clap prints them; a bad command line is one line on stderr, like every
+/// other refusal, with exit code 2.
+pub fn usage_error(e: clap::Error) -> ExitCode {
+    if !e.use_stderr() || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+        e.exit()
+    }
+    eprintln!("topolab: {}", one_line(&e.to_string()));
+    ExitCode::from(2)
+}
+
+/// Clap's error text on one line: the message before the first blank line (the usage and tips
+/// follow it), without its `error: ` prefix, lines joined, and a pointer to `--help`.
+fn one_line(text: &str) -> String {
+    let message = text.split("\n\n").next().unwrap_or(text);
+    let message = message.strip_prefix("error: ").unwrap_or(message);
+    let words: Vec<&str> = message.split_whitespace().collect();
+    format!("{} (see --help)", words.join(" "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parse_errors_are_one_line() {
+        for args in [
+            &["topolab", "refine", "torus"][..],
+            &[
+                "topolab", "refine", "torus", "--levels", "abc", "--out", "x.obj",
+            ],
+            &["topolab", "nope"],
+            &["topolab", "list", "--json=yes"],
+        ] {
+            let e = Cli::try_parse_from(args).unwrap_err();
+            let line = one_line(&e.to_string());
+            assert!(!line.contains('\n') && !line.starts_with("error"), "{line}");
+            assert!(line.len() > "(see --help)".len() + 5, "{args:?}: {line}");
+        }
+        let e = Cli::try_parse_from(["topolab", "refine", "torus"]).unwrap_err();
+        assert!(one_line(&e.to_string()).contains("--levels <LEVELS>"));
     }
 }

@@ -92,7 +92,7 @@ fn coordinates_near_1e300_are_refused_as_out_of_range_not_as_a_broken_hull() {
     for algo in ["gift", "incremental", "randomized"] {
         let run = topolab(&["hull", input.to_str().unwrap(), "--algo", algo]);
         let stderr = String::from_utf8_lossy(&run.stderr);
-        assert_eq!(run.status.code(), Some(1), "{algo}: {stderr}");
+        assert_eq!(run.status.code(), Some(2), "{algo}: {stderr}");
         assert!(
             stderr.contains("no hull (coordinate-out-of-range): point 0 has the coordinate 1e300")
                 && stderr.contains("outside the range the hull's exact predicates handle"),

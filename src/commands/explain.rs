@@ -5,6 +5,7 @@
 use super::explain_che;
 use super::list::Row;
 use crate::input::{mesh_or_tetrahedron, unknown_structure, Failure};
+use crate::limits;
 use crate::registry::{self, StructureVisitor};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
@@ -28,12 +29,13 @@ pub fn run(
     }
 }
 
-struct ExplainVisit<'a>(&'a PolygonSoup);
+/// The structure's records after a heading, in one string (no copy of the long part).
+struct ExplainVisit<'a>(&'a PolygonSoup, String);
 impl StructureVisitor for ExplainVisit<'_> {
     type Output = Result<String, Error>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
         let m = M::from_soup(self.0)?;
-        let mut out = String::new();
+        let mut out = self.1;
         m.explain(&mut out)
             .expect("writing to a String cannot fail");
         Ok(out)
@@ -41,13 +43,19 @@ impl StructureVisitor for ExplainVisit<'_> {
 }
 
 fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
-    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
-    let (soup, label) = mesh_or_tetrahedron(mesh, grids_only)?;
-    let text = registry::visit(name, ExplainVisit(&soup))
+    let grids_only = registry::visit(name, Row)
+        .ok_or_else(|| unknown_structure(name))?
+        .capabilities
+        .grids_only;
+    let (soup, label) = mesh_or_tetrahedron(mesh, grids_only, |sample| {
+        let text = registry::visit(name, ExplainVisit(sample, String::new()));
+        let text = text.and_then(Result::ok).unwrap_or_default();
+        limits::growing_text(&text) + limits::outside_rust(name, sample)
+    })?;
+    registry::visit(name, ExplainVisit(&soup, format!("{name} for {label}\n\n")))
         .ok_or_else(|| unknown_structure(name))?
         .map_err(|e| Failure {
             message: format!("{name} cannot store {label}: {e}"),
             code: 1,
-        })?;
-    Ok(format!("{name} for {label}\n\n{text}"))
+        })
 }

@@ -5,6 +5,7 @@
 //! `V[]` read R00 adds per neighbour; the count at the end is all of them.
 
 use crate::input::{mesh_or_tetrahedron, Failure};
+use crate::limits;
 use std::fmt::Write as _;
 use topolab_structures::che::{next, triangle, CheLevel, StarRead};
 use topolab_structures::{
@@ -20,7 +21,15 @@ pub fn explain_che(
     trace: Option<&str>,
     vertex: Option<u32>,
 ) -> Result<String, Failure> {
-    let (soup, label) = mesh_or_tetrahedron(mesh, false)?;
+    // Measured on a sample: the text of every container, or the levels a trace builds.
+    let (soup, label) = mesh_or_tetrahedron(mesh, false, |sample| {
+        let mut text = String::new();
+        let _ = match trace {
+            None => all_containers(sample, &mut text),
+            Some(_) => all_traces(sample, 0, &mut text),
+        };
+        limits::growing_text(&text)
+    })?;
     let mut out = format!("Compact Half-Edge (CHE), levels 0-3, for {label}\n");
     let traced = trace.map(|name| (name, Operator::from_name(name)));
     match (traced, vertex) {
@@ -28,10 +37,7 @@ pub fn explain_che(
             out.push_str(
                 "Triangle t owns half-edges 3t, 3t+1, 3t+2; half-edge 3t+i leaves corner i of face t.\n",
             );
-            containers::<CheL0>(&soup, &mut out)?;
-            containers::<CheL1>(&soup, &mut out)?;
-            containers::<CheL2>(&soup, &mut out)?;
-            containers::<CheL3>(&soup, &mut out)?;
+            all_containers(&soup, &mut out)?;
         }
         (Some((_, Some(Operator::R00 | Operator::R01 | Operator::R02))), Some(v)) => {
             if v as usize >= soup.num_vertices() {
@@ -44,10 +50,7 @@ pub fn explain_che(
                 out,
                 "The vertex star of v{v} (R00, R01 and R02 all walk it), read by read:"
             );
-            star_trace::<CheL0>(&soup, v, &mut out)?;
-            star_trace::<CheL1>(&soup, v, &mut out)?;
-            star_trace::<CheL2>(&soup, v, &mut out)?;
-            star_trace::<CheL3>(&soup, v, &mut out)?;
+            all_traces(&soup, v, &mut out)?;
         }
         (Some((name, _)), Some(_)) => {
             return Err(Failure::usage(format!(
@@ -57,6 +60,20 @@ pub fn explain_che(
         (Some(_), None) => return Err(Failure::usage("--trace needs --vertex N".into())),
     }
     Ok(out)
+}
+
+fn all_containers(soup: &PolygonSoup, out: &mut String) -> Result<(), Failure> {
+    containers::<CheL0>(soup, out)?;
+    containers::<CheL1>(soup, out)?;
+    containers::<CheL2>(soup, out)?;
+    containers::<CheL3>(soup, out)
+}
+
+fn all_traces(soup: &PolygonSoup, v: u32, out: &mut String) -> Result<(), Failure> {
+    star_trace::<CheL0>(soup, v, out)?;
+    star_trace::<CheL1>(soup, v, out)?;
+    star_trace::<CheL2>(soup, v, out)?;
+    star_trace::<CheL3>(soup, v, out)
 }
 
 fn build<L: MeshTopology>(soup: &PolygonSoup) -> Result<L, Failure> {

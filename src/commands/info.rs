@@ -2,6 +2,7 @@
 //! through a structure.
 
 use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
+use crate::limits;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
 use topolab_structures::summary::{summarize, Summary};
@@ -16,20 +17,33 @@ impl StructureVisitor for InfoVisit<'_> {
     }
 }
 
-/// The text of `topolab info MESH [--structure NAME] [--json]`.
-pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
-    let soup = load_mesh(spec)?;
-    refuse_empty(spec, &soup)?;
-    let summary = registry::visit(structure, InfoVisit(&soup))
-        .ok_or_else(|| unknown_structure(structure))?
-        .map_err(|e| Failure {
-            message: format!("{structure} cannot store {spec}: {e}"),
-            code: 1,
-        })?;
+/// What `info` computes on a mesh: the structure's summary (or why it cannot store the mesh),
+/// and the non-manifold vertices from the edge analysis. `None` for an unknown structure.
+fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<(Result<Summary, Error>, usize)> {
+    let summary = registry::visit(structure, InfoVisit(soup))?;
     let non_manifold_vertices = soup
         .connectivity()
-        .map(|c| c.vertex_fans(&soup).iter().filter(|&&n| n > 1).count())
+        .map(|c| c.vertex_fans(soup).iter().filter(|&&n| n > 1).count())
         .unwrap_or(0);
+    Some((summary, non_manifold_vertices))
+}
+
+/// The text of `topolab info MESH [--structure NAME] [--json]`.
+pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
+    if !registry::NAMES.contains(&structure) {
+        return Err(unknown_structure(structure));
+    }
+    let soup = load_mesh(spec, |sample| {
+        summary_of(structure, sample);
+        limits::outside_rust(structure, sample)
+    })?;
+    refuse_empty(spec, &soup)?;
+    let (summary, non_manifold_vertices) =
+        summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
+    let summary = summary.map_err(|e| Failure {
+        message: format!("{structure} cannot store {spec}: {e}"),
+        code: 1,
+    })?;
     if json {
         let mut v = serde_json::to_value(&summary).expect("serialisable");
         v["mesh"] = spec.into();

@@ -141,14 +141,6 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             vec![1_000, 4_000, 16_000, 64_000, 256_000, 1_000_000]
         }
     });
-    // Refused here, before anything is measured: a size the generators do not build (ids are
-    // u32) used to panic only after the memory probe.
-    if let Some(bad) = sizes.iter().find(|&&n| n == 0 || n > meshes::MAX_FACES) {
-        return Err(Failure::usage(format!(
-            "--sizes {bad}: a size is a triangle count from 1 to {} (the generated meshes number their elements with u32 ids)",
-            meshes::MAX_FACES
-        )));
-    }
     // Smallest first, each once: the skip-by-estimate extrapolates from the sizes before.
     sizes.sort_unstable();
     sizes.dedup();
@@ -187,6 +179,10 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     };
     let samples = if quick { 64 } else { 128 };
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
+    // Refused here, before anything is measured: sizes past u32 ids, more memory than there
+    // is, an output folder that cannot be written (it used to fail after the whole run).
+    crate::limits::admit_report(&sizes, &families, &names, probe_mb)?;
+    crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
     let mut results = Results {
@@ -219,7 +215,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         for fam in families.iter().filter(|f| **f != "real") {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
-                .ok_or_else(|| Failure::usage(format!("cannot generate the mesh {spec}")))?;
+                .map_err(|e| Failure::usage(format!("cannot generate the mesh {spec}: {e}")))?;
             cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
@@ -580,13 +576,14 @@ fn libigl(
 }
 
 fn write(out: &Path, results: &Results) -> Result<(), Failure> {
-    let fail = |e: std::io::Error| Failure {
+    use std::io::Write as _;
+    std::fs::create_dir_all(out).map_err(|e| Failure {
         message: format!("cannot write the report to {}: {e}", out.display()),
         code: 2,
-    };
-    std::fs::create_dir_all(out).map_err(fail)?;
+    })?;
     let json = serde_json::to_string_pretty(results).expect("serialisable");
-    std::fs::write(out.join("results.json"), json).map_err(fail)?;
-    std::fs::write(out.join("index.html"), html::render(results)).map_err(fail)?;
+    crate::output::write_file(&out.join("results.json"), |w| w.write_all(json.as_bytes()))?;
+    let page = html::render(results);
+    crate::output::write_file(&out.join("index.html"), |w| w.write_all(page.as_bytes()))?;
     Ok(())
 }
