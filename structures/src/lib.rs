@@ -58,6 +58,7 @@ pub use testing::{conformance, meshes};
 // The error types' short path inside the crate (`crate::error::Error`).
 use self::core::error;
 
+pub use self::core::access::{Access, Container, Read, Unit};
 pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::error::{Error, Format, Location, Result};
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};

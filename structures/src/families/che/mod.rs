@@ -81,6 +81,7 @@
 //! Algorithm 10 steps `next(O[next(he)])` even when `next(he)` is on the boundary; the walk here
 //! ([`next_boundary_half_edge`]) is Algorithm 4's inner loop, which stops there.
 
+mod access;
 mod build;
 mod level0;
 mod level1;

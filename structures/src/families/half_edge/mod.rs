@@ -30,6 +30,7 @@
 //! ([`PointerHalfEdge`](crate::PointerHalfEdge)), unless `prev` is stored as well, O(1)
 //! ([`IndexHalfEdge`](crate::IndexHalfEdge), as OpenMesh does).
 
+mod access;
 mod build;
 pub mod index;
 pub mod pointer;
@@ -112,6 +113,13 @@ pub trait HalfEdgeLinks: Sized {
     fn describe(w: &mut dyn Write) -> std::fmt::Result;
     /// For `explain`: the stored `prev` of `h`, if the storage keeps one.
     fn stored_prev(&self, h: Self::H<'_>) -> Option<u32>;
+
+    /// What `op` reads from this storage ([`MeshTopology::access`](crate::MeshTopology::access));
+    /// `None` (the default): no model.
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        let _ = op;
+        None
+    }
 }
 
 /// A half-edge structure over the storage `L`; see the module docs.
