@@ -466,7 +466,7 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
 }
 
 fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
-    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction.</div><div class=plots>");
+    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and OpenMesh share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
     for fam in ["torus", "grid"] {
         let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
         h.push_str(&svg::loglog(
@@ -477,6 +477,40 @@ fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
         ));
     }
     h.push_str("</div>");
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let builds: Vec<&Measurement> = r
+        .measurements
+        .iter()
+        .filter(|m| {
+            m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+        })
+        .collect();
+    let om = builds.iter().copied().find(|m| m.structure == "openmesh");
+    let _ = write!(h, "<table><tr><th class=l>{mesh} ({tri} faces)</th><th>warm, ns/face</th><th>cold, ns/face</th><th>cold − warm (page faults), ns/face</th><th>page faults per build, warm / cold</th><th>warm / OpenMesh</th><th>cold / OpenMesh</th></tr>");
+    for m in &builds {
+        let opt = |x: Option<f64>| x.map(ns).unwrap_or_else(|| "–".into());
+        let faults = |x: Option<u64>| x.map(|f| f.to_string()).unwrap_or_else(|| "–".into());
+        let vs = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => format!("{:.2}×", a / b),
+            _ => "–".into(),
+        };
+        let (warm, cold) = (m.ns_per_item, m.cold_ns_per_item);
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{} / {}</td><td>{}</td><td>{}</td></tr>",
+            m.structure,
+            opt(warm),
+            opt(cold),
+            opt(warm.zip(cold).map(|(w, c)| c - w)),
+            faults(m.page_faults),
+            faults(m.cold_page_faults),
+            vs(warm, om.and_then(|o| o.ns_per_item)),
+            vs(cold, om.and_then(|o| o.cold_ns_per_item)),
+        );
+    }
+    h.push_str("</table>");
 }
 
 fn orderings(h: &mut String, r: &Results, names: &[&str]) {

@@ -205,6 +205,17 @@ pub struct Measurement {
     pub native: bool,
     /// Why refused, or other remarks.
     pub note: Option<String>,
+    /// Construction only: median ns per face of the cold builds, each made right after the
+    /// allocator returned its free memory to the kernel (`ns_per_item` is the warm builds',
+    /// which reuse the memory of the build before them).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_ns_per_item: Option<f64>,
+    /// Construction only: median minor page faults of one warm build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub page_faults: Option<u64>,
+    /// Construction only: median minor page faults of one cold build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_page_faults: Option<u64>,
 }
 
 /// A fitted exponent.
@@ -284,6 +295,9 @@ mod tests {
             estimate_ns_per_item: None,
             native: false,
             note: None,
+            cold_ns_per_item: None,
+            page_faults: None,
+            cold_page_faults: None,
         }
     }
 

@@ -47,13 +47,29 @@ struct Allocator;
 
 impl MemoryMeter for Allocator {
     fn current(&self) -> usize {
-        crate::ALLOCATOR.current_usage()
+        crate::ALLOCATOR.current()
     }
     fn peak(&self) -> usize {
-        crate::ALLOCATOR.peak_usage()
+        crate::ALLOCATOR.peak()
     }
     fn reset_peak(&self) {
-        crate::ALLOCATOR.reset_peak_usage()
+        crate::ALLOCATOR.reset_peak()
+    }
+    fn counting(&self, on: bool) {
+        if on {
+            crate::ALLOCATOR.start()
+        } else {
+            crate::ALLOCATOR.stop()
+        }
+    }
+    fn minor_faults(&self) -> Option<u64> {
+        crate::alloc::minor_faults()
+    }
+    fn release_free_memory(&self) {
+        crate::alloc::release_free_memory()
+    }
+    fn thread_cpu_ns(&self) -> Option<u64> {
+        crate::alloc::thread_cpu_ns()
     }
 }
 
@@ -165,6 +181,11 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
+    // The same glibc policy for every structure, C++ baselines included: freed memory stays
+    // with the process, so warm builds reuse it whatever the run built before.
+    if !crate::alloc::keep_freed_memory() {
+        eprintln!("topolab report: this allocator keeps its own policy (not glibc): warm builds may still fault in fresh pages");
+    }
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
