@@ -31,6 +31,50 @@ fn run(cmd: &str, args: &[&str]) -> Option<String> {
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
+/// The data (or unified) caches of CPU 0 by level, with their sizes in bytes, smallest level
+/// first (Linux sysfs; empty where unreadable).
+pub fn data_caches() -> Vec<(u8, usize)> {
+    let mut out = Vec::new();
+    for i in 0..8 {
+        let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
+        let read = |f: &str| {
+            std::fs::read_to_string(format!("{base}/{f}"))
+                .ok()
+                .map(|s| s.trim().to_string())
+        };
+        let (Some(level), Some(kind), Some(size)) = (read("level"), read("type"), read("size"))
+        else {
+            continue;
+        };
+        if let (Ok(level), Some(bytes), false) = (
+            level.parse::<u8>(),
+            cache_bytes(&size),
+            kind == "Instruction",
+        ) {
+            out.push((level, bytes));
+        }
+    }
+    out.sort_unstable();
+    out.dedup_by_key(|c| c.0);
+    out
+}
+
+/// Bytes of a sysfs cache size such as `32K` or `1M`.
+fn cache_bytes(size: &str) -> Option<usize> {
+    let (digits, unit) = size.split_at(
+        size.find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(size.len()),
+    );
+    let n: usize = digits.parse().ok()?;
+    Some(match unit {
+        "" => n,
+        "K" => n << 10,
+        "M" => n << 20,
+        "G" => n << 30,
+        _ => return None,
+    })
+}
+
 /// Reads the facts (anything unreadable is "unknown").
 pub fn facts() -> Machine {
     let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
@@ -87,5 +131,18 @@ pub fn facts() -> Machine {
         commit,
         date: run("date", &["-u", "+%Y-%m-%d %H:%M UTC"]).unwrap_or_else(|| "unknown".into()),
         os: run("uname", &["-sr"]).unwrap_or_else(|| "unknown".into()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn cache_sizes_read_as_sysfs_writes_them() {
+        assert_eq!(super::cache_bytes("32K"), Some(32 << 10));
+        assert_eq!(super::cache_bytes("1024K"), Some(1 << 20));
+        assert_eq!(super::cache_bytes("2M"), Some(2 << 20));
+        assert_eq!(super::cache_bytes("512"), Some(512));
+        assert_eq!(super::cache_bytes("K"), None);
+        assert_eq!(super::cache_bytes("3X"), None);
     }
 }

@@ -169,6 +169,7 @@ fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCas
         cold_ns_per_item: None,
         page_faults: None,
         cold_page_faults: None,
+        limit: None,
     }
 }
 

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
+use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{
     cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
 };
@@ -101,6 +102,7 @@ impl StructureVisitor for Describe {
                     operator: op,
                     cost: M::cost(op),
                     expected_exponent: M::cost(op).expected_exponent(),
+                    access: M::access(op),
                 })
                 .collect(),
         };
@@ -286,6 +288,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
             faces: soup.num_faces(),
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
+            counts: MeshCounts::of(soup),
         });
     }
     bar.finish_and_clear();
@@ -293,6 +296,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    limit::annotate(&mut results);
     let skipped = results
         .measurements
         .iter()
