@@ -31,29 +31,30 @@ fn run(cmd: &str, args: &[&str]) -> Option<String> {
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
+/// The caches of CPU 0 as Linux sysfs describes them: (level, type, size), e.g.
+/// `("1", "Data", "32K")`; empty where unreadable.
+fn sysfs_caches() -> Vec<(String, String, String)> {
+    (0..8)
+        .filter_map(|i| {
+            let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
+            let read = |f: &str| {
+                std::fs::read_to_string(format!("{base}/{f}"))
+                    .ok()
+                    .map(|s| s.trim().to_string())
+            };
+            Some((read("level")?, read("type")?, read("size")?))
+        })
+        .collect()
+}
+
 /// The data (or unified) caches of CPU 0 by level, with their sizes in bytes, smallest level
-/// first (Linux sysfs; empty where unreadable).
+/// first (empty where unreadable).
 pub fn data_caches() -> Vec<(u8, usize)> {
-    let mut out = Vec::new();
-    for i in 0..8 {
-        let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
-        let read = |f: &str| {
-            std::fs::read_to_string(format!("{base}/{f}"))
-                .ok()
-                .map(|s| s.trim().to_string())
-        };
-        let (Some(level), Some(kind), Some(size)) = (read("level"), read("type"), read("size"))
-        else {
-            continue;
-        };
-        if let (Ok(level), Some(bytes), false) = (
-            level.parse::<u8>(),
-            cache_bytes(&size),
-            kind == "Instruction",
-        ) {
-            out.push((level, bytes));
-        }
-    }
+    let mut out: Vec<(u8, usize)> = sysfs_caches()
+        .into_iter()
+        .filter(|(_, kind, _)| kind != "Instruction")
+        .filter_map(|(level, _, size)| Some((level.parse().ok()?, cache_bytes(&size)?)))
+        .collect();
     out.sort_unstable();
     out.dedup_by_key(|c| c.0);
     out
@@ -84,23 +85,17 @@ pub fn facts() -> Machine {
         .and_then(|l| l.split(':').nth(1))
         .map(|s| s.trim().to_string())
         .unwrap_or_else(|| "unknown".into());
-    let mut caches = Vec::new();
-    for i in 0..8 {
-        let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
-        let read = |f: &str| {
-            std::fs::read_to_string(format!("{base}/{f}"))
-                .ok()
-                .map(|s| s.trim().to_string())
-        };
-        if let (Some(level), Some(kind), Some(size)) = (read("level"), read("type"), read("size")) {
+    let caches: Vec<String> = sysfs_caches()
+        .into_iter()
+        .map(|(level, kind, size)| {
             let k = match kind.as_str() {
                 "Data" => "d",
                 "Instruction" => "i",
                 _ => "",
             };
-            caches.push(format!("L{level}{k} {size}"));
-        }
-    }
+            format!("L{level}{k} {size}")
+        })
+        .collect();
     let memory = std::fs::read_to_string("/proc/meminfo")
         .ok()
         .and_then(|m| {
