@@ -6,7 +6,8 @@
 //! with the helpers of [`input`], [`limits`] and [`output`]); [`extend`] runs the report with
 //! structures of other crates added.
 #![deny(missing_docs)]
-// Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
+// Only the OpenMesh FFI module and the allocator may use `unsafe` (each allows it for itself
+// alone).
 #![deny(unsafe_code)]
 
 pub mod cli;
@@ -16,10 +17,13 @@ pub mod input;
 pub mod limits;
 pub mod output;
 
-/// The process's allocator, counting bytes so the report can measure each structure's heap
-/// (current and peak). The counters add two atomic operations to every allocation.
+#[allow(unsafe_code)]
+pub mod alloc;
+
+/// The process's allocator: glibc's, counting a thread's bytes only while the report measures
+/// a structure's heap (see [`alloc`]).
 #[global_allocator]
-pub static ALLOCATOR: peak_alloc::PeakAlloc = peak_alloc::PeakAlloc;
+pub static ALLOCATOR: alloc::CountingAllocator = alloc::CountingAllocator;
 #[cfg(has_openmesh)]
 #[allow(unsafe_code)]
 pub mod openmesh;

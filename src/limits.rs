@@ -138,13 +138,10 @@ pub fn mesh_within_u32(what: &str, size: &MeshSize) -> Result<(), Failure> {
 }
 
 /// The peak heap `work` allocates beyond what was allocated when it started, in bytes, as the
-/// process's counting allocator ([`crate::ALLOCATOR`]) sees it. Single-threaded use only: the
-/// counter is the process's.
+/// process's counting allocator ([`crate::ALLOCATOR`]) sees it. `work` must allocate on the
+/// calling thread: the allocator counts one thread's bytes.
 pub fn peak_of<T>(work: impl FnOnce() -> T) -> (T, u64) {
-    let before = crate::ALLOCATOR.current_usage();
-    crate::ALLOCATOR.reset_peak_usage();
-    let out = work();
-    let peak = crate::ALLOCATOR.peak_usage().saturating_sub(before);
+    let (out, peak) = crate::ALLOCATOR.measure(work);
     (out, peak as u64)
 }
 

@@ -65,6 +65,8 @@ use topolab_structures::{
 };
 
 /// The declarations of `openmesh/shim.h`.
+mod access;
+
 mod ffi {
     use std::ffi::c_void;
 
@@ -753,6 +755,10 @@ impl MeshTopology for OpenMesh {
 
     fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
         Some(&Kernels)
+    }
+
+    fn access(op: Operator) -> Option<topolab_structures::Access> {
+        access::model(op)
     }
 }
 

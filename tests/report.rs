@@ -72,11 +72,47 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
             assert!(m["ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
         }
     }
+    // Construction: warm builds (`ns_per_item`) and cold ones beside them.
+    for m in ms
+        .iter()
+        .filter(|m| m["operator"] == "construction" && m["status"] == "measured")
+    {
+        assert!(m["cold_ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+    }
+    // A limit on the sweeps of the structures that declare their access, none on the others.
+    let sweep = |s: &str, op: &str| {
+        ms.iter()
+            .find(|m| {
+                m["structure"] == s
+                    && m["operator"] == op
+                    && m["kernel"] == "sweep"
+                    && m["mesh"] == "torus-800"
+                    && m["status"] == "measured"
+            })
+            .unwrap_or_else(|| panic!("no {s} {op} sweep"))
+    };
+    for (s, op) in [
+        ("index-half-edge", "r00"),
+        ("che-l2", "r22"),
+        ("pointer-half-edge", "boundary-curves"),
+    ] {
+        let limit = &sweep(s, op)["limit"];
+        assert!(
+            limit["ns_per_item"].as_f64().unwrap() > 0.0,
+            "{s} {op}: {limit}"
+        );
+        assert!(limit["bound"].is_string(), "{limit}");
+    }
+    assert!(sweep("vertex-list", "r20").get("limit").is_none());
+    assert!(!json["probe"]["levels"].as_array().unwrap().is_empty());
+    assert!(json["probe"]["checksum_ns"].as_f64().unwrap() > 0.0);
     assert!(json["machine"]["cpu"].is_string());
     assert!(json["probe"]["read_bytes_per_s"].as_f64().unwrap() > 0.0);
     assert!(!json["fits"].as_array().unwrap().is_empty());
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
+    assert!(html.contains("× limit") && html.contains("worst × limit"));
+    assert!(html.contains("cold − warm (page faults)"));
     for s in registry::NAMES {
         assert!(
             html.contains(&format!("<th>{s}</th>")),

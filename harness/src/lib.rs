@@ -13,6 +13,7 @@ pub mod fit;
 pub mod html;
 pub mod hull;
 pub mod kernels;
+pub mod limit;
 pub mod machine;
 pub mod measure;
 pub mod probe;

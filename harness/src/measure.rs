@@ -12,12 +12,12 @@
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
 use crate::results::{Measurement, Status, Subject};
-use crate::timing::{time, Budget, Timing};
+use crate::timing::{median, time, Budget, Timing};
 use std::collections::HashMap;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
 
-/// Reads the process's heap use (the report binary's counting allocator).
+/// Reads the process's heap use (the report binary's counting allocator) and page faults.
 pub trait MemoryMeter {
     /// Bytes allocated now.
     fn current(&self) -> usize;
@@ -25,6 +25,25 @@ pub trait MemoryMeter {
     fn peak(&self) -> usize;
     /// Starts a new peak at `current()`.
     fn reset_peak(&self);
+    /// Starts (`true`) or stops counting allocations. The report's allocator counts only while
+    /// asked, so the timed builds pay nothing for the memory measurement. The default does
+    /// nothing (a meter that always counts).
+    fn counting(&self, on: bool) {
+        let _ = on;
+    }
+    /// Minor page faults of the measuring thread so far; `None` (the default) when unknown.
+    fn minor_faults(&self) -> Option<u64> {
+        None
+    }
+    /// Returns the memory the allocator holds free to the kernel, so that the next build
+    /// touches fresh pages (a cold build). The default does nothing.
+    fn release_free_memory(&self) {}
+    /// The measuring thread's CPU time so far, user and system, ns: when known, builds are
+    /// timed by it, so that the other processes of a shared machine do not count. `None` (the
+    /// default): builds are timed by the wall clock.
+    fn thread_cpu_ns(&self) -> Option<u64> {
+        None
+    }
 }
 
 /// A mesh to measure on.
@@ -147,6 +166,10 @@ fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCas
         estimate_ns_per_item: None,
         native: false,
         note: None,
+        cold_ns_per_item: None,
+        page_faults: None,
+        cold_page_faults: None,
+        limit: None,
     }
 }
 
@@ -165,12 +188,16 @@ pub fn measure_structure<M: MeshTopology>(
         max_reps: plan.max_reps,
     };
     let n = case.soup.num_faces();
-    // Construction: memory first (one build, measured by the allocator), then the timing.
+    // Construction: memory first (one build, counted by the allocator and kept for the
+    // queries), then the timed builds with nothing counted.
     let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
+    meter.counting(true);
     meter.reset_peak();
     let before = meter.current();
     let built = M::from_soup(case.soup);
     let peak = meter.peak().saturating_sub(before);
+    let held = meter.current().saturating_sub(before);
+    meter.counting(false);
     let mut m = match built {
         Ok(m) => m,
         Err(e) => {
@@ -180,7 +207,6 @@ pub fn measure_structure<M: MeshTopology>(
             return Ok(());
         }
     };
-    let held = meter.current().saturating_sub(before);
     cons.bytes = Some(held as u64);
     cons.peak_bytes = Some(peak as u64);
     cons.declared_bytes = Some(m.heap_bytes() as u64);
@@ -191,28 +217,14 @@ pub fn measure_structure<M: MeshTopology>(
         min_reps: 3,
         max_reps: plan.max_reps.min(7),
     };
-    let native = M::native();
-    let native_build = native.and_then(|k| {
-        time_native(construction_budget, || {
-            k.construction(case.soup).map(|r| r.map(|m| m.num_faces()))
-        })
-    });
-    let t = match native_build {
-        Some(timed) => {
-            cons.native = true;
-            timed
-                .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?
-                .0
-        }
-        // `from_soup` succeeded above: a later run that fails differs from the first.
-        None => {
-            time(construction_budget, || {
-                M::from_soup(case.soup).map(|m| m.num_faces()).ok()
-            })?
-            .0
-        }
-    };
-    fill(&mut cons, t, n.max(1), None);
+    let builds = time_construction::<M>(case.soup, construction_budget, meter)
+        .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?;
+    let faces = n.max(1);
+    cons.native = builds.native;
+    fill(&mut cons, builds.warm, faces, None);
+    cons.page_faults = builds.warm_faults;
+    cons.cold_ns_per_item = Some(builds.cold.median_ns / faces as f64);
+    cons.cold_page_faults = builds.cold_faults;
     out.push(cons);
 
     let all = Queries::all(&m, case.soup);
@@ -277,6 +289,7 @@ pub fn measure_structure<M: MeshTopology>(
             out.push(cell);
         }
     }
+    let native = M::native();
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
         let mut cell = measurement(M::NAME, Subject::Workload(w), Kernel::Workload, case);
@@ -327,6 +340,99 @@ pub fn measure_structure<M: MeshTopology>(
         out.push(cell);
     }
     Ok(())
+}
+
+/// Construction timed two ways. *Warm*: after one build to warm up, the median of builds that
+/// reuse the memory the build before them freed (with glibc told to keep freed memory, as the
+/// report does, they take no page fault whatever ran before). *Cold*: each build right after
+/// the allocator returned its free memory to the kernel, so it faults in every page it
+/// touches. The page faults of each are counted around the builds, and each build is timed in
+/// the thread's CPU time when the meter knows it ([`MemoryMeter::thread_cpu_ns`]; page faults
+/// are system time, so they count).
+struct Builds {
+    /// The warm builds.
+    warm: Timing,
+    /// Median minor page faults of a warm build.
+    warm_faults: Option<u64>,
+    /// The cold builds.
+    cold: Timing,
+    /// Median minor page faults of a cold build.
+    cold_faults: Option<u64>,
+    /// Whether the baseline's own construction ran ([`topolab_structures::NativeKernels`]).
+    native: bool,
+}
+
+/// At most this many cold builds: each one faults in the whole structure, and their spread is
+/// the kernel's, not the structure's.
+const COLD_BUILDS: usize = 3;
+
+/// Times the construction of `M` from `soup` (see [`Builds`]): the baseline's own
+/// construction when it has one, [`MeshTopology::from_soup`] otherwise. Fails when a build
+/// fails or builds a different number of faces than the first.
+fn time_construction<M: MeshTopology>(
+    soup: &PolygonSoup,
+    budget: Budget,
+    meter: &dyn MemoryMeter,
+) -> Result<Builds, String> {
+    let native = M::native();
+    let build = || -> Result<(usize, bool), String> {
+        if let Some(built) = native.and_then(|k| k.construction(soup)) {
+            return built
+                .map(|m| (m.num_faces(), true))
+                .map_err(|e| format!("native kernel failed: {e}"));
+        }
+        M::from_soup(soup)
+            .map(|m| (m.num_faces(), false))
+            .map_err(|e| format!("a later build failed: {e}"))
+    };
+    let warm_up = Instant::now();
+    let first = build()?;
+    // A build longer than the budget is timed once (its work dominates its noise).
+    let min_reps = if warm_up.elapsed() > budget.time {
+        1
+    } else {
+        budget.min_reps
+    };
+    let runs = |cold: bool, max_reps: usize| -> Result<(Timing, Option<u64>), String> {
+        let (mut ns, mut faults) = (Vec::new(), Vec::new());
+        let start = Instant::now();
+        while ns.len() < min_reps.min(max_reps)
+            || (ns.len() < max_reps && start.elapsed() < budget.time)
+        {
+            if cold {
+                meter.release_free_memory();
+            }
+            let before = meter.minor_faults();
+            let (cpu, t) = (meter.thread_cpu_ns(), Instant::now());
+            let built = std::hint::black_box(build()?);
+            let wall = t.elapsed().as_nanos() as u64;
+            ns.push(match (cpu, meter.thread_cpu_ns()) {
+                (Some(a), Some(b)) => b.saturating_sub(a),
+                _ => wall,
+            } as f64);
+            if let (Some(a), Some(b)) = (before, meter.minor_faults()) {
+                faults.push(b.saturating_sub(a) as f64);
+            }
+            if built != first {
+                return Err(format!(
+                    "build {} gave {built:?}, the first gave {first:?}",
+                    ns.len()
+                ));
+            }
+        }
+        faults.sort_by(f64::total_cmp);
+        let faults = (faults.len() == ns.len()).then(|| median(&faults) as u64);
+        Ok((Timing::of(ns), faults))
+    };
+    let (warm, warm_faults) = runs(false, budget.max_reps)?;
+    let (cold, cold_faults) = runs(true, COLD_BUILDS.min(budget.max_reps))?;
+    Ok(Builds {
+        warm,
+        warm_faults,
+        cold,
+        cold_faults,
+        native: first.1,
+    })
 }
 
 /// Times one kernel of `op` on a built structure: the structure's native loop when it has one

@@ -70,6 +70,10 @@ pub struct CostRow {
     pub cost: Cost,
     /// The exponent it predicts.
     pub expected_exponent: f64,
+    /// What one query reads from memory, when the structure declares it (the limit of its
+    /// sweeps, [`crate::limit`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<topolab_structures::Access>,
 }
 
 /// A mesh of the run.
@@ -88,6 +92,10 @@ pub struct MeshInfo {
     /// A small SVG rendering.
     #[serde(skip)]
     pub thumbnail_svg: String,
+    /// Its element counts, for the limits of its sweeps (`None` when its edges cannot be
+    /// analysed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub counts: Option<crate::limit::MeshCounts>,
 }
 
 /// Writes a cost in its notation (`O(k)`), as results.json has it.
@@ -205,6 +213,21 @@ pub struct Measurement {
     pub native: bool,
     /// Why refused, or other remarks.
     pub note: Option<String>,
+    /// Construction only: median ns per face of the cold builds, each made right after the
+    /// allocator returned its free memory to the kernel (`ns_per_item` is the warm builds',
+    /// which reuse the memory of the build before them).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_ns_per_item: Option<f64>,
+    /// Construction only: median minor page faults of one warm build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub page_faults: Option<u64>,
+    /// Construction only: median minor page faults of one cold build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_page_faults: Option<u64>,
+    /// Sweeps of a structure that declares its access model: the time the model allows
+    /// ([`crate::limit`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limit: Option<crate::limit::Limit>,
 }
 
 /// A fitted exponent.
@@ -284,6 +307,10 @@ mod tests {
             estimate_ns_per_item: None,
             native: false,
             note: None,
+            cold_ns_per_item: None,
+            page_faults: None,
+            cold_page_faults: None,
+            limit: None,
         }
     }
 
@@ -384,6 +411,7 @@ mod tests {
             operator: Operator::EdgeSuccessor,
             cost: Cost::Boundary,
             expected_exponent: 0.5,
+            access: None,
         };
         assert_eq!(
             serde_json::to_string(&cost).unwrap(),

@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
+use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{
     cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
 };
@@ -50,13 +51,29 @@ struct Allocator;
 
 impl MemoryMeter for Allocator {
     fn current(&self) -> usize {
-        crate::ALLOCATOR.current_usage()
+        crate::ALLOCATOR.current()
     }
     fn peak(&self) -> usize {
-        crate::ALLOCATOR.peak_usage()
+        crate::ALLOCATOR.peak()
     }
     fn reset_peak(&self) {
-        crate::ALLOCATOR.reset_peak_usage()
+        crate::ALLOCATOR.reset_peak()
+    }
+    fn counting(&self, on: bool) {
+        if on {
+            crate::ALLOCATOR.start()
+        } else {
+            crate::ALLOCATOR.stop()
+        }
+    }
+    fn minor_faults(&self) -> Option<u64> {
+        crate::alloc::minor_faults()
+    }
+    fn release_free_memory(&self) {
+        crate::alloc::release_free_memory()
+    }
+    fn thread_cpu_ns(&self) -> Option<u64> {
+        crate::alloc::thread_cpu_ns()
     }
 }
 
@@ -88,6 +105,7 @@ impl StructureVisitor for Describe {
                     operator: op,
                     cost: M::cost(op),
                     expected_exponent: M::cost(op).expected_exponent(),
+                    access: M::access(op),
                 })
                 .collect(),
         };
@@ -178,6 +196,11 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
+    // The same glibc policy for every structure, C++ baselines included: freed memory stays
+    // with the process, so warm builds reuse it whatever the run built before.
+    if !crate::alloc::keep_freed_memory() {
+        eprintln!("topolab report: this allocator keeps its own policy (not glibc): warm builds may still fault in fresh pages");
+    }
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
     // Refused here, before anything is measured: sizes past u32 ids, more memory than there
     // is, an output folder that cannot be written (it used to fail after the whole run).
@@ -282,6 +305,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             faces: soup.num_faces(),
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
+            counts: MeshCounts::of(soup),
         });
     }
     bar.finish_and_clear();
@@ -289,6 +313,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    limit::annotate(&mut results);
     let skipped = results
         .measurements
         .iter()

@@ -14,8 +14,8 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// The trait's methods that are not queries: what a structure is, how it is built, checked,
-/// measured and explained, the enumeration of edge ids (run once, outside any timing) and the
-/// baselines' native loops.
+/// measured and explained (its access model among it), the enumeration of edge ids (run once,
+/// outside any timing) and the baselines' native loops.
 const NOT_QUERIES: &[&str] = &[
     "capabilities",
     "cost",
@@ -23,6 +23,7 @@ const NOT_QUERIES: &[&str] = &[
     "for_each_edge",
     "validate",
     "heap_bytes",
+    "access",
     "explain",
     "native",
 ];

@@ -7,6 +7,7 @@
 //! callback (internal iteration), so they never allocate and are monomorphised in benchmarks; a
 //! caller that wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
 
+use crate::core::access::Access;
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
@@ -387,6 +388,14 @@ pub trait MeshTopology: Sized {
     /// (A baseline returns a constant; the lifetime `'a` spares the structures generic over
     /// a type, such as the half-edge over its links, a `'static` bound.)
     fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
+        None
+    }
+
+    /// What one query of `op` reads from memory ([`Access`]: bytes per container, dependent
+    /// loads on its longest chain), declared beside [`MeshTopology::cost`] for the limit the
+    /// report puts on each sweep; `None` (the default): no model, no limit.
+    fn access(op: Operator) -> Option<Access> {
+        let _ = op;
         None
     }
 }

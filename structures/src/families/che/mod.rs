@@ -114,6 +114,7 @@
 //! computes `prev` or `next` (a multiply, a compare and a select) before its load, where the
 //! half-edge's `twin` is `h ^ 1`.
 
+mod access;
 mod build;
 mod level0;
 mod level1;

@@ -194,6 +194,14 @@ macro_rules! che_topology {
             fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
                 self.print_containers(w)
             }
+            fn access(
+                op: $crate::core::topology::Operator,
+            ) -> Option<$crate::core::access::Access> {
+                $crate::families::che::access::model(
+                    <$ty as $crate::families::che::CheLevel>::LEVEL,
+                    op,
+                )
+            }
         }
     };
 }

@@ -49,6 +49,7 @@
 //!   (`next` twice) before its `pair`, and the time goes to cache misses on records spread
 //!   over the heap rather than to one chain's latency.
 
+mod access;
 mod build;
 pub mod index;
 pub mod pointer;
@@ -131,6 +132,13 @@ pub trait HalfEdgeLinks: Sized {
     fn describe(w: &mut dyn Write) -> std::fmt::Result;
     /// For `explain`: the stored `prev` of `h`, if the storage keeps one.
     fn stored_prev(&self, h: Self::H<'_>) -> Option<u32>;
+
+    /// What `op` reads from this storage ([`MeshTopology::access`](crate::MeshTopology::access));
+    /// `None` (the default): no model.
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        let _ = op;
+        None
+    }
 }
 
 /// A half-edge structure over the storage `L`; see the module docs.

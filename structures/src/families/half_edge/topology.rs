@@ -245,4 +245,8 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
              boundary half-edge in `edge`, so `edge->face == null` tells the boundary in O(1)."
         )
     }
+
+    fn access(op: Operator) -> Option<crate::core::access::Access> {
+        L::access(op)
+    }
 }

@@ -198,6 +198,9 @@ impl HalfEdgeLinks for IndexLinks {
     fn stored_prev(&self, h: u32) -> Option<u32> {
         Some(self.prev[h as usize])
     }
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        super::access::index(op)
+    }
 }
 
 #[cfg(test)]

@@ -163,6 +163,9 @@ impl HalfEdgeLinks for PointerLinks {
     fn stored_prev(&self, _h: EdgeRef<'_>) -> Option<u32> {
         None
     }
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        super::access::pointer(op)
+    }
 }
 
 #[cfg(test)]
