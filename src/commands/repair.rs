@@ -86,7 +86,7 @@ pub fn run(args: RepairArgs) -> u8 {
 
 /// The repair of `args.file` into `args.out`: the text to print and how many topological
 /// problems remain in the output.
-fn repair_file(args: &RepairArgs) -> Result<(String, usize), Failure> {
+pub fn repair_file(args: &RepairArgs) -> Result<(String, usize), Failure> {
     let steps: Vec<Step> = Step::ALL
         .into_iter()
         .filter(|s| !args.skip.contains(s))
