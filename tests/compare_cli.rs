@@ -3,28 +3,12 @@
 //! whatever changed; what is not a topolab results.json, or is of a newer format, is refused in
 //! one line with exit code 2; an unknown section lists the known.
 
+mod common;
+
+use common::run::{scratch, text, topolab};
 use serde_json::{json, Value};
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 use topolab_harness::results::FORMAT_VERSION;
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("topolab-compare-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn topolab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_topolab"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
 
 fn json_of(path: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
@@ -54,7 +38,7 @@ fn report(dir: &Path, sections: &str) -> Value {
 
 #[test]
 fn a_focused_report_measures_and_shows_only_its_sections() {
-    let dir = scratch("sections");
+    let dir = scratch("compare-sections");
     let v = report(&dir, "memory,construction");
     assert_eq!(v["format_version"], FORMAT_VERSION);
     assert_eq!(v["settings"]["sections"], json!(["memory", "construction"]));
@@ -101,7 +85,7 @@ fn an_unknown_section_is_a_usage_error_listing_the_known() {
 
 #[test]
 fn two_runs_compare_with_exit_0_and_their_machines_shown() {
-    let dir = scratch("runs");
+    let dir = scratch("compare-runs");
     let (a, b) = (dir.join("a"), dir.join("b"));
     report(&a, "table-4-1");
     let mut v = report(&b, "table-4-1");
@@ -153,7 +137,7 @@ fn two_runs_compare_with_exit_0_and_their_machines_shown() {
 
 #[test]
 fn what_is_not_a_results_json_of_a_known_format_is_refused_with_exit_2() {
-    let dir = scratch("refused");
+    let dir = scratch("compare-refused");
     let good = dir.join("good.json");
     let results = json!({
         "format_version": FORMAT_VERSION,

@@ -3,9 +3,12 @@
 //! finds none of the problems repair fixed in its output; what cannot be fixed (a
 //! non-orientable component) or was skipped remains, with exit code 1.
 
+mod common;
+
+use common::run::{scratch, text, topolab};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 use topolab::commands::report_repair::measurable;
 use topolab_structures::{meshes, PolygonSoup};
 
@@ -17,24 +20,6 @@ const FIXED: [&str; 5] = [
     "inconsistent-orientation",
     "unused-vertex",
 ];
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("topolab-repair-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn topolab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_topolab"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
 
 /// The finding kinds `topolab check` reports on `file`, each once.
 fn findings(file: &Path) -> Vec<String> {
@@ -106,7 +91,7 @@ fn broken() -> Vec<(&'static str, &'static str, PolygonSoup)> {
 
 #[test]
 fn each_problem_is_gone_from_the_output() {
-    let dir = scratch("each");
+    let dir = scratch("repair-each");
     for (name, problem, soup) in broken() {
         let input = write(&dir, name, &soup);
         assert!(findings(&input).iter().any(|k| k == problem), "{name}");
@@ -141,7 +126,7 @@ fn each_problem_is_gone_from_the_output() {
 
 #[test]
 fn split_vertices_are_expected_duplicates_and_repair_says_so() {
-    let dir = scratch("split");
+    let dir = scratch("repair-split");
     let input = write(&dir, "bowtie.off", &meshes::bowtie());
     let (out, run) = repair(&dir, &input, &[]);
     let said = text(&run.stdout);
@@ -153,7 +138,7 @@ fn split_vertices_are_expected_duplicates_and_repair_says_so() {
 
 #[test]
 fn what_remains_is_said_and_exits_1() {
-    let dir = scratch("remains");
+    let dir = scratch("repair-remains");
     // A Möbius strip of four quads: 0-1 across, the last quad joins the first pair twisted.
     let strip = "OFF\n8 4 0\n3 0 0\n3 0 1\n0 3 0\n0 3 1\n-3 0 0\n-3 0 1\n0 -3 0\n0 -3 1\n\
                  4 0 1 3 2\n4 2 3 5 4\n4 4 5 7 6\n4 6 7 0 1\n";
@@ -210,7 +195,7 @@ fn cached(file: &str) -> Option<PathBuf> {
 
 #[test]
 fn the_real_meshes_the_report_refused_come_out_clean() {
-    let dir = scratch("real");
+    let dir = scratch("repair-real");
     for (file, problem) in REFUSED {
         let Some(input) = cached(file) else { continue };
         assert!(findings(&input).iter().any(|k| k == problem), "{file}");
