@@ -1,6 +1,7 @@
-//! `topolab hull`: the 3D convex hull of a point file or of random points, by one of seed
-//! 004's algorithms, built on the winged-edge; prints counts and time, optionally writes the
-//! hull as OBJ (outward triangles, the hull's vertices only).
+//! `topolab hull`: the 3D convex hull of a point file or of random points, by one of the
+//! algorithms of the lecture on 3D convex hulls, built on the winged-edge; prints counts, the
+//! work the lecture's analysis counts, and time, optionally writes the hull as OBJ (outward
+//! triangles, the hull's vertices only).
 
 use crate::cli::{load_mesh, Failure};
 use std::fmt::Write as _;
@@ -65,11 +66,27 @@ pub fn hull(args: &HullArgs) -> Result<String, Failure> {
     let _ = writeln!(text, "hull faces:    {}", hull.mesh.num_faces());
     let _ = writeln!(
         text,
-        "faces created: {} ({:.3} of the seed's bound 6n - 20 = {})",
+        "faces created: {} ({:.3} of the lecture's bound 6n - 20 = {})",
         hull.faces_created,
         hull.faces_created as f64 / (6.0 * n as f64 - 20.0),
         6 * n as i64 - 20
     );
+    let w = hull.work;
+    let n_lg_n = n as f64 * (n as f64).log2();
+    let _ = writeln!(
+        text,
+        "Volume6 tests: {} ({} exact after the floating-point filter)",
+        w.volume6_tests, w.exact_tests
+    );
+    if w.conflict_work > 0 {
+        let _ = writeln!(
+            text,
+            "conflict work: {} (sum of |P(e)|; {:.3} of n lg n = {:.0})",
+            w.conflict_work,
+            w.conflict_work as f64 / n_lg_n,
+            n_lg_n
+        );
+    }
     let _ = writeln!(text, "volume:        {}", hull.volume());
     let _ = writeln!(text, "time:          {:.6} s", seconds);
     if let Some(out) = &args.out {

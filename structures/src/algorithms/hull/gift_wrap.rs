@@ -1,4 +1,4 @@
-//! The seed's `Embrulho3D`: gift wrapping (Chand & Kapur), O(n·h).
+//! The `Embrulho3D` of the lecture on 3D convex hulls: gift wrapping (Chand & Kapur), O(n·h).
 //!
 //! ```text
 //! Q ← queue of faces found; T ← winged-edge
@@ -7,18 +7,18 @@
 //!     for each free edge e of f: f' ← FaceAdjacente(f, e); insert f' in Q and T
 //! ```
 //!
-//! `FaceInicial`, by rotating planes as in the seed: p0 is the point of least z (ties: least
+//! `FaceInicial`, by rotating planes as in the lecture: p0 is the point of least z (ties: least
 //! y, then x, so it is extreme). The horizontal half-plane through the line L through p0
 //! parallel to the x axis, pointing towards +y, is turned from Y towards Z until it meets a
 //! point p1; then the plane is turned around p0 p1 until it meets p2.
 //!
 //! `FaceAdjacente(f, e)`: the plane of f is turned around e until every point is on its inner
 //! side; one pass over the points keeps the candidate that the most turned plane meets (the
-//! seed's O(n) per edge, so O(n·h) in all).
+//! lecture's O(n) per edge, so O(n·h) in all).
 //!
-//! Beyond the seed (which assumes no four points coplanar): a plane found this way may hold
+//! Beyond the lecture (which assumes no four points coplanar): a plane found this way may hold
 //! more than three points. The face is then the convex polygon of all points in that plane
-//! (the seed's 2D gift wrapping, Jarvis, inside the plane, keeping the farthest of collinear
+//! (the lecture's 2D gift wrapping, Jarvis, inside the plane, keeping the farthest of collinear
 //! points), so every face is a whole facet, every free edge is a true hull edge, and points
 //! inside a facet or an edge never become vertices. Each facet is stored as a fan of
 //! triangles from its first corner, so all three algorithms return triangles; a facet's
@@ -27,16 +27,20 @@
 //! no facet found so far has the side b → a.
 
 use super::predicates::{collinear, farther_on_ray, volume6};
+use super::Work;
 use crate::core::error::{Error, Result};
 use crate::core::ids::VertexId;
 use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
+use std::cell::Cell;
 use std::collections::{HashSet, VecDeque};
 
 /// The points and the distinct ones among them (the only candidates).
 struct Wrapper<'a> {
     points: &'a [DVec3],
     distinct: &'a [u32],
+    /// `Volume6` evaluations so far.
+    tests: Cell<u64>,
 }
 
 fn broken(message: impl Into<String>) -> Error {
@@ -47,6 +51,13 @@ impl Wrapper<'_> {
     #[inline]
     fn at(&self, i: u32) -> DVec3 {
         self.points[i as usize]
+    }
+
+    /// `Volume6`, counted.
+    #[inline]
+    fn volume6(&self, a: DVec3, b: DVec3, c: DVec3, p: DVec3) -> f64 {
+        self.tests.set(self.tests.get() + 1);
+        volume6(a, b, c, p)
     }
 
     /// Turns a plane around the line u v: the point q (not on the line) such that every point
@@ -61,7 +72,7 @@ impl Wrapper<'_> {
                 continue;
             }
             match best {
-                Some(q) if volume6(v, u, self.at(q), pr) <= 0.0 => {}
+                Some(q) if self.volume6(v, u, self.at(q), pr) <= 0.0 => {}
                 _ => best = Some(r),
             }
         }
@@ -73,7 +84,7 @@ impl Wrapper<'_> {
         let mut on = Vec::new();
         let mut inner = None;
         for &r in self.distinct {
-            let v = volume6(a, b, c, self.at(r));
+            let v = self.volume6(a, b, c, self.at(r));
             if v == 0.0 {
                 on.push(r);
             } else if v < 0.0 {
@@ -103,7 +114,7 @@ impl Wrapper<'_> {
                     Some(w) => {
                         let pw = self.at(w);
                         // Counter-clockwise seen from outside: inner is below, Volume6 < 0.
-                        let v = volume6(pc, pw, ps, inner);
+                        let v = self.volume6(pc, pw, ps, inner);
                         if v > 0.0 || (v == 0.0 && farther_on_ray(pc, pw, ps)) {
                             s
                         } else {
@@ -131,7 +142,7 @@ impl Wrapper<'_> {
         Ok(polygon)
     }
 
-    /// The seed's `FaceInicial`, by rotating planes (see the module docs).
+    /// The lecture's `FaceInicial`, by rotating planes (see the module docs).
     fn initial_face(&self) -> Result<Vec<u32>> {
         let lowest = |&i: &u32| {
             let p = self.at(i);
@@ -177,7 +188,7 @@ impl Wrapper<'_> {
         self.jarvis(&on, inner, p0, p0)
     }
 
-    /// The seed's `FaceAdjacente`: the facet across side a → b of a facet; it runs b → a.
+    /// The lecture's `FaceAdjacente`: the facet across side a → b of a facet; it runs b → a.
     fn adjacent_face(&self, a: u32, b: u32) -> Result<Vec<u32>> {
         let (pa, pb) = (self.at(a), self.at(b));
         let q = self
@@ -188,10 +199,10 @@ impl Wrapper<'_> {
     }
 }
 
-/// The facets found so far (the seed's queue Q, and what tells free sides from the others).
+/// The facets found so far (the lecture's queue Q, and what tells free sides from the others).
 #[derive(Default)]
 struct Found {
-    /// Facets whose sides are still to be wrapped (the seed's Q).
+    /// Facets whose sides are still to be wrapped (the lecture's Q).
     queue: VecDeque<Vec<u32>>,
     /// Directed sides of every facet found: the facet across a → b is found iff b → a is here.
     sides: HashSet<(u32, u32)>,
@@ -202,7 +213,7 @@ struct Found {
 }
 
 impl Found {
-    /// Records `facet` (the seed's InsiraFila and InsiraWE): its sides, its fan in `mesh`.
+    /// Records `facet` (the lecture's InsiraFila and InsiraWE): its sides, its fan in `mesh`.
     fn insert(&mut self, facet: Vec<u32>, mesh: &mut WingedEdge) -> Result<()> {
         for i in 0..facet.len() {
             if !self.sides.insert((facet[i], facet[(i + 1) % facet.len()])) {
@@ -219,10 +230,14 @@ impl Found {
     }
 }
 
-/// `Embrulho3D` over the distinct points `distinct`. Returns the hull and the number of
-/// triangles created (every facet's fan).
-pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdge, usize)> {
-    let wrapper = Wrapper { points, distinct };
+/// `Embrulho3D` over the distinct points `distinct`. Returns the hull, the number of
+/// triangles created (every facet's fan) and the work.
+pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdge, usize, Work)> {
+    let wrapper = Wrapper {
+        points,
+        distinct,
+        tests: Cell::new(0),
+    };
     let mut mesh = WingedEdge::new();
     points.iter().for_each(|&p| {
         mesh.add_vertex(p);
@@ -243,6 +258,9 @@ pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdg
             found.insert(wrapper.adjacent_face(a, b)?, &mut mesh)?;
         }
     }
-    let created = found.triangles;
-    Ok((mesh, created))
+    let work = Work {
+        volume6_tests: wrapper.tests.get(),
+        ..Work::default()
+    };
+    Ok((mesh, found.triangles, work))
 }
