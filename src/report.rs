@@ -7,9 +7,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
-use topolab_harness::measure::{
-    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-};
+use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching,
 };
@@ -40,21 +38,6 @@ pub struct ReportArgs {
     pub probe_mb: Option<usize>,
 }
 
-/// The process's allocator as the harness's memory meter.
-struct Allocator;
-
-impl MemoryMeter for Allocator {
-    fn current(&self) -> usize {
-        crate::ALLOCATOR.current_usage()
-    }
-    fn peak(&self) -> usize {
-        crate::ALLOCATOR.peak_usage()
-    }
-    fn reset_peak(&self) {
-        crate::ALLOCATOR.reset_peak_usage()
-    }
-}
-
 struct Measure<'a> {
     case: &'a MeshCase<'a>,
     plan: &'a Plan,
@@ -65,7 +48,7 @@ struct Measure<'a> {
 impl StructureVisitor for Measure<'_> {
     type Output = Result<(), String>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
-        measure_structure::<M>(self.case, self.plan, &Allocator, self.est, self.out)
+        measure_structure::<M>(self.case, self.plan, &crate::ALLOCATOR, self.est, self.out)
     }
 }
 
@@ -167,6 +150,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         fits: Vec::new(),
         libigl: Vec::new(),
         hull: Vec::new(),
+        hull_fits: Vec::new(),
         teaching: Vec::new(),
         notes: Vec::new(),
     };
@@ -251,6 +235,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
     orderings(&cases, &names, &plan, &mut results)?;
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
+    results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     let skipped = results
         .measurements
@@ -283,8 +268,8 @@ fn short(n: usize) -> String {
     }
 }
 
-/// The hull benchmark: points in a ball up to 1M (10k with `--quick`), on a sphere up to 100k
-/// (1k with `--quick`).
+/// The hull benchmark: points in a ball and on a sphere up to 1M (10k and 1k with
+/// `--quick`), each run's peak heap measured by the process's counting allocator.
 fn hull(
     quick: bool,
     notes: &mut Vec<String>,
@@ -300,11 +285,11 @@ fn hull(
         );
     }
     let mut rows = Vec::new();
-    // Largest n per shape: on a sphere every point is on the hull (h = n), so gift wrapping's
-    // O(n·h) is quadratic there.
+    // Largest n per shape, full and with --quick: on a sphere every point is on the hull
+    // (h = n), so gift wrapping's O(n·h) is quadratic there; the quick run keeps it small.
     for (shape, name, max, quick_max) in [
         (Shape::Ball, "ball", 1_000_000, 10_000),
-        (Shape::Sphere, "sphere", 100_000, 1_000),
+        (Shape::Sphere, "sphere", 1_000_000, 1_000),
     ] {
         let sizes: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
             .into_iter()
@@ -316,6 +301,7 @@ fn hull(
             &sizes,
             python.as_deref().map(|p| (p, root)),
             1.0,
+            Some(&crate::ALLOCATOR),
             |row| {
                 eprintln!(
                     "topolab report: hull {} {} {}: {:.3} s",

@@ -19,6 +19,19 @@ pub trait MemoryMeter {
     fn reset_peak(&self);
 }
 
+/// The counting allocator the report binary (and the hull benchmark example) installs.
+impl MemoryMeter for peak_alloc::PeakAlloc {
+    fn current(&self) -> usize {
+        self.current_usage()
+    }
+    fn peak(&self) -> usize {
+        self.peak_usage()
+    }
+    fn reset_peak(&self) {
+        self.reset_peak_usage()
+    }
+}
+
 /// A mesh to measure on.
 #[derive(Clone, Debug)]
 pub struct MeshCase<'a> {
