@@ -142,42 +142,49 @@ fn main() {
     filter_cost();
 }
 
-/// One visibility test against a face: with the face's plane prepared once
-/// ([`FacePlane::volume6`], exact only where the filter is unsure) and with the adaptive
-/// `orient3d` alone ([`volume6`], its own filter, recomputing the face's part each time),
-/// on random faces of the unit ball and the points of a ball, best of 5.
+/// One visibility test against a face, three ways, on random faces of the unit sphere and
+/// the points of a ball, best of 5: with the adaptive `orient3d` alone ([`volume6`], its own
+/// filter, recomputing the face's part each time), with the face's plane prepared once
+/// ([`FacePlane::volume6`], the filter's bound per point), and with one bound per face for
+/// all points ([`RoundedPlane`](topolab_structures::hull::plane::RoundedPlane), the conflict
+/// lists' test). All three are exact; the last
+/// two go to exact arithmetic only where their filter is unsure.
 fn filter_cost() {
     let faces = random_points(Shape::Sphere, 3 * 64, 5);
     let points = random_points(Shape::Ball, 200_000, 6);
-    let mut best = [f64::INFINITY; 2];
-    let mut seen = [0usize; 2];
-    let mut count = TestCount::default();
+    let mut best = [f64::INFINITY; 3];
+    let mut seen = [0usize; 3];
+    let mut count = [TestCount::default(); 3];
     for _ in 0..5 {
         for (k, best) in best.iter_mut().enumerate() {
             let start = Instant::now();
             let mut positive = 0;
             for f in faces.chunks_exact(3) {
                 let plane = FacePlane::new(f[0], f[1], f[2]);
+                let bounded = plane.for_rounded_points(1.0);
                 for &p in &points {
-                    let v = if k == 0 {
-                        plane.volume6(p, &mut count)
-                    } else {
-                        volume6(f[0], f[1], f[2], p)
-                    };
-                    positive += usize::from(v > 0.0);
+                    positive += usize::from(match k {
+                        0 => volume6(f[0], f[1], f[2], p) > 0.0,
+                        1 => plane.volume6(p, &mut count[k]) > 0.0,
+                        _ => bounded.is_seen_from_point(p, &mut count[k]),
+                    });
                 }
             }
             *best = best.min(start.elapsed().as_secs_f64());
             seen[k] = positive;
         }
     }
-    assert_eq!(seen[0], seen[1], "the two tests disagree");
+    assert!(seen.iter().all(|&s| s == seen[0]), "the tests disagree");
     let tests = (faces.len() / 3 * points.len()) as f64;
+    let ns = |k: usize| best[k] * 1e9 / tests;
     println!(
-        "\none Volume6 test: {:.2} ns with the face's cached plane and filter, {:.2} ns with the adaptive orient3d alone ({} of {} tests went exact)",
-        best[0] * 1e9 / tests,
-        best[1] * 1e9 / tests,
-        count.exact,
-        count.tests
+        "\none Volume6 test: {:.2} ns with the adaptive orient3d alone, {:.2} ns with the face's cached plane ({} exact of {}), {:.2} ns with one bound per face ({} exact of {})",
+        ns(0),
+        ns(1),
+        count[1].exact,
+        count[1].tests,
+        ns(2),
+        count[2].exact,
+        count[2].tests
     );
 }

@@ -17,6 +17,12 @@
 //! one Shewchuk bounds, with the same rounding steps. When the bound does not settle the
 //! sign, the exact predicate decides ([`super::predicates::volume6`]). Overflowing inputs
 //! make the bound infinite or NaN and also fall through to it.
+//!
+//! [`RoundedPlane`] goes one step further for the conflict lists, where one face is tested
+//! against many points: one bound per face for every point within a given reach of the
+//! origin (the permanent is monotone in the point's differences), widened by the rounding of
+//! the points to `f32`, so a test costs one difference, one dot product and one comparison,
+//! and a list entry is 16 bytes. Monotone: the bound of a point is at most the face's.
 
 use super::predicates::volume6;
 use glam::DVec3;
@@ -97,39 +103,89 @@ impl FacePlane {
         self.volume6(p, count) > 0.0
     }
 
-    /// Does the point p see the face, given p rounded to `f32` by [`round_to_f32`], and p
-    /// itself from `exact` when the filter is unsure? Exact. The filter's bound adds the
-    /// rounding of p: the determinant is linear in p with gradient −n, so moving p by at
-    /// most 2⁻²⁴|p_k| per coordinate moves it by at most 2⁻²⁴ Σ|p_k| |n_k|, and
-    /// |n_k| ≤ `magnitude[k]` (1 + 5ε). A marked point (NaN) always goes to `exact`.
+    /// The face ready for points rounded to `f32` ([`round_to_f32`]) whose coordinates
+    /// are all at most `reach` in magnitude: see [`RoundedPlane`].
+    pub fn for_rounded_points(self, reach: f64) -> RoundedPlane {
+        // |a_k − q_k| computed is at most |a_k| + reach computed (rounding is monotone), so
+        // these bound the permanent of every such point, and reach · magnitude the move.
+        let (a, m) = (self.a.abs(), self.magnitude);
+        let permanent = (a.x + reach) * m.x + (a.y + reach) * m.y + (a.z + reach) * m.z;
+        let moved = reach * m.x + reach * m.y + reach * m.z;
+        RoundedPlane {
+            plane: self,
+            bound: ERROR_BOUND * permanent + F32_BOUND * moved,
+        }
+    }
+}
+
+/// A face's plane with one error bound for every point of a set, given rounded to `f32`:
+/// the conflict lists' test, where a point costs one difference, one dot product and one
+/// comparison. The bound adds two things to Shewchuk's first stage: the permanent of any
+/// point within `reach` of the origin per coordinate, and the rounding of the point to
+/// `f32` (the determinant is linear in the point with gradient −n, so moving it by at most
+/// 2⁻²⁴|q_k| per coordinate moves it by at most 2⁻²⁴ Σ|q_k| |n_k|, with |q_k| ≤ `reach`
+/// and |n_k| ≤ `magnitude[k]` (1 + 5ε)). Points the bound cannot settle, and marked points
+/// (NaN), go to the exact predicate with their true coordinates.
+#[derive(Copy, Clone, Debug)]
+pub struct RoundedPlane {
+    plane: FacePlane,
+    bound: f64,
+}
+
+impl RoundedPlane {
+    /// Does the point `rounded` ([`round_to_f32`] of a point given by `exact`, with
+    /// coordinates within the `reach` of [`FacePlane::for_rounded_points`]) see the face?
+    /// Exact.
     #[inline]
-    pub fn is_seen_from_rounded(
+    pub fn is_seen_from(
         &self,
         rounded: [f32; 3],
         exact: impl FnOnce() -> DVec3,
         count: &mut TestCount,
     ) -> bool {
         count.tests += 1;
+        let p = &self.plane;
         let q = DVec3::new(rounded[0].into(), rounded[1].into(), rounded[2].into());
-        let d = self.a - q;
-        let det = d.x * self.normal.x + d.y * self.normal.y + d.z * self.normal.z;
-        let permanent = d.x.abs() * self.magnitude.x
-            + d.y.abs() * self.magnitude.y
-            + d.z.abs() * self.magnitude.z;
-        let moved = q.x.abs() * self.magnitude.x
-            + q.y.abs() * self.magnitude.y
-            + q.z.abs() * self.magnitude.z;
-        let bound = ERROR_BOUND * permanent + F32_BOUND * moved;
-        if det > bound || -det > bound {
+        let d = p.a - q;
+        let det = d.x * p.normal.x + d.y * p.normal.y + d.z * p.normal.z;
+        if det > self.bound || -det > self.bound {
             return det < 0.0;
         }
         count.exact += 1;
-        let p = exact();
-        volume6(self.a, self.b, self.c, p) > 0.0
+        volume6(p.a, p.b, p.c, exact()) > 0.0
     }
 }
 
-/// p's coordinates rounded to `f32`, for [`FacePlane::is_seen_from_rounded`]; NaN (so that
+impl RoundedPlane {
+    /// Does the point p (not rounded), with coordinates within `reach`, see the face?
+    /// Exact: the bound holds a fortiori for a point that was not rounded.
+    #[inline]
+    pub fn is_seen_from_point(&self, p: DVec3, count: &mut TestCount) -> bool {
+        count.tests += 1;
+        let f = &self.plane;
+        let d = f.a - p;
+        let det = d.x * f.normal.x + d.y * f.normal.y + d.z * f.normal.z;
+        if det > self.bound || -det > self.bound {
+            return det < 0.0;
+        }
+        count.exact += 1;
+        volume6(f.a, f.b, f.c, p) > 0.0
+    }
+}
+
+/// The largest magnitude of the coordinates of `rounded` (from [`round_to_f32`]; marked
+/// points are skipped, they are always tested exactly): the `reach` of
+/// [`FacePlane::for_rounded_points`].
+pub fn reach(rounded: &[[f32; 3]]) -> f64 {
+    rounded
+        .iter()
+        .flatten()
+        .map(|x| f64::from(x.abs()))
+        .filter(|x| !x.is_nan())
+        .fold(0.0, f64::max)
+}
+
+/// p's coordinates rounded to `f32`, for [`RoundedPlane`]; NaN (so that
 /// every test of p is exact) if a coordinate is outside the range where the rounding error
 /// is at most 2⁻²⁴ of its magnitude (nonzero below 2⁻¹⁰⁰ or above 2¹⁰⁰).
 pub fn round_to_f32(p: DVec3) -> [f32; 3] {
@@ -202,10 +258,10 @@ mod tests {
             DVec3::new(rng.random(), rng.random(), rng.random())
         };
         let (a, b, c) = (random(&mut rng), random(&mut rng), random(&mut rng));
-        let plane = FacePlane::new(a, b, c);
         let mut count = TestCount::default();
         let mut crossed = 0;
         let mut close = 0;
+        let mut points = Vec::new();
         for i in 0..30_000 {
             let p = if i % 3 == 0 {
                 random(&mut rng)
@@ -219,15 +275,15 @@ mod tests {
                 let sign = if rng.random::<bool>() { 1.0 } else { -1.0 };
                 q + (b - a).cross(c - a).normalize() * sign * (1.0 + rng.random::<f64>()) * off
             };
-            let rounded = round_to_f32(p);
+            points.push(p);
+        }
+        let rounded: Vec<[f32; 3]> = points.iter().map(|&p| round_to_f32(p)).collect();
+        let plane = FacePlane::new(a, b, c).for_rounded_points(reach(&rounded));
+        for (&p, &r) in points.iter().zip(&rounded) {
             let exact = volume6(a, b, c, p) > 0.0;
-            let r = DVec3::new(rounded[0].into(), rounded[1].into(), rounded[2].into());
-            crossed += usize::from((volume6(a, b, c, r) > 0.0) != exact);
-            assert_eq!(
-                plane.is_seen_from_rounded(rounded, || p, &mut count),
-                exact,
-                "{p:?}"
-            );
+            let moved = DVec3::new(r[0].into(), r[1].into(), r[2].into());
+            crossed += usize::from((volume6(a, b, c, moved) > 0.0) != exact);
+            assert_eq!(plane.is_seen_from(r, || p, &mut count), exact, "{p:?}");
         }
         assert!(
             crossed > 0,
@@ -242,10 +298,7 @@ mod tests {
             assert!(round_to_f32(p)[0].is_nan());
             let before = count.exact;
             let exact = volume6(a, b, c, p) > 0.0;
-            assert_eq!(
-                plane.is_seen_from_rounded(round_to_f32(p), || p, &mut count),
-                exact
-            );
+            assert_eq!(plane.is_seen_from(round_to_f32(p), || p, &mut count), exact);
             assert_eq!(count.exact, before + 1);
         }
         assert_eq!(round_to_f32(DVec3::new(0.0, -0.25, 3.0)), [0.0, -0.25, 3.0]);

@@ -23,14 +23,16 @@
 //! and f2, or equals f1's plane.) [`super::Work::conflict_work`] counts Σ|P(e)|, the sum the
 //! lecture's O(n log n) bounds.
 //!
-//! Why one face per point is enough: when the face `seen[q]` is removed, q either sees no
-//! face of the new hull (it is inside for good) or it sees a face of the new hull that is
-//! new or that borders the horizon. The faces q sees form one connected region of the old
-//! hull; if it holds a removed face and a kept one, a path between them in it crosses the
-//! horizon at an edge whose kept face q sees, so q is in both lists of that edge's P(e). The
-//! merges over P(e) therefore give q a new face it sees, or such a kept face. A face slot
-//! freed here is reused later, so `seen[q]` also holds the serial number of the face it
-//! names: at q's turn a different number in the slot means the face is gone and q is inside.
+//! Why one face per point is enough: a point q that still sees some face of the hull after
+//! pk's insertion sees one of the new faces, and the merges give it that face. The faces q
+//! saw form one connected region of the old hull; if q sees a kept face and its face
+//! `seen[q]` was removed, a path between them in that region crosses the horizon at an edge
+//! e whose removed face f1 and kept face f2 q both sees. The cone face on e is turned from
+//! f2's plane towards f1's around e (its outward normal is a combination of theirs with
+//! nonnegative weights, since pk is above or on f1's plane and below f2's), so q, above
+//! both planes, sees it, and q is in P(e). A face slot freed here is reused later, so
+//! `seen[q]` also holds the serial number of the face it names: at q's turn a different
+//! number in the slot means the face is gone and q is inside.
 //!
 //! The graph is flat: every list lives in one pool (a list never changes after its face is
 //! created, so it is one slice), lists of removed faces become garbage, and the live lists
@@ -40,7 +42,7 @@
 //! The expected number of faces created is at most 6n − 20 (the lecture's lemma);
 //! [`super::Hull`] reports the count.
 
-use super::plane::{round_to_f32, FacePlane, TestCount};
+use super::plane::{reach, round_to_f32, FacePlane, RoundedPlane, TestCount};
 use super::predicates::find_simplex;
 use super::Work;
 use crate::core::error::Result;
@@ -56,8 +58,7 @@ use rand::SeedableRng;
 /// merge reads its two lists and writes the new one front to back and never jumps to the
 /// point's coordinates elsewhere in memory (the lists of a late face are sparse over the
 /// ranks, and those jumps were cache misses); the test against a new face is still exact
-/// ([`FacePlane::is_seen_from_rounded`] reads the point itself only when the rounding could
-/// matter).
+/// ([`RoundedPlane`] reads the point itself only when the rounding could matter).
 #[derive(Copy, Clone, Debug)]
 struct Conflict {
     position: [f32; 3],
@@ -94,6 +95,8 @@ struct ConflictGraph {
     faces: u32,
     /// Entries of `pool[..top]` in no list (lists of removed faces).
     garbage: usize,
+    /// The largest coordinate magnitude of the rounded points ([`reach`]).
+    reach: f64,
     /// Scratch of [`ConflictGraph::collect_garbage`]: the live lists as (start, face slot).
     live: Vec<(usize, u32)>,
     /// `seen[q]`: a face that the point of rank q sees while q is outside (see the module
@@ -105,6 +108,15 @@ impl ConflictGraph {
     /// G for the first hull: the faces' planes by slot, and the points `rest` (input
     /// indices into `points`) by rank.
     fn new(planes: &[FacePlane], points: &[DVec3], rest: &[u32], count: &mut TestCount) -> Self {
+        // One bound per face for every point: the largest coordinate magnitude of all.
+        let reach_all = points
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(0.0, f64::max);
+        let bounded: Vec<RoundedPlane> = planes
+            .iter()
+            .map(|p| p.for_rounded_points(reach_all))
+            .collect();
         debug_assert!(planes.len() <= 8, "one bit per face of the first hull");
         // First which faces each point sees (a bit each), then the lists, each in one piece.
         let mut sees = Vec::with_capacity(rest.len());
@@ -118,8 +130,8 @@ impl ConflictGraph {
             block.extend(ranks.iter().map(|&k| points[k as usize]));
             for &position in &block {
                 let mut bits = 0u8;
-                for (f, plane) in planes.iter().enumerate() {
-                    if plane.is_seen_from(position, count) {
+                for (f, plane) in bounded.iter().enumerate() {
+                    if plane.is_seen_from_point(position, count) {
                         bits |= 1 << f;
                         len[f] += 1;
                     }
@@ -159,6 +171,7 @@ impl ConflictGraph {
             }
         }
         ConflictGraph {
+            reach: reach(&positions),
             pool,
             top: total,
             start,
@@ -191,11 +204,14 @@ impl ConflictGraph {
     /// the merge except `rank` (the point being inserted) that sees `plane`, the new face's
     /// (`exact` gives a point's coordinates by rank, for the tests the filter leaves).
     /// Updates `seen` (see the module docs) and returns |P(e)|.
+    // A function of its own (not inlined into `randomized`, where the plane's fields were
+    // spilled to the stack) keeps the merge's state in registers.
+    #[inline(never)]
     fn fill(
         &mut self,
         [removed, kept, created]: [FaceId; 3],
         rank: u32,
-        plane: &FacePlane,
+        plane: &RoundedPlane,
         exact: impl Fn(u32) -> DVec3,
         count: &mut TestCount,
     ) -> u64 {
@@ -220,33 +236,29 @@ impl ConflictGraph {
             face: created,
             serial,
         };
-        let to_kept = Seen {
-            face: kept,
-            serial: self.serial[kept.index()],
-        };
         let mut merged = 0;
+        let mut local = TestCount::default();
         loop {
-            // The next point of the union, and whether it is in both lists.
-            let (q, in_both) = match (i < i_end, j < j_end) {
+            // The next point of the union (a point of both lists once).
+            let q = match (i < i_end, j < j_end) {
                 (true, true) => {
                     let (x, y) = (self.pool[i], self.pool[j]);
                     if x.rank < y.rank {
                         i += 1;
-                        (x, false)
+                        x
                     } else {
                         j += 1;
-                        let both = x.rank == y.rank;
-                        i += usize::from(both);
-                        (y, both)
+                        i += usize::from(x.rank == y.rank);
+                        y
                     }
                 }
                 (true, false) => {
                     i += 1;
-                    (self.pool[i - 1], false)
+                    self.pool[i - 1]
                 }
                 (false, true) => {
                     j += 1;
-                    (self.pool[j - 1], false)
+                    self.pool[j - 1]
                 }
                 (false, false) => break,
             };
@@ -254,16 +266,14 @@ impl ConflictGraph {
             if q.rank == rank {
                 continue;
             }
-            if plane.is_seen_from_rounded(q.position, || exact(q.rank), count) {
+            if plane.is_seen_from(q.position, || exact(q.rank), &mut local) {
                 self.pool[top] = q;
                 top += 1;
                 self.seen[q.rank as usize] = to_new;
-            } else if in_both {
-                // q may lose its face `seen[q]` with this insertion, and it still sees the
-                // kept face (the case in the module docs: q is in both lists of some edge).
-                self.seen[q.rank as usize] = to_kept;
             }
         }
+        count.tests += local.tests;
+        count.exact += local.exact;
         self.top = top;
         self.start[created.index()] = start;
         self.len[created.index()] = (top - start) as u32;
@@ -294,7 +304,9 @@ impl ConflictGraph {
         let mut next = 0;
         for &(start, f) in &self.live {
             let len = self.len[f as usize] as usize;
-            self.pool.copy_within(start..start + len, next);
+            if start != next {
+                self.pool.copy_within(start..start + len, next);
+            }
             self.start[f as usize] = next;
             next += len;
         }
@@ -371,7 +383,7 @@ pub(super) fn randomized(
         graph.cover(mesh.face_slots());
         for h in &horizon {
             corners[h.created.index()] = [h.a, h.b, apex];
-            let cone = FacePlane::new(at(h.a), at(h.b), p);
+            let cone = FacePlane::new(at(h.a), at(h.b), p).for_rounded_points(graph.reach);
             let faces = [h.removed, h.kept, h.created];
             let exact = |q: u32| points[rest[q as usize] as usize];
             work.conflict_work += graph.fill(faces, rank as u32, &cone, exact, &mut count);
