@@ -344,11 +344,12 @@ pub(super) fn randomized(
     let mut region = Vec::new();
     let mut horizon = Vec::new();
     for (rank, &k) in rest.iter().enumerate() {
-        let Some(f0) = graph.seen_face(rank) else {
+        let Some(f0) = graph.seen_face(rank).filter(|&f| mesh.is_face_live(f)) else {
             continue; // pk sees no face: it is inside P(k−1) or on its boundary.
         };
         let p = points[k as usize];
-        // Serial numbers are 32 bits: after 2³² faces one could come round, so check.
+        // Serial numbers are 32 bits and come round after 2³² faces: a live face that pk
+        // sees is right whatever its number, so the number is only a shortcut.
         if !plane(&corners[f0.index()]).is_seen_from(p, &mut count) {
             continue;
         }
