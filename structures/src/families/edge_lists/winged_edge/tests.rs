@@ -149,15 +149,27 @@ fn refused_faces_leave_the_structure_unchanged() {
     assert_eq!(err.kind(), "non-manifold-edge", "{err}");
 }
 
-#[test]
-fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
-    let bowtie = meshes::bowtie();
+/// The bowtie's vertices with its two triangles, which meet at v0 only: two fans there.
+fn two_fans_at_v0() -> WingedEdge {
     let mut m = WingedEdge::new();
-    for p in &bowtie.positions {
+    for p in &meshes::bowtie().positions {
         m.add_vertex(*p);
     }
     m.add_face(&ids(&[0, 2, 1])).unwrap();
     m.add_face(&ids(&[0, 3, 4])).unwrap();
+    m
+}
+
+/// A compacted copy (dense ids), to compare with an oracle.
+fn compacted(m: &WingedEdge) -> WingedEdge {
+    let mut dense = m.clone();
+    dense.compact();
+    dense
+}
+
+#[test]
+fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
+    let mut m = two_fans_at_v0();
     let err = m.validate().unwrap_err();
     assert!(
         matches!(err, Error::NonManifoldVertex { vertex: 0, fans: 2 }),
@@ -179,9 +191,7 @@ fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
 fn check_intermediate(m: &WingedEdge, soup: &PolygonSoup, live: &[bool], step: &str) {
     match m.validate() {
         Ok(()) => {
-            let mut dense = m.clone();
-            dense.compact();
-            compare(&dense, &soup.with_faces(|j| live[j]))
+            compare(&compacted(m), &soup.with_faces(|j| live[j]))
                 .unwrap_or_else(|e| panic!("{step}: {e}"));
         }
         Err(Error::NonManifoldVertex { .. }) => {}
@@ -268,13 +278,7 @@ fn explain_prints_the_seeds_fields_for_the_open_tetrahedron() {
 
 #[test]
 fn a_vertex_that_loses_one_fan_keeps_an_edge_of_its_other_fan() {
-    let bowtie = meshes::bowtie();
-    let mut m = WingedEdge::new();
-    for p in &bowtie.positions {
-        m.add_vertex(*p);
-    }
-    m.add_face(&ids(&[0, 2, 1])).unwrap();
-    m.add_face(&ids(&[0, 3, 4])).unwrap();
+    let mut m = two_fans_at_v0();
     // av(0) is an edge of face 0, whose two edges at v0 go with it: v0's edge handle must
     // come from the other fan (from v0's ring in the index, no search).
     assert!(m.edge(m.av[0]).fccw == FaceId(0));
@@ -283,20 +287,8 @@ fn a_vertex_that_loses_one_fan_keeps_an_edge_of_its_other_fan() {
     let mut faces = Vec::new();
     m.vertex_faces(VertexId(0), |f| faces.push(f.0));
     assert_eq!(faces, [1]);
-    compare(&m.clone_compacted(), &bowtie_faces(&bowtie, &[[0, 3, 4]])).unwrap();
-}
-
-impl WingedEdge {
-    fn clone_compacted(&self) -> WingedEdge {
-        let mut dense = self.clone();
-        dense.compact();
-        dense
-    }
-}
-
-/// `soup`'s vertices with the faces `faces`.
-fn bowtie_faces(soup: &PolygonSoup, faces: &[[u32; 3]]) -> PolygonSoup {
-    PolygonSoup::from_polygons(soup.positions.clone(), faces)
+    let left = PolygonSoup::from_polygons(meshes::bowtie().positions, &[[0u32, 3, 4]]);
+    compare(&compacted(&m), &left).unwrap();
 }
 
 /// The directed sides a → b of the faces `region` of `soup` whose reverse is not a side of
@@ -374,7 +366,7 @@ fn a_cone_replaces_a_disk_of_faces_in_one_step() {
         for h in &horizon {
             expected.push_face(&[h.a.0, h.b.0, apex.0]);
         }
-        compare(&m.clone_compacted(), &expected).unwrap();
+        compare(&compacted(&m), &expected).unwrap();
         // A second cone reuses the slots the first one freed.
         let (slots, edge_slots) = (m.face_slots(), m.edge_slots());
         let apex2 = m.add_vertex(DVec3::new(0.0, 0.0, -3.0));
