@@ -7,7 +7,7 @@
 //!
 //! | lecture | here | meaning |
 //! |---|---|---|
-//! | P_conflito(f) | [`ConflictGraph`]'s list of f | the points that see face f, all of them |
+//! | P_conflito(f) | the conflict graph's list of f | the points that see face f, all of them |
 //! | F_conflito(p) | one face p sees (`seen[p]`) and the walk from it | the faces p sees |
 //!
 //! Inserting pk: the faces pk sees are one connected region of the hull, so one face of
