@@ -18,8 +18,8 @@ fn main() -> std::process::ExitCode {
 #[cfg(has_openmesh)]
 fn main() -> std::process::ExitCode {
     use std::time::{Duration, Instant};
-    use topolab::openmesh::{OpenMesh, WORKLOADS};
-    use topolab_structures::{meshes, MeshTopology, Operator};
+    use topolab::openmesh::OpenMesh;
+    use topolab_structures::{meshes, Input, MeshTopology, Operator, Workload};
 
     const RUNS: usize = 7;
     /// The median time of `RUNS` runs of `f`, and its last result.
@@ -85,24 +85,30 @@ fn main() -> std::process::ExitCode {
 
     println!("{:<18} {:>14} {:>22}", "sweep", "ns/element", "checksum");
     for op in Operator::ALL {
-        let per = match op {
-            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => nv,
-            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
-                mesh.num_edges()
-            }
-            _ => nf,
+        let per = match op.input() {
+            Input::Vertex => nv,
+            Input::Edge => mesh.num_edges(),
+            Input::Face | Input::EdgeOfFace | Input::Mesh => nf,
         };
-        let (t, sum) = median(|| mesh.native_sweep(op.name()).expect("a known kernel"));
+        let (t, sum) = median(|| mesh.native_sweep(op).expect("OpenMesh failed"));
         println!("{:<18} {:>14.2} {:>22}", op.name(), ns(t, per), sum);
     }
     println!("(ns per vertex for r00 r01 r02 boundary-vertex, per edge for r10 r11 r12 boundary-edge, per face otherwise)\n");
 
     println!("{:<18} {:>14} {:>22}", "workload", "ns/vertex", "result");
     let mut mesh = mesh;
-    for name in WORKLOADS {
-        mesh.prepare_workload(name);
-        let (t, value) = median(|| mesh.native_workload(name).expect("a known workload"));
-        println!("{:<18} {:>14.2} {:>22.9}", name, ns(t, nv), value);
+    for workload in Workload::ALL {
+        if let Err(e) = mesh.prepare_workload(workload) {
+            eprintln!("OpenMesh failed: {e}");
+            return std::process::ExitCode::FAILURE;
+        }
+        let (t, value) = median(|| mesh.native_workload(workload).expect("OpenMesh failed"));
+        println!(
+            "{:<18} {:>14.2} {:>22.9}",
+            workload.name(),
+            ns(t, nv),
+            value
+        );
     }
     println!("(smoothing runs 7 steps in a row; its result is after the 7th)");
     std::process::ExitCode::SUCCESS

@@ -11,6 +11,7 @@
 #include <malloc.h>
 
 #include <cmath>
+#include <ios>
 #include <memory>
 #include <new>
 #include <type_traits>
@@ -308,17 +309,52 @@ template <class F> auto with_mesh(const topolab_om_mesh *mesh, F &&f) {
 template <class F> auto with_mesh_mut(topolab_om_mesh *mesh, F &&f) {
   return mesh->tri ? f(*mesh->tri) : f(*mesh->poly);
 }
+
+// The shim's one process-wide action, done once whichever thread gets here first.
+//
+// OpenMesh 9's omerr() connects its stream to std::cerr on first use behind a plain static
+// flag, inserting into an unlocked std::vector: two threads building their first mesh at the
+// same time both connected and corrupted it (a SIGSEGV in 1 test run of 5). A function-local
+// static is initialised exactly once, thread-safely (C++11); if the initialiser throws, the
+// exception reaches the caller's guard and the next call tries again.
+//
+// Silencing omerr is process-wide too: add_face's refusals ("complex edge", "complex
+// vertex") become typed errors on the Rust side instead of stderr lines. The lab is the only
+// user of OpenMesh in its process. disable() alone still lets every `omerr() << ...` of
+// OpenMesh format into the one shared std::ostream (its width, its buffer) from whichever
+// thread refuses a face, which helgrind reports as races; with badbit set, each such write
+// stops at the stream's sentry and writes nothing but the same state bits.
+void setup_once() {
+  static const bool done = [] {
+    omerr().disable();
+    omerr().setstate(std::ios::badbit | std::ios::failbit);
+    return true;
+  }();
+  (void)done;
+}
+
+// Runs `body` with every exception caught: the C API's wall (no exception may cross
+// `extern "C"` into Rust, which would abort). Returns TOPOLAB_OM_OK or the failure.
+template <class F> int guard(F &&body) noexcept {
+  try {
+    setup_once();
+    return body();
+  } catch (const std::bad_alloc &) {
+    return TOPOLAB_OM_OUT_OF_MEMORY;
+  } catch (...) {
+    return TOPOLAB_OM_EXCEPTION;
+  }
+}
+
+bool known_op(int op) { return op >= 0 && op < OP_COUNT; }
 }  // namespace
 
 extern "C" {
 
-topolab_om_mesh *topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indices,
-                                  const uint32_t *offsets, uint32_t faces, int triangles,
-                                  uint32_t edges_hint, uint32_t *failed_face) {
-  *failed_face = UINT32_MAX;
-  // add_face's refusals become typed errors on the Rust side: no messages on stderr.
-  omerr().disable();
-  try {
+int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indices,
+                     const uint32_t *offsets, uint32_t faces, int triangles, uint32_t edges_hint,
+                     topolab_om_mesh **out, uint32_t *failed_face) noexcept {
+  return guard([&] {
     const size_t before = heap_in_use();
     auto mesh = std::make_unique<topolab_om_mesh>();
     bool ok;
@@ -329,83 +365,107 @@ topolab_om_mesh *topolab_om_build(const double *xyz, uint32_t vertices, const ui
       mesh->poly = std::make_unique<Poly>();
       ok = fill(*mesh->poly, xyz, vertices, indices, offsets, faces, edges_hint, failed_face);
     }
-    if (!ok) return nullptr;
+    if (!ok) return TOPOLAB_OM_REFUSED;
     const size_t after = heap_in_use();
     mesh->heap_bytes = after > before ? after - before : 0;
-    return mesh.release();
-  } catch (...) {
-    return nullptr;
-  }
-}
-
-void topolab_om_free(topolab_om_mesh *mesh) { delete mesh; }
-
-uint64_t topolab_om_heap_bytes(const topolab_om_mesh *mesh) { return mesh->heap_bytes; }
-int topolab_om_is_trimesh(const topolab_om_mesh *mesh) { return mesh->tri ? 1 : 0; }
-uint32_t topolab_om_num_vertices(const topolab_om_mesh *mesh) {
-  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_vertices()); });
-}
-uint32_t topolab_om_num_edges(const topolab_om_mesh *mesh) {
-  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_edges()); });
-}
-uint32_t topolab_om_num_faces(const topolab_om_mesh *mesh) {
-  return with_mesh(mesh, [](const auto &m) { return uint32_t(m.n_faces()); });
-}
-
-void topolab_om_position(const topolab_om_mesh *mesh, uint32_t v, double *out) {
-  with_mesh(mesh, [&](const auto &m) {
-    const auto &p = m.point(VH(int(v)));
-    out[0] = p[0];
-    out[1] = p[1];
-    out[2] = p[2];
-    return 0;
+    *out = mesh.release();
+    return TOPOLAB_OM_OK;
   });
 }
 
-void topolab_om_edge_vertices(const topolab_om_mesh *mesh, uint32_t e, uint32_t *out) {
-  with_mesh(mesh, [&](const auto &m) {
-    const HH h = m.halfedge_handle(EH(int(e)), 0);
-    out[0] = uint32_t(m.from_vertex_handle(h).idx());
-    out[1] = uint32_t(m.to_vertex_handle(h).idx());
-    return 0;
+void topolab_om_free(topolab_om_mesh *mesh) noexcept { delete mesh; }
+
+int topolab_om_heap_bytes(const topolab_om_mesh *mesh, uint64_t *out) noexcept {
+  return guard([&] {
+    *out = mesh->heap_bytes;
+    return TOPOLAB_OM_OK;
   });
 }
 
-int topolab_om_is_boundary_vertex(const topolab_om_mesh *mesh, uint32_t v) {
-  return with_mesh(mesh, [&](const auto &m) { return is_boundary_vertex(m, VH(int(v))) ? 1 : 0; });
-}
-
-int topolab_om_is_boundary_edge(const topolab_om_mesh *mesh, uint32_t e) {
-  return with_mesh(mesh, [&](const auto &m) { return m.is_boundary(EH(int(e))) ? 1 : 0; });
-}
-
-void topolab_om_query(const topolab_om_mesh *mesh, int op, uint32_t id, topolab_om_emit emit,
-                      void *context) {
-  with_mesh(mesh, [&](const auto &m) {
-    return dispatch(op, [&](auto code) -> uint64_t {
-      relation<decltype(code)::value>(m, int(id),
-                                      [&](auto h) { emit(context, uint32_t(h.idx())); });
+int topolab_om_summary(const topolab_om_mesh *mesh, uint32_t *out) noexcept {
+  return guard([&] {
+    out[0] = mesh->tri ? 1 : 0;
+    with_mesh(mesh, [&](const auto &m) {
+      out[1] = uint32_t(m.n_vertices());
+      out[2] = uint32_t(m.n_edges());
+      out[3] = uint32_t(m.n_faces());
       return 0;
+    });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_position(const topolab_om_mesh *mesh, uint32_t v, double *out) noexcept {
+  return guard([&] {
+    return with_mesh(mesh, [&](const auto &m) {
+      const auto &p = m.point(VH(int(v)));
+      out[0] = p[0];
+      out[1] = p[1];
+      out[2] = p[2];
+      return TOPOLAB_OM_OK;
     });
   });
 }
 
-int64_t topolab_om_edge_neighbour(const topolab_om_mesh *mesh, uint32_t e, uint32_t f,
-                                  int successor) {
-  return with_mesh(mesh, [&](const auto &m) -> int64_t {
-    for (int side = 0; side < 2; ++side) {
-      const HH h = m.halfedge_handle(EH(int(e)), side);
-      if (m.face_handle(h) != FH(int(f))) continue;
-      const HH other = successor ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
-      return m.edge_handle(other).idx();
-    }
-    return -1;
+int topolab_om_edge_vertices(const topolab_om_mesh *mesh, uint32_t e, uint32_t *out) noexcept {
+  return guard([&] {
+    return with_mesh(mesh, [&](const auto &m) {
+      const HH h = m.halfedge_handle(EH(int(e)), 0);
+      out[0] = uint32_t(m.from_vertex_handle(h).idx());
+      out[1] = uint32_t(m.to_vertex_handle(h).idx());
+      return TOPOLAB_OM_OK;
+    });
   });
 }
 
-void topolab_om_boundary_curves(const topolab_om_mesh *mesh, topolab_om_emit emit,
-                                topolab_om_end_curve end_curve, void *context) {
-  try {
+int topolab_om_is_boundary_vertex(const topolab_om_mesh *mesh, uint32_t v, int *out) noexcept {
+  return guard([&] {
+    *out = with_mesh(mesh, [&](const auto &m) { return is_boundary_vertex(m, VH(int(v))) ? 1 : 0; });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_is_boundary_edge(const topolab_om_mesh *mesh, uint32_t e, int *out) noexcept {
+  return guard([&] {
+    *out = with_mesh(mesh, [&](const auto &m) { return m.is_boundary(EH(int(e))) ? 1 : 0; });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_query(const topolab_om_mesh *mesh, int op, uint32_t id, topolab_om_emit emit,
+                     void *context) noexcept {
+  return guard([&] {
+    if (!known_op(op)) return TOPOLAB_OM_UNKNOWN_CODE;
+    with_mesh(mesh, [&](const auto &m) {
+      return dispatch(op, [&](auto code) -> uint64_t {
+        relation<decltype(code)::value>(m, int(id),
+                                        [&](auto h) { emit(context, uint32_t(h.idx())); });
+        return 0;
+      });
+    });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_edge_neighbour(const topolab_om_mesh *mesh, uint32_t e, uint32_t f, int successor,
+                              int64_t *out) noexcept {
+  return guard([&] {
+    *out = with_mesh(mesh, [&](const auto &m) -> int64_t {
+      for (int side = 0; side < 2; ++side) {
+        const HH h = m.halfedge_handle(EH(int(e)), side);
+        if (m.face_handle(h) != FH(int(f))) continue;
+        const HH other = successor ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
+        return m.edge_handle(other).idx();
+      }
+      return -1;
+    });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_boundary_curves(const topolab_om_mesh *mesh, topolab_om_emit emit,
+                               topolab_om_end_curve end_curve, void *context) noexcept {
+  return guard([&] {
     with_mesh(mesh, [&](const auto &m) {
       boundary_loops(m, [&](HH start, uint32_t) {
         HH h = start;
@@ -417,105 +477,122 @@ void topolab_om_boundary_curves(const topolab_om_mesh *mesh, topolab_om_emit emi
       });
       return 0;
     });
-  } catch (...) {
-    // Out of memory for the visited flags: no curves reported.
-  }
-}
-
-void topolab_om_halfedge(const topolab_om_mesh *mesh, uint32_t h, uint32_t *out) {
-  with_mesh(mesh, [&](const auto &m) {
-    const HH heh{int(h)};
-    const FH f = m.face_handle(heh);
-    out[0] = uint32_t(m.to_vertex_handle(heh).idx());
-    out[1] = uint32_t(m.next_halfedge_handle(heh).idx());
-    out[2] = uint32_t(m.prev_halfedge_handle(heh).idx());
-    out[3] = f.is_valid() ? uint32_t(f.idx()) : UINT32_MAX;
-    return 0;
+    return TOPOLAB_OM_OK;
   });
 }
 
-uint32_t topolab_om_vertex_halfedge(const topolab_om_mesh *mesh, uint32_t v) {
-  return with_mesh(mesh, [&](const auto &m) {
-    const HH h = m.halfedge_handle(VH(int(v)));
-    return h.is_valid() ? uint32_t(h.idx()) : UINT32_MAX;
-  });
-}
-
-uint32_t topolab_om_face_halfedge(const topolab_om_mesh *mesh, uint32_t f) {
-  return with_mesh(mesh, [&](const auto &m) { return uint32_t(m.halfedge_handle(FH(int(f))).idx()); });
-}
-
-int topolab_om_validate(const topolab_om_mesh *mesh, uint32_t *element) {
-  return with_mesh(mesh, [&](const auto &m) {
-    for (HH h : m.halfedges()) {
-      const HH next = m.next_halfedge_handle(h);
-      const bool linked = next.is_valid() && m.prev_halfedge_handle(next) == h &&
-                          m.from_vertex_handle(next) == m.to_vertex_handle(h) &&
-                          m.face_handle(next) == m.face_handle(h);
-      if (!linked) {
-        *element = uint32_t(h.idx());
-        return 1;
-      }
-    }
-    for (VH v : m.vertices()) {
-      const HH h = m.halfedge_handle(v);
-      if (h.is_valid() && m.from_vertex_handle(h) != v) {
-        *element = uint32_t(v.idx());
-        return 2;
-      }
-    }
-    for (FH f : m.faces()) {
-      if (m.face_handle(m.halfedge_handle(f)) != f) {
-        *element = uint32_t(f.idx());
-        return 3;
-      }
-    }
-    return 0;
-  });
-}
-
-uint64_t topolab_om_sweep(const topolab_om_mesh *mesh, int op) {
-  try {
+int topolab_om_halfedge(const topolab_om_mesh *mesh, uint32_t h, uint32_t *out) noexcept {
+  return guard([&] {
     return with_mesh(mesh, [&](const auto &m) {
+      const HH heh{int(h)};
+      const FH f = m.face_handle(heh);
+      out[0] = uint32_t(m.to_vertex_handle(heh).idx());
+      out[1] = uint32_t(m.next_halfedge_handle(heh).idx());
+      out[2] = uint32_t(m.prev_halfedge_handle(heh).idx());
+      out[3] = f.is_valid() ? uint32_t(f.idx()) : UINT32_MAX;
+      return TOPOLAB_OM_OK;
+    });
+  });
+}
+
+int topolab_om_vertex_halfedge(const topolab_om_mesh *mesh, uint32_t v, uint32_t *out) noexcept {
+  return guard([&] {
+    *out = with_mesh(mesh, [&](const auto &m) {
+      const HH h = m.halfedge_handle(VH(int(v)));
+      return h.is_valid() ? uint32_t(h.idx()) : UINT32_MAX;
+    });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_face_halfedge(const topolab_om_mesh *mesh, uint32_t f, uint32_t *out) noexcept {
+  return guard([&] {
+    *out = with_mesh(mesh, [&](const auto &m) { return uint32_t(m.halfedge_handle(FH(int(f))).idx()); });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_validate(const topolab_om_mesh *mesh, int *problem, uint32_t *element) noexcept {
+  return guard([&] {
+    *problem = with_mesh(mesh, [&](const auto &m) {
+      for (HH h : m.halfedges()) {
+        const HH next = m.next_halfedge_handle(h);
+        const bool linked = next.is_valid() && m.prev_halfedge_handle(next) == h &&
+                            m.from_vertex_handle(next) == m.to_vertex_handle(h) &&
+                            m.face_handle(next) == m.face_handle(h);
+        if (!linked) {
+          *element = uint32_t(h.idx());
+          return 1;
+        }
+      }
+      for (VH v : m.vertices()) {
+        const HH h = m.halfedge_handle(v);
+        if (h.is_valid() && m.from_vertex_handle(h) != v) {
+          *element = uint32_t(v.idx());
+          return 2;
+        }
+      }
+      for (FH f : m.faces()) {
+        if (m.face_handle(m.halfedge_handle(f)) != f) {
+          *element = uint32_t(f.idx());
+          return 3;
+        }
+      }
+      return 0;
+    });
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_sweep(const topolab_om_mesh *mesh, int op, uint64_t *out) noexcept {
+  return guard([&] {
+    if (!known_op(op)) return TOPOLAB_OM_UNKNOWN_CODE;
+    *out = with_mesh(mesh, [&](const auto &m) {
       return dispatch(op, [&](auto code) { return sweep<decltype(code)::value>(m); });
     });
-  } catch (...) {
-    return 0;  // only boundary-curves allocates (its visited flags)
-  }
-}
-
-uint64_t topolab_om_sampled(const topolab_om_mesh *mesh, int op, const uint32_t *ids,
-                            size_t count) {
-  return with_mesh(mesh, [&](const auto &m) {
-    return dispatch(op, [&](auto code) { return sampled<decltype(code)::value>(m, ids, count); });
+    return TOPOLAB_OM_OK;
   });
 }
 
-void topolab_om_prepare_workload(topolab_om_mesh *mesh, int workload) {
-  if (workload != NORMALS || mesh->normals_requested) return;
-  with_mesh_mut(mesh, [](auto &m) {
-    m.request_face_normals();
-    m.request_vertex_normals();
-    return 0;
+int topolab_om_sampled(const topolab_om_mesh *mesh, int op, const uint32_t *ids, size_t count,
+                       uint64_t *out) noexcept {
+  return guard([&] {
+    if (!known_op(op)) return TOPOLAB_OM_UNKNOWN_CODE;
+    *out = with_mesh(mesh, [&](const auto &m) {
+      return dispatch(op, [&](auto code) { return sampled<decltype(code)::value>(m, ids, count); });
+    });
+    return TOPOLAB_OM_OK;
   });
-  mesh->normals_requested = true;
 }
 
-double topolab_om_workload(topolab_om_mesh *mesh, int workload) {
-  try {
-    topolab_om_prepare_workload(mesh, workload);
-    return with_mesh_mut(mesh, [&](auto &m) {
+int topolab_om_prepare_workload(topolab_om_mesh *mesh, int workload) noexcept {
+  return guard([&] {
+    if (workload < CIRCULATORS || workload > SMOOTHING) return TOPOLAB_OM_UNKNOWN_CODE;
+    if (workload != NORMALS || mesh->normals_requested) return TOPOLAB_OM_OK;
+    with_mesh_mut(mesh, [](auto &m) {
+      m.request_face_normals();
+      m.request_vertex_normals();
+      return 0;
+    });
+    mesh->normals_requested = true;
+    return TOPOLAB_OM_OK;
+  });
+}
+
+int topolab_om_workload(topolab_om_mesh *mesh, int workload, double *out) noexcept {
+  const int prepared = topolab_om_prepare_workload(mesh, workload);
+  if (prepared != TOPOLAB_OM_OK) return prepared;
+  return guard([&] {
+    *out = with_mesh_mut(mesh, [&](auto &m) {
       switch (workload) {
         case CIRCULATORS: return circulators(m);
         case BARYCENTER: return barycenter(m);
         case NORMALS: return normals(m);
-        case SMOOTHING: return smoothing(m);
-        default: return std::nan("");
+        default: return smoothing(m);
       }
     });
-  } catch (...) {
-    return std::nan("");
-  }
+    return TOPOLAB_OM_OK;
+  });
 }
 
 }  // extern "C"

@@ -1,17 +1,23 @@
-//! The `topolab` commands. Each returns an exit code: 0 success, 1 when the input was read
-//! but a structure refused it (or problems were found), 2 when the input cannot be read.
+//! The `topolab` command line: parsed here (clap), run by [`crate::commands`]. Each command
+//! returns an exit code: 0 success, 1 when the input was read but a structure refused it (or
+//! problems were found), 2 when the input cannot be read or the request cannot fit (ids past
+//! u32, more memory than is available, an output that cannot be written: see
+//! [`crate::limits`] and [`crate::output`]), checked before the work starts.
 
-use crate::registry::{self, StructureVisitor};
+use crate::commands;
+use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
-use std::fmt::Write as _;
 use std::path::PathBuf;
-use topolab_structures::summary::{summarize, Summary};
-use topolab_structures::{meshes, Capabilities, Error, MeshTopology, Operator, PolygonSoup};
+use std::process::ExitCode;
 
 /// A lab of mesh data structures: build, query, explain and measure them side by side.
 #[derive(Parser, Debug)]
 #[command(name = "topolab", version, about)]
 pub struct Cli {
+    /// Run even when the estimated memory of the request exceeds what the system has available
+    /// (counts past u32 ids are refused whatever this says).
+    #[arg(long, global = true)]
+    pub allow_memory: bool,
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
@@ -42,10 +48,12 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// The lecture's consistency checks on a mesh file: every problem, with the elements it
-    /// concerns. Exit code 0 when clean, 1 when problems were found, 2 when unreadable.
-    Check(crate::check::CheckArgs),
-    /// For teaching: what a structure stores for the CHE chapter's open tetrahedron (Figure 4.10).
+    /// The consistency checks of the lecture on polygon-mesh data structures on a mesh file: every
+    /// problem, with the elements it concerns. Exit code 0 when clean, 1 when problems were found,
+    /// 2 when unreadable.
+    Check(commands::check::CheckArgs),
+    /// For teaching: what a structure stores for the CHE thesis chapter's open tetrahedron
+    /// (Figure 4.10).
     Explain {
         /// The structure (see `topolab list`), or `che` for the four CHE levels side by side.
         name: String,
@@ -61,7 +69,7 @@ pub enum Command {
         vertex: Option<u32>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
-    Report(crate::report::ReportArgs),
+    Report(commands::report::ReportArgs),
     /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
     Refine {
         /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
@@ -80,39 +88,30 @@ pub enum Command {
         #[arg(long, default_value = "input")]
         order: String,
     },
-    /// The 3D convex hull of a point file or random points, by one of seed 004's algorithms.
-    Hull(crate::hull::HullArgs),
+    /// The 3D convex hull of a point file or random points, by one of the algorithms of the
+    /// lecture on 3D convex hulls.
+    Hull(commands::hull::HullArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
 pub fn run(cli: Cli) -> u8 {
+    crate::limits::set_allow_memory(cli.allow_memory);
     let result = match cli.command {
-        Command::List { json } => list(json),
+        Command::List { json } => commands::list::list(json),
         Command::Info {
             mesh,
             structure,
             json,
-        } => info(&mesh, &structure, json),
+        } => commands::info::info(&mesh, &structure, json),
         Command::Explain {
             name,
             mesh,
             trace,
             vertex,
-        } if name == crate::explain_che::NAME => {
-            crate::explain_che::explain_che(mesh.as_deref(), trace.as_deref(), vertex)
-        }
-        Command::Explain {
-            name, mesh, trace, ..
-        } => match trace {
-            Some(_) => Err(Failure::usage(format!(
-                "--trace works with `explain {}` only",
-                crate::explain_che::NAME
-            ))),
-            None => explain(&name, mesh.as_deref()),
-        },
+        } => commands::explain::run(&name, mesh.as_deref(), trace.as_deref(), vertex),
         Command::Report(args) => {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
-            crate::report::report(&args, command)
+            commands::report::report(&args, command)
         }
         Command::Refine {
             mesh,
@@ -120,9 +119,9 @@ pub fn run(cli: Cli) -> u8 {
             scheme,
             out,
             order,
-        } => crate::refine::refine(&mesh, levels, &scheme, &order, &out),
-        Command::Check(args) => return crate::check::run(args),
-        Command::Hull(args) => crate::hull::hull(&args),
+        } => commands::refine::refine(&mesh, levels, &scheme, &order, &out),
+        Command::Check(args) => return commands::check::run(args),
+        Command::Hull(args) => commands::hull::hull(&args),
     };
     match result {
         Ok(text) => {
@@ -136,259 +135,46 @@ pub fn run(cli: Cli) -> u8 {
     }
 }
 
-/// A failed command: what to tell the user and the exit code.
-#[derive(Debug)]
-pub struct Failure {
-    /// The message, with context.
-    pub message: String,
-    /// The exit code.
-    pub code: u8,
+/// What clap's parse errors become: `--help` and `--version` (and `topolab` alone, which shows
+/// the help) print as clap prints them; a bad command line is one line on stderr, like every
+/// other refusal, with exit code 2.
+pub fn usage_error(e: clap::Error) -> ExitCode {
+    if !e.use_stderr() || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+        e.exit()
+    }
+    eprintln!("topolab: {}", one_line(&e.to_string()));
+    ExitCode::from(2)
 }
 
-impl Failure {
-    fn unreadable(what: &str, e: Error) -> Self {
-        Self {
-            message: format!("cannot read {what}: {e}"),
-            code: 2,
+/// Clap's error text on one line: the message before the first blank line (the usage and tips
+/// follow it), without its `error: ` prefix, lines joined, and a pointer to `--help`.
+fn one_line(text: &str) -> String {
+    let message = text.split("\n\n").next().unwrap_or(text);
+    let message = message.strip_prefix("error: ").unwrap_or(message);
+    let words: Vec<&str> = message.split_whitespace().collect();
+    format!("{} (see --help)", words.join(" "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parse_errors_are_one_line() {
+        for args in [
+            &["topolab", "refine", "torus"][..],
+            &[
+                "topolab", "refine", "torus", "--levels", "abc", "--out", "x.obj",
+            ],
+            &["topolab", "nope"],
+            &["topolab", "list", "--json=yes"],
+        ] {
+            let e = Cli::try_parse_from(args).unwrap_err();
+            let line = one_line(&e.to_string());
+            assert!(!line.contains('\n') && !line.starts_with("error"), "{line}");
+            assert!(line.len() > "(see --help)".len() + 5, "{args:?}: {line}");
         }
+        let e = Cli::try_parse_from(["topolab", "refine", "torus"]).unwrap_err();
+        assert!(one_line(&e.to_string()).contains("--levels <LEVELS>"));
     }
-    /// A usage error (exit code 2).
-    pub fn usage(message: String) -> Self {
-        Self { message, code: 2 }
-    }
-}
-
-/// Loads a mesh named on the command line: a file, or a built-in mesh.
-pub fn load_mesh(spec: &str) -> Result<PolygonSoup, Failure> {
-    let path = PathBuf::from(spec);
-    if path.exists() {
-        let soup = topolab_structures::io::read(&path).map_err(|e| Failure::unreadable(spec, e))?;
-        return Ok(soup);
-    }
-    meshes::from_spec(spec).ok_or_else(|| {
-        let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
-        Failure::usage(format!(
-            "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
-            names.join(", ")
-        ))
-    })
-}
-
-fn unknown_structure(name: &str) -> Failure {
-    if name == registry::OPENMESH {
-        return Failure::usage(format!("{name}: {}", crate::OPENMESH_MISSING));
-    }
-    Failure::usage(format!(
-        "unknown structure {name:?}; known: {}",
-        registry::NAMES.join(", ")
-    ))
-}
-
-#[derive(serde::Serialize)]
-struct StructureRow {
-    name: &'static str,
-    capabilities: Capabilities,
-    costs: Vec<(&'static str, &'static str)>,
-}
-
-struct Row;
-impl StructureVisitor for Row {
-    type Output = StructureRow;
-    fn visit<M: MeshTopology>(self) -> StructureRow {
-        StructureRow {
-            name: M::NAME,
-            capabilities: M::capabilities(),
-            costs: Operator::ALL
-                .iter()
-                .map(|&op| (op.name(), M::cost(op).notation()))
-                .collect(),
-        }
-    }
-}
-
-fn list(json: bool) -> Result<String, Failure> {
-    let rows: Vec<StructureRow> = registry::NAMES
-        .iter()
-        .map(|n| registry::visit(n, Row).expect("registered"))
-        .collect();
-    if json {
-        let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
-        let v = serde_json::json!({ "structures": rows, "operators": ops });
-        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
-    }
-    let mut out = String::new();
-    let _ = writeln!(out, "Structures and the theoretical cost of each operator");
-    let _ = writeln!(
-        out,
-        "(n: elements scanned, k: local size (valence or face size), ∂n1: boundary edges)\n"
-    );
-    // Columns as wide as the longest structure name (`pointer-half-edge`) plus a gap.
-    let width = rows
-        .iter()
-        .map(|r| r.name.len() + 2)
-        .max()
-        .unwrap_or(0)
-        .max(14);
-    let _ = write!(out, "{:<18}", "operator");
-    for r in &rows {
-        let _ = write!(out, "{:>width$}", r.name);
-    }
-    out.push('\n');
-    for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
-        let _ = write!(out, "{:<18}", spec.name);
-        for r in &rows {
-            let _ = write!(out, "{:>width$}", r.costs[i].1);
-        }
-        out.push('\n');
-    }
-    out.push('\n');
-    for r in &rows {
-        let c = r.capabilities;
-        let _ = writeln!(
-            out,
-            "{:<width$} {}{}{}{}",
-            r.name,
-            if c.triangles_only {
-                "triangles only"
-            } else {
-                "polygons"
-            },
-            if c.non_manifold_vertices {
-                ", non-manifold vertices"
-            } else {
-                ""
-            },
-            if c.grids_only {
-                ", regular grids only"
-            } else {
-                ""
-            },
-            if c.distinct_positions {
-                ", distinct positions"
-            } else {
-                ""
-            },
-        );
-    }
-    let _ = writeln!(out, "\noperators:");
-    for spec in &topolab_harness::catalogue::CATALOGUE {
-        let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);
-    }
-    Ok(out)
-}
-
-struct InfoVisit<'a>(&'a PolygonSoup);
-impl StructureVisitor for InfoVisit<'_> {
-    type Output = Result<Summary, Error>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        let m = M::from_soup(self.0)?;
-        Ok(summarize(&m))
-    }
-}
-
-fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
-    let soup = load_mesh(spec)?;
-    let summary = registry::visit(structure, InfoVisit(&soup))
-        .ok_or_else(|| unknown_structure(structure))?
-        .map_err(|e| Failure {
-            message: format!("{structure} cannot store {spec}: {e}"),
-            code: 1,
-        })?;
-    let non_manifold_vertices = soup
-        .connectivity()
-        .map(|c| c.vertex_fans(&soup).iter().filter(|&&n| n > 1).count())
-        .unwrap_or(0);
-    if json {
-        let mut v = serde_json::to_value(&summary).expect("serialisable");
-        v["mesh"] = spec.into();
-        v["non_manifold_vertices"] = non_manifold_vertices.into();
-        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
-    }
-    let s = &summary;
-    let mut out = String::new();
-    let _ = writeln!(out, "mesh:                 {spec}");
-    let _ = writeln!(out, "structure:            {}", s.structure);
-    let _ = writeln!(
-        out,
-        "vertices:             {} ({} unused)",
-        s.vertices, s.unused_vertices
-    );
-    let _ = writeln!(out, "edges:                {}", s.edges);
-    let _ = writeln!(
-        out,
-        "faces:                {} ({})",
-        s.faces,
-        if s.triangles_only {
-            "triangles"
-        } else {
-            "polygons"
-        }
-    );
-    let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
-    let _ = writeln!(out, "boundary curves:      {}", s.boundary_curves);
-    let _ = writeln!(out, "components:           {}", s.components);
-    let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
-    match s.genus {
-        Some(g) => writeln!(out, "genus:                {g}"),
-        None => writeln!(
-            out,
-            "genus:                undefined ({} components)",
-            s.components
-        ),
-    }
-    .ok();
-    let _ = writeln!(
-        out,
-        "manifold:             {}",
-        if non_manifold_vertices == 0 {
-            "yes (oriented, every vertex one fan)".to_string()
-        } else {
-            format!("edges yes, {non_manifold_vertices} non-manifold vertices")
-        }
-    );
-    Ok(out)
-}
-
-struct ExplainVisit<'a>(&'a PolygonSoup);
-impl StructureVisitor for ExplainVisit<'_> {
-    type Output = Result<String, Error>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        let m = M::from_soup(self.0)?;
-        let mut out = String::new();
-        m.explain(&mut out)
-            .expect("writing to a String cannot fail");
-        Ok(out)
-    }
-}
-
-/// The mesh `explain` shows: the one named, or the open tetrahedron (a 2x2 grid for grid-only
-/// structures, which cannot store it); with a label for it.
-pub(crate) fn mesh_or_tetrahedron(
-    mesh: Option<&str>,
-    grids_only: bool,
-) -> Result<(PolygonSoup, String), Failure> {
-    Ok(match mesh {
-        Some(spec) => (load_mesh(spec)?, spec.to_string()),
-        // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
-        None if grids_only => (
-            meshes::grid(2, 2, true),
-            "a 2x2 triangulated grid (the open tetrahedron is not a grid)".to_string(),
-        ),
-        None => (
-            meshes::open_tetrahedron(),
-            "the open tetrahedron of the CHE chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
-        ),
-    })
-}
-
-fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
-    let grids_only = registry::visit(name, Row).is_some_and(|r| r.capabilities.grids_only);
-    let (soup, label) = mesh_or_tetrahedron(mesh, grids_only)?;
-    let text = registry::visit(name, ExplainVisit(&soup))
-        .ok_or_else(|| unknown_structure(name))?
-        .map_err(|e| Failure {
-            message: format!("{name} cannot store {label}: {e}"),
-            code: 1,
-        })?;
-    Ok(format!("{name} for {label}\n\n{text}"))
 }

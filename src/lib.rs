@@ -2,20 +2,28 @@
 //!
 //! The lab's command-line tool and everything that ties the crates together: the registry of
 //! every structure (the ones of `topolab-structures` plus the OpenMesh baseline, when compiled
-//! in) and the commands of the `topolab` binary.
+//! in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
+//! with the helpers of [`input`], [`limits`] and [`output`]); [`extend`] runs the report with
+//! structures of other crates added.
 #![deny(missing_docs)]
-// Only the OpenMesh FFI module may use `unsafe` (it allows it for itself alone).
+// Only the OpenMesh FFI module and the allocator may use `unsafe` (each allows it for itself
+// alone).
 #![deny(unsafe_code)]
 
-pub mod check;
 pub mod cli;
-pub mod hull;
-pub mod report;
+pub mod commands;
+pub mod extend;
+pub mod input;
+pub mod limits;
+pub mod output;
 
-/// The process's allocator, counting bytes so the report can measure each structure's heap
-/// (current and peak). The counters add two atomic operations to every allocation.
+#[allow(unsafe_code)]
+pub mod alloc;
+
+/// The process's allocator: glibc's, counting a thread's bytes only while the report measures
+/// a structure's heap (see [`alloc`]).
 #[global_allocator]
-pub static ALLOCATOR: peak_alloc::PeakAlloc = peak_alloc::PeakAlloc;
+pub static ALLOCATOR: alloc::CountingAllocator = alloc::CountingAllocator;
 #[cfg(has_openmesh)]
 #[allow(unsafe_code)]
 pub mod openmesh;
@@ -29,5 +37,3 @@ TOPOLAB_NO_OPENMESH, and rebuild";
 
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
-pub mod explain_che;
-pub mod refine;

@@ -4,5 +4,8 @@ use clap::Parser;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    ExitCode::from(topolab::cli::run(topolab::cli::Cli::parse()))
+    match topolab::cli::Cli::try_parse() {
+        Ok(cli) => ExitCode::from(topolab::cli::run(cli)),
+        Err(e) => topolab::cli::usage_error(e),
+    }
 }

@@ -3,8 +3,19 @@
 //! [OpenMesh](https://www.graphics.rwth-aachen.de/software/openmesh/) is the halfedge library
 //! graphics engineers compare against. [`OpenMesh`] wraps a `TriMesh_ArrayKernelT` (triangle
 //! input) or `PolyMesh_ArrayKernelT` (polygon input) with double-precision points, built and
-//! queried through the C API of `openmesh/shim.h`. This module is the only place of the lab
-//! with `unsafe` code; everything it exports is safe.
+//! queried through the C API of `openmesh/shim.h`. This module holds the `unsafe` code of the
+//! FFI (the lab's only other `unsafe` module is the pointer half-edge's `links`, where real
+//! pointers are the point); everything it exports is safe.
+//!
+//! The C API is a wall: every function is `noexcept`, catches every C++ exception and returns
+//! a status code, which becomes [`Error::Foreign`] here (a failed build, sweep, sampled kernel
+//! or workload) — no exception ever reaches Rust. The one piece of process-wide OpenMesh
+//! state the shim touches, the error stream `omerr()` (connected to `std::cerr` on first use
+//! behind an unsynchronised flag, then silenced so that `add_face`'s refusals become typed
+//! errors), is set up exactly once per process, thread-safely, inside that guard; meshes are
+//! independent, so threads may build and query meshes in parallel
+//! (`tests/openmesh_threads.rs`, and `.ci/repeat-baseline-tests` in CI). The heap measurement
+//! (`mallinfo2`) is process-wide: exact only when no other thread allocates meanwhile.
 //!
 //! What OpenMesh's array kernel stores (4-byte handles):
 //!
@@ -31,7 +42,10 @@
 //!
 //! For timing, per-query FFI calls would measure the FFI, so whole sweeps run as one C++
 //! function each ([`OpenMesh::native_sweep`], [`OpenMesh::native_sampled`],
-//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`.
+//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
+//! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
+//! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
+//! `workload_code`).
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
@@ -46,11 +60,13 @@ use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::ptr::NonNull;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, MeshTopology,
-    Operator, PolygonSoup, Result, VertexId,
+    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
+    NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
+mod access;
+
 mod ffi {
     use std::ffi::c_void;
 
@@ -64,6 +80,14 @@ mod ffi {
     pub type Emit = unsafe extern "C" fn(context: *mut c_void, index: u32);
     pub type EndCurve = unsafe extern "C" fn(context: *mut c_void);
 
+    // Every function returns a status (`OK` or a failure below) and writes its results
+    // through out-pointers; all are `noexcept` in C++ and catch every exception.
+    pub const OK: i32 = 0;
+    pub const REFUSED: i32 = 1;
+    pub const OUT_OF_MEMORY: i32 = 2;
+    pub const EXCEPTION: i32 = 3;
+    pub const UNKNOWN_CODE: i32 = 4;
+
     extern "C" {
         pub fn topolab_om_build(
             xyz: *const f64,
@@ -73,72 +97,123 @@ mod ffi {
             faces: u32,
             triangles: i32,
             edges_hint: u32,
+            out: *mut *mut RawMesh,
             failed_face: *mut u32,
-        ) -> *mut RawMesh;
+        ) -> i32;
         pub fn topolab_om_free(mesh: *mut RawMesh);
-        pub fn topolab_om_heap_bytes(mesh: *const RawMesh) -> u64;
-        pub fn topolab_om_is_trimesh(mesh: *const RawMesh) -> i32;
-        pub fn topolab_om_num_vertices(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_num_edges(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_num_faces(mesh: *const RawMesh) -> u32;
-        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64);
-        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32);
-        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32) -> i32;
-        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32) -> i32;
+        pub fn topolab_om_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
+        pub fn topolab_om_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
+        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
+        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
+        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
         pub fn topolab_om_query(
             mesh: *const RawMesh,
             op: i32,
             id: u32,
             emit: Emit,
             context: *mut c_void,
-        );
+        ) -> i32;
         pub fn topolab_om_edge_neighbour(
             mesh: *const RawMesh,
             e: u32,
             f: u32,
             successor: i32,
-        ) -> i64;
+            out: *mut i64,
+        ) -> i32;
         pub fn topolab_om_boundary_curves(
             mesh: *const RawMesh,
             emit: Emit,
             end_curve: EndCurve,
             context: *mut c_void,
-        );
-        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32);
-        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32) -> u32;
-        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32) -> u32;
-        pub fn topolab_om_validate(mesh: *const RawMesh, element: *mut u32) -> i32;
-        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32) -> u64;
+        ) -> i32;
+        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
+        pub fn topolab_om_validate(
+            mesh: *const RawMesh,
+            problem: *mut i32,
+            element: *mut u32,
+        ) -> i32;
+        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
         pub fn topolab_om_sampled(
             mesh: *const RawMesh,
             op: i32,
             ids: *const u32,
             count: usize,
-        ) -> u64;
-        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32);
-        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32) -> f64;
+            out: *mut u64,
+        ) -> i32;
+        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
+        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
     }
 }
 
-// The shim numbers operators in `Operator::ALL` order; the enum's discriminants are that order.
-const _: () = assert!(Operator::R00 as i32 == 0 && Operator::EdgePredecessor as i32 == 13);
+/// The lab's error for a failure status of shim function `call`.
+fn status(call: &'static str, code: i32) -> Result<()> {
+    let reason = match code {
+        ffi::OK => return Ok(()),
+        ffi::OUT_OF_MEMORY => "out of memory",
+        ffi::EXCEPTION => "a C++ exception",
+        ffi::UNKNOWN_CODE => "an operator or workload code the shim does not know",
+        ffi::REFUSED => "add_face refused a face",
+        _ => "an unknown status",
+    };
+    Err(Error::Foreign {
+        library: "OpenMesh",
+        call,
+        reason,
+    })
+}
+
+/// For the trait's infallible queries (they cannot return an error): the shim's reads of
+/// OpenMesh's arrays allocate nothing and throw nothing, so a failure here is a broken
+/// invariant of the shim, reported like Rust's own out-of-memory (which aborts).
+fn infallible(call: &'static str, code: i32) {
+    if let Err(e) = status(call, code) {
+        panic!("{e} (a query that cannot fail did)");
+    }
+}
+
 // Positions go to C++ as 3 doubles per vertex, without a copy.
 const _: () = assert!(std::mem::size_of::<glam::DVec3>() == 24);
 
-/// The Surface_mesh benchmark workloads (Sieger & Botsch), by name, in the shim's order.
-///
-/// | name | what | returns |
-/// |---|---|---|
-/// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
-/// | `barycenter` | the mean of all positions | the sum of its coordinates |
-/// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
-/// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
-pub const WORKLOADS: [&str; 4] = ["circulators", "barycenter", "normals", "smoothing"];
+/// The shim's code of operator `op`: its "Operator codes" table in `openmesh/shim.h` (a test
+/// reads that table and checks this match against it).
+const fn operator_code(op: Operator) -> i32 {
+    match op {
+        Operator::R00 => 0,
+        Operator::R01 => 1,
+        Operator::R02 => 2,
+        Operator::R10 => 3,
+        Operator::R11 => 4,
+        Operator::R12 => 5,
+        Operator::R20 => 6,
+        Operator::R21 => 7,
+        Operator::R22 => 8,
+        Operator::BoundaryVertex => 9,
+        Operator::BoundaryEdge => 10,
+        Operator::BoundaryCurves => 11,
+        Operator::EdgeSuccessor => 12,
+        Operator::EdgePredecessor => 13,
+    }
+}
+
+/// The shim's code of workload `w`: its "Workload codes" table in `openmesh/shim.h`.
+const fn workload_code(w: Workload) -> i32 {
+    match w {
+        Workload::Circulators => 0,
+        Workload::Barycenter => 1,
+        Workload::Normals => 2,
+        Workload::Smoothing => 3,
+    }
+}
 
 /// An OpenMesh mesh (TriMesh for triangle input, PolyMesh otherwise); see the module docs.
 pub struct OpenMesh {
     /// The C++ mesh, owned (freed in `Drop`).
     raw: NonNull<ffi::RawMesh>,
+    /// A TriMesh (triangle input) rather than a PolyMesh.
+    trimesh: bool,
     /// Number of vertices, edges and faces, kept here to check ids without an FFI call.
     vertices: u32,
     edges: u32,
@@ -211,31 +286,6 @@ unsafe extern "C" fn end_curve(context: *mut c_void) {
     callback.run(|out| out.end_curve());
 }
 
-/// The kind of element an operator is asked about (what its sampled ids index).
-enum QueryElement {
-    Vertex,
-    Edge,
-    Face,
-    Mesh,
-}
-
-fn query_element(op: Operator) -> QueryElement {
-    match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            QueryElement::Vertex
-        }
-        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
-            QueryElement::Edge
-        }
-        Operator::R20
-        | Operator::R21
-        | Operator::R22
-        | Operator::EdgeSuccessor
-        | Operator::EdgePredecessor => QueryElement::Face,
-        Operator::BoundaryCurves => QueryElement::Mesh,
-    }
-}
-
 impl OpenMesh {
     /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
     /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
@@ -247,11 +297,13 @@ impl OpenMesh {
     pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
         soup.check()?;
         let mut failed_face = u32::MAX;
+        let mut raw = std::ptr::null_mut();
         // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
         // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
         // asserted above); offsets has faces + 1 entries; a TriMesh is asked for only when
-        // every face is a triangle. The C++ side copies everything it keeps.
-        let raw = unsafe {
+        // every face is a triangle; both out-pointers are valid. The C++ side copies
+        // everything it keeps.
+        let code = unsafe {
             ffi::topolab_om_build(
                 soup.positions.as_ptr().cast::<f64>(),
                 soup.num_vertices() as u32,
@@ -260,86 +312,105 @@ impl OpenMesh {
                 soup.num_faces() as u32,
                 soup.is_triangle_mesh() as i32,
                 edges_hint.min(u32::MAX as usize) as u32,
+                &mut raw,
                 &mut failed_face,
             )
         };
-        match NonNull::new(raw) {
-            Some(raw) => {
-                // SAFETY: `raw` is a live mesh just built.
-                let counts = unsafe {
-                    (
-                        ffi::topolab_om_num_vertices(raw.as_ptr()),
-                        ffi::topolab_om_num_edges(raw.as_ptr()),
-                        ffi::topolab_om_num_faces(raw.as_ptr()),
-                    )
-                };
-                Ok(Self {
-                    raw,
-                    vertices: counts.0,
-                    edges: counts.1,
-                    faces: counts.2,
-                })
-            }
-            None if failed_face == u32::MAX => Err(Error::Unsupported(
-                "OpenMesh could not allocate the mesh".into(),
-            )),
-            None => Err(refusal(soup, failed_face as usize)),
+        if code == ffi::REFUSED {
+            return Err(refusal(soup, failed_face as usize));
         }
+        status("topolab_om_build", code)?;
+        let Some(raw) = NonNull::new(raw) else {
+            return status("topolab_om_build", ffi::EXCEPTION).map(|_| unreachable!());
+        };
+        // Owned from here on: dropped (freed) if the summary below fails.
+        let mut mesh = Self {
+            raw,
+            trimesh: false,
+            vertices: 0,
+            edges: 0,
+            faces: 0,
+        };
+        let mut summary = [0u32; 4];
+        // SAFETY: `raw` is a live mesh just built; `summary` has the 4 slots the shim fills.
+        status("topolab_om_summary", unsafe {
+            ffi::topolab_om_summary(raw.as_ptr(), summary.as_mut_ptr())
+        })?;
+        let [trimesh, vertices, edges, faces] = summary;
+        mesh.trimesh = trimesh != 0;
+        (mesh.vertices, mesh.edges, mesh.faces) = (vertices, edges, faces);
+        Ok(mesh)
     }
 
     /// `true` for a TriMesh (triangle input), `false` for a PolyMesh.
     pub fn is_trimesh(&self) -> bool {
-        // SAFETY: `raw` is live for `self`'s lifetime.
-        unsafe { ffi::topolab_om_is_trimesh(self.raw.as_ptr()) != 0 }
+        self.trimesh
     }
 
-    /// The checksum of operator `kernel` (an [`Operator::name`]) over every element, computed
-    /// by one C++ loop with OpenMesh's circulators; `None` for an unknown name.
-    pub fn native_sweep(&self, kernel: &str) -> Option<u64> {
-        let op = Operator::from_name(kernel)?;
-        // SAFETY: `raw` is live; the shim checks nothing but needs nothing but a valid code.
-        Some(unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), op as i32) })
+    /// The checksum of operator `op` over every element, computed by one C++ loop with
+    /// OpenMesh's circulators; an error when OpenMesh failed inside the loop.
+    pub fn native_sweep(&self, op: Operator) -> Result<u64> {
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer; the shim checks the code.
+        let code = unsafe { ffi::topolab_om_sweep(self.raw.as_ptr(), operator_code(op), &mut out) };
+        status("topolab_om_sweep", code).map(|()| out)
     }
 
-    /// The checksum of operator `kernel` over the query elements `ids` only (vertex, edge or
-    /// face ids by the operator; faces for successor and predecessor). `None` for an unknown
-    /// name, for `boundary-curves` (a whole-mesh operator) or when an id is out of range.
-    pub fn native_sampled(&self, kernel: &str, ids: &[u32]) -> Option<u64> {
-        let op = Operator::from_name(kernel)?;
-        let count = match query_element(op) {
-            QueryElement::Vertex => self.vertices,
-            QueryElement::Edge => self.edges,
-            QueryElement::Face => self.faces,
-            QueryElement::Mesh => return None,
+    /// The checksum of operator `op` over the query elements `ids` only: vertex, edge or face
+    /// ids by [`Operator::input`], face ids for successor and predecessor (the shim asks them
+    /// about every edge of each face). `None` for `boundary-curves` (a whole-mesh operator) or
+    /// when an id is out of range; an error when OpenMesh failed inside the loop.
+    pub fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        let count = match op.input() {
+            Input::Vertex => self.vertices,
+            Input::Edge => self.edges,
+            Input::Face | Input::EdgeOfFace => self.faces,
+            Input::Mesh => return None,
         };
         if ids.iter().any(|&id| id >= count) {
             return None;
         }
-        // SAFETY: `raw` is live and every id was just checked to be in range.
-        Some(unsafe {
-            ffi::topolab_om_sampled(self.raw.as_ptr(), op as i32, ids.as_ptr(), ids.len())
-        })
-    }
-
-    /// Requests what workload `name` needs (normals for `normals`), so that a timed
-    /// [`OpenMesh::native_workload`] runs only the workload; `false` for an unknown name.
-    pub fn prepare_workload(&mut self, name: &str) -> bool {
-        let Some(code) = WORKLOADS.iter().position(|&w| w == name) else {
-            return false;
+        let mut out = 0;
+        // SAFETY: `raw` is live, every id was just checked to be in range, `out` is valid.
+        let code = unsafe {
+            ffi::topolab_om_sampled(
+                self.raw.as_ptr(),
+                operator_code(op),
+                ids.as_ptr(),
+                ids.len(),
+                &mut out,
+            )
         };
-        // SAFETY: `raw` is live and exclusively borrowed.
-        unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), code as i32) };
-        true
+        Some(status("topolab_om_sampled", code).map(|()| out))
     }
 
-    /// Runs a Surface_mesh benchmark workload (see [`WORKLOADS`] for what each returns) in
-    /// one C++ call; `None` for an unknown name. `smoothing` moves the vertices, `normals`
-    /// adds normal properties (requested on first use unless [`OpenMesh::prepare_workload`]
-    /// did it).
-    pub fn native_workload(&mut self, name: &str) -> Option<f64> {
-        let code = WORKLOADS.iter().position(|&w| w == name)?;
-        // SAFETY: `raw` is live and exclusively borrowed (the workload may write positions).
-        Some(unsafe { ffi::topolab_om_workload(self.raw.as_ptr(), code as i32) })
+    /// Requests what `workload` needs (normals for [`Workload::Normals`]), so that a timed
+    /// [`OpenMesh::native_workload`] runs only the workload; an error when OpenMesh could not
+    /// add the properties.
+    pub fn prepare_workload(&mut self, workload: Workload) -> Result<()> {
+        // SAFETY: `raw` is live and exclusively borrowed.
+        let code =
+            unsafe { ffi::topolab_om_prepare_workload(self.raw.as_ptr(), workload_code(workload)) };
+        status("topolab_om_prepare_workload", code)
+    }
+
+    /// Runs a Surface_mesh benchmark workload (Sieger & Botsch) in one C++ call; an error when
+    /// OpenMesh failed inside it. [`Workload::Normals`] adds normal properties (requested on
+    /// first use unless [`OpenMesh::prepare_workload`] did it). What each returns:
+    ///
+    /// | workload | what | returns |
+    /// |---|---|---|
+    /// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
+    /// | `barycenter` | the mean of all positions | the sum of its coordinates |
+    /// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
+    /// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
+    pub fn native_workload(&mut self, workload: Workload) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: `raw` is live and exclusively borrowed; `out` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_om_workload(self.raw.as_ptr(), workload_code(workload), &mut out)
+        };
+        status("topolab_om_workload", code).map(|()| out)
     }
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.
@@ -349,16 +420,17 @@ impl OpenMesh {
             // SAFETY: `raw` is live; the caller checked `id` against the element count of
             // `op`'s input; the context is `&mut callback`, matching `emit_index::<F>`, and
             // outlives the call (C++ does not keep it).
-            unsafe {
+            let code = unsafe {
                 ffi::topolab_om_query(
                     raw,
-                    op as i32,
+                    operator_code(op),
                     id,
                     emit_index::<F>,
                     (&mut callback as *mut Callback<F>).cast(),
                 )
             };
             callback.finish();
+            infallible("topolab_om_query", code);
         }
         run(self.raw.as_ptr(), op, id, f);
     }
@@ -390,9 +462,18 @@ impl OpenMesh {
 
     fn neighbour_in_face(&self, e: EdgeId, face: FaceId, successor: bool) -> Option<EdgeId> {
         let (e, face) = (self.edge(e), self.face(face));
-        // SAFETY: `raw` is live and both ids were checked.
-        let answer =
-            unsafe { ffi::topolab_om_edge_neighbour(self.raw.as_ptr(), e, face, successor as i32) };
+        let mut answer = -1;
+        // SAFETY: `raw` is live, both ids were checked, `answer` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_om_edge_neighbour(
+                self.raw.as_ptr(),
+                e,
+                face,
+                successor as i32,
+                &mut answer,
+            )
+        };
+        infallible("topolab_om_edge_neighbour", code);
         u32::try_from(answer).ok().map(EdgeId)
     }
 
@@ -400,7 +481,8 @@ impl OpenMesh {
     fn halfedge(&self, h: u32) -> [u32; 4] {
         let mut out = [0u32; 4];
         // SAFETY: `raw` is live, `h` < 2 × edges (callers iterate that range), `out` has 4 slots.
-        unsafe { ffi::topolab_om_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        infallible("topolab_om_halfedge", code);
         out
     }
 }
@@ -507,7 +589,8 @@ impl MeshTopology for OpenMesh {
         let v = self.vertex(v);
         let mut out = [0.0f64; 3];
         // SAFETY: `raw` is live, `v` checked, `out` has 3 slots.
-        unsafe { ffi::topolab_om_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        infallible("topolab_om_position", code);
         glam::DVec3::from_array(out)
     }
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
@@ -523,7 +606,8 @@ impl MeshTopology for OpenMesh {
         let e = self.edge(e);
         let mut out = [0u32; 2];
         // SAFETY: `raw` is live, `e` checked, `out` has 2 slots.
-        unsafe { ffi::topolab_om_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        let code = unsafe { ffi::topolab_om_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        infallible("topolab_om_edge_vertices", code);
         out.map(VertexId)
     }
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
@@ -543,20 +627,26 @@ impl MeshTopology for OpenMesh {
     }
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         let v = self.vertex(v);
-        // SAFETY: `raw` is live, `v` checked.
-        unsafe { ffi::topolab_om_is_boundary_vertex(self.raw.as_ptr(), v) != 0 }
+        let mut out = 0;
+        // SAFETY: `raw` is live, `v` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_is_boundary_vertex(self.raw.as_ptr(), v, &mut out) };
+        infallible("topolab_om_is_boundary_vertex", code);
+        out != 0
     }
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         let e = self.edge(e);
-        // SAFETY: `raw` is live, `e` checked.
-        unsafe { ffi::topolab_om_is_boundary_edge(self.raw.as_ptr(), e) != 0 }
+        let mut out = 0;
+        // SAFETY: `raw` is live, `e` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_is_boundary_edge(self.raw.as_ptr(), e, &mut out) };
+        infallible("topolab_om_is_boundary_edge", code);
+        out != 0
     }
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         let mut callback = Callback::new(out);
         // SAFETY: `raw` is live; the context is `&mut Callback<&mut BoundaryCurves>`, what
         // `push_curve_edge` and `end_curve` expect, alive for the whole call.
-        unsafe {
+        let code = unsafe {
             ffi::topolab_om_boundary_curves(
                 self.raw.as_ptr(),
                 push_curve_edge,
@@ -565,6 +655,9 @@ impl MeshTopology for OpenMesh {
             )
         };
         callback.finish();
+        // Its visited flags are the one allocation of a query in the shim: out of memory
+        // there is reported like Rust's own.
+        infallible("topolab_om_boundary_curves", code);
     }
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.neighbour_in_face(e, face, true)
@@ -574,9 +667,11 @@ impl MeshTopology for OpenMesh {
     }
 
     fn validate(&self) -> Result<()> {
-        let mut element = 0u32;
-        // SAFETY: `raw` is live; `element` is a valid out-pointer.
-        let problem = unsafe { ffi::topolab_om_validate(self.raw.as_ptr(), &mut element) };
+        let (mut problem, mut element) = (0, 0u32);
+        // SAFETY: `raw` is live; `problem` and `element` are valid out-pointers.
+        status("topolab_om_validate", unsafe {
+            ffi::topolab_om_validate(self.raw.as_ptr(), &mut problem, &mut element)
+        })?;
         let message = match problem {
             0 => return Ok(()),
             1 => format!("halfedge {element}: next/prev/face links disagree"),
@@ -589,8 +684,11 @@ impl MeshTopology for OpenMesh {
     /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
     /// no other thread allocates during construction.
     fn heap_bytes(&self) -> usize {
-        // SAFETY: `raw` is live.
-        unsafe { ffi::topolab_om_heap_bytes(self.raw.as_ptr()) as usize }
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_om_heap_bytes(self.raw.as_ptr(), &mut out) };
+        infallible("topolab_om_heap_bytes", code);
+        out as usize
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
@@ -617,8 +715,10 @@ impl MeshTopology for OpenMesh {
         )?;
         for v in 0..self.vertices {
             let p = self.position(VertexId(v));
-            // SAFETY: `raw` is live and `v` < vertices.
-            let h = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v) };
+            let mut h = u32::MAX;
+            // SAFETY: `raw` is live, `v` < vertices, `h` is a valid out-pointer.
+            let code = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
+            infallible("topolab_om_vertex_halfedge", code);
             writeln!(
                 w,
                 "  v{v}: ({:.3}, {:.3}, {:.3})  out {}",
@@ -644,27 +744,79 @@ impl MeshTopology for OpenMesh {
         }
         writeln!(w, "faces: {} (one halfedge)", self.faces)?;
         for f in 0..self.faces {
-            // SAFETY: `raw` is live and `f` < faces.
-            let h = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f) };
+            let mut h = u32::MAX;
+            // SAFETY: `raw` is live, `f` < faces, `h` is a valid out-pointer.
+            let code = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f, &mut h) };
+            infallible("topolab_om_face_halfedge", code);
             writeln!(w, "  f{f}: h{h}")?;
         }
         Ok(())
     }
 
-    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
+    fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
+        Some(&Kernels)
+    }
+
+    fn access(op: Operator) -> Option<topolab_structures::Access> {
+        access::model(op)
+    }
+}
+
+/// OpenMesh's own loops, as the harness times them ([`MeshTopology::native`]).
+struct Kernels;
+
+impl NativeKernels<OpenMesh> for Kernels {
+    fn construction(&self, soup: &PolygonSoup) -> Option<Result<OpenMesh>> {
         // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
         Some(OpenMesh::build_native(soup, soup.num_corners() / 2))
     }
 
-    fn native_sweep(&self, op: Operator) -> Option<u64> {
-        OpenMesh::native_sweep(self, op.name())
+    fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Option<Result<u64>> {
+        Some(mesh.native_sweep(op))
     }
 
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
-        OpenMesh::native_sampled(self, op.name(), ids)
+    fn sampled(&self, mesh: &OpenMesh, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        mesh.native_sampled(op, ids)
     }
 
-    fn native_workload(&mut self, name: &str) -> Option<f64> {
-        OpenMesh::native_workload(self, name)
+    fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Option<Result<f64>> {
+        Some(mesh.native_workload(workload))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The (code, name) pairs of the table titled `title` in `openmesh/shim.h`'s header
+    /// comment: the indented lines after the title.
+    fn shim_table(title: &str) -> Vec<(i32, String)> {
+        let header = include_str!("../openmesh/shim.h");
+        let mut lines = header.lines().skip_while(|l| !l.contains(title)).skip(1);
+        let mut pairs = Vec::new();
+        while let Some(entries) = lines.next().and_then(|l| l.strip_prefix(" *   ")) {
+            let tokens: Vec<&str> = entries.split_whitespace().collect();
+            for pair in tokens.chunks(2) {
+                let code = pair[0].parse().expect("a code, then a name");
+                pairs.push((code, pair[1].to_string()));
+            }
+        }
+        pairs
+    }
+
+    #[test]
+    fn codes_are_the_tables_of_the_shim_header() {
+        let ops = shim_table("Operator codes");
+        assert_eq!(ops.len(), Operator::ALL.len(), "{ops:?}");
+        for (code, name) in &ops {
+            let op = Operator::from_name(name).expect("an operator name");
+            assert_eq!(operator_code(op), *code, "{name}");
+        }
+        let workloads = shim_table("Workload codes");
+        assert_eq!(workloads.len(), Workload::ALL.len(), "{workloads:?}");
+        for (code, name) in &workloads {
+            let w = Workload::from_name(name).expect("a workload name");
+            assert_eq!(workload_code(w), *code, "{name}");
+        }
     }
 }

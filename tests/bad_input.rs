@@ -11,7 +11,8 @@ use topolab_structures::{io, registry};
 /// what `topolab check` must say.
 const CORPUS: &[(&str, &str, Check)] = &[
     // OBJ
-    ("empty.obj", "ok", Clean),
+    ("empty.obj", "ok", Finds("empty-mesh")),
+    ("obj-comments-only.obj", "ok", Finds("empty-mesh")),
     ("obj-bad-token.obj", "syntax", Unreadable),
     ("obj-unknown-statement.obj", "syntax", Unreadable),
     ("obj-short-vertex.obj", "syntax", Unreadable),
@@ -109,6 +110,7 @@ const CORPUS: &[(&str, &str, Check)] = &[
     ("non-simple-face.obj", "ok", Finds("non-simple-face")),
     // OFF
     ("empty.off", "truncated", Unreadable),
+    ("off-no-elements.off", "ok", Finds("empty-mesh")),
     ("off-no-header.off", "syntax", Unreadable),
     ("off-bad-count.off", "syntax", Unreadable),
     (
@@ -141,6 +143,7 @@ const CORPUS: &[(&str, &str, Check)] = &[
     ),
     // PLY
     ("empty.ply", "truncated", Unreadable),
+    ("ply-no-elements.ply", "ok", Finds("empty-mesh")),
     ("ply-no-end-header.ply", "truncated", Unreadable),
     ("ply-bad-format.ply", "syntax", Unreadable),
     ("ply-missing-z.ply", "syntax", Unreadable),
@@ -191,12 +194,10 @@ const CORPUS: &[(&str, &str, Check)] = &[
 enum Check {
     /// It cannot read it: exit code 2.
     Unreadable,
-    /// Nothing to report: exit code 0.
-    Clean,
     /// At least this finding: exit code 1.
     Finds(&'static str),
 }
-use Check::{Clean, Finds, Unreadable};
+use Check::{Finds, Unreadable};
 
 /// Refusals that depend on what a structure can store, not on the file being broken.
 const CAPABILITY_REFUSALS: &[&str] = &[
@@ -273,7 +274,6 @@ fn check_reports_each_problem_with_its_exit_code() {
             .unwrap();
         let code = out.status.code().unwrap();
         match expected {
-            Clean => assert_eq!(code, 0, "{file}"),
             Unreadable => assert_eq!(code, 2, "{file}"),
             Finds(kind) => {
                 assert_eq!(code, 1, "{file}");
@@ -287,6 +287,45 @@ fn check_reports_each_problem_with_its_exit_code() {
                 assert!(kinds.contains(&kind), "{file}: {kinds:?}");
                 assert_eq!(report["clean"], false);
             }
+        }
+    }
+}
+
+#[test]
+fn an_empty_mesh_is_named_by_check_and_info_in_every_format() {
+    for file in [
+        "empty.obj",
+        "obj-comments-only.obj",
+        "off-no-elements.off",
+        "ply-no-elements.ply",
+    ] {
+        let path = corpus(file);
+        let check = Command::new(env!("CARGO_BIN_EXE_topolab"))
+            .arg("check")
+            .arg(&path)
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&check.stdout);
+        assert_eq!(check.status.code(), Some(1), "{file}: {text}");
+        assert!(text.contains("empty-mesh (1):"), "{file}: {text}");
+        assert!(!text.contains("no problems found"), "{file}: {text}");
+        for args in [
+            &["info"][..],
+            &["info", "--json"],
+            &["explain", "vertex-list", "--mesh"],
+        ] {
+            let info = Command::new(env!("CARGO_BIN_EXE_topolab"))
+                .args(args)
+                .arg(&path)
+                .output()
+                .unwrap();
+            let stderr = String::from_utf8_lossy(&info.stderr);
+            assert_eq!(info.status.code(), Some(1), "{file} {args:?}: {stderr}");
+            assert!(
+                stderr.contains("is an empty mesh: it has no vertices and no faces"),
+                "{file} {args:?}: {stderr}"
+            );
+            assert!(info.stdout.is_empty(), "{file} {args:?}");
         }
     }
 }

@@ -2,7 +2,7 @@
 //! the chapter's open tetrahedron (our numbering: triangle t = (t, t+1 mod 3, 3)).
 
 use std::process::Command;
-use topolab::explain_che::explain_che;
+use topolab::commands::explain_che::explain_che;
 
 /// The values of the (indented) container row `name` (e.g. "O[]") in each level's block.
 fn rows(text: &str, name: &str) -> Vec<Vec<i64>> {
@@ -52,6 +52,22 @@ fn annulus_has_two_curves_labelled_in_opposite() {
     assert!(!o[1].contains(&-2));
 }
 
+/// The container reads a block prints: each `read X[i] = y` line, and each neighbour R00
+/// reads from `V[]` (one per triangle of the star, one for a boundary vertex's closing edge).
+fn printed_reads(block: &str) -> usize {
+    block.matches("read ").count() + block.matches("R00 reads neighbour V[").count()
+}
+
+/// The count the block's last line states: `R00(vN) = [...] after N container reads`.
+fn stated_reads(block: &str) -> usize {
+    let line = block
+        .lines()
+        .find(|l| l.contains("container reads"))
+        .unwrap();
+    let words: Vec<&str> = line.split_whitespace().collect();
+    words[words.len() - 3].parse().unwrap()
+}
+
 #[test]
 fn star_trace_reads_per_level() {
     let text = explain_che(None, Some("r00"), Some(3)).unwrap();
@@ -70,6 +86,36 @@ fn star_trace_reads_per_level() {
         let ring = block.lines().find(|l| l.contains("R00(v3)")).unwrap();
         for w in ["0", "1", "2"] {
             assert!(ring.contains(w), "{ring}");
+        }
+    }
+}
+
+#[test]
+fn star_trace_counts_every_read_it_prints_and_the_neighbours() {
+    let soup = topolab_structures::meshes::open_tetrahedron();
+    for v in 0..soup.num_vertices() as u32 {
+        let text = explain_che(None, Some("r00"), Some(v)).unwrap();
+        let blocks: Vec<&str> = text.split("== level ").skip(1).collect();
+        for block in &blocks {
+            assert_eq!(stated_reads(block), printed_reads(block), "v{v}:\n{block}");
+        }
+        // Levels 2 and 3 (Algorithm 7 from VH[v]): VH[v], then per triangle of the star one
+        // O[] read and R00's neighbour read, and a boundary vertex's closing neighbour.
+        let triangles = soup.faces().filter(|f| f.contains(&v)).count();
+        let mut neighbours: Vec<u32> = soup
+            .faces()
+            .filter(|f| f.contains(&v))
+            .flat_map(|f| f.iter().copied().filter(|&w| w != v))
+            .collect();
+        neighbours.sort_unstable();
+        neighbours.dedup();
+        let boundary = neighbours.len() > triangles;
+        for block in &blocks[2..] {
+            assert_eq!(
+                stated_reads(block),
+                1 + 2 * triangles + usize::from(boundary),
+                "v{v}:\n{block}"
+            );
         }
     }
 }

@@ -92,3 +92,27 @@ fn a_point_cloud_obj_is_read_through_io_read() {
     assert!(stdout.contains("hull faces:    12"), "{stdout}");
     let _ = std::fs::remove_file(input);
 }
+
+#[test]
+fn coordinates_near_1e300_are_refused_as_out_of_range_not_as_a_broken_hull() {
+    // The user's report: this file answered "no hull (repeated-vertex): face 1 uses vertex 3
+    // more than once", an internal invariant, for coordinates whose products overflow.
+    let input = temp("far.obj");
+    std::fs::write(
+        &input,
+        "v 1e300 0 0\nv 0 1e300 0\nv 0 0 1e300\nv -1e300 -1e300 -1e300\n\
+         v 1e299 1e299 1e299\nv 5e299 -3e299 2e299\n",
+    )
+    .unwrap();
+    for algo in ["gift", "incremental", "randomized"] {
+        let run = topolab(&["hull", input.to_str().unwrap(), "--algo", algo]);
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(2), "{algo}: {stderr}");
+        assert!(
+            stderr.contains("no hull (coordinate-out-of-range): point 0 has the coordinate 1e300")
+                && stderr.contains("outside the range the hull's exact predicates handle"),
+            "{algo}: {stderr}"
+        );
+    }
+    let _ = std::fs::remove_file(input);
+}

@@ -7,7 +7,8 @@ mod common;
 use common::{checksum, close, uniform_vertex_normals_sum};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup, VertexList};
+use topolab_harness::results::Subject;
+use topolab_structures::{meshes, MeshTopology, PolygonSoup, VertexList, Workload};
 
 /// The venv's python, if it can import libigl.
 fn python_with_libigl() -> Option<PathBuf> {
@@ -69,16 +70,19 @@ fn libigl_gives_the_checksums_of_the_lab() {
             let operator = result["operator"].as_str().unwrap();
             assert!(result["seconds"].as_f64().unwrap() >= 0.0);
             seen.push(operator.to_string());
-            if operator == "normals" {
-                let value = result["value"].as_f64().unwrap();
-                let expected = uniform_vertex_normals_sum(&soup);
-                assert!(
-                    close(value, expected),
-                    "normals on {name}: {value} vs {expected}"
-                );
-                continue;
-            }
-            let op = Operator::from_name(operator).unwrap();
+            let op = match Subject::from_name(operator) {
+                Some(Subject::Query(op)) => op,
+                Some(Subject::Workload(Workload::Normals)) => {
+                    let value = result["value"].as_f64().unwrap();
+                    let expected = uniform_vertex_normals_sum(&soup);
+                    assert!(
+                        close(value, expected),
+                        "normals on {name}: {value} vs {expected}"
+                    );
+                    continue;
+                }
+                other => panic!("{operator}: not an operator libigl answers ({other:?})"),
+            };
             assert_eq!(
                 result["checksum"].as_str().unwrap(),
                 checksum(&lab, op).to_string(),

@@ -15,16 +15,34 @@ mod common;
 mod native {
     use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
     use glam::DVec3;
-    use std::sync::{Mutex, MutexGuard};
+    use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+    use std::time::Duration;
     use topolab::openmesh::OpenMesh;
+    use topolab_harness::kernels::{sample_queries, Kernel};
+    use topolab_harness::measure::{
+        cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
+    };
+    use topolab_harness::results::Subject;
     use topolab_structures::meshes::{self, RandomMeshParams};
-    use topolab_structures::{MeshTopology, Operator, PolygonSoup, VertexId, VertexList};
+    use topolab_structures::{
+        Input, MeshTopology, Operator, PolygonSoup, VertexId, VertexList, Workload,
+    };
 
-    /// The tests of this file run one at a time: the heap measurement (glibc `mallinfo2`) counts
-    /// every thread's allocations, so another test allocating meanwhile would distort it.
-    fn one_at_a_time() -> MutexGuard<'static, ()> {
-        static LOCK: Mutex<()> = Mutex::new(());
-        LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    /// The heap measurement (glibc `mallinfo2`) counts every thread's allocations, so it runs
+    /// alone ([`alone`]); every other test of this file runs in parallel with the others
+    /// ([`shared`]), as OpenMesh must be usable from parallel threads.
+    static HEAP: RwLock<()> = RwLock::new(());
+    fn shared() -> RwLockReadGuard<'static, ()> {
+        HEAP.read().unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+    fn alone() -> RwLockWriteGuard<'static, ()> {
+        HEAP.write()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+
+    /// A native answer with OpenMesh's own failures turned into a test failure.
+    fn ok<T>(answer: topolab_structures::Result<T>) -> T {
+        answer.expect("OpenMesh failed inside the shim")
     }
 
     /// A torus (closed), a triangle grid (boundary), a quad grid and mixed polygons (PolyMesh),
@@ -44,18 +62,13 @@ mod native {
 
     #[test]
     fn native_sweeps_equal_the_checksums_of_the_lab() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         for (name, soup) in meshes() {
             let om = OpenMesh::from_soup(&soup).unwrap();
             let reference = VertexList::from_soup(&soup).unwrap();
             for op in Operator::ALL {
                 let expected = checksum(&reference, op);
-                assert_eq!(
-                    om.native_sweep(op.name()),
-                    Some(expected),
-                    "{} on {name}",
-                    op.name()
-                );
+                assert_eq!(ok(om.native_sweep(op)), expected, "{} on {name}", op.name());
                 // The per-query FFI path agrees too.
                 assert_eq!(
                     checksum(&om, op),
@@ -69,29 +82,32 @@ mod native {
 
     #[test]
     fn checksums_see_the_boundary() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         let om = OpenMesh::from_soup(&meshes::grid(6, 4, true)).unwrap();
-        for kernel in ["boundary-vertex", "boundary-edge", "boundary-curves"] {
-            assert_ne!(om.native_sweep(kernel), Some(0), "{kernel} on a grid");
+        for op in [
+            Operator::BoundaryVertex,
+            Operator::BoundaryEdge,
+            Operator::BoundaryCurves,
+        ] {
+            assert_ne!(ok(om.native_sweep(op)), 0, "{op:?} on a grid");
         }
-        assert_eq!(om.native_sweep("no-such-kernel"), None);
     }
 
     #[test]
     fn sampled_kernels_sum_the_sampled_queries_only() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         for (name, soup) in meshes() {
             let om = OpenMesh::from_soup(&soup).unwrap();
             let reference = VertexList::from_soup(&soup).unwrap();
             for op in Operator::ALL {
                 if op == Operator::BoundaryCurves {
-                    assert_eq!(om.native_sampled(op.name(), &[0]), None);
+                    assert!(om.native_sampled(op, &[0]).is_none());
                     continue;
                 }
                 let n = query_count(&reference, op) as u32;
                 // Repeated ids count twice, like repeated queries.
                 let ids = [n - 1, 0, n / 2, n / 2];
-                let native = om.native_sampled(op.name(), &ids);
+                let native = om.native_sampled(op, &ids).map(ok);
                 assert_eq!(
                     native,
                     Some(sampled(&om, op, &ids)),
@@ -99,10 +115,7 @@ mod native {
                     op.name()
                 );
                 // Vertex and face ids are the input's in every structure (edge ids are not).
-                if !matches!(
-                    op,
-                    Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge
-                ) {
+                if op.input() != Input::Edge {
                     assert_eq!(
                         native,
                         Some(sampled(&reference, op, &ids)),
@@ -110,14 +123,64 @@ mod native {
                         op.name()
                     );
                 }
-                assert_eq!(om.native_sampled(op.name(), &[n]), None, "id out of range");
+                assert!(om.native_sampled(op, &[n]).is_none(), "id out of range");
             }
         }
     }
 
+    /// A memory meter that measures nothing (the heap is measured alone, in its own test).
+    struct NoMeter;
+    impl MemoryMeter for NoMeter {
+        fn current(&self) -> usize {
+            0
+        }
+        fn peak(&self) -> usize {
+            0
+        }
+        fn reset_peak(&self) {}
+    }
+
+    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`: construction,
+    /// sweeps, vertex and face samples and workloads run natively, and their checksums are
+    /// the lab's.
+    #[test]
+    fn the_harness_times_openmeshs_own_loops() {
+        let _shared = shared();
+        let soup = meshes::torus(6, 5);
+        let queries = sample_queries(&soup, 8, 3);
+        let case = MeshCase {
+            name: "torus",
+            family: "torus",
+            soup: &soup,
+            queries: &queries,
+        };
+        let plan = Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max: Duration::from_secs(10),
+            min_reps: 1,
+            max_reps: 2,
+            light: false,
+        };
+        let (mut out, mut est) = (Vec::new(), Estimator::default());
+        measure_structure::<OpenMesh>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+        assert_eq!(out.len(), 1 + 13 * 2 + 1 + Workload::ALL.len());
+        for m in &out {
+            // The harness hands a baseline vertex and face samples only (measure::time_kernel).
+            let native = match (m.operator, m.kernel) {
+                (Subject::Query(op), Kernel::Sampled) => {
+                    matches!(op.input(), Input::Vertex | Input::Face)
+                }
+                _ => true,
+            };
+            assert_eq!(m.native, native, "{} {}", m.operator, m.kernel);
+        }
+        measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+        cross_check(&out, "torus").unwrap();
+    }
+
     #[test]
     fn trimesh_for_triangles_polymesh_for_polygons() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         assert!(OpenMesh::from_soup(&meshes::torus(4, 3))
             .unwrap()
             .is_trimesh());
@@ -131,11 +194,11 @@ mod native {
 
     #[test]
     fn workloads_compute_what_the_benchmark_says() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         for (name, soup) in meshes() {
             let mut om = OpenMesh::from_soup(&soup).unwrap();
             let reference = VertexList::from_soup(&soup).unwrap();
-            let circulators = om.native_workload("circulators").unwrap();
+            let circulators = ok(om.native_workload(Workload::Circulators));
             assert_eq!(
                 circulators,
                 soup.num_corners() as f64,
@@ -143,15 +206,15 @@ mod native {
             );
 
             let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
-            let barycenter = om.native_workload("barycenter").unwrap();
+            let barycenter = ok(om.native_workload(Workload::Barycenter));
             assert!(
                 close(barycenter, mean.element_sum()),
                 "barycenter on {name}"
             );
 
             let expected = uniform_vertex_normals_sum(&soup);
-            assert!(om.prepare_workload("normals"));
-            let normals = om.native_workload("normals").unwrap();
+            ok(om.prepare_workload(Workload::Normals));
+            let normals = ok(om.native_workload(Workload::Normals));
             assert!(
                 close(normals, expected),
                 "normals on {name}: {normals} vs {expected}"
@@ -173,21 +236,20 @@ mod native {
                 })
                 .collect();
             let expected: f64 = smoothed.iter().map(|p| p.element_sum()).sum();
-            let smoothing = om.native_workload("smoothing").unwrap();
+            let smoothing = ok(om.native_workload(Workload::Smoothing));
             assert!(close(smoothing, expected), "smoothing on {name}");
             // The step is computed into a buffer: the mesh keeps its positions, so a second
             // run computes the same step.
             for (v, p) in soup.positions.iter().enumerate() {
                 assert_eq!(om.position(VertexId::new(v)), *p, "smoothing moved v{v}");
             }
-            assert_eq!(om.native_workload("smoothing").unwrap(), smoothing);
-            assert_eq!(om.native_workload("no-such-workload"), None);
+            assert_eq!(ok(om.native_workload(Workload::Smoothing)), smoothing);
         }
     }
 
     #[test]
     fn heap_bytes_are_what_the_array_kernel_needs() {
-        let _serial = one_at_a_time();
+        let _alone = alone();
         // 28 B per vertex, 32 per edge, 4 per face: about 66 B per triangle of a closed mesh.
         let soup = meshes::torus_with_triangles(60_000);
         let om = OpenMesh::from_soup(&soup).unwrap();
@@ -215,7 +277,7 @@ mod native {
 
     #[test]
     fn refusals_name_elements_like_the_lab() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         for soup in broken_soups() {
             let lab = VertexList::from_soup(&soup).unwrap_err().to_string();
             let checked = OpenMesh::from_soup(&soup).unwrap_err().to_string();
@@ -243,7 +305,7 @@ mod native {
 
     #[test]
     fn a_closed_fan_at_a_non_manifold_vertex_is_refused_in_any_order() {
-        let _serial = one_at_a_time();
+        let _shared = shared();
         for soup in closed_fan_soups() {
             let checked = OpenMesh::from_soup(&soup).unwrap_err();
             assert_eq!(checked.kind(), "non-manifold-vertex", "{checked}");

@@ -1,6 +1,6 @@
 //! `topolab refine`: writes the refined mesh, and refuses bad input with the right exit code.
 
-use topolab::refine::refine;
+use topolab::commands::refine::refine;
 
 #[test]
 fn refine_writes_four_to_the_level_times_the_faces() {
@@ -47,4 +47,23 @@ fn bad_schemes_polygons_orders_and_formats_are_refused() {
         );
     }
     assert!(!out.exists() && !ply.exists());
+}
+
+#[test]
+fn levels_past_what_u32_ids_number_are_refused_before_refining() {
+    let out = std::env::temp_dir().join("never-written-levels.obj");
+    let _ = std::fs::remove_file(&out);
+    // 18 triangles: 14 levels make 3 · 18 · 4^14 = 14.5G corners (13 levels: 3.6G, which u32
+    // numbers); usize::MAX levels overflow any count. Both used to refine level by level
+    // until memory ran out.
+    for levels in [14, usize::MAX] {
+        let failure = refine("torus:10", levels, "midpoint", "input", &out).unwrap_err();
+        assert_eq!(failure.code, 2, "{levels}: {}", failure.message);
+        assert!(failure.message.contains("u32"), "{}", failure.message);
+    }
+    // A count that fits is refined as before.
+    let text = refine("torus:10", 1, "midpoint", "input", &out).unwrap();
+    assert!(text.contains("72 faces"), "{text}");
+    assert!(out.exists());
+    std::fs::remove_file(&out).unwrap();
 }

@@ -72,11 +72,47 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
             assert!(m["ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
         }
     }
+    // Construction: warm builds (`ns_per_item`) and cold ones beside them.
+    for m in ms
+        .iter()
+        .filter(|m| m["operator"] == "construction" && m["status"] == "measured")
+    {
+        assert!(m["cold_ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+    }
+    // A limit on the sweeps of the structures that declare their access, none on the others.
+    let sweep = |s: &str, op: &str| {
+        ms.iter()
+            .find(|m| {
+                m["structure"] == s
+                    && m["operator"] == op
+                    && m["kernel"] == "sweep"
+                    && m["mesh"] == "torus-800"
+                    && m["status"] == "measured"
+            })
+            .unwrap_or_else(|| panic!("no {s} {op} sweep"))
+    };
+    for (s, op) in [
+        ("index-half-edge", "r00"),
+        ("che-l2", "r22"),
+        ("pointer-half-edge", "boundary-curves"),
+    ] {
+        let limit = &sweep(s, op)["limit"];
+        assert!(
+            limit["ns_per_item"].as_f64().unwrap() > 0.0,
+            "{s} {op}: {limit}"
+        );
+        assert!(limit["bound"].is_string(), "{limit}");
+    }
+    assert!(sweep("vertex-list", "r20").get("limit").is_none());
+    assert!(!json["probe"]["levels"].as_array().unwrap().is_empty());
+    assert!(json["probe"]["checksum_ns"].as_f64().unwrap() > 0.0);
     assert!(json["machine"]["cpu"].is_string());
     assert!(json["probe"]["read_bytes_per_s"].as_f64().unwrap() > 0.0);
     assert!(!json["fits"].as_array().unwrap().is_empty());
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
+    assert!(html.contains("× limit") && html.contains("worst × limit"));
+    assert!(html.contains("cold − warm (page faults)"));
     for s in registry::NAMES {
         assert!(
             html.contains(&format!("<th>{s}</th>")),
@@ -131,5 +167,56 @@ fn the_page_renders_in_headless_chromium() {
         "the screenshot is nearly empty ({} bytes)",
         png.len()
     );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn a_single_large_size_skips_the_quadratic_cells_with_an_estimate() {
+    // One size, nothing smaller to extrapolate from: `--sizes 1000000` never finished,
+    // because the vertex list's O(n)-per-query sweeps ran in full. Here 64k triangles and the
+    // quick budget (150 ms a run) make them seconds each.
+    let out = out_dir("single-size");
+    let status = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args([
+            "report",
+            "--quick",
+            "--sizes",
+            "64000",
+            "--structures",
+            "vertex-list",
+            "--meshes",
+            "torus",
+            "--probe-mb",
+            "4",
+            "--out",
+        ])
+        .arg(&out)
+        .status()
+        .expect("run topolab");
+    assert!(status.success(), "topolab report failed: {status}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let cell = |op: &str, kernel: &str| {
+        json["measurements"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["operator"] == op && m["kernel"] == kernel)
+            .unwrap_or_else(|| panic!("no {op} {kernel} cell"))
+            .clone()
+    };
+    for (op, kernel) in [
+        ("r00", "sweep"),
+        ("r22", "sweep"),
+        ("boundary-curves", "sweep"),
+        ("smoothing", "workload"),
+    ] {
+        let m = cell(op, kernel);
+        assert_eq!(m["status"], "skipped", "{m}");
+        assert!(m["estimate_ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+    }
+    assert_eq!(cell("r20", "sweep")["status"], "measured");
+    let notes = json["notes"].to_string();
+    assert!(notes.contains("timed sample of its queries"), "{notes}");
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -24,9 +24,6 @@ use topolab_structures::hull::plane::{FacePlane, TestCount};
 use topolab_structures::hull::predicates::volume6;
 use topolab_structures::hull::{random_points, Shape};
 
-#[global_allocator]
-static ALLOCATOR: peak_alloc::PeakAlloc = peak_alloc::PeakAlloc;
-
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let max = args
@@ -81,7 +78,7 @@ fn main() {
             &sizes,
             python.as_deref().map(|p| (p, root)),
             1.0,
-            Some(&ALLOCATOR),
+            Some(&topolab::ALLOCATOR),
             |row| {
                 if row.algorithm == "qhull" {
                     qhull_seconds = row.seconds;

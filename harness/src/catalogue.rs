@@ -1,21 +1,8 @@
 //! The operator catalogue: for every [`Operator`], what it takes, what it answers and which
-//! relation of the CHE chapter it is.
+//! relation of the CHE thesis chapter it is.
 
+pub use topolab_structures::Element;
 use topolab_structures::Operator;
-
-/// A kind of mesh element.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Element {
-    /// A vertex (0-simplex).
-    Vertex,
-    /// An edge (1-simplex).
-    Edge,
-    /// A face (2-cell).
-    Face,
-    /// The whole mesh.
-    Mesh,
-}
 
 /// What an operator takes and answers.
 #[derive(Copy, Clone, Debug, serde::Serialize)]
@@ -24,7 +11,7 @@ pub struct OperatorSpec {
     pub op: Operator,
     /// Its kebab-case name.
     pub name: &'static str,
-    /// What a query is given (the first element kind), plus a face for successor/predecessor.
+    /// What a query is given, in argument order ([`Operator::input`]).
     pub input: &'static [Element],
     /// What it answers.
     pub output: Output,
@@ -52,7 +39,6 @@ pub enum Output {
 
 const fn spec(
     op: Operator,
-    input: &'static [Element],
     output: Output,
     relation: Option<(u8, u8)>,
     about: &'static str,
@@ -60,7 +46,7 @@ const fn spec(
     OperatorSpec {
         op,
         name: op.name(),
-        input,
+        input: op.input().elements(),
         output,
         relation,
         about,
@@ -73,98 +59,84 @@ use Element::*;
 pub const CATALOGUE: [OperatorSpec; 14] = [
     spec(
         Operator::R00,
-        &[Vertex],
         Output::Many(Vertex),
         Some((0, 0)),
         "the neighbour vertices of a vertex",
     ),
     spec(
         Operator::R01,
-        &[Vertex],
         Output::Many(Edge),
         Some((0, 1)),
         "the edges around a vertex",
     ),
     spec(
         Operator::R02,
-        &[Vertex],
         Output::Many(Face),
         Some((0, 2)),
         "the faces around a vertex",
     ),
     spec(
         Operator::R10,
-        &[Edge],
         Output::Pair,
         Some((1, 0)),
         "the two vertices of an edge",
     ),
     spec(
         Operator::R11,
-        &[Edge],
         Output::Many(Edge),
         Some((1, 1)),
         "the other edges of an edge's faces",
     ),
     spec(
         Operator::R12,
-        &[Edge],
         Output::Many(Face),
         Some((1, 2)),
         "the one or two faces of an edge",
     ),
     spec(
         Operator::R20,
-        &[Face],
         Output::Many(Vertex),
         Some((2, 0)),
         "the vertices of a face, in order",
     ),
     spec(
         Operator::R21,
-        &[Face],
         Output::Many(Edge),
         Some((2, 1)),
         "the edges of a face, in order",
     ),
     spec(
         Operator::R22,
-        &[Face],
         Output::Many(Face),
         Some((2, 2)),
         "the faces across a face's edges",
     ),
     spec(
         Operator::BoundaryVertex,
-        &[Vertex],
         Output::Flag,
         None,
         "is a vertex on the boundary?",
     ),
     spec(
         Operator::BoundaryEdge,
-        &[Edge],
         Output::Flag,
         None,
         "is an edge on the boundary?",
     ),
     spec(
         Operator::BoundaryCurves,
-        &[Mesh],
         Output::Loops,
         None,
         "every boundary curve as a loop of edges",
     ),
     spec(
         Operator::EdgeSuccessor,
-        &[Edge, Face],
         Output::MaybeEdge,
         None,
         "the next edge of a face after an edge",
     ),
     spec(
         Operator::EdgePredecessor,
-        &[Edge, Face],
         Output::MaybeEdge,
         None,
         "the edge of a face before an edge",
@@ -189,8 +161,12 @@ mod tests {
             assert_eq!(spec.op, op);
             if let Some((p, q)) = spec.relation {
                 assert_eq!(spec.name, format!("r{p}{q}"));
+                // Rpq is asked about a p-simplex.
+                assert_eq!(spec.input, &[[Vertex, Edge, Face][p as usize]], "{op:?}");
             }
         }
         assert_eq!(spec_of(Operator::R22).input, &[Face]);
+        assert_eq!(spec_of(Operator::EdgeSuccessor).input, &[Edge, Face]);
+        assert_eq!(spec_of(Operator::BoundaryCurves).input, &[Mesh]);
     }
 }

@@ -58,49 +58,60 @@ pub fn fit_all(
     measurements: &[crate::results::Measurement],
     structures: &[crate::results::StructureInfo],
 ) -> Vec<crate::results::FitRow> {
+    use crate::kernels::Kernel;
+    use crate::results::Subject;
     use std::collections::BTreeMap;
-    // (structure, operator, kernel, family) → (triangles, ns per query) points.
-    type Key<'a> = (&'a str, &'a str, &'a str, &'a str);
-    let mut groups: BTreeMap<Key, Vec<(f64, f64)>> = BTreeMap::new();
+    use topolab_structures::{Cost, Operator};
+    // (structure, operator, kernel, family) → (triangles, ns per query) points, in the order
+    // of their names.
+    type Key<'a> = (&'a str, &'static str, &'static str, &'a str);
+    type Group = (Operator, Kernel, Vec<(f64, f64)>);
+    let mut groups: BTreeMap<Key, Group> = BTreeMap::new();
     for m in measurements {
-        if let (crate::results::Status::Measured, Some(ns)) = (m.status, m.ns_per_item) {
-            // Real meshes differ in shape, not only size; orderings share one size.
-            let sized = m.family != "real" && m.family != "ordering";
-            if sized && (m.kernel == "sweep" || m.kernel == "sampled") {
-                groups
-                    .entry((&m.structure, &m.operator, &m.kernel, &m.family))
-                    .or_default()
-                    .push((m.triangles as f64, ns));
-            }
+        let (crate::results::Status::Measured, Some(ns)) = (m.status, m.ns_per_item) else {
+            continue;
+        };
+        let (Subject::Query(op), kernel @ (Kernel::Sweep | Kernel::Sampled)) =
+            (m.operator, m.kernel)
+        else {
+            continue;
+        };
+        // Real meshes differ in shape, not only size; orderings share one size.
+        if m.family != "real" && m.family != "ordering" {
+            groups
+                .entry((&m.structure, op.name(), kernel.name(), &m.family))
+                .or_insert_with(|| (op, kernel, Vec::new()))
+                .2
+                .push((m.triangles as f64, ns));
         }
     }
     let mut rows = Vec::new();
-    for ((s, op, k, fam), pts) in groups {
+    for ((s, _, _, fam), (op, kernel, pts)) in groups {
         let Some(f) = fit_exponent(&pts) else {
             continue;
         };
         let Some(cost) = structures
             .iter()
             .find(|x| x.name == s)
-            .and_then(|x| x.costs.iter().find(|c| c.operator.name() == op))
+            .and_then(|x| x.costs.iter().find(|c| c.operator == op))
         else {
             continue;
         };
         // O(∂n1) is constant on a closed mesh (no boundary) and grows like √n on a grid.
         let closed = fam == "torus" || fam == "sphere";
-        let expected = if closed && cost.cost == topolab_structures::Cost::Boundary.notation() {
+        let expected = if closed && cost.cost == Cost::Boundary {
             0.0
         } else {
             cost.expected_exponent
         };
         rows.push(crate::results::FitRow {
             structure: s.into(),
-            operator: op.into(),
-            kernel: k.into(),
+            operator: op,
+            kernel,
             family: fam.into(),
             exponent: f.exponent,
             class: classify(f.exponent).into(),
-            theory: cost.cost.clone(),
+            theory: cost.cost,
             expected_exponent: expected,
             agrees: agrees(f.exponent, expected),
             points: f.points,

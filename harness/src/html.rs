@@ -1,9 +1,11 @@
 //! The self-contained HTML report (inline CSS and SVG, no network) drawn from [`Results`].
 
-use crate::results::{Measurement, Results, Status};
+use crate::kernels::Kernel;
+use crate::limit::{Bound, Limit};
+use crate::results::{Measurement, Results, Status, Subject};
 use crate::svg;
 use std::fmt::Write;
-use topolab_structures::Operator;
+use topolab_structures::{Input, Operator, Workload};
 
 fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -85,9 +87,10 @@ fn machine_section(h: &mut String, r: &Results) {
     let p = &r.probe;
     let _ = write!(
         h,
-        "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>timing</th><td class=l>median of repeated runs (at least {} per cell, until {:.2} s); {} sampled queries per kind; single-threaded</td></tr></table>",
+        "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>by working set (probe)</th><td class=l>{}</td></tr><tr><th class=l>timing</th><td class=l>median of repeated runs (at least {} per cell, until {:.2} s); {} sampled queries per kind; single-threaded; construction in the measuring thread's CPU time</td></tr></table>",
         esc(&m.cpu), m.cores, esc(&m.caches), esc(&m.memory), esc(&m.rustc), esc(&m.commit), esc(&m.date),
         p.read_bytes_per_s / 1e9, bytes(p.read_array_bytes as f64), p.chase_ns_per_hop, bytes(p.chase_array_bytes as f64),
+        p.levels.iter().map(|l| format!("{} ({}): {:.1} ns per dependent load, {:.1} GB/s", l.name, bytes(l.bytes as f64), l.load_ns, l.read_bytes_per_s / 1e9)).collect::<Vec<_>>().join("; "),
         3, r.settings.cell_budget_s, r.settings.samples
     );
 }
@@ -96,8 +99,8 @@ fn machine_section(h: &mut String, r: &Results) {
 fn cells<'a>(
     r: &'a Results,
     s: &str,
-    op: &str,
-    kernel: &str,
+    op: Subject,
+    kernel: Kernel,
     family: &str,
 ) -> Vec<&'a Measurement> {
     let mut v: Vec<&Measurement> = r
@@ -114,8 +117,8 @@ fn cells<'a>(
 /// One plot line per structure: its measured ns per item against triangles.
 fn lines(
     r: &Results,
-    op: &str,
-    kernel: &str,
+    op: Subject,
+    kernel: Kernel,
     family: &str,
     ci: &dyn Fn(&str) -> usize,
 ) -> Vec<svg::Series> {
@@ -132,6 +135,16 @@ fn lines(
         .collect()
 }
 
+/// The kernel an operator's row of Table 4.1 and its plot show: the sampled queries, or the
+/// sweep for boundary curves (one query per mesh, nothing to sample).
+fn table_kernel(op: Operator) -> Kernel {
+    if op.input() == Input::Mesh {
+        Kernel::Sweep
+    } else {
+        Kernel::Sampled
+    }
+}
+
 fn family_of(op: Operator) -> &'static str {
     match op {
         Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
@@ -139,12 +152,25 @@ fn family_of(op: Operator) -> &'static str {
     }
 }
 
-/// The project's performance targets, checked on the largest torus of this run.
+/// The structures of the half-edge family whose vertex 1-ring sweep the Targets table holds to
+/// its limit: the two half-edge storages, the CHE levels and OpenMesh.
+const HALF_EDGE_FAMILY: [&str; 7] = [
+    "index-half-edge",
+    "pointer-half-edge",
+    "che-l0",
+    "che-l1",
+    "che-l2",
+    "che-l3",
+    "openmesh",
+];
+
+/// The project's performance targets, checked on the largest torus of this run: ratios of two
+/// structures measured in the same run, and sweeps against their limits.
 fn targets(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let get = |s: &str, op: &str, kernel: &str| {
+    let get = |s: &str, op: Subject, kernel: Kernel| {
         r.measurements.iter().find(|m| {
             m.mesh == mesh
                 && m.structure == s
@@ -153,64 +179,81 @@ fn targets(h: &mut String, r: &Results) {
                 && m.status == Status::Measured
         })
     };
-    let Some(om_build) = get("openmesh", "construction", "construction") else {
-        return;
-    };
-    let om_r00 = get("openmesh", "r00", "sweep");
+    let construction = |s| get(s, Subject::Construction, Kernel::Construction);
+    let r00_sweep = |s| get(s, Subject::Query(Operator::R00), Kernel::Sweep);
+    let smoothing = |s| get(s, Subject::Workload(Workload::Smoothing), Kernel::Workload);
+    let ran = |s: &str| r.structures.iter().any(|x| x.name == s);
     let _ = write!(h, "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><table><tr><th class=l>target</th><th>measured</th><th>goal</th><th>met</th></tr>");
-    let mut row = |what: String, value: Option<f64>, goal: f64, unit: &str| {
+    let mut row = |what: String, value: Option<f64>, goal: f64, why: Option<String>| {
         let (v, met) = match value {
-            Some(v) => (
-                format!("{v:.2}{unit}"),
-                if v <= goal { "yes" } else { "no" },
-            ),
+            Some(v) => (format!("{v:.2}×"), if v <= goal { "yes" } else { "no" }),
             None => ("not measured".into(), "–"),
         };
-        let class = if met == "yes" {
-            "ok"
-        } else if met == "no" {
-            "bad"
-        } else {
-            "skip"
+        let class = match met {
+            "yes" => "ok",
+            "no" => "bad",
+            _ => "skip",
         };
-        let _ = write!(h, "<tr><td class=l>{what}</td><td>{v}</td><td>≤ {goal}{unit}</td><td class={class}>{met}</td></tr>");
+        let why = match why.filter(|_| met == "no") {
+            Some(w) => format!("<br><span class=small>{}</span>", esc(&w)),
+            None => String::new(),
+        };
+        let _ = write!(h, "<tr><td class=l>{what}{why}</td><td>{v}</td><td>≤ {goal}×</td><td class={class}>{met}</td></tr>");
     };
     let ratio =
         |a: Option<&Measurement>, b: Option<&Measurement>| Some(a?.ns_per_item? / b?.ns_per_item?);
-    row(
-        "che-l1 construction / OpenMesh add_face build".into(),
-        ratio(
-            get("che-l1", "construction", "construction"),
-            Some(om_build),
-        ),
-        0.1,
-        "×",
-    );
-    for s in ["che-l2", "index-half-edge"] {
+    let cold_ratio = |a: Option<&Measurement>, b: Option<&Measurement>| {
+        Some(a?.cold_ns_per_item? / b?.cold_ns_per_item?)
+    };
+    if ran("che-l1") && ran("openmesh") {
+        let (che, om) = (construction("che-l1"), construction("openmesh"));
+        let cold = cold_ratio(che, om)
+            .map(|x| format!(" (cold builds: {x:.2}×)"))
+            .unwrap_or_default();
         row(
-            format!("{s} vertex 1-ring sweep (r00) / OpenMesh's"),
-            ratio(get(s, "r00", "sweep"), om_r00),
-            0.6,
-            "×",
+            format!("che-l1 construction / OpenMesh's add_face build, warm builds{cold}"),
+            ratio(che, om),
+            0.1,
+            None,
         );
-        let bound = get(s, "construction", "construction")
-            .and_then(|c| c.declared_bytes)
-            .map(|b| b as f64 / r.probe.read_bytes_per_s * 1e9);
-        let sweep = get(s, "r00", "sweep").and_then(|m| Some(m.ns_per_item? * m.items as f64));
+    }
+    let pairs = [
+        ("che-l2", "index-half-edge", 1.2),
+        ("che-l2", "openmesh", 0.6),
+        ("index-half-edge", "openmesh", 0.5),
+    ];
+    for (s, base, goal) in pairs.into_iter().filter(|p| ran(p.0) && ran(p.1)) {
         row(
-            format!("{s} r00 sweep / time to stream its containers"),
-            sweep.zip(bound).map(|(t, b)| t / b),
+            format!("{s} vertex 1-ring sweep (r00) / {base}'s"),
+            ratio(r00_sweep(s), r00_sweep(base)),
+            goal,
+            None,
+        );
+        if s == "che-l2" {
+            row(
+                format!("{s} smoothing / {base}'s"),
+                ratio(smoothing(s), smoothing(base)),
+                goal,
+                None,
+            );
+        }
+    }
+    for s in HALF_EDGE_FAMILY.into_iter().filter(|s| ran(s)) {
+        let sweep = r00_sweep(s);
+        row(
+            format!("{s} r00 sweep / its limit"),
+            sweep.and_then(times_limit),
             2.0,
-            "×",
+            sweep.and_then(|m| m.limit.as_ref()).map(limit_text),
         );
     }
     h.push_str(
-        "</table><p class=small>Bytes per triangle, measured: see Memory per triangle below.</p>",
+        "</table><p class=small>Construction: warm builds reuse the memory the build before them freed; cold builds fault in fresh pages (see Construction time). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>",
     );
 }
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
-    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the lecture's tables and the CHE chapter's Table 4.1), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate from smaller sizes is shown). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
+    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
     h.push_str("<table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
@@ -221,11 +264,7 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("</tr>");
     for op in Operator::ALL {
         let row_fam = family_of(op);
-        let kernel = if op == Operator::BoundaryCurves {
-            "sweep"
-        } else {
-            "sampled"
-        };
+        let kernel = table_kernel(op);
         let _ = write!(
             h,
             "<tr><th class=l>{} <span class=small>({row_fam})</span></th>",
@@ -233,9 +272,10 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
         );
         for s in names {
             // Grid-only structures cannot store a torus: their row is measured on the grids.
-            let refused_row_family = cells(r, s, "construction", "construction", row_fam)
-                .iter()
-                .all(|m| m.status == Status::Refused);
+            let refused_row_family =
+                cells(r, s, Subject::Construction, Kernel::Construction, row_fam)
+                    .iter()
+                    .all(|m| m.status == Status::Refused);
             let fam = if refused_row_family { "grid" } else { row_fam };
             let on = if fam != row_fam {
                 format!("<br><span class=small>on {fam}s</span>")
@@ -247,15 +287,12 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
                 .iter()
                 .find(|x| x.name == *s)
                 .and_then(|x| x.costs.iter().find(|c| c.operator == op))
-                .map(|c| c.cost.clone())
+                .map(|c| c.cost.notation())
                 .unwrap_or_default();
             let fit = r.fits.iter().find(|f| {
-                f.structure == *s
-                    && f.operator == op.name()
-                    && f.kernel == kernel
-                    && f.family == fam
+                f.structure == *s && f.operator == op && f.kernel == kernel && f.family == fam
             });
-            let cs = cells(r, s, op.name(), kernel, fam);
+            let cs = cells(r, s, Subject::Query(op), kernel, fam);
             let last_measured = cs.iter().rev().find(|m| m.status == Status::Measured);
             let last = cs.last();
             let (class, body) = match (last, fit) {
@@ -302,7 +339,7 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
             let l: Vec<String> = r
                 .libigl
                 .iter()
-                .filter(|l| l.operator == op.name())
+                .filter(|l| l.operator == Subject::Query(op))
                 .map(|l| {
                     format!(
                         "{}: {} per element{}",
@@ -327,12 +364,8 @@ fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("<h2>Time per query against mesh size</h2><div class=read><b>How to read them.</b> Both axes are logarithmic, so a power law is a straight line whose slope is its exponent: a flat line is a constant-time query, a line rising one decade per decade of size is a linear scan. Lines that stop early were skipped at larger sizes (too slow to measure).</div><div class=plots>");
     for op in Operator::ALL {
         let fam = family_of(op);
-        let kernel = if op == Operator::BoundaryCurves {
-            "sweep"
-        } else {
-            "sampled"
-        };
-        let series = lines(r, op.name(), kernel, fam, ci);
+        let kernel = table_kernel(op);
+        let series = lines(r, Subject::Query(op), kernel, fam, ci);
         h.push_str(&svg::loglog(
             &format!("{} ({fam}, {kernel})", op.name()),
             "triangles",
@@ -351,41 +384,66 @@ fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usize)> {
         .map(|m| (m.name.as_str(), m.triangles))
 }
 
+/// A measured cell's time as a multiple of its limit.
+fn times_limit(m: &Measurement) -> Option<f64> {
+    Some(m.ns_per_item? / m.limit.as_ref()?.ns_per_item)
+}
+
+/// How a limit was set, for a cell's tooltip and a target's reason.
+fn limit_text(l: &Limit) -> String {
+    let bound = match l.bound {
+        Bound::Latency => "latency",
+        Bound::Bandwidth => "bandwidth",
+        Bound::Checksum => "checksum",
+    };
+    let mut t = format!(
+        "{bound} bound; latency: {:.1} dependent loads per element at the {} latency ({}); bandwidth: {:.1} bytes per element at the {} bandwidth ({}); checksum arithmetic: {}",
+        l.loads_per_item,
+        l.latency_level,
+        ns(l.latency_ns_per_item),
+        l.bytes_per_item,
+        l.bandwidth_level,
+        ns(l.bandwidth_ns_per_item),
+        ns(l.checksum_ns_per_item)
+    );
+    if let Some(n) = &l.note {
+        let _ = write!(t, "; not in the model: {n}");
+    }
+    t
+}
+
 fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let bw = r.probe.read_bytes_per_s;
-    let _ = write!(h, "<h2>Sweeps and the bandwidth bound ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the bandwidth bound: the time to read the structure's container bytes once at the probe's {:.1} GB/s, and the measured time as a multiple of that streaming time (1× = the sweep runs as fast as memory can deliver all its containers; well above means pointer chasing or computation dominate; below 1× means the operator reads only part of the containers, e.g. a boundary test). On small meshes the containers sit in cache and the bound is loose; it speaks at 1M triangles.</div><table><tr><th class=l>operator</th>", bw / 1e9);
+    let _ = write!(h, "<h2>Sweeps and their limits ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the measured time as a multiple of its <i>limit</i>, the time the structure's declared access model allows on this machine (the probe's bandwidth and load latency by working-set size, under Machine): the largest of the bytes the sweep reads at the bandwidth (each container's cache lines once, as a sweep in storage order reads them; a scan in full for every query), its chain of dependent loads (each step of a fan walk is one) at the latency of one query's working set, and the checksum's arithmetic per answer. The reads of the edge keys the checksum mixes in count too. 1× = as fast as the design allows; well above = work the model leaves out (arithmetic on the chain, branches, bookkeeping) or a layout poorer than declared; below 1× = consecutive queries overlapped their short chains, which the model counts one after the other; – = no model declared. Hover a cell for its bounds. The last row is each structure's worst cell.</div><table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
     h.push_str("</tr>");
+    let sweep = |s: &str, op: Operator| {
+        r.measurements.iter().find(|m| {
+            m.structure == s
+                && m.mesh == mesh
+                && m.operator == Subject::Query(op)
+                && m.kernel == Kernel::Sweep
+        })
+    };
     for op in Operator::ALL {
         let _ = write!(h, "<tr><th class=l>{}</th>", op.name());
         for s in names {
-            let cons = r
-                .measurements
-                .iter()
-                .find(|m| m.structure == *s && m.mesh == mesh && m.kernel == "construction");
-            let m = r.measurements.iter().find(|m| {
-                m.structure == *s
-                    && m.mesh == mesh
-                    && m.operator == op.name()
-                    && m.kernel == "sweep"
-            });
-            let cell = match m {
+            let cell = match sweep(s, op) {
                 Some(m) if m.status == Status::Measured => {
                     let t = m.ns_per_item.unwrap_or(f64::NAN);
-                    let frac = cons
-                        .and_then(|c| c.declared_bytes)
-                        .map(|b| (t * m.items as f64) / (b as f64 / bw * 1e9))
-                        .map(|x| {
-                            let native = if m.native { ", native" } else { "" };
-                            format!("<br><span class=small>{x:.1}× stream{native}</span>")
-                        })
-                        .unwrap_or_default();
-                    format!("<td>{}{frac}</td>", ns(t))
+                    let native = if m.native { ", native" } else { "" };
+                    match (times_limit(m), &m.limit) {
+                        (Some(x), Some(l)) => format!(
+                            "<td title=\"{}\">{}<br><span class=small>{x:.1}× limit{native}</span></td>",
+                            esc(&limit_text(l)),
+                            ns(t)
+                        ),
+                        _ => format!("<td>{}<br><span class=small>–{native}</span></td>", ns(t)),
+                    }
                 }
                 Some(m) if m.status == Status::Skipped => format!(
                     "<td class=skip>skipped (est. {})</td>",
@@ -397,13 +455,26 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
         }
         h.push_str("</tr>");
     }
-    h.push_str("</table>");
+    h.push_str("<tr><th class=l>worst × limit</th>");
+    for s in names {
+        let worst = Operator::ALL
+            .into_iter()
+            .filter_map(|op| Some((times_limit(sweep(s, op)?)?, op)))
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        match worst {
+            Some((x, op)) => {
+                let _ = write!(h, "<td><b>{x:.1}×</b> ({})</td>", op.name());
+            }
+            None => h.push_str("<td class=skip>–</td>"),
+        }
+    }
+    h.push_str("</tr></table>");
 }
 
 fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("<h2>Application workloads (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The workloads of the published Surface_mesh benchmark, which OpenMesh and pmp-library users compare on: <i>circulators</i> (for each vertex count its faces, for each face subtract its vertices; the total must be 0), <i>barycenter</i> (mean of all positions), <i>normals</i> (face normals, then vertex normals), <i>smoothing</i> (one step of uniform 1-ring averaging of interior vertices). Time per element on closed tori of growing size; every structure's result is cross-checked.</div><div class=plots>");
-    for w in crate::kernels::Workload::ALL {
-        let series = lines(r, w.name(), "workload", "torus", ci);
+    for w in Workload::ALL {
+        let series = lines(r, Subject::Workload(w), Kernel::Workload, "torus", ci);
         h.push_str(&svg::loglog(
             w.name(),
             "triangles",
@@ -418,33 +489,36 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let rows: Vec<(String, usize, f64, Option<f64>)> = r
-        .measurements
-        .iter()
-        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
-        .filter_map(|m| {
-            let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
-            match m.bytes {
-                // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
-                // own allocator measurement (mallinfo2), drawn without a tick.
-                Some(0) => {
-                    declared.map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None))
+    let rows: Vec<(String, usize, f64, Option<f64>)> =
+        r.measurements
+            .iter()
+            .filter(|m| {
+                m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+            })
+            .filter_map(|m| {
+                let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
+                match m.bytes {
+                    // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
+                    // own allocator measurement (mallinfo2), drawn without a tick.
+                    Some(0) => declared
+                        .map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None)),
+                    Some(b) => Some((
+                        m.structure.clone(),
+                        ci(&m.structure),
+                        b as f64 / tri as f64,
+                        declared,
+                    )),
+                    None => None,
                 }
-                Some(b) => Some((
-                    m.structure.clone(),
-                    ci(&m.structure),
-                    b as f64 / tri as f64,
-                    declared,
-                )),
-                None => None,
-            }
-        })
-        .collect();
+            })
+            .collect();
     let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
     let peak: Vec<(String, usize, f64, Option<f64>)> = r
         .measurements
         .iter()
-        .filter(|m| m.mesh == mesh && m.kernel == "construction" && m.status == Status::Measured)
+        .filter(|m| {
+            m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+        })
         .filter_map(|m| {
             m.peak_bytes.map(|b| {
                 (
@@ -464,9 +538,9 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
 }
 
 fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
-    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction.</div><div class=plots>");
+    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and OpenMesh share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
     for fam in ["torus", "grid"] {
-        let series = lines(r, "construction", "construction", fam, ci);
+        let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
         h.push_str(&svg::loglog(
             &format!("construction ({fam})"),
             "faces",
@@ -475,6 +549,40 @@ fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
         ));
     }
     h.push_str("</div>");
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let builds: Vec<&Measurement> = r
+        .measurements
+        .iter()
+        .filter(|m| {
+            m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
+        })
+        .collect();
+    let om = builds.iter().copied().find(|m| m.structure == "openmesh");
+    let _ = write!(h, "<table><tr><th class=l>{mesh} ({tri} faces)</th><th>warm, ns/face</th><th>cold, ns/face</th><th>cold − warm (page faults), ns/face</th><th>page faults per build, warm / cold</th><th>warm / OpenMesh</th><th>cold / OpenMesh</th></tr>");
+    for m in &builds {
+        let opt = |x: Option<f64>| x.map(ns).unwrap_or_else(|| "–".into());
+        let faults = |x: Option<u64>| x.map(|f| f.to_string()).unwrap_or_else(|| "–".into());
+        let vs = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => format!("{:.2}×", a / b),
+            _ => "–".into(),
+        };
+        let (warm, cold) = (m.ns_per_item, m.cold_ns_per_item);
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{} / {}</td><td>{}</td><td>{}</td></tr>",
+            m.structure,
+            opt(warm),
+            opt(cold),
+            opt(warm.zip(cold).map(|(w, c)| c - w)),
+            faults(m.page_faults),
+            faults(m.cold_page_faults),
+            vs(warm, om.and_then(|o| o.ns_per_item)),
+            vs(cold, om.and_then(|o| o.cold_ns_per_item)),
+        );
+    }
+    h.push_str("</table>");
 }
 
 fn orderings(h: &mut String, r: &Results, names: &[&str]) {
@@ -535,7 +643,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
             mesh.faces
         );
         for n in names {
-            let find = |op: &str, kernel: &str| {
+            let find = |op: Subject, kernel: Kernel| {
                 r.measurements.iter().find(|m| {
                     m.mesh == mesh.name
                         && m.structure == *n
@@ -543,7 +651,10 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
                         && m.kernel == kernel
                 })
             };
-            let cell = match (find("construction", "construction"), find("r00", "sweep")) {
+            let cell = match (
+                find(Subject::Construction, Kernel::Construction),
+                find(Subject::Query(Operator::R00), Kernel::Sweep),
+            ) {
                 (Some(c), _) if c.status == Status::Refused => format!(
                     "<td class=skip title=\"{}\">refused ({})</td>",
                     esc(c.note.as_deref().unwrap_or_default()),
@@ -584,7 +695,7 @@ fn hull(h: &mut String, r: &Results) {
     if r.hull.is_empty() {
         return;
     }
-    h.push_str("<h2>3D convex hull on the winged-edge (seed 004)</h2><div class=read><b>How to read it.</b> The seed's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the seed's expected bound 6n − 20.</div><div class=plots>");
+    h.push_str("<h2>3D convex hull on the winged-edge (the lecture on 3D convex hulls)</h2><div class=read><b>How to read it.</b> The lecture's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the lecture's expected bound 6n − 20.</div><div class=plots>");
     let algos = ["gift", "incremental", "randomized", "qhull"];
     let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
     shapes.dedup();
@@ -694,7 +805,7 @@ fn hull_analysis(h: &mut String, r: &Results) {
 }
 
 fn teaching(h: &mut String, r: &Results) {
-    let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
+    let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE thesis chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
     for t in &r.teaching {
         let _ = write!(
             h,

@@ -14,27 +14,55 @@ use rand::seq::index::sample;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::collections::HashMap;
+pub use topolab_structures::Workload;
 use topolab_structures::{
-    BoundaryCurves, EdgeId, FaceId, MeshAttributes, MeshTopology, Operator, PolygonSoup, VertexId,
+    BoundaryCurves, EdgeId, FaceId, Input, MeshAttributes, MeshTopology, Operator, PolygonSoup,
+    VertexId,
 };
 
-/// How an operator is exercised.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+/// How a measurement exercises its subject: an operator by one of the two query kernels, a
+/// workload, or a construction.
+#[derive(
+    Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
+)]
 #[serde(rename_all = "kebab-case")]
 pub enum Kernel {
     /// Every element once (throughput).
     Sweep,
     /// A fixed, seeded random sample of query elements (latency per query).
     Sampled,
+    /// An application workload, run once over the mesh.
+    Workload,
+    /// Building the structure from the face list.
+    Construction,
 }
 
 impl Kernel {
+    /// Every kernel.
+    pub const ALL: [Kernel; 4] = [
+        Kernel::Sweep,
+        Kernel::Sampled,
+        Kernel::Workload,
+        Kernel::Construction,
+    ];
+
+    /// The two kernels an operator is timed with.
+    pub const QUERIES: [Kernel; 2] = [Kernel::Sweep, Kernel::Sampled];
+
     /// The name used in results.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             Kernel::Sweep => "sweep",
             Kernel::Sampled => "sampled",
+            Kernel::Workload => "workload",
+            Kernel::Construction => "construction",
         }
+    }
+}
+
+impl std::fmt::Display for Kernel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -138,18 +166,30 @@ impl Queries {
         }
     }
 
+    /// At most `n` queries of each kind, evenly spread over this set: a probe, cheap enough to
+    /// time on any mesh. Spread, not the first ones: a sample is sorted by id, and a scan for
+    /// a low id can stop early, so the first queries would be the cheapest.
+    pub fn spread(&self, n: usize) -> Self {
+        fn pick<T: Copy>(all: &[T], n: usize) -> Vec<T> {
+            let k = n.min(all.len());
+            (0..k).map(|i| all[i * all.len() / k]).collect()
+        }
+        Self {
+            vertices: pick(&self.vertices, n),
+            edges: pick(&self.edges, n),
+            faces: pick(&self.faces, n),
+            edge_faces: pick(&self.edge_faces, n),
+        }
+    }
+
     /// How many queries `op` makes over this set.
     pub fn count(&self, op: Operator) -> usize {
-        match op {
-            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-                self.vertices.len()
-            }
-            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
-                self.edges.len()
-            }
-            Operator::R20 | Operator::R21 | Operator::R22 => self.faces.len(),
-            Operator::EdgeSuccessor | Operator::EdgePredecessor => self.edge_faces.len(),
-            Operator::BoundaryCurves => 1,
+        match op.input() {
+            Input::Vertex => self.vertices.len(),
+            Input::Edge => self.edges.len(),
+            Input::Face => self.faces.len(),
+            Input::EdgeOfFace => self.edge_faces.len(),
+            Input::Mesh => 1,
         }
     }
 }
@@ -242,59 +282,6 @@ pub fn run<M: MeshTopology>(m: &M, op: Operator, q: &Queries, curves: &mut Bound
         }),
     }
     sum
-}
-
-/// The application workloads of the Surface_mesh benchmark (Sieger & Botsch, IMR 2011).
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Workload {
-    /// For each vertex count its faces, for each face subtract its vertices: the total is 0.
-    Circulators,
-    /// The mean of all positions.
-    Barycenter,
-    /// Face normals, then vertex normals as the normalised sum of unit face normals.
-    Normals,
-    /// One step of uniform 1-ring averaging of interior vertices.
-    Smoothing,
-}
-
-impl Workload {
-    /// Every workload.
-    pub const ALL: [Workload; 4] = [
-        Workload::Circulators,
-        Workload::Barycenter,
-        Workload::Normals,
-        Workload::Smoothing,
-    ];
-
-    /// The kebab-case name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Workload::Circulators => "circulators",
-            Workload::Barycenter => "barycenter",
-            Workload::Normals => "normals",
-            Workload::Smoothing => "smoothing",
-        }
-    }
-
-    /// The relations it asks once per element (for estimating its cost).
-    pub fn relations(self) -> &'static [Operator] {
-        match self {
-            Workload::Circulators => &[Operator::R02, Operator::R20],
-            Workload::Barycenter => &[],
-            Workload::Normals => &[Operator::R20, Operator::R02],
-            Workload::Smoothing => &[Operator::R00, Operator::BoundaryVertex],
-        }
-    }
-
-    /// What one item is (for ns per item).
-    pub fn items<M: MeshTopology>(self, m: &M) -> usize {
-        match self {
-            Workload::Circulators => m.num_vertices() + m.num_faces(),
-            Workload::Barycenter | Workload::Smoothing => m.num_vertices(),
-            Workload::Normals => m.num_vertices() + m.num_faces(),
-        }
-    }
 }
 
 /// Caller-owned buffers of the workloads (allocated once, outside the timed region).
@@ -414,6 +401,23 @@ mod tests {
         }
         // 14 triangles, 3 corners each.
         assert_eq!(run_workload(&a, Workload::Circulators, &mut buf), 42.0);
+    }
+
+    #[test]
+    fn a_probe_spreads_over_the_sample_instead_of_taking_its_cheap_start() {
+        let q = Queries {
+            vertices: (0..100).map(VertexId).collect(),
+            faces: (0..3).map(FaceId).collect(),
+            ..Default::default()
+        };
+        let probe = q.spread(4);
+        assert_eq!(
+            probe.vertices,
+            [0, 25, 50, 75].map(VertexId),
+            "evenly spread, not the first four"
+        );
+        assert_eq!(probe.faces, q.faces, "all of a short list");
+        assert!(probe.edges.is_empty());
     }
 
     #[test]

@@ -1,17 +1,19 @@
 //! # topolab-harness
 //!
 //! The operator catalogue (what each operator takes and answers), the kernels that time it on
-//! any structure, timing with medians, complexity fits, the machine probe, and the results
-//! model and HTML report.
+//! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)), timing with
+//! medians, complexity fits, the machine probe, and the results model and HTML report.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod bench;
 pub mod catalogue;
 pub mod checksum;
 pub mod fit;
 pub mod html;
 pub mod hull;
 pub mod kernels;
+pub mod limit;
 pub mod machine;
 pub mod measure;
 pub mod probe;

@@ -31,6 +31,51 @@ fn run(cmd: &str, args: &[&str]) -> Option<String> {
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
+/// The caches of CPU 0 as Linux sysfs describes them: (level, type, size), e.g.
+/// `("1", "Data", "32K")`; empty where unreadable.
+fn sysfs_caches() -> Vec<(String, String, String)> {
+    (0..8)
+        .filter_map(|i| {
+            let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
+            let read = |f: &str| {
+                std::fs::read_to_string(format!("{base}/{f}"))
+                    .ok()
+                    .map(|s| s.trim().to_string())
+            };
+            Some((read("level")?, read("type")?, read("size")?))
+        })
+        .collect()
+}
+
+/// The data (or unified) caches of CPU 0 by level, with their sizes in bytes, smallest level
+/// first (empty where unreadable).
+pub fn data_caches() -> Vec<(u8, usize)> {
+    let mut out: Vec<(u8, usize)> = sysfs_caches()
+        .into_iter()
+        .filter(|(_, kind, _)| kind != "Instruction")
+        .filter_map(|(level, _, size)| Some((level.parse().ok()?, cache_bytes(&size)?)))
+        .collect();
+    out.sort_unstable();
+    out.dedup_by_key(|c| c.0);
+    out
+}
+
+/// Bytes of a sysfs cache size such as `32K` or `1M`.
+fn cache_bytes(size: &str) -> Option<usize> {
+    let (digits, unit) = size.split_at(
+        size.find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(size.len()),
+    );
+    let n: usize = digits.parse().ok()?;
+    Some(match unit {
+        "" => n,
+        "K" => n << 10,
+        "M" => n << 20,
+        "G" => n << 30,
+        _ => return None,
+    })
+}
+
 /// Reads the facts (anything unreadable is "unknown").
 pub fn facts() -> Machine {
     let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
@@ -40,23 +85,17 @@ pub fn facts() -> Machine {
         .and_then(|l| l.split(':').nth(1))
         .map(|s| s.trim().to_string())
         .unwrap_or_else(|| "unknown".into());
-    let mut caches = Vec::new();
-    for i in 0..8 {
-        let base = format!("/sys/devices/system/cpu/cpu0/cache/index{i}");
-        let read = |f: &str| {
-            std::fs::read_to_string(format!("{base}/{f}"))
-                .ok()
-                .map(|s| s.trim().to_string())
-        };
-        if let (Some(level), Some(kind), Some(size)) = (read("level"), read("type"), read("size")) {
+    let caches: Vec<String> = sysfs_caches()
+        .into_iter()
+        .map(|(level, kind, size)| {
             let k = match kind.as_str() {
                 "Data" => "d",
                 "Instruction" => "i",
                 _ => "",
             };
-            caches.push(format!("L{level}{k} {size}"));
-        }
-    }
+            format!("L{level}{k} {size}")
+        })
+        .collect();
     let memory = std::fs::read_to_string("/proc/meminfo")
         .ok()
         .and_then(|m| {
@@ -87,5 +126,18 @@ pub fn facts() -> Machine {
         commit,
         date: run("date", &["-u", "+%Y-%m-%d %H:%M UTC"]).unwrap_or_else(|| "unknown".into()),
         os: run("uname", &["-sr"]).unwrap_or_else(|| "unknown".into()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn cache_sizes_read_as_sysfs_writes_them() {
+        assert_eq!(super::cache_bytes("32K"), Some(32 << 10));
+        assert_eq!(super::cache_bytes("1024K"), Some(1 << 20));
+        assert_eq!(super::cache_bytes("2M"), Some(2 << 20));
+        assert_eq!(super::cache_bytes("512"), Some(512));
+        assert_eq!(super::cache_bytes("K"), None);
+        assert_eq!(super::cache_bytes("3X"), None);
     }
 }

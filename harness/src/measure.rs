@@ -1,15 +1,23 @@
 //! Measuring one structure on one mesh: construction (time and memory), every operator's sweep
 //! and sampled kernels, the workloads. Cells whose estimated time exceeds the budget are
 //! skipped with the estimate; checksums are compared across structures by [`cross_check`].
+//!
+//! The estimate of a cell extrapolates its run at the last smaller size of the mesh's family
+//! by the declared cost ([`Estimator`]). The first size of a family has nothing to
+//! extrapolate from, so there the estimate is the structure's time per query on this mesh
+//! times the cell's number of queries: the time per query of the operator's sampled cell
+//! (measured before its sweep for that reason), or of a probe of [`PROBE_QUERIES`] of its
+//! sampled queries when the sampled cell has not run. Without it, a single
+//! `--sizes 1000000` ran the scanning structures' quadratic sweeps in full (hours).
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
-use crate::results::{Measurement, Status};
-use crate::timing::{time, Budget};
+use crate::results::{Measurement, Status, Subject};
+use crate::timing::{median, time, Budget, Timing};
 use std::collections::HashMap;
-use std::time::Duration;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
+use std::time::{Duration, Instant};
+use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
 
-/// Reads the process's heap use (the report binary's counting allocator).
+/// Reads the process's heap use (the report binary's counting allocator) and page faults.
 pub trait MemoryMeter {
     /// Bytes allocated now.
     fn current(&self) -> usize;
@@ -17,18 +25,24 @@ pub trait MemoryMeter {
     fn peak(&self) -> usize;
     /// Starts a new peak at `current()`.
     fn reset_peak(&self);
-}
-
-/// The counting allocator the report binary (and the hull benchmark example) installs.
-impl MemoryMeter for peak_alloc::PeakAlloc {
-    fn current(&self) -> usize {
-        self.current_usage()
+    /// Starts (`true`) or stops counting allocations. The report's allocator counts only while
+    /// asked, so the timed builds pay nothing for the memory measurement. The default does
+    /// nothing (a meter that always counts).
+    fn counting(&self, on: bool) {
+        let _ = on;
     }
-    fn peak(&self) -> usize {
-        self.peak_usage()
+    /// Minor page faults of the measuring thread so far; `None` (the default) when unknown.
+    fn minor_faults(&self) -> Option<u64> {
+        None
     }
-    fn reset_peak(&self) {
-        self.reset_peak_usage()
+    /// Returns the memory the allocator holds free to the kernel, so that the next build
+    /// touches fresh pages (a cold build). The default does nothing.
+    fn release_free_memory(&self) {}
+    /// The measuring thread's CPU time so far, user and system, ns: when known, builds are
+    /// timed by it, so that the other processes of a shared machine do not count. `None` (the
+    /// default): builds are timed by the wall clock.
+    fn thread_cpu_ns(&self) -> Option<u64> {
+        None
     }
 }
 
@@ -60,6 +74,18 @@ pub struct Plan {
     pub light: bool,
 }
 
+/// Sampled queries timed to estimate a cell with no smaller size before it: few enough that
+/// even a query that scans the mesh keeps the probe short on the largest meshes.
+pub const PROBE_QUERIES: usize = 8;
+
+/// How a probe is timed: one warm-up, then as many runs as fit in a millisecond (at least one),
+/// so that a probe of constant-time queries is not just the clock's resolution.
+const PROBE_BUDGET: Budget = Budget {
+    time: Duration::from_millis(1),
+    min_reps: 1,
+    max_reps: 9,
+};
+
 /// The last measured run time of every (structure, family, operator, kernel), to estimate the
 /// next size's before running it.
 #[derive(Clone, Debug, Default)]
@@ -68,31 +94,11 @@ pub struct Estimator {
 }
 
 /// (structure, family, operator, kernel).
-type EstimatorKey = (String, String, String, String);
+type EstimatorKey = (&'static str, String, Subject, Kernel);
 
 impl Estimator {
-    fn key(s: &str, fam: &str, op: &str, k: &str) -> EstimatorKey {
-        (s.into(), fam.into(), op.into(), k.into())
-    }
-
-    /// Marks `cell` skipped, with its estimated ns per item, when one run at `triangles` is
-    /// estimated above the plan's `cell_max`; returns whether it did.
-    fn skips(
-        &self,
-        key: &EstimatorKey,
-        triangles: usize,
-        exponent: f64,
-        plan: &Plan,
-        cell: &mut Measurement,
-    ) -> bool {
-        match self.estimate(key, triangles, exponent) {
-            Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
-                cell.status = Status::Skipped;
-                cell.estimate_ns_per_item = Some(ns / cell.items.max(1) as f64);
-                true
-            }
-            _ => false,
-        }
+    fn key(s: &'static str, fam: &str, subject: Subject, kernel: Kernel) -> EstimatorKey {
+        (s, fam.into(), subject, kernel)
     }
 
     /// Estimated ns of one run at `triangles`, scaling the last run by `exponent`.
@@ -103,11 +109,47 @@ impl Estimator {
     }
 }
 
-fn measurement(structure: &str, op: &str, kernel: &str, case: &MeshCase) -> Measurement {
+/// Marks `cell` skipped, with its estimated ns per item, when one run is estimated (`ns`)
+/// above the plan's `cell_max`; returns whether it did.
+fn skips(cell: &mut Measurement, ns: Option<f64>, plan: &Plan) -> bool {
+    match ns {
+        Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
+            cell.status = Status::Skipped;
+            cell.estimate_ns_per_item = Some(ns / cell.items.max(1) as f64);
+            true
+        }
+        _ => false,
+    }
+}
+
+/// Time per query of `op` on `m`, in ns: from `known` (the operator's sampled cell, or an
+/// earlier probe), else timed on the `probe` queries and remembered. `None` when the probe
+/// has no query of that kind (a mesh without edges).
+fn per_query_ns<M: MeshTopology>(
+    m: &M,
+    op: Operator,
+    probe: &Queries,
+    known: &mut HashMap<Operator, f64>,
+    curves: &mut BoundaryCurves,
+) -> Result<Option<f64>, String> {
+    if let Some(&ns) = known.get(&op) {
+        return Ok(Some(ns));
+    }
+    let count = probe.count(op);
+    if count == 0 {
+        return Ok(None);
+    }
+    let (t, _, _) = time_kernel(m, op, Kernel::Sampled, probe, curves, PROBE_BUDGET)?;
+    let ns = t.median_ns / count as f64;
+    known.insert(op, ns);
+    Ok(Some(ns))
+}
+
+fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
     Measurement {
         structure: structure.into(),
-        operator: op.into(),
-        kernel: kernel.into(),
+        operator: subject,
+        kernel,
         mesh: case.name.into(),
         family: case.family.into(),
         triangles: case.soup.num_faces(),
@@ -124,11 +166,15 @@ fn measurement(structure: &str, op: &str, kernel: &str, case: &MeshCase) -> Meas
         estimate_ns_per_item: None,
         native: false,
         note: None,
+        cold_ns_per_item: None,
+        page_faults: None,
+        cold_page_faults: None,
+        limit: None,
     }
 }
 
-/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails only when a
-/// kernel is not deterministic.
+/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel
+/// is not deterministic or a baseline's native kernel fails.
 pub fn measure_structure<M: MeshTopology>(
     case: &MeshCase,
     plan: &Plan,
@@ -142,12 +188,16 @@ pub fn measure_structure<M: MeshTopology>(
         max_reps: plan.max_reps,
     };
     let n = case.soup.num_faces();
-    // Construction: memory first (one build, measured by the allocator), then the timing.
-    let mut cons = measurement(M::NAME, "construction", "construction", case);
+    // Construction: memory first (one build, counted by the allocator and kept for the
+    // queries), then the timed builds with nothing counted.
+    let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
+    meter.counting(true);
     meter.reset_peak();
     let before = meter.current();
     let built = M::from_soup(case.soup);
     let peak = meter.peak().saturating_sub(before);
+    let held = meter.current().saturating_sub(before);
+    meter.counting(false);
     let mut m = match built {
         Ok(m) => m,
         Err(e) => {
@@ -157,37 +207,39 @@ pub fn measure_structure<M: MeshTopology>(
             return Ok(());
         }
     };
-    let held = meter.current().saturating_sub(before);
     cons.bytes = Some(held as u64);
     cons.peak_bytes = Some(peak as u64);
     cons.declared_bytes = Some(m.heap_bytes() as u64);
     // Construction is timed with at least three runs and a second's budget whatever the cell
     // budget: one build of a 1M-triangle mesh is a single noisy sample otherwise.
-    let (t, _) = time(
-        Budget {
-            time: budget.time.max(Duration::from_secs(1)),
-            min_reps: 3,
-            max_reps: plan.max_reps.min(7),
-        },
-        || {
-            M::native_construction(case.soup)
-                .unwrap_or_else(|| M::from_soup(case.soup))
-                .map(|m| m.num_faces())
-                .unwrap_or(0)
-        },
-    )?;
-    cons.native = M::native_construction(case.soup).is_some();
-    fill(&mut cons, t, n.max(1), None);
+    let construction_budget = Budget {
+        time: budget.time.max(Duration::from_secs(1)),
+        min_reps: 3,
+        max_reps: plan.max_reps.min(7),
+    };
+    let builds = time_construction::<M>(case.soup, construction_budget, meter)
+        .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?;
+    let faces = n.max(1);
+    cons.native = builds.native;
+    fill(&mut cons, builds.warm, faces, None);
+    cons.page_faults = builds.warm_faults;
+    cons.cold_ns_per_item = Some(builds.cold.median_ns / faces as f64);
+    cons.cold_page_faults = builds.cold_faults;
     out.push(cons);
 
     let all = Queries::all(&m, case.soup);
     let sampled = Queries::sampled(&m, case.queries);
+    let probe = sampled.spread(PROBE_QUERIES);
+    // Time per query of each operator on this mesh, for cells with no smaller size before.
+    let mut per_query: HashMap<Operator, f64> = HashMap::new();
     let mut curves = BoundaryCurves::default();
     for op in Operator::ALL {
-        let kernels: &[Kernel] = if op == Operator::BoundaryCurves {
+        // Boundary curves are one question about the whole mesh: nothing to sample. Sampled
+        // first otherwise: its time per query is the estimate of the sweep after it.
+        let kernels: &[Kernel] = if op.input() == Input::Mesh {
             &[Kernel::Sweep]
         } else {
-            &[Kernel::Sweep, Kernel::Sampled]
+            &[Kernel::Sampled, Kernel::Sweep]
         };
         for &kernel in kernels {
             if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
@@ -199,35 +251,48 @@ pub fn measure_structure<M: MeshTopology>(
                 &sampled
             };
             let items = q.count(op);
-            let mut cell = measurement(M::NAME, op.name(), kernel.name(), case);
+            let mut cell = measurement(M::NAME, Subject::Query(op), kernel, case);
             cell.items = items;
             // A sweep's run grows with n^(1+e), a sampled run (fixed count) with n^e.
             let e =
                 M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
-            let key = Estimator::key(M::NAME, case.family, op.name(), kernel.name());
-            if est.skips(&key, n, e, plan, &mut cell) {
+            let key = Estimator::key(M::NAME, case.family, Subject::Query(op), kernel);
+            let context =
+                |e: String| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name);
+            let estimate = match est.estimate(&key, n, e) {
+                Some(ns) => Some(ns),
+                // Boundary curves have no sampled kernel. Finding them decides for every edge
+                // whether it is on the boundary, so their estimate is a boundary-edge sweep's
+                // (the scanning structures' O(n) test per edge is their O(n²)).
+                None if op.input() == Input::Mesh => {
+                    let edge = Operator::BoundaryEdge;
+                    per_query_ns(&m, edge, &probe, &mut per_query, &mut curves)
+                        .map_err(context)?
+                        .map(|ns| ns * all.count(edge) as f64)
+                }
+                None => per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
+                    .map_err(context)?
+                    .map(|ns| ns * items as f64),
+            };
+            if skips(&mut cell, estimate, plan) {
                 out.push(cell);
                 continue;
             }
             let (t, sum, native) =
-                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(|e| {
-                    format!(
-                        "{} {} {} on {}: {e}",
-                        M::NAME,
-                        op.name(),
-                        kernel.name(),
-                        case.name
-                    )
-                })?;
+                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(context)?;
+            if kernel == Kernel::Sampled && items > 0 {
+                per_query.insert(op, t.median_ns / items as f64);
+            }
             cell.native = native;
             fill(&mut cell, t, items.max(1), Some(sum.to_string()));
             est.last.insert(key, (n, t.median_ns));
             out.push(cell);
         }
     }
+    let native = M::native();
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
-        let mut cell = measurement(M::NAME, w.name(), "workload", case);
+        let mut cell = measurement(M::NAME, Subject::Workload(w), Kernel::Workload, case);
         let items = w.items(&m);
         cell.items = items;
         // A workload asks its relations once per element: its run grows like n^(1+e) for the
@@ -237,21 +302,34 @@ pub fn measure_structure<M: MeshTopology>(
                 .iter()
                 .map(|&op| M::cost(op).expected_exponent())
                 .fold(0.0, f64::max);
-        let key = Estimator::key(M::NAME, case.family, w.name(), "workload");
-        if est.skips(&key, n, e, plan, &mut cell) {
+        let key = Estimator::key(M::NAME, case.family, Subject::Workload(w), Kernel::Workload);
+        let estimate = match est.estimate(&key, n, e) {
+            Some(ns) => Some(ns),
+            // With no smaller size: the relations it asks, once per element, at this mesh's
+            // time per query (the sampled cells measured above).
+            None => {
+                let mut ns = 0.0;
+                for &op in w.relations() {
+                    let per = per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
+                        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
+                    ns += per.unwrap_or(0.0) * all.count(op) as f64;
+                }
+                Some(ns)
+            }
+        };
+        if skips(&mut cell, estimate, plan) {
             out.push(cell);
             continue;
         }
-        let native = m.native_workload(w.name()).is_some();
-        let (t, r) = if native {
-            time(budget, || {
-                m.native_workload(w.name()).unwrap_or_default().to_bits()
+        let native_run = native.and_then(|k| {
+            time_native(budget, || {
+                k.workload(&mut m, w).map(|r| r.map(f64::to_bits))
             })
-        } else {
-            time(budget, || run_workload(&m, w, &mut buf).to_bits())
-        }
-        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
-        cell.native = native;
+        });
+        cell.native = native_run.is_some();
+        let (t, r) = native_run
+            .unwrap_or_else(|| time(budget, || run_workload(&m, w, &mut buf).to_bits()))
+            .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
         fill(
             &mut cell,
             t,
@@ -264,9 +342,102 @@ pub fn measure_structure<M: MeshTopology>(
     Ok(())
 }
 
+/// Construction timed two ways. *Warm*: after one build to warm up, the median of builds that
+/// reuse the memory the build before them freed (with glibc told to keep freed memory, as the
+/// report does, they take no page fault whatever ran before). *Cold*: each build right after
+/// the allocator returned its free memory to the kernel, so it faults in every page it
+/// touches. The page faults of each are counted around the builds, and each build is timed in
+/// the thread's CPU time when the meter knows it ([`MemoryMeter::thread_cpu_ns`]; page faults
+/// are system time, so they count).
+struct Builds {
+    /// The warm builds.
+    warm: Timing,
+    /// Median minor page faults of a warm build.
+    warm_faults: Option<u64>,
+    /// The cold builds.
+    cold: Timing,
+    /// Median minor page faults of a cold build.
+    cold_faults: Option<u64>,
+    /// Whether the baseline's own construction ran ([`topolab_structures::NativeKernels`]).
+    native: bool,
+}
+
+/// At most this many cold builds: each one faults in the whole structure, and their spread is
+/// the kernel's, not the structure's.
+const COLD_BUILDS: usize = 3;
+
+/// Times the construction of `M` from `soup` (see [`Builds`]): the baseline's own
+/// construction when it has one, [`MeshTopology::from_soup`] otherwise. Fails when a build
+/// fails or builds a different number of faces than the first.
+fn time_construction<M: MeshTopology>(
+    soup: &PolygonSoup,
+    budget: Budget,
+    meter: &dyn MemoryMeter,
+) -> Result<Builds, String> {
+    let native = M::native();
+    let build = || -> Result<(usize, bool), String> {
+        if let Some(built) = native.and_then(|k| k.construction(soup)) {
+            return built
+                .map(|m| (m.num_faces(), true))
+                .map_err(|e| format!("native kernel failed: {e}"));
+        }
+        M::from_soup(soup)
+            .map(|m| (m.num_faces(), false))
+            .map_err(|e| format!("a later build failed: {e}"))
+    };
+    let warm_up = Instant::now();
+    let first = build()?;
+    // A build longer than the budget is timed once (its work dominates its noise).
+    let min_reps = if warm_up.elapsed() > budget.time {
+        1
+    } else {
+        budget.min_reps
+    };
+    let runs = |cold: bool, max_reps: usize| -> Result<(Timing, Option<u64>), String> {
+        let (mut ns, mut faults) = (Vec::new(), Vec::new());
+        let start = Instant::now();
+        while ns.len() < min_reps.min(max_reps)
+            || (ns.len() < max_reps && start.elapsed() < budget.time)
+        {
+            if cold {
+                meter.release_free_memory();
+            }
+            let before = meter.minor_faults();
+            let (cpu, t) = (meter.thread_cpu_ns(), Instant::now());
+            let built = std::hint::black_box(build()?);
+            let wall = t.elapsed().as_nanos() as u64;
+            ns.push(match (cpu, meter.thread_cpu_ns()) {
+                (Some(a), Some(b)) => b.saturating_sub(a),
+                _ => wall,
+            } as f64);
+            if let (Some(a), Some(b)) = (before, meter.minor_faults()) {
+                faults.push(b.saturating_sub(a) as f64);
+            }
+            if built != first {
+                return Err(format!(
+                    "build {} gave {built:?}, the first gave {first:?}",
+                    ns.len()
+                ));
+            }
+        }
+        faults.sort_by(f64::total_cmp);
+        let faults = (faults.len() == ns.len()).then(|| median(&faults) as u64);
+        Ok((Timing::of(ns), faults))
+    };
+    let (warm, warm_faults) = runs(false, budget.max_reps)?;
+    let (cold, cold_faults) = runs(true, COLD_BUILDS.min(budget.max_reps))?;
+    Ok(Builds {
+        warm,
+        warm_faults,
+        cold,
+        cold_faults,
+        native: first.1,
+    })
+}
+
 /// Times one kernel of `op` on a built structure: the structure's native loop when it has one
 /// (a baseline behind FFI), the harness's generic kernel otherwise. Returns the timing, the
-/// checksum and whether it ran natively.
+/// checksum and whether it ran natively. `kernel` is [`Kernel::Sweep`] or [`Kernel::Sampled`].
 pub fn time_kernel<M: MeshTopology>(
     m: &M,
     op: Operator,
@@ -274,27 +445,69 @@ pub fn time_kernel<M: MeshTopology>(
     q: &Queries,
     curves: &mut BoundaryCurves,
     budget: Budget,
-) -> Result<(crate::timing::Timing, u64, bool), String> {
-    let ids: Vec<u32> = match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            q.vertices.iter().map(|v| v.0).collect()
+) -> Result<(Timing, u64, bool), String> {
+    let native = M::native();
+    let timed = match kernel {
+        Kernel::Sweep => native.and_then(|k| time_native(budget, || k.sweep(m, op))),
+        Kernel::Sampled => {
+            // Vertex and face ids are the input's in every structure, so a baseline's loop
+            // can take them as they are; edge and (edge, face) samples run the generic kernel.
+            let ids: Vec<u32> = match op.input() {
+                Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
+                Input::Face => q.faces.iter().map(|f| f.0).collect(),
+                Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
+            };
+            native
+                .filter(|_| !ids.is_empty())
+                .and_then(|k| time_native(budget, || k.sampled(m, op, &ids)))
         }
-        Operator::R20 | Operator::R21 | Operator::R22 => q.faces.iter().map(|f| f.0).collect(),
-        _ => Vec::new(),
+        Kernel::Workload | Kernel::Construction => {
+            return Err(format!("{kernel} is not a kernel of an operator"))
+        }
     };
-    let native = match kernel {
-        Kernel::Sweep => m.native_sweep(op).is_some(),
-        Kernel::Sampled => !ids.is_empty() && m.native_sampled(op, &ids).is_some(),
-    };
-    let (t, sum) = if native {
-        time(budget, || match kernel {
-            Kernel::Sweep => m.native_sweep(op).unwrap_or_default(),
-            Kernel::Sampled => m.native_sampled(op, &ids).unwrap_or_default(),
-        })
-    } else {
-        time(budget, || run(m, op, q, curves))
-    }?;
-    Ok((t, sum, native))
+    match timed {
+        Some(timed) => timed.map(|(t, sum)| (t, sum, true)),
+        None => time(budget, || run(m, op, q, curves)).map(|(t, sum)| (t, sum, false)),
+    }
+}
+
+/// Times a baseline's native kernel `native` (see [`topolab_structures::NativeKernels`]):
+/// `None` when it has no loop of its own for this case (its first answer is `None`), else the
+/// timing and result. A failure inside the loop, in any run, fails the measurement with the
+/// library's error instead of timing a zero.
+fn time_native<T: PartialEq + std::fmt::Debug>(
+    budget: Budget,
+    mut native: impl FnMut() -> Option<topolab_structures::Result<T>>,
+) -> Option<Result<(Timing, T), String>> {
+    if let Err(e) = native()? {
+        return Some(Err(native_failure(Some(Err(e)))));
+    }
+    let failure = std::cell::Cell::new(None);
+    let timed = time(budget, || match native() {
+        Some(Ok(answer)) => Some(answer),
+        failed => {
+            failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+            None
+        }
+    });
+    Some(match failure.take() {
+        Some(e) => Err(e),
+        None => timed.and_then(|(t, answer)| {
+            answer
+                .map(|answer| (t, answer))
+                .ok_or_else(|| native_failure(None))
+        }),
+    })
+}
+
+/// The message for a native kernel that failed while timed: a baseline's exception caught at
+/// the FFI wall (`Some(Err)`), or a kernel that stopped answering (`None`). The cell then fails
+/// loudly instead of timing a zero checksum.
+fn native_failure(failed: Option<topolab_structures::Result<()>>) -> String {
+    match failed {
+        Some(Err(e)) => format!("native kernel failed: {e}"),
+        _ => "native kernel stopped answering between runs".into(),
+    }
 }
 
 /// Builds `M` from `case` and times one sweep of `op` over every element (for comparisons
@@ -304,7 +517,7 @@ pub fn measure_sweep<M: MeshTopology>(
     op: Operator,
     plan: &Plan,
 ) -> Result<Measurement, String> {
-    let mut cell = measurement(M::NAME, op.name(), Kernel::Sweep.name(), case);
+    let mut cell = measurement(M::NAME, Subject::Query(op), Kernel::Sweep, case);
     let m = match M::from_soup(case.soup) {
         Ok(m) => m,
         Err(e) => {
@@ -348,7 +561,7 @@ fn fill(cell: &mut Measurement, t: crate::timing::Timing, items: usize, checksum
 /// kernel, mesh and the structures that disagree. Workload results (floats) agree within a
 /// relative 1e-6.
 pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), String> {
-    let mut first: HashMap<(&str, &str), (&str, &str)> = HashMap::new();
+    let mut first: HashMap<(Subject, Kernel), (&str, &str)> = HashMap::new();
     for m in measurements
         .iter()
         .filter(|m| m.mesh == mesh && m.status == Status::Measured)
@@ -356,12 +569,12 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
         let Some(sum) = m.checksum.as_deref() else {
             continue;
         };
-        match first.get(&(m.operator.as_str(), m.kernel.as_str())) {
+        match first.get(&(m.operator, m.kernel)) {
             None => {
-                first.insert((&m.operator, &m.kernel), (&m.structure, sum));
+                first.insert((m.operator, m.kernel), (&m.structure, sum));
             }
             Some(&(s0, sum0)) => {
-                let same = if m.kernel == "workload" {
+                let same = if m.kernel == Kernel::Workload {
                     let (a, b) = (
                         sum0.parse::<f64>().unwrap_or(f64::NAN),
                         sum.parse::<f64>().unwrap_or(f64::NAN),
@@ -387,7 +600,7 @@ mod tests {
     use super::*;
     use crate::kernels::sample_queries;
     use std::cell::Cell;
-    use topolab_structures::{meshes, ExplicitStorage, VertexList};
+    use topolab_structures::{meshes, Error, ExplicitStorage, MeshTopology, Result, VertexList};
 
     struct NoMeter(Cell<usize>);
     impl MemoryMeter for NoMeter {
@@ -400,6 +613,69 @@ mod tests {
         fn reset_peak(&self) {}
     }
 
+    /// Few, short repetitions; cells estimated above `cell_max` skipped.
+    fn short_plan(cell_max: Duration) -> Plan {
+        Plan {
+            cell_budget: Duration::from_millis(1),
+            cell_max,
+            min_reps: 1,
+            max_reps: 3,
+            light: false,
+        }
+    }
+
+    #[test]
+    fn with_no_smaller_size_the_scans_are_skipped_by_their_time_per_query() {
+        // One size only, as `topolab report --sizes 20000`: nothing to extrapolate from. The
+        // vertex list scans the mesh for every query, so its sweeps of those operators, its
+        // boundary curves and the workloads built on them are quadratic: ~10k queries of
+        // ~60k corners each, seconds each; the budget is 20 ms.
+        let soup = meshes::torus_with_triangles(20_000);
+        let q = sample_queries(&soup, 16, 3);
+        let case = MeshCase {
+            name: "torus-20k",
+            family: "torus",
+            soup: &soup,
+            queries: &q,
+        };
+        let plan = short_plan(Duration::from_millis(20));
+        let (mut out, mut est) = (Vec::new(), Estimator::default());
+        measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
+            .unwrap();
+        let cell = |subject: Subject, kernel: Kernel| {
+            out.iter()
+                .find(|m| m.operator == subject && m.kernel == kernel)
+                .unwrap_or_else(|| panic!("no {subject:?} {kernel:?} cell"))
+        };
+        let scans: Vec<Operator> = Operator::ALL
+            .into_iter()
+            .filter(|&op| VertexList::cost(op).expected_exponent() >= 1.0)
+            .collect();
+        assert!(scans.contains(&Operator::R00) && scans.contains(&Operator::BoundaryCurves));
+        for &op in &scans {
+            let m = cell(Subject::Query(op), Kernel::Sweep);
+            assert_eq!(m.status, Status::Skipped, "{op:?} sweep: {m:?}");
+            assert!(m.estimate_ns_per_item.is_some_and(|ns| ns > 0.0), "{m:?}");
+            assert!(m.checksum.is_none() && m.ns_per_item.is_none(), "{m:?}");
+        }
+        for w in [Workload::Circulators, Workload::Smoothing] {
+            assert_eq!(
+                cell(Subject::Workload(w), Kernel::Workload).status,
+                Status::Skipped
+            );
+        }
+        // What does not scan still runs: 16 sampled queries, an O(k) sweep, no relation at all.
+        for (subject, kernel) in [
+            (Subject::Query(Operator::R00), Kernel::Sampled),
+            (Subject::Query(Operator::R20), Kernel::Sweep),
+            (Subject::Workload(Workload::Barycenter), Kernel::Workload),
+        ] {
+            let m = cell(subject, kernel);
+            assert_eq!(m.status, Status::Measured, "{subject:?} {kernel:?}: {m:?}");
+            assert!(m.checksum.is_some());
+        }
+    }
+
     #[test]
     fn measures_every_cell_and_cross_checks() {
         let soup = meshes::torus(6, 5);
@@ -410,13 +686,7 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(1),
-            min_reps: 1,
-            max_reps: 3,
-            light: false,
-        };
+        let plan = short_plan(Duration::from_secs(1));
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();
@@ -434,7 +704,7 @@ mod tests {
         // A tampered checksum is caught and named.
         let i = out
             .iter()
-            .position(|m| m.structure == "explicit" && m.operator == "r22")
+            .position(|m| m.structure == "explicit" && m.operator == Subject::Query(Operator::R22))
             .unwrap();
         out[i].checksum = Some("1".into());
         let err = cross_check(&out, "t").unwrap_err();
@@ -444,10 +714,52 @@ mod tests {
         );
     }
 
+    fn foreign() -> Error {
+        Error::Foreign {
+            library: "Baseline",
+            call: "sweep",
+            reason: "a test failure",
+        }
+    }
+
+    /// Times `answers` (one per call, then `None`) as a native kernel.
+    fn time_answers(answers: Vec<Option<Result<u64>>>) -> Option<Result<u64, String>> {
+        let budget = Budget {
+            time: Duration::from_millis(1),
+            min_reps: 2,
+            max_reps: 3,
+        };
+        let mut answers = answers.into_iter();
+        time_native(budget, || answers.next().flatten()).map(|r| r.map(|(_, sum)| sum))
+    }
+
+    #[test]
+    fn native_kernels_are_timed_when_they_answer_and_fail_loudly() {
+        // No loop of its own: the harness's generic kernel runs instead.
+        assert_eq!(time_answers(vec![None]), None);
+        let always = (0..9).map(|_| Some(Ok(5))).collect();
+        assert_eq!(time_answers(always), Some(Ok(5)));
+        // A failure in the first run, or in a later one, is the library's error, not a 0.
+        for answers in [
+            vec![Some(Err(foreign()))],
+            vec![Some(Ok(5)), Some(Ok(5)), Some(Err(foreign())), Some(Ok(5))],
+        ] {
+            let err = time_answers(answers).unwrap().unwrap_err();
+            assert!(
+                err.contains("native kernel failed") && err.contains("a test failure"),
+                "{err}"
+            );
+        }
+        let err = time_answers(vec![Some(Ok(5)), Some(Ok(5))])
+            .unwrap()
+            .unwrap_err();
+        assert!(err.contains("stopped answering"), "{err}");
+    }
+
     #[test]
     fn a_cell_estimated_over_budget_is_skipped_with_its_estimate() {
         let mut est = Estimator::default();
-        let key = Estimator::key("s", "torus", "r00", "sweep");
+        let key = Estimator::key("s", "torus", Subject::Query(Operator::R00), Kernel::Sweep);
         est.last.insert(key.clone(), (1000, 1e6));
         // 16x the size at exponent 2: 256 ms.
         assert_eq!(est.estimate(&key, 16000, 2.0), Some(256e6));

@@ -1,8 +1,9 @@
 //! The results of a report run: what `results.json` holds and the HTML is drawn from.
 
+use crate::kernels::Kernel;
 use crate::machine::Machine;
 use crate::probe::Probe;
-use topolab_structures::{Capabilities, Operator};
+use topolab_structures::{Capabilities, Cost, Operator, Workload};
 
 /// Everything one run measured.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -66,10 +67,15 @@ pub struct StructureInfo {
 pub struct CostRow {
     /// The operator.
     pub operator: Operator,
-    /// Its notation, e.g. `O(k)`.
-    pub cost: String,
+    /// The declared cost, written in its notation, e.g. `O(k)`.
+    #[serde(serialize_with = "notation")]
+    pub cost: Cost,
     /// The exponent it predicts.
     pub expected_exponent: f64,
+    /// What one query reads from memory, when the structure declares it (the limit of its
+    /// sweeps, [`crate::limit`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<topolab_structures::Access>,
 }
 
 /// A mesh of the run.
@@ -88,10 +94,19 @@ pub struct MeshInfo {
     /// A small SVG rendering.
     #[serde(skip)]
     pub thumbnail_svg: String,
+    /// Its element counts, for the limits of its sweeps (`None` when its edges cannot be
+    /// analysed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub counts: Option<crate::limit::MeshCounts>,
+}
+
+/// Writes a cost in its notation (`O(k)`), as results.json has it.
+fn notation<S: serde::Serializer>(cost: &Cost, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(cost.notation())
 }
 
 /// Whether a cell was measured.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Status {
     /// Measured.
@@ -102,15 +117,71 @@ pub enum Status {
     Refused,
 }
 
+/// What a measurement measures: building a structure, one of its operators, or a workload.
+/// Results write it by name in their `operator` field (`construction`, `r00`, `normals`, ...).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Subject {
+    /// Building the structure.
+    Construction,
+    /// An operator.
+    Query(Operator),
+    /// An application workload.
+    Workload(Workload),
+}
+
+impl Subject {
+    /// The name results give it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Subject::Construction => "construction",
+            Subject::Query(op) => op.name(),
+            Subject::Workload(w) => w.name(),
+        }
+    }
+
+    /// The subject of a name (operator, workload and construction names are distinct).
+    pub fn from_name(name: &str) -> Option<Self> {
+        if name == Subject::Construction.name() {
+            return Some(Subject::Construction);
+        }
+        Operator::from_name(name)
+            .map(Subject::Query)
+            .or_else(|| Workload::from_name(name).map(Subject::Workload))
+    }
+}
+
+impl std::fmt::Display for Subject {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl serde::Serialize for Subject {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Subject {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = <std::borrow::Cow<'de, str>>::deserialize(d)?;
+        Subject::from_name(&name).ok_or_else(|| {
+            serde::de::Error::custom(format!(
+                "unknown operator {name:?}: not an operator, a workload or construction"
+            ))
+        })
+    }
+}
+
 /// One cell: a structure, an operator (or workload, or construction), a kernel, a mesh.
-#[derive(Clone, Debug, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Measurement {
     /// Structure name.
     pub structure: String,
-    /// Operator, workload or `construction`.
-    pub operator: String,
-    /// `sweep`, `sampled`, `workload` or `construction`.
-    pub kernel: String,
+    /// Operator, workload or construction (written by name).
+    pub operator: Subject,
+    /// `sweep` or `sampled` for an operator, `workload` or `construction` for the others.
+    pub kernel: Kernel,
     /// Mesh name.
     pub mesh: String,
     /// Mesh family.
@@ -144,6 +215,21 @@ pub struct Measurement {
     pub native: bool,
     /// Why refused, or other remarks.
     pub note: Option<String>,
+    /// Construction only: median ns per face of the cold builds, each made right after the
+    /// allocator returned its free memory to the kernel (`ns_per_item` is the warm builds',
+    /// which reuse the memory of the build before them).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_ns_per_item: Option<f64>,
+    /// Construction only: median minor page faults of one warm build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub page_faults: Option<u64>,
+    /// Construction only: median minor page faults of one cold build.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cold_page_faults: Option<u64>,
+    /// Sweeps of a structure that declares its access model: the time the model allows
+    /// ([`crate::limit`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limit: Option<crate::limit::Limit>,
 }
 
 /// A fitted exponent.
@@ -152,17 +238,18 @@ pub struct FitRow {
     /// Structure.
     pub structure: String,
     /// Operator.
-    pub operator: String,
-    /// Kernel.
-    pub kernel: String,
+    pub operator: Operator,
+    /// Kernel (sweep or sampled).
+    pub kernel: Kernel,
     /// Mesh family.
     pub family: String,
     /// Fitted exponent of ns per query against triangles.
     pub exponent: f64,
     /// Its name (`constant`, `linear`, ...).
     pub class: String,
-    /// The declared cost.
-    pub theory: String,
+    /// The declared cost, written in its notation.
+    #[serde(serialize_with = "notation")]
+    pub theory: Cost,
     /// The exponent the declared cost predicts.
     pub expected_exponent: f64,
     /// Whether they agree.
@@ -176,8 +263,8 @@ pub struct FitRow {
 pub struct LibiglRow {
     /// Mesh name.
     pub mesh: String,
-    /// The operator whose answer it computes.
-    pub operator: String,
+    /// The operator (or workload) whose answer it computes.
+    pub operator: Subject,
     /// The libigl function.
     pub function: String,
     /// Its checksum.
@@ -195,4 +282,169 @@ pub struct Teaching {
     pub structure: String,
     /// Its `explain` text.
     pub text: String,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cell(operator: Subject, kernel: Kernel) -> Measurement {
+        Measurement {
+            structure: "explicit".into(),
+            operator,
+            kernel,
+            mesh: "torus-200".into(),
+            family: "torus".into(),
+            triangles: 204,
+            status: Status::Measured,
+            ns_per_item: Some(9540.225490196079),
+            min_ns_per_item: Some(9504.588235294117),
+            max_ns_per_item: Some(49622.12745098039),
+            items: 102,
+            reps: 23,
+            checksum: Some("13793524636986848482".into()),
+            bytes: None,
+            peak_bytes: None,
+            declared_bytes: None,
+            estimate_ns_per_item: None,
+            native: false,
+            note: None,
+            cold_ns_per_item: None,
+            page_faults: None,
+            cold_page_faults: None,
+            limit: None,
+        }
+    }
+
+    /// A measurement of results.json as the report wrote it before its fields were typed.
+    const R02_SWEEP: &str = r#"{
+  "structure": "explicit",
+  "operator": "r02",
+  "kernel": "sweep",
+  "mesh": "torus-200",
+  "family": "torus",
+  "triangles": 204,
+  "status": "measured",
+  "ns_per_item": 9540.225490196079,
+  "min_ns_per_item": 9504.588235294117,
+  "max_ns_per_item": 49622.12745098039,
+  "items": 102,
+  "reps": 23,
+  "checksum": "13793524636986848482",
+  "bytes": null,
+  "peak_bytes": null,
+  "declared_bytes": null,
+  "estimate_ns_per_item": null,
+  "native": false,
+  "note": null
+}"#;
+
+    #[test]
+    fn a_measurement_serializes_as_results_json_always_had_it() {
+        let m = cell(Subject::Query(Operator::R02), Kernel::Sweep);
+        assert_eq!(serde_json::to_string_pretty(&m).unwrap(), R02_SWEEP);
+        for (subject, kernel, operator_field, kernel_field) in [
+            (
+                Subject::Construction,
+                Kernel::Construction,
+                "construction",
+                "construction",
+            ),
+            (
+                Subject::Query(Operator::BoundaryVertex),
+                Kernel::Sampled,
+                "boundary-vertex",
+                "sampled",
+            ),
+            (
+                Subject::Workload(Workload::Circulators),
+                Kernel::Workload,
+                "circulators",
+                "workload",
+            ),
+        ] {
+            let v = serde_json::to_value(cell(subject, kernel)).unwrap();
+            assert_eq!(v["operator"], operator_field);
+            assert_eq!(v["kernel"], kernel_field);
+        }
+    }
+
+    #[test]
+    fn measurements_round_trip_and_unknown_names_are_refused() {
+        let parsed: Measurement = serde_json::from_str(R02_SWEEP).unwrap();
+        assert_eq!(
+            (parsed.operator, parsed.kernel, parsed.status),
+            (
+                Subject::Query(Operator::R02),
+                Kernel::Sweep,
+                Status::Measured
+            )
+        );
+        for subject in Operator::ALL
+            .map(Subject::Query)
+            .into_iter()
+            .chain(Workload::ALL.map(Subject::Workload))
+            .chain([Subject::Construction])
+        {
+            // Names are distinct: each one parses back to its own subject.
+            assert_eq!(Subject::from_name(subject.name()), Some(subject));
+            for kernel in Kernel::ALL {
+                let mut m = cell(subject, kernel);
+                // serde_json reads decimals back exactly only when they are binary fractions.
+                (m.ns_per_item, m.min_ns_per_item, m.max_ns_per_item) =
+                    (Some(9540.25), Some(9504.5), Some(49622.125));
+                let text = serde_json::to_string(&m).unwrap();
+                assert_eq!(serde_json::from_str::<Measurement>(&text).unwrap(), m);
+            }
+        }
+        let wrong = R02_SWEEP.replace("\"r02\"", "\"r03\"");
+        let err = serde_json::from_str::<Measurement>(&wrong).unwrap_err();
+        assert!(
+            err.to_string().contains("unknown operator \"r03\""),
+            "{err}"
+        );
+        let wrong = R02_SWEEP.replace("\"sweep\"", "\"swept\"");
+        assert!(serde_json::from_str::<Measurement>(&wrong).is_err());
+    }
+
+    #[test]
+    fn costs_and_fits_are_written_in_the_lecture_notation() {
+        let cost = CostRow {
+            operator: Operator::EdgeSuccessor,
+            cost: Cost::Boundary,
+            expected_exponent: 0.5,
+            access: None,
+        };
+        assert_eq!(
+            serde_json::to_string(&cost).unwrap(),
+            r#"{"operator":"edge-successor","cost":"O(∂n1)","expected_exponent":0.5}"#
+        );
+        let fit = FitRow {
+            structure: "che-l0".into(),
+            operator: Operator::BoundaryEdge,
+            kernel: Kernel::Sampled,
+            family: "grid".into(),
+            exponent: 0.9257697736871451,
+            class: "linear".into(),
+            theory: Cost::Linear,
+            expected_exponent: 1.0,
+            agrees: true,
+            points: 2,
+        };
+        assert_eq!(
+            serde_json::to_string_pretty(&fit).unwrap(),
+            r#"{
+  "structure": "che-l0",
+  "operator": "boundary-edge",
+  "kernel": "sampled",
+  "family": "grid",
+  "exponent": 0.9257697736871451,
+  "class": "linear",
+  "theory": "O(n)",
+  "expected_exponent": 1.0,
+  "agrees": true,
+  "points": 2
+}"#
+        );
+    }
 }

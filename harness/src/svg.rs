@@ -1,5 +1,5 @@
-//! SVG drawings of the report: log-log plots (plotters), bar charts, mesh thumbnails and the
-//! CHE chapter's Figure 4.10. Everything is inline SVG with real `<text>`, no fonts or network.
+//! SVG drawings of the report: log-log plots (plotters), bar charts, mesh thumbnails and the CHE
+//! thesis chapter's Figure 4.10. Everything is inline SVG with real `<text>`, no fonts or network.
 
 use glam::DVec3;
 use plotters::prelude::*;
@@ -244,7 +244,7 @@ pub fn thumbnail(soup: &PolygonSoup, size: f64) -> String {
     s
 }
 
-/// The CHE chapter's Figure 4.10, unfolded: the open tetrahedron (apex 3 in the middle,
+/// The CHE thesis chapter's Figure 4.10, unfolded: the open tetrahedron (apex 3 in the middle,
 /// triangle t = (t, t+1 mod 3, 3)) with vertex numbers and the half-edge numbers 3t + i, each
 /// drawn inside its triangle next to the edge it starts.
 pub fn figure_4_10() -> String {

@@ -54,14 +54,20 @@ pub fn time<T: PartialEq + std::fmt::Debug>(
             ));
         }
     }
-    runs.sort_by(f64::total_cmp);
-    let timing = Timing {
-        median_ns: median(&runs),
-        min_ns: runs[0],
-        max_ns: runs[runs.len() - 1],
-        reps: runs.len(),
-    };
-    Ok((timing, first))
+    Ok((Timing::of(runs), first))
+}
+
+impl Timing {
+    /// The timing of `runs` (ns per run, at least one).
+    pub fn of(mut runs: Vec<f64>) -> Timing {
+        runs.sort_by(f64::total_cmp);
+        Timing {
+            median_ns: median(&runs),
+            min_ns: runs.first().copied().unwrap_or(f64::NAN),
+            max_ns: runs.last().copied().unwrap_or(f64::NAN),
+            reps: runs.len(),
+        }
+    }
 }
 
 /// The median of sorted values (mean of the two middle ones for an even count).

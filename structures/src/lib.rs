@@ -1,10 +1,10 @@
 //! # topolab-structures
 //!
-//! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are
-//! built from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`](testing::oracle),
-//! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`]) and
-//! renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
-//! lecture's consistency checks on a file as written.
+//! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are built
+//! from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`](testing::oracle),
+//! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`])
+//! and renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
+//! consistency checks of the lecture on polygon-mesh data structures on a file as written.
 //!
 //! The structures, one folder per family in [`families`], each registered once in
 //! [`registry`] ([`for_each_structure!`]), from which the CLI, the report, the benches and the
@@ -15,8 +15,8 @@
 //! | [`ExplicitStorage`] | `explicit` | each polygon's corner coordinates | yes | yes |
 //! | [`VertexList`] | `vertex-list` | shared positions, faces as vertex indices | yes | yes |
 //! | [`EdgeList`] | `edge-list` | edges (start, end, left, right face), faces as edge indices | yes | yes |
-//! | [`WingedEdge`] | `winged-edge` | seed 004's records: edges with 8 pointers, av(v), af(f) | yes | no |
-//! | [`PointerHalfEdge`] | `pointer-half-edge` | the lecture's `HE_edge`/`HE_vert`/`HE_face` records linked by pointers | yes | refused |
+//! | [`WingedEdge`] | `winged-edge` | the records of the lecture on 3D convex hulls: edges with 8 pointers, av(v), af(f) | yes | no |
+//! | [`PointerHalfEdge`] | `pointer-half-edge` | the `HE_edge`/`HE_vert`/`HE_face` records of the lecture on polygon-mesh data structures, linked by pointers | yes | refused |
 //! | [`IndexHalfEdge`] | `index-half-edge` | half-edge arrays of `u32` handles, twin `h ^ 1` (OpenMesh style) | yes | refused |
 //! | [`RegularGrid`] | `regular-grid` | a grid's counts, origin and cell size; nothing per element | grids of quads or triangles | (none in a grid) |
 //! | [`HeightField`] | `height-field` | a grid's counts and one position per vertex | grids of quads or triangles | (none in a grid) |
@@ -25,8 +25,9 @@
 //! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
 //! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
-//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with seed 004's
-//! three algorithms (gift wrapping, incremental, randomized incremental).
+//! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with the three
+//! algorithms of the lecture on 3D convex hulls (gift wrapping, incremental, randomized
+//! incremental).
 //!
 //! Each structure's module documents what it stores, its bytes per element, and the cost of
 //! each operator; [`MeshTopology::cost`] states those costs as data (`topolab list`).
@@ -57,11 +58,19 @@ pub use testing::{conformance, meshes};
 // The error types' short path inside the crate (`crate::error::Error`).
 use self::core::error;
 
+/// The vector crate of the trait's positions ([`MeshTopology::position`] returns a
+/// `glam::DVec3`), re-exported so that a structure outside the lab uses the same version.
+pub use glam;
+
+pub use self::core::access::{Access, Container, Read, Unit};
 pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::error::{Error, Format, Location, Result};
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use self::core::soup::{Connectivity, PolygonSoup};
-pub use self::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+pub use self::core::topology::{
+    BoundaryCurves, Capabilities, Cost, Element, Input, MeshTopology, NativeKernels, Operator,
+};
+pub use self::core::workload::Workload;
 pub use families::che::{CheL0, CheL1, CheL2, CheL3};
 pub use families::corner_lists::explicit::ExplicitStorage;
 pub use families::corner_lists::vertex_list::VertexList;

@@ -1,5 +1,6 @@
-//! The structures of this crate, registered once: [`for_each_structure!`](crate::for_each_structure) holds the one list,
-//! and everything that needs "every structure" is generated from it:
+//! The structures of this crate, registered once:
+//! [`for_each_structure!`](crate::for_each_structure) holds the one list, and everything that needs
+//! "every structure" is generated from it:
 //!
 //! - [`NAMES`] and [`visit`] here, which the root crate's registry extends with the OpenMesh
 //!   baseline and which the CLI (`topolab list`, `info`, `explain`), the report and the
@@ -9,6 +10,10 @@
 //!   `every_registered_structure_is_conformance_tested` fails if the structures it tests are
 //!   not exactly [`NAMES`];
 //! - [`build_each`] (the fuzz and bad-input tests).
+//!
+//! Structures outside this list (a crate of their own, the root crate's C++ baselines) join a
+//! run as a [`Structures`] list: a type naming several structures, of which [`Registered`] is
+//! this registry.
 //!
 //! A new structure is its folder under `families/` (declared in its family's `mod.rs`) and one
 //! line in [`for_each_structure!`](crate::for_each_structure).
@@ -71,6 +76,115 @@ macro_rules! registry {
 
 crate::for_each_structure!(registry);
 
+/// A list of structures, given as a type, that code choosing a structure by name at run time
+/// can run with: this crate's registry ([`Registered`]), one structure (every
+/// [`MeshTopology`] type is a list of itself), none (`()`), or a tuple of lists (their
+/// concatenation, in order). This is how a crate outside the lab puts its own structure beside
+/// the registered ones without editing the registry: the report entry point of the `topolab`
+/// crate and the `cargo bench` groups of `topolab-harness` take such a list.
+///
+/// ```
+/// use topolab_structures::registry::{names, Registered, Structures};
+/// use topolab_structures::{CheL2, VertexList};
+///
+/// type Mine = (Registered, (VertexList, CheL2));
+/// assert_eq!(names::<Mine>().len(), topolab_structures::registry::NAMES.len() + 2);
+/// assert_eq!(names::<(CheL2,)>(), ["che-l2"]);
+/// ```
+pub trait Structures {
+    /// Appends the names of the list, in order.
+    fn names(out: &mut Vec<&'static str>);
+    /// Runs `visitor` with the structure of the list called `name`, or hands the visitor back
+    /// when the list has none of that name (so that lists can be chained).
+    fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V>;
+}
+
+/// The names of the list `S`, in order (a name that occurs twice is a mistake of the list;
+/// [`duplicate_name`] finds it).
+pub fn names<S: Structures>() -> Vec<&'static str> {
+    let mut out = Vec::new();
+    S::names(&mut out);
+    out
+}
+
+/// The first name that occurs twice in `names`, if any: two structures of one name would make
+/// run-time choice by name ambiguous (the second could never be chosen).
+pub fn duplicate_name<'a>(names: &[&'a str]) -> Option<&'a str> {
+    names
+        .iter()
+        .enumerate()
+        .find(|&(i, n)| names[..i].contains(n))
+        .map(|(_, &n)| n)
+}
+
+/// Every structure of this crate ([`NAMES`], [`visit`]) as a [`Structures`] list.
+#[derive(Copy, Clone, Debug)]
+pub struct Registered;
+
+impl Structures for Registered {
+    fn names(out: &mut Vec<&'static str>) {
+        out.extend_from_slice(NAMES);
+    }
+    fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V> {
+        if NAMES.contains(&name) {
+            Ok(visit(name, visitor).expect("a registered name visits its structure"))
+        } else {
+            Err(visitor)
+        }
+    }
+}
+
+impl<M: MeshTopology> Structures for M {
+    fn names(out: &mut Vec<&'static str>) {
+        out.push(M::NAME);
+    }
+    fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V> {
+        if name == M::NAME {
+            Ok(visitor.visit::<M>())
+        } else {
+            Err(visitor)
+        }
+    }
+}
+
+impl Structures for () {
+    fn names(_: &mut Vec<&'static str>) {}
+    fn visit<V: StructureVisitor>(_: &str, visitor: V) -> Result<V::Output, V> {
+        Err(visitor)
+    }
+}
+
+/// [`Structures`] for tuples of lists: each element's names in order, the first match wins.
+macro_rules! tuple_lists {
+    ($(($($list:ident),+))*) => {
+        $(
+            impl<$($list: Structures),+> Structures for ($($list,)+) {
+                fn names(out: &mut Vec<&'static str>) {
+                    $($list::names(out);)+
+                }
+                fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V> {
+                    $(
+                        let visitor = match $list::visit(name, visitor) {
+                            Ok(output) => return Ok(output),
+                            Err(visitor) => visitor,
+                        };
+                    )+
+                    Err(visitor)
+                }
+            }
+        )*
+    };
+}
+
+tuple_lists! {
+    (A)
+    (A, B)
+    (A, B, C)
+    (A, B, C, D)
+    (A, B, C, D, E)
+    (A, B, C, D, E, F)
+}
+
 /// Builds `M` from the soup and validates it.
 struct BuildAndValidate<'a>(&'a crate::PolygonSoup);
 impl StructureVisitor for BuildAndValidate<'_> {
@@ -105,6 +219,24 @@ mod tests {
         fn visit<M: MeshTopology>(self) -> &'static str {
             M::NAME
         }
+    }
+
+    #[test]
+    fn a_list_names_and_visits_each_of_its_structures_in_order() {
+        use crate::{CheL2, VertexList};
+        type List = ((CheL2, ()), Registered, (VertexList,));
+        let names = names::<List>();
+        assert_eq!(names[0], "che-l2");
+        assert_eq!(&names[1..1 + NAMES.len()], NAMES);
+        assert_eq!(names[1 + NAMES.len()..], ["vertex-list"]);
+        for name in ["che-l2", "vertex-list", "regular-grid"] {
+            assert_eq!(List::visit(name, Name).ok(), Some(name));
+        }
+        assert!(List::visit("no-such-structure", Name).is_err());
+        assert!(<() as Structures>::visit("che-l2", Name).is_err());
+        // CheL2 is in the list twice: a mistake the list's users refuse.
+        assert_eq!(duplicate_name(&names), Some("che-l2"));
+        assert_eq!(duplicate_name(NAMES), None);
     }
 
     #[test]

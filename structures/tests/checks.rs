@@ -130,6 +130,24 @@ fn a_mobius_strip_is_a_non_orientable_manifold_with_one_boundary_curve() {
 }
 
 #[test]
+fn an_empty_mesh_is_a_finding_and_a_point_cloud_is_not_an_empty_mesh() {
+    for (text, format) in [
+        ("", Format::Obj),
+        ("# nothing but a comment\no empty\n", Format::Obj),
+        ("OFF\n0 0 0\n", Format::Off),
+    ] {
+        let raw = read_bytes_raw(text.as_bytes(), format).unwrap();
+        let r = check(&raw, &Options::default());
+        assert_eq!(kinds(&r), vec![FindingKind::EmptyMesh], "{text:?}");
+        assert!(!r.is_clean());
+        assert_eq!(r.summary.counts.get("empty-mesh"), Some(&1));
+    }
+    let cloud = read_bytes_raw(b"v 0 0 0\nv 1 0 0\n", Format::Obj).unwrap();
+    let r = check(&cloud, &Options::default());
+    assert_eq!(kinds(&r), vec![FindingKind::UnusedVertex]);
+}
+
+#[test]
 fn findings_name_the_faces_of_the_file_even_after_unusable_faces() {
     // Face 0 is missing a vertex, face 1 has two corners; faces 2, 3, 4 share edge (0, 1).
     let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n\

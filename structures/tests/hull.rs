@@ -1,7 +1,8 @@
-//! The three convex hull algorithms (seed 004): each result is a valid winged-edge that
-//! matches the oracle of its own faces, is closed (Euler characteristic 2), convex (every
-//! input point on the inner side of every face, exactly), has only extreme points as vertices,
-//! and the three agree with each other; degenerate input gives typed errors, never a panic.
+//! The three convex hull algorithms of the lecture on 3D convex hulls: each result is a valid
+//! winged-edge that matches the oracle of its own faces, is closed (Euler characteristic 2),
+//! convex (every input point on the inner side of every face, exactly), has only extreme points
+//! as vertices, and the three agree with each other; degenerate input gives typed errors, never
+//! a panic.
 
 use glam::DVec3;
 use proptest::prelude::*;
@@ -188,9 +189,67 @@ fn degenerate_inputs_give_typed_errors() {
     );
 }
 
+/// Corners and inner points of the cube [0, 4]³ scaled by `scale`.
+fn scaled_cube(scale: f64) -> Vec<DVec3> {
+    let mut points = Vec::new();
+    for i in 0..27 {
+        let [x, y, z] = [i % 3, (i / 3) % 3, i / 9].map(|c| (2 * c) as f64);
+        points.push(DVec3::new(x, y, z) * scale);
+    }
+    points
+}
+
+#[test]
+fn coordinates_whose_products_overflow_or_underflow_are_refused_by_name() {
+    // Near 1e300 the products of orient3d overflow: the algorithms broke their own invariants
+    // ("face 1 uses vertex 3 more than once"); near 1e-120 they underflow to 0 and the cube
+    // came out flat ("degenerate-points").
+    for (what, points) in [
+        ("1e300", scaled_cube(1e300)),
+        ("-1e300", scaled_cube(-1e300)),
+        ("1e-120", scaled_cube(1e-120)),
+        (
+            "one far point",
+            [scaled_cube(1.0), vec![DVec3::new(0.5, 1e100, 0.5)]].concat(),
+        ),
+        (
+            "one tiny coordinate",
+            [scaled_cube(1.0), vec![DVec3::new(1.0, 1e-80, 1.0)]].concat(),
+        ),
+    ] {
+        for a in Algorithm::all(1) {
+            let err = convex_hull(&points, a).unwrap_err();
+            assert_eq!(err.kind(), "coordinate-out-of-range", "{what} {a:?}: {err}");
+            assert!(
+                err.to_string()
+                    .contains("outside the range the hull's exact predicates handle"),
+                "{what}: {err}"
+            );
+        }
+    }
+}
+
+#[test]
+fn coordinates_at_the_limits_of_the_range_give_the_exact_hull() {
+    use topolab_structures::hull::predicates::{MAX_COORDINATE, MIN_COORDINATE};
+    assert_eq!(MAX_COORDINATE, 2f64.powi(250));
+    assert_eq!(MIN_COORDINATE, 2f64.powi(-250));
+    // The cube's corners reach MAX_COORDINATE (4 · 2^248); its smallest non-zero coordinate is
+    // MIN_COORDINATE (2 · 2^-251); and both at once, a tiny point inside a huge cube.
+    let huge = scaled_cube(MAX_COORDINATE / 4.0);
+    let tiny = scaled_cube(MIN_COORDINATE / 2.0);
+    let mixed = [huge.clone(), vec![DVec3::splat(MIN_COORDINATE)]].concat();
+    for (what, points) in [("huge", huge), ("tiny", tiny), ("mixed", mixed)] {
+        for hull in check_all(&points, what) {
+            assert_eq!(hull.vertices().len(), 8, "{what}");
+            assert_eq!(hull.mesh.num_faces(), 12, "{what}");
+        }
+    }
+}
+
 #[test]
 fn the_randomized_algorithm_creates_about_the_expected_number_of_faces() {
-    // On a sphere every point is inserted; the seed's lemma: E[created] ≤ 6n − 20. One run
+    // On a sphere every point is inserted; the lecture's lemma: E[created] ≤ 6n − 20. One run
     // is a sample, so allow a margin; the count itself must at least cover the final hull.
     let n = 2000;
     let points = random_points(Shape::Sphere, n, 11);

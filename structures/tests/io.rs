@@ -268,3 +268,29 @@ fn a_refused_ply_write_leaves_no_file() {
         path.display()
     );
 }
+
+#[test]
+fn a_failed_write_leaves_the_old_file_and_no_temporary_file() {
+    let dir = std::env::temp_dir().join(format!("topolab-atomic-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("mesh.obj");
+    std::fs::write(&path, "the old file").unwrap();
+    // A writer that fails half way: what it wrote must not reach `path`.
+    let failed = io::write_atomically(&path, |w| {
+        use std::io::Write;
+        w.write_all(b"half a mesh")?;
+        Err(std::io::Error::other("interrupted"))
+    });
+    assert!(failed.is_err());
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "the old file");
+    assert!(!io::temporary_path(&path).exists());
+    // A complete write replaces the file, and leaves only it in the folder.
+    io::write(&path, &meshes::single_triangle()).unwrap();
+    assert_eq!(io::read(&path).unwrap(), meshes::single_triangle());
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, ["mesh.obj"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

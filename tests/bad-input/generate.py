@@ -99,9 +99,11 @@ write("non-convex-face.obj", obj([(0, 0, 0), (2, 0, 0), (1, 0.5, 0), (1, 2, 0)],
 STAR = [(math.cos(a), math.sin(a), 0) for a in (2 * math.pi * k * 2 / 5 for k in range(5))]
 write("non-simple-face.obj", obj(STAR, [(0, 1, 2, 3, 4)]))
 write("point-cloud.obj", "v 0 0 0\nv 1 0 0\n")
+write("obj-comments-only.obj", "# exported with nothing selected\no empty\ng\n")
 
 # OFF
 write("empty.off", "")
+write("off-no-elements.off", "OFF\n0 0 0\n")
 write("off-no-header.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 write("off-bad-count.off", "OFF\n3 one 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 write("off-huge-vertex-count.off", "OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
@@ -115,6 +117,7 @@ write("off-two-vertex-face.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 
 
 # PLY
 write("empty.ply", "")
+write("ply-no-elements.ply", ply_binary("<", [], []))
 write("ply-no-end-header.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n")
 write("ply-bad-format.ply", "ply\nformat utf16 1.0\nend_header\n")
 write("ply-missing-z.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"

@@ -7,7 +7,7 @@
 use glam::DVec3;
 use topolab_harness::checksum::{edge_key, mix};
 use topolab_structures::{
-    BoundaryCurves, EdgeId, FaceId, MeshTopology, Operator, PolygonSoup, VertexId,
+    BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
 };
 
 fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
@@ -15,14 +15,14 @@ fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
     edge_key(a.0, b.0)
 }
 
-/// How many query elements operator `op` has in `m` (vertices, edges or faces).
+/// How many query elements operator `op` has in `m`: vertices, edges or faces by its input
+/// (faces for successor and predecessor, asked about every edge of each face; one mesh).
 pub fn query_count<M: MeshTopology>(m: &M, op: Operator) -> usize {
-    match op {
-        Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-            m.num_vertices()
-        }
-        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => m.num_edges(),
-        _ => m.num_faces(),
+    match op.input() {
+        Input::Vertex => m.num_vertices(),
+        Input::Edge => m.num_edges(),
+        Input::Face | Input::EdgeOfFace => m.num_faces(),
+        Input::Mesh => 1,
     }
 }
 
@@ -75,9 +75,9 @@ pub fn checksum<M: MeshTopology>(m: &M, op: Operator) -> u64 {
         }
         return sum;
     }
-    let ids: Vec<u32> = match op {
+    let ids: Vec<u32> = match op.input() {
         // Edge ids are each structure's own: enumerate them.
-        Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => {
+        Input::Edge => {
             let mut ids = Vec::with_capacity(m.num_edges());
             m.for_each_edge(|e| ids.push(e.0));
             ids

@@ -1,6 +1,11 @@
-//! Subdivision of triangle meshes (lecture section 4.5): each level splits every triangle into
-//! four, so a real mesh of 75k triangles (CGAL's `bunny00`) becomes 1.2M, 4.8M and 19.3M
-//! triangles in 2, 3 and 4 levels, the sizes the benchmarks need.
+//! Subdivision of triangle meshes: each level splits every triangle into four, so a real mesh
+//! of 75k triangles (CGAL's `bunny00`) becomes 1.2M, 4.8M and 19.3M triangles in 2, 3 and 4
+//! levels, the sizes the benchmarks need.
+//!
+//! The lecture on polygon-mesh data structures asks for refinement ("Verfeinern um genauer zu
+//! modellieren", locally and adaptively) and lists a section 4.5 "Verfeinerung von Netzen" in
+//! its outline, but that section has no content; the two schemes here are the standard
+//! uniform ones (midpoint, and Loop's), not taken from it.
 //!
 //! Both schemes have the same connectivity; they differ only in where vertices go.
 //!

@@ -1,6 +1,7 @@
-//! Geometric attributes computed through any structure's relations: the lecture's face, edge
-//! and vertex attributes (*Flächen-, Kanten-, Punkt-Attribute*). One implementation serves every
-//! structure (a blanket impl), so timing them measures each structure's relations.
+//! Geometric attributes computed through any structure's relations: the face, edge and vertex
+//! attributes (*Flächen-, Kanten-, Punkt-Attribute*) of the lecture on polygon-mesh data
+//! structures. One implementation serves every structure (a blanket impl), so timing them
+//! measures each structure's relations.
 
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::MeshTopology;

@@ -122,6 +122,19 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
+    /// A coordinate outside the range in which the convex hull's exact predicates stay exact:
+    /// their products of three coordinate differences would overflow (or underflow) a double.
+    #[error("point {vertex} has the coordinate {value:e}, outside the range the hull's exact predicates handle: 0, or a magnitude from {min:e} to {max:e} (2^-250 to 2^250); scale the points")]
+    CoordinateOutOfRange {
+        /// The point (vertex) with the coordinate.
+        vertex: usize,
+        /// The offending value.
+        value: f64,
+        /// The smallest magnitude accepted besides 0.
+        min: f64,
+        /// The largest magnitude accepted.
+        max: f64,
+    },
     /// A face with fewer than three corners.
     #[error("face {face} has {corners} corners; a face needs at least 3")]
     TooFewCorners {
@@ -219,6 +232,17 @@ pub enum Error {
     /// A request outside what the structure or mesh offers (e.g. an unknown structure name).
     #[error("{0}")]
     Unsupported(String),
+    /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
+    /// caught at the boundary and reported as a status code.
+    #[error("{library} failed in {call}: {reason}")]
+    Foreign {
+        /// The library (e.g. "OpenMesh").
+        library: &'static str,
+        /// The C function of the shim that failed.
+        call: &'static str,
+        /// What the shim reported (out of memory, an exception, an unknown code).
+        reason: &'static str,
+    },
 }
 
 impl Error {
@@ -233,6 +257,7 @@ impl Error {
             Error::TooLarge { .. } => "too-large",
             Error::IndexOutOfRange { .. } => "index-out-of-range",
             Error::NonFiniteCoordinate { .. } => "non-finite-coordinate",
+            Error::CoordinateOutOfRange { .. } => "coordinate-out-of-range",
             Error::TooFewCorners { .. } => "too-few-corners",
             Error::RepeatedVertex { .. } => "repeated-vertex",
             Error::NonManifoldEdge { .. } => "non-manifold-edge",
@@ -244,6 +269,7 @@ impl Error {
             Error::DegeneratePoints { .. } => "degenerate-points",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
+            Error::Foreign { .. } => "foreign",
         }
     }
 

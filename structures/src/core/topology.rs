@@ -1,15 +1,62 @@
-//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers and
-//! the theoretical [`Cost`] each structure declares for each of them.
+//! The [`MeshTopology`] trait that every structure implements, the [`Operator`]s it answers (and
+//! the [`Input`] each takes), the theoretical [`Cost`] each structure declares for each of them,
+//! and the [`NativeKernels`] a baseline behind an FFI runs itself.
 //!
-//! Relations follow the CHE chapter's notation `Rpq`: given a p-simplex, the q-simplices around
-//! it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a callback (internal
-//! iteration), so they never allocate and are monomorphised in benchmarks; a caller that
-//! wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
+//! Relations follow the notation `Rpq` of the CHE thesis chapter: given a p-simplex, the
+//! q-simplices around it (0 = vertex, 1 = edge, 2 = face). Queries report their answers to a
+//! callback (internal iteration), so they never allocate and are monomorphised in benchmarks; a
+//! caller that wants the answers in a buffer pushes them into its own (`|v| out.push(v)`).
 
+use crate::core::access::Access;
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
+use crate::core::workload::Workload;
 use glam::DVec3;
+
+/// A kind of mesh element.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Element {
+    /// A vertex (0-simplex).
+    Vertex,
+    /// An edge (1-simplex).
+    Edge,
+    /// A face (2-cell).
+    Face,
+    /// The whole mesh.
+    Mesh,
+}
+
+/// What one query of an [`Operator`] is given ([`Operator::input`]): the element whose
+/// neighbourhood it asks about, which is also what a sweep of the operator walks over.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Input {
+    /// A vertex.
+    Vertex,
+    /// An edge.
+    Edge,
+    /// A face.
+    Face,
+    /// An edge and a face it bounds (successor, predecessor). Every (edge, face) pair of a
+    /// mesh is one edge of one face, so a sweep walks the faces and each face's edges.
+    EdgeOfFace,
+    /// Nothing: the question is about the whole mesh (boundary curves).
+    Mesh,
+}
+
+impl Input {
+    /// The elements a query is given, in argument order.
+    pub const fn elements(self) -> &'static [Element] {
+        match self {
+            Input::Vertex => &[Element::Vertex],
+            Input::Edge => &[Element::Edge],
+            Input::Face => &[Element::Face],
+            Input::EdgeOfFace => &[Element::Edge, Element::Face],
+            Input::Mesh => &[Element::Mesh],
+        }
+    }
+}
 
 /// Every operator a structure answers, in catalogue order.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
@@ -39,7 +86,8 @@ pub enum Operator {
     BoundaryEdge,
     /// All boundary curves as closed loops of edges.
     BoundaryCurves,
-    /// The edge after a given edge in a given face (the lecture's successor).
+    /// The edge after a given edge in a given face (the successor of the lecture on
+    /// polygon-mesh data structures).
     EdgeSuccessor,
     /// The edge before a given edge in a given face (the lecture's predecessor).
     EdgePredecessor,
@@ -88,9 +136,24 @@ impl Operator {
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|op| op.name() == name)
     }
+
+    /// What one query of the operator is given (the lab's one answer to "which element does
+    /// this operator take?").
+    pub const fn input(self) -> Input {
+        match self {
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
+                Input::Vertex
+            }
+            Operator::R10 | Operator::R11 | Operator::R12 | Operator::BoundaryEdge => Input::Edge,
+            Operator::R20 | Operator::R21 | Operator::R22 => Input::Face,
+            Operator::EdgeSuccessor | Operator::EdgePredecessor => Input::EdgeOfFace,
+            Operator::BoundaryCurves => Input::Mesh,
+        }
+    }
 }
 
-/// A theoretical cost, as the lecture's tables and the CHE chapter's Table 4.1 state it.
+/// A theoretical cost, as the tables of the lecture on polygon-mesh data structures and
+/// Table 4.1 of the CHE thesis chapter state it.
 ///
 /// `n0`, `n1`, `n2` are the numbers of vertices, edges and faces; `k` the size of the local
 /// neighbourhood (valence of a vertex, corners of a face); `∂n1` the boundary edges.
@@ -211,9 +274,35 @@ impl BoundaryCurves {
 
 /// One interface to every mesh data structure of the lab.
 ///
-/// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's
-/// own and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer
-/// and never allocate. Relations are multisets; R20 and R21 answer in the face's cyclic order.
+/// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's own
+/// and are enumerated by [`MeshTopology::for_each_edge`]. Queries call `f` once per answer and
+/// never allocate (the enumeration `for_each_edge` may; see there). Relations are multisets; R20
+/// and R21 answer in the face's cyclic order.
+///
+/// ## Fairness
+///
+/// The lab compares structures, so each one is measured at the speed its design allows, under
+/// the same rules:
+///
+/// - **Inlining.** Every query method of every impl carries `#[inline]`: the counts,
+///   [`MeshTopology::position`] and the operators' methods (every method except how a
+///   structure is described, built, enumerated, validated, measured and explained, and the
+///   baselines' native loops). A benchmark in another crate can then inline any query, and no
+///   structure is left behind a call while another is inlined. `structures/tests/inlining.rs`
+///   reads every registered structure's impl and fails on a query method without it.
+/// - **Walking a fan.** R00, R01 and R02 answer sets, so a structure may walk a vertex's fan
+///   from both ends at once: two independent chains of dependent loads instead of one. That
+///   walk was offered to every structure that walks fans and is kept where it measured
+///   faster: the CHE levels 2 and 3 (interior vertices; a boundary vertex's other end is not
+///   stored) and the winged-edge. The index and the pointer half-edge rotate one way: the
+///   second chain measured no faster there (see
+///   [`families::half_edge`](crate::families::half_edge)). Traces for teaching (the CHE's
+///   `vertex_star`) keep their source's order.
+/// - **Bounds checks.** Safe code, so every index is checked; where a query reads several
+///   arrays at one index, their lengths are asserted equal once per query, so one check
+///   covers them (the CHE's `V[]` and `O[]`, the index half-edge's per-half-edge arrays).
+/// - **Baselines** (OpenMesh) are used as their documented API is used, inside their own
+///   loops ([`MeshTopology::native`]), and are not re-tuned.
 pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
@@ -221,7 +310,8 @@ pub trait MeshTopology: Sized {
     /// What kinds of meshes it stores.
     fn capabilities() -> Capabilities;
 
-    /// The theoretical cost of `op` in this structure (lecture tables, Table 4.1).
+    /// The theoretical cost of `op` in this structure (the polygon-mesh lecture's tables, the CHE
+    /// thesis chapter's Table 4.1).
     fn cost(op: Operator) -> Cost;
 
     /// Builds the structure; fails with a typed error on input it cannot store.
@@ -234,6 +324,7 @@ pub trait MeshTopology: Sized {
     /// Number of faces.
     fn num_faces(&self) -> usize;
     /// Number of boundary edges (edges with one face).
+    #[inline]
     fn num_boundary_edges(&self) -> usize {
         let mut n = 0;
         self.for_each_edge(|e| n += self.is_boundary_edge(e) as usize);
@@ -241,6 +332,12 @@ pub trait MeshTopology: Sized {
     }
 
     /// Calls `f` with every edge id, each once.
+    ///
+    /// An enumeration, not one of the queries: the callers (the harness building its query
+    /// lists, the conformance suite) run it once, outside any timing, so a structure that
+    /// stores no edges may allocate here. CHE level 0 does: without `O[]` it sorts its
+    /// half-edges by vertex pair in a temporary buffer (O(n2 log n2)) instead of scanning for
+    /// each half-edge's twin (O(n2²)), and its `num_edges` counts this enumeration.
     fn for_each_edge(&self, f: impl FnMut(EdgeId));
 
     /// Position of vertex `v`.
@@ -286,34 +383,45 @@ pub trait MeshTopology: Sized {
     /// For teaching: what the structure stores, record by record, with the lecture's field names.
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
 
-    /// Construction the way a baseline's own API does it, for timing (OpenMesh: `reserve`,
-    /// `add_vertex`, `add_face`, without the lab's up-front manifold checks, which are not
-    /// OpenMesh's cost). `None` (the default): [`MeshTopology::from_soup`] is what is timed.
-    fn native_construction(soup: &PolygonSoup) -> Option<Result<Self>> {
-        let _ = soup;
+    /// The kernels a baseline runs itself, for timing (see [`NativeKernels`]); `None` (the
+    /// default): the harness times [`MeshTopology::from_soup`] and its own generic kernels.
+    /// (A baseline returns a constant; the lifetime `'a` spares the structures generic over
+    /// a type, such as the half-edge over its links, a `'static` bound.)
+    fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
         None
     }
 
-    /// A whole sweep of `op` over every element, run by the structure itself and folded into
-    /// the harness's checksum. Only for baselines behind an FFI boundary (OpenMesh), whose
-    /// per-query calls would measure the FFI instead of the library; `None` (the default) lets
-    /// the harness run its one generic kernel.
-    fn native_sweep(&self, op: Operator) -> Option<u64> {
+    /// What one query of `op` reads from memory ([`Access`]: bytes per container, dependent
+    /// loads on its longest chain), declared beside [`MeshTopology::cost`] for the limit the
+    /// report puts on each sweep; `None` (the default): no model, no limit.
+    fn access(op: Operator) -> Option<Access> {
         let _ = op;
         None
     }
+}
 
-    /// Like [`MeshTopology::native_sweep`], for the sampled vertex or face queries `ids`.
-    fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<u64> {
-        let _ = (op, ids);
-        None
-    }
+/// The kernels of a baseline behind an FFI boundary (OpenMesh), which the harness times instead
+/// of its own: per-query calls across the FFI would measure the FFI instead of the library, so
+/// whole loops run on the other side and return the harness's checksum. Reached through
+/// [`MeshTopology::native`].
+///
+/// Each kernel answers `None` when the baseline has no loop of its own for that case (the
+/// harness then runs its generic kernel) and `Some(Err(..))` when the library failed inside
+/// the loop: a loud error of the measurement, never a silent zero.
+pub trait NativeKernels<M> {
+    /// Construction the way the baseline's own API does it (OpenMesh: `reserve`, `add_vertex`,
+    /// `add_face`, without the lab's up-front manifold checks, which are not OpenMesh's cost).
+    fn construction(&self, soup: &PolygonSoup) -> Option<Result<M>>;
 
-    /// Like [`MeshTopology::native_sweep`], for an application workload of the harness by name.
-    /// Takes `&mut self` because a baseline may keep its results (normals) in the mesh; running
-    /// it twice must give the same result.
-    fn native_workload(&mut self, name: &str) -> Option<f64> {
-        let _ = name;
-        None
-    }
+    /// A whole sweep of `op` over every element of `mesh`, folded into the harness's checksum.
+    fn sweep(&self, mesh: &M, op: Operator) -> Option<Result<u64>>;
+
+    /// Like [`NativeKernels::sweep`], over the sampled query elements `ids` only: vertex, edge
+    /// or face ids by [`Operator::input`] (face ids for [`Input::EdgeOfFace`], each asking
+    /// about every edge of the face).
+    fn sampled(&self, mesh: &M, op: Operator, ids: &[u32]) -> Option<Result<u64>>;
+
+    /// An application workload, returning its result. Takes `&mut M` because a baseline may
+    /// keep its results (normals) in the mesh; running it twice must give the same result.
+    fn workload(&self, mesh: &mut M, workload: Workload) -> Option<Result<f64>>;
 }

@@ -10,8 +10,9 @@
 
 use crate::core::error::{Error, Format, Result};
 use crate::core::soup::PolygonSoup;
-use std::io::Write;
-use std::path::Path;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
 
 /// The format of a path, from its extension.
 pub fn format_of(path: &Path) -> Result<Format> {
@@ -186,10 +187,10 @@ pub fn write_off(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> 
     Ok(())
 }
 
-/// Writes `soup` to `path` as OBJ or OFF, by extension.
+/// Writes `soup` to `path` as OBJ or OFF, by extension, through [`write_atomically`].
 pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
     // Refuse before creating anything, so a refused write leaves no empty file behind.
-    let write_as: fn(&mut std::io::BufWriter<std::fs::File>, &PolygonSoup) -> std::io::Result<()> =
+    let write_as: fn(&mut BufWriter<File>, &PolygonSoup) -> std::io::Result<()> =
         match format_of(path)? {
             Format::Obj => |w, s| write_obj(w, s),
             Format::Off => |w, s| write_off(w, s),
@@ -199,10 +200,38 @@ pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
                 ))
             }
         };
-    let io = |source| Error::Io {
+    write_atomically(path, |w| write_as(w, soup)).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let mut w = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-    write_as(&mut w, soup).and_then(|()| w.flush()).map_err(io)
+    })
+}
+
+/// The temporary file [`write_atomically`] fills before renaming it to `path`: a hidden name
+/// with the process id, in the same folder (a rename replaces a file at once only within one
+/// file system).
+pub fn temporary_path(path: &Path) -> PathBuf {
+    let name = path.file_name().unwrap_or_default().to_string_lossy();
+    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+}
+
+/// Writes `path` by filling its [`temporary_path`] with `fill` and renaming it over `path` once
+/// complete, so that `path` is never half-written: it is either what it was before or the
+/// whole new file. When `fill` or the rename fails, the temporary file is removed. A process
+/// killed while filling leaves the temporary file behind (never a partial `path`); the file
+/// is not synced to disk, so this guards against failed and interrupted runs, not power cuts.
+pub fn write_atomically(
+    path: &Path,
+    fill: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    let tmp = temporary_path(path);
+    let written = File::create(&tmp).and_then(|file| {
+        let mut w = BufWriter::new(file);
+        fill(&mut w)?;
+        w.flush()?;
+        std::fs::rename(&tmp, path)
+    });
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
 }

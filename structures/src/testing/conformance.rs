@@ -366,8 +366,12 @@ pub fn check_enrolment(tested: &[&str], registered: &[&str]) -> Result<(), Strin
 /// meshes; for a list `module => Type, ...` (what
 /// [`for_each_structure!`](crate::for_each_structure) passes), those of each structure plus
 /// `every_registered_structure_is_conformance_tested`, which fails unless the list is exactly
-/// [`registry::NAMES`](crate::registry::NAMES). The calling crate needs `proptest` as a
-/// dev-dependency.
+/// [`registry::NAMES`](crate::registry::NAMES).
+///
+/// The one-structure form is how a structure outside the lab gets the whole suite as its own
+/// tests (the template `templates/sorted-edge-table/tests/conformance.rs` does): the macro
+/// reaches proptest through this crate, so the calling crate needs no dependency but
+/// `topolab-structures`.
 ///
 /// ```ignore
 /// topolab_structures::for_each_structure!(topolab_structures::conformance); // every structure
@@ -395,10 +399,10 @@ macro_rules! conformance {
 
             $crate::for_each_canonical_mesh!($crate::conformance; @canonical $ty);
 
-            proptest::proptest! {
-                #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+            $crate::testing::proptest::proptest! {
+                #![proptest_config($crate::testing::proptest::prelude::ProptestConfig::with_cases(48))]
                 #[test]
-                fn random_meshes(seed in proptest::prelude::any::<u64>()) {
+                fn random_meshes(seed in $crate::testing::proptest::prelude::any::<u64>()) {
                     let caps = <$ty as $crate::MeshTopology>::capabilities();
                     let (soup, is_grid) = $crate::testing::conformance::random_case(seed, caps);
                     if let Err(msg) = $crate::testing::conformance::check::<$ty>(&soup, is_grid) {

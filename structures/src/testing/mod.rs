@@ -5,3 +5,9 @@
 pub mod conformance;
 pub mod meshes;
 pub mod oracle;
+
+/// The property-testing crate the [`conformance!`](macro@crate::conformance) macro expands to,
+/// re-exported so that a crate outside the lab running the suite needs no `proptest`
+/// dependency of its own (nor one of the same version).
+#[doc(hidden)]
+pub use proptest;

@@ -1,9 +1,10 @@
-//! The lecture's consistency checks (*Konsistenzprüfung*) and validity rules of polygon meshes,
-//! run on a soup as read ([`RawSoup`]), reporting every problem instead of stopping at the first.
+//! The consistency checks (*Konsistenzprüfung*) and validity rules of polygon meshes of the
+//! lecture on polygon-mesh data structures, run on a soup as read ([`RawSoup`]), reporting every
+//! problem instead of stopping at the first.
 //!
 //! | group | finding | the lecture's question |
 //! |---|---|---|
-//! | missing | `missing-vertex`, `edge-without-end-point`, `too-few-vertices` | is something missing? |
+//! | missing | `empty-mesh`, `missing-vertex`, `edge-without-end-point`, `too-few-vertices` | is something missing? |
 //! | redundant | `duplicate-vertices`, `duplicate-face`, `geometric-duplicate-face`, `unused-vertex` | is something redundant (topologically, geometrically)? |
 //! | manifold | `non-manifold-edge`, `non-manifold-vertex`, `inconsistent-orientation`, `non-orientable` | an edge borders one or two facets; facets meet in nothing, a vertex or an edge |
 //! | geometry | `non-finite-coordinate`, `degenerate-face` | coordinates and areas |
@@ -38,6 +39,9 @@ use std::collections::{BTreeMap, HashSet};
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum FindingKind {
+    /// The file holds no vertex and no face: nothing to check, and almost certainly not the
+    /// mesh that was meant (an export that wrote nothing, a truncated download).
+    EmptyMesh,
     /// A face refers to a vertex that does not exist (out of range, negative, beyond `u32`).
     MissingVertex,
     /// An edge of a face whose end point is a missing vertex.
@@ -76,7 +80,8 @@ pub enum FindingKind {
 
 impl FindingKind {
     /// Every kind, in report order.
-    pub const ALL: [FindingKind; 17] = [
+    pub const ALL: [FindingKind; 18] = [
+        FindingKind::EmptyMesh,
         FindingKind::MissingVertex,
         FindingKind::EdgeWithoutEndPoint,
         FindingKind::TooFewVertices,
@@ -99,6 +104,7 @@ impl FindingKind {
     /// The kebab-case name used in reports and JSON.
     pub fn name(self) -> &'static str {
         match self {
+            FindingKind::EmptyMesh => "empty-mesh",
             FindingKind::MissingVertex => "missing-vertex",
             FindingKind::EdgeWithoutEndPoint => "edge-without-end-point",
             FindingKind::TooFewVertices => "too-few-vertices",
@@ -213,8 +219,9 @@ impl Report {
     }
 }
 
-/// Union-find over `0..n` (shared by the duplicate and manifold checks) that also keeps, per element, the parity of its path to the root:
-/// plain unions for components, parity unions for orientability.
+/// Union-find over `0..n` (shared by the duplicate and manifold checks) that also keeps, per
+/// element, the parity of its path to the root: plain unions for components, parity unions for
+/// orientability.
 struct UnionFind {
     parent: Vec<u32>,
     /// Parity of the link to `parent` (the root's is `false`).
@@ -273,6 +280,14 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
         })
     };
     let n = soup.num_vertices();
+    if n == 0 && soup.num_faces() == 0 {
+        push(
+            FindingKind::EmptyMesh,
+            vec![],
+            vec![],
+            "the file has no vertices and no faces".into(),
+        );
+    }
     let finite: Vec<bool> = soup.positions.iter().map(|p| p.is_finite()).collect();
     for (v, _) in finite.iter().enumerate().filter(|(_, ok)| !**ok) {
         let p = soup.positions[v];

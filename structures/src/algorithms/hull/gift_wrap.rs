@@ -1,4 +1,4 @@
-//! The `Embrulho3D` of the lecture on 3D convex hulls: gift wrapping (Chand & Kapur), O(n·h).
+//! `Embrulho3D` of the lecture on 3D convex hulls: gift wrapping (Chand & Kapur), O(n·h).
 //!
 //! ```text
 //! Q ← queue of faces found; T ← winged-edge

@@ -1,4 +1,4 @@
-//! The `Incremental3D` of the lecture on 3D convex hulls: O(n²).
+//! `Incremental3D` of the lecture on 3D convex hulls: O(n²).
 //!
 //! ```text
 //! P3 ← Tetraedro(p0, p1, p2, p3)

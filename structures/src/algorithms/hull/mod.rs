@@ -1,8 +1,9 @@
-//! # 3D convex hull on the winged-edge (the lecture on 3D convex hulls)
+//! # 3D convex hull on the winged-edge
 //!
-//! The lecture's three algorithms, each building a [`WingedEdge`] of the hull of a point set:
+//! The three algorithms of the lecture on 3D convex hulls, each building a [`WingedEdge`] of the
+//! hull of a point set:
 //!
-//! | [`Algorithm`] | lecture | module | cost |
+//! | [`Algorithm`] | the lecture | module | cost |
 //! |---|---|---|---|
 //! | `Gift` | `Embrulho3D` (Chand & Kapur), `FaceInicial` by rotating planes | [`gift_wrap`] | O(n·h) |
 //! | `Incremental` | `Incremental3D`, visibility by the sign of `Volume6` | [`incremental`] | O(n²) |
@@ -20,7 +21,9 @@
 //! - every orientation test is exact ([`predicates`], Shewchuk's `orient3d`; the incremental
 //!   algorithms test against each face's plane prepared once, [`plane`], with the same
 //!   first-stage filter, and go exact only when it is unsure);
-//! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; fewer than four distinct
+//! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; coordinates whose products
+//!   inside the predicates would overflow or underflow (a magnitude above 2^250, or non-zero
+//!   below 2^-250): [`Error::CoordinateOutOfRange`]; fewer than four distinct
 //!   points, or all on a line or a plane: [`Error::DegeneratePoints`];
 //! - duplicate points are allowed: only the first occurrence (smallest index) can be a vertex;
 //! - coplanar points on a hull facet: **triangulated**. The hull's vertices are exactly its

@@ -4,6 +4,20 @@
 //! (the `robust` crate): the *sign* is exact for any finite doubles, so no input (grids,
 //! coplanar or collinear points) can make two tests contradict each other. The value itself
 //! is an approximation and is only ever used for its sign.
+//!
+//! "Any finite doubles" holds only while no operation inside the predicates overflows or
+//! underflows (Shewchuk's exactness proof assumes neither). `orient3d` multiplies three
+//! coordinate differences: with coordinates near 1e300 the products overflow and the signs
+//! come out wrong (the algorithms then broke their own invariants), and with coordinates
+//! near 1e-120 they underflow to 0 (four corners of a tetrahedron came out coplanar).
+//! [`prepare`] therefore refuses, with [`Error::CoordinateOutOfRange`], a coordinate that is
+//! not 0 and not of a magnitude within [`MIN_COORDINATE`, `MAX_COORDINATE`] = [2^-250, 2^250]:
+//! - overflow: with |x| ≤ 2^250, a difference is ≤ 2^251, a product of three ≤ 2^753, and the
+//!   sums and error bounds of `orient3d` stay far below 2^1023;
+//! - underflow: every coordinate of magnitude ≥ 2^-250 is a multiple of 2^-302 (its unit in
+//!   the last place), so every difference is too, every product of three is a multiple of
+//!   2^-906, and so is every sum and rounded result: a non-zero value stays ≥ 2^-906, and even
+//!   its error bound (about 2^-50 times it) stays a normal double (≥ 2^-1022).
 
 use crate::error::{Error, Result};
 use glam::DVec3;
@@ -48,6 +62,12 @@ pub fn farther_on_ray(a: DVec3, w: DVec3, s: DVec3) -> bool {
     (0..3).any(|k| (w[k] > a[k] && s[k] > w[k]) || (w[k] < a[k] && s[k] < w[k]))
 }
 
+/// The largest coordinate magnitude the predicates take (2^250; see the module docs).
+pub const MAX_COORDINATE: f64 = 1.8092513943330656e75;
+
+/// The smallest non-zero coordinate magnitude the predicates take (2^-250).
+pub const MIN_COORDINATE: f64 = 5.527147875260445e-76;
+
 /// The checked input of every hull algorithm.
 pub struct Prepared {
     /// Input indices of the distinct points: the first occurrence of each position.
@@ -57,7 +77,8 @@ pub struct Prepared {
 }
 
 /// Checks `points` and removes duplicates: NaN or infinite coordinates give
-/// [`Error::NonFiniteCoordinate`], more than `u32` points [`Error::TooLarge`], and fewer than
+/// [`Error::NonFiniteCoordinate`], coordinates the exact predicates cannot take (module docs)
+/// [`Error::CoordinateOutOfRange`], more than `u32` points [`Error::TooLarge`], and fewer than
 /// four distinct points or points all on one plane [`Error::DegeneratePoints`]. Duplicates are
 /// allowed: only the first occurrence (smallest index) of a position can be a hull vertex.
 pub fn prepare(points: &[DVec3]) -> Result<Prepared> {
@@ -70,6 +91,18 @@ pub fn prepare(points: &[DVec3]) -> Result<Prepared> {
     for (vertex, p) in points.iter().enumerate() {
         if let Some(&value) = p.to_array().iter().find(|c| !c.is_finite()) {
             return Err(Error::NonFiniteCoordinate { vertex, value });
+        }
+        if let Some(&value) = p
+            .to_array()
+            .iter()
+            .find(|c| **c != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&c.abs()))
+        {
+            return Err(Error::CoordinateOutOfRange {
+                vertex,
+                value,
+                min: MIN_COORDINATE,
+                max: MAX_COORDINATE,
+            });
         }
     }
     let distinct = first_occurrences(points);

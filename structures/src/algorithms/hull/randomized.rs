@@ -1,5 +1,5 @@
-//! The randomized incremental algorithm with the conflict graph (the lecture on 3D convex
-//! hulls, after de Berg et al., section 11.3): expected O(n log n).
+//! The randomized incremental algorithm of the lecture on 3D convex hulls (after de Berg et al.,
+//! section 11.3), with the conflict graph: expected O(n log n).
 //!
 //! The points are processed in a uniformly random order (a seeded ChaCha8 permutation, so a
 //! run is reproducible). The bipartite conflict graph G links each point p not yet inserted

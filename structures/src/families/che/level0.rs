@@ -72,6 +72,7 @@ impl CheL0 {
     }
 
     /// `G[]`: the vertex positions.
+    #[inline]
     pub fn geometry(&self) -> &[DVec3] {
         &self.g
     }
@@ -97,7 +98,14 @@ impl CheL0 {
         self.half_edges().find(|&he| {
             let start = self.start(he);
             trace(StarRead::Vertex { he, vertex: start });
-            start == a && self.start(next(he)) == b
+            start == a && {
+                let end = self.start(next(he));
+                trace(StarRead::Vertex {
+                    he: next(he),
+                    vertex: end,
+                });
+                end == b
+            }
         })
     }
 
@@ -167,6 +175,7 @@ impl CheLevel for CheL0 {
         firsts.into_iter().for_each(|he| f(EdgeId(he)));
     }
 
+    #[inline]
     fn start_vertices(&self) -> &[u32] {
         &self.v
     }
@@ -193,7 +202,12 @@ impl CheLevel for CheL0 {
                     he: prev(he),
                     vertex: entering_from,
                 });
-                lone.add(entering_from.0, self.start(next(he)).0);
+                let leaving_to = self.start(next(he));
+                trace(StarRead::Vertex {
+                    he: next(he),
+                    vertex: leaving_to,
+                });
+                lone.add(entering_from.0, leaving_to.0);
             }
         }
         let closing = self.find_half_edge(VertexId(lone.vertex()?), v, &mut trace);

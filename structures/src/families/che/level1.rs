@@ -53,16 +53,19 @@ impl CheL1 {
     }
 
     /// `G[]`: the vertex positions.
+    #[inline]
     pub fn geometry(&self) -> &[DVec3] {
         self.l0.geometry()
     }
 
     /// `O[]`: the opposite of each half-edge, negative on the boundary.
+    #[inline]
     pub fn opposite(&self) -> &[i32] {
         &self.o
     }
 
     /// Level 0 (`G[]`, `V[]`).
+    #[inline]
     pub fn level0(&self) -> &CheL0 {
         &self.l0
     }
@@ -118,6 +121,7 @@ impl CheLevel for CheL1 {
     const STAR_ALGORITHM: &'static str =
         "Algorithm 6 (§4.6): scan V[] for a first half-edge, turn back to the boundary, walk the fan";
 
+    #[inline]
     fn start_vertices(&self) -> &[u32] {
         self.l0.start_vertices()
     }

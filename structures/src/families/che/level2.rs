@@ -1,12 +1,14 @@
 //! CHE level 2, the cells (§4.3): adds `VH[]`, one half-edge leaving each vertex (the boundary
 //! one for a boundary vertex, Algorithm 3), and the edge map `EH` (Algorithm 2). The vertex
-//! star starts at `VH[v]` (Algorithm 7): O(deg v).
+//! star starts at `VH[v]` (Algorithm 7): O(deg v). The timed relations walk it from both ends
+//! at once ([`fan_spokes`]; see "Speed" in the [module docs](super)).
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
+use super::{fan_spokes, next, triangle};
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
-use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -58,11 +60,13 @@ impl CheL2 {
     }
 
     /// `G[]`: the vertex positions.
+    #[inline]
     pub fn geometry(&self) -> &[DVec3] {
         self.l1.geometry()
     }
 
     /// Level 1 (`G[]`, `V[]`, `O[]`).
+    #[inline]
     pub fn level1(&self) -> &CheL1 {
         &self.l1
     }
@@ -80,6 +84,25 @@ impl CheL2 {
     /// `O[]` to relabel with boundary curve numbers (level 3, Algorithm 4).
     pub(crate) fn opposite_mut(&mut self) -> &mut [i32] {
         self.l1.opposite_mut()
+    }
+
+    /// [`fan_spokes`] of the star of `v` from `VH[v]`; no spoke for an unused vertex.
+    ///
+    /// `V[]` and `O[]` are asserted to have one entry per half-edge each, so that the `V[e]`
+    /// a caller reads after the walk's `O[e]` needs no bounds check of its own.
+    #[inline(always)]
+    fn spokes(&self, v: VertexId, spoke: impl FnMut(HalfEdgeId, i32)) -> Option<HalfEdgeId> {
+        let (vs, o) = (self.start_vertices(), self.l1.opposite());
+        assert_eq!(
+            vs.len(),
+            o.len(),
+            "V[] and O[] hold one entry per half-edge"
+        );
+        let he = self.vh[v.index()];
+        if he < 0 {
+            return None;
+        }
+        fan_spokes(o, HalfEdgeId(he as u32), spoke)
     }
 
     fn check_containers(&self) -> Result<()> {
@@ -137,6 +160,7 @@ impl CheLevel for CheL2 {
     const LEVEL: u8 = 2;
     const STAR_ALGORITHM: &'static str = "Algorithm 7 (§4.6): start at VH[v], walk the fan";
 
+    #[inline]
     fn start_vertices(&self) -> &[u32] {
         self.l1.start_vertices()
     }
@@ -168,7 +192,35 @@ impl CheLevel for CheL2 {
         self.l1.edge_of(he)
     }
 
+    /// The star walked from both ends ([`fan_spokes`]); each neighbour is `V[e]` of the
+    /// half-edge entering `v`.
+    #[inline(always)]
+    fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        let vs = self.start_vertices();
+        if let Some(b) = self.spokes(v, |e, _| f(VertexId(vs[e.index()]))) {
+            f(VertexId(vs[next(b).index()]));
+        }
+    }
+
+    /// The star walked from both ends ([`fan_spokes`]); each edge is `min(e, O[e])`.
+    #[inline(always)]
+    fn spoke_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
+        let lone = self.spokes(v, |e, o| {
+            f(EdgeId(if o < 0 { e.0 } else { e.0.min(o as u32) }))
+        });
+        if let Some(b) = lone {
+            f(EdgeId(b.0));
+        }
+    }
+
+    /// The star walked from both ends ([`fan_spokes`]); each entering half-edge's triangle.
+    #[inline(always)]
+    fn star_triangles(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+        self.spokes(v, |e, _| f(triangle(e)));
+    }
+
     /// `O[VH[v]] < 0` (§4.3).
+    #[inline(always)]
     fn vertex_on_boundary(&self, v: VertexId) -> bool {
         let he = self.vh[v.index()];
         he >= 0 && self.l1.opposite()[he as usize] < 0
@@ -180,6 +232,7 @@ impl CheLevel for CheL2 {
         }
     }
 
+    #[inline]
     fn edge_count(&self) -> usize {
         self.eh.len()
     }

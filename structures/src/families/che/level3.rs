@@ -52,11 +52,13 @@ impl CheL3 {
     }
 
     /// `G[]`: the vertex positions.
+    #[inline]
     pub fn geometry(&self) -> &[DVec3] {
         self.l2.geometry()
     }
 
     /// Level 2 (`G[]`, `V[]`, `O[]` with curve labels, `VH[]`, `EH`).
+    #[inline]
     pub fn level2(&self) -> &CheL2 {
         &self.l2
     }
@@ -118,6 +120,7 @@ impl CheLevel for CheL3 {
     const LEVEL: u8 = 3;
     const STAR_ALGORITHM: &'static str = CheL2::STAR_ALGORITHM;
 
+    #[inline]
     fn start_vertices(&self) -> &[u32] {
         self.l2.start_vertices()
     }
@@ -142,6 +145,22 @@ impl CheLevel for CheL3 {
         self.l2.edge_of(he)
     }
 
+    #[inline(always)]
+    fn neighbours(&self, v: VertexId, f: impl FnMut(VertexId)) {
+        self.l2.neighbours(v, f)
+    }
+
+    #[inline(always)]
+    fn spoke_edges(&self, v: VertexId, f: impl FnMut(EdgeId)) {
+        self.l2.spoke_edges(v, f)
+    }
+
+    #[inline(always)]
+    fn star_triangles(&self, v: VertexId, f: impl FnMut(FaceId)) {
+        self.l2.star_triangles(v, f)
+    }
+
+    #[inline(always)]
     fn vertex_on_boundary(&self, v: VertexId) -> bool {
         self.l2.vertex_on_boundary(v)
     }
@@ -154,6 +173,7 @@ impl CheLevel for CheL3 {
         self.l2.each_edge(f)
     }
 
+    #[inline]
     fn edge_count(&self) -> usize {
         self.l2.edge_count()
     }

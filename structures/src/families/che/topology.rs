@@ -44,52 +44,50 @@ macro_rules! che_topology {
             ) -> $crate::core::error::Result<Self> {
                 Self::build(soup)
             }
+            #[inline]
             fn num_vertices(&self) -> usize {
                 self.geometry().len()
             }
+            #[inline]
             fn num_edges(&self) -> usize {
                 $crate::families::che::CheLevel::edge_count(self)
             }
+            #[inline]
             fn num_faces(&self) -> usize {
                 self.start_vertices().len() / 3
             }
             fn for_each_edge(&self, f: impl FnMut($crate::core::ids::EdgeId)) {
                 $crate::families::che::CheLevel::each_edge(self, f)
             }
+            #[inline]
             fn position(&self, v: $crate::core::ids::VertexId) -> glam::DVec3 {
                 self.geometry()[v.index()]
             }
+            #[inline]
             fn vertex_vertices(
                 &self,
                 v: $crate::core::ids::VertexId,
-                mut f: impl FnMut($crate::core::ids::VertexId),
+                f: impl FnMut($crate::core::ids::VertexId),
             ) {
-                let vs = self.start_vertices();
-                let neighbour =
-                    |h: $crate::core::ids::HalfEdgeId| $crate::core::ids::VertexId(vs[h.index()]);
-                let closing =
-                    self.vertex_star(v, |_| {}, |h| f(neighbour($crate::families::che::next(h))));
-                if let Some(p) = closing {
-                    f(neighbour(p));
-                }
+                $crate::families::che::CheLevel::neighbours(self, v, f)
             }
+            #[inline]
             fn vertex_edges(
                 &self,
                 v: $crate::core::ids::VertexId,
-                mut f: impl FnMut($crate::core::ids::EdgeId),
+                f: impl FnMut($crate::core::ids::EdgeId),
             ) {
-                let closing = self.vertex_star(v, |_| {}, |h| f(self.edge_of(h)));
-                if let Some(p) = closing {
-                    f(self.edge_of(p));
-                }
+                $crate::families::che::CheLevel::spoke_edges(self, v, f)
             }
+            #[inline]
             fn vertex_faces(
                 &self,
                 v: $crate::core::ids::VertexId,
-                mut f: impl FnMut($crate::core::ids::FaceId),
+                f: impl FnMut($crate::core::ids::FaceId),
             ) {
-                self.vertex_star(v, |_| {}, |h| f($crate::families::che::triangle(h)));
+                $crate::families::che::CheLevel::star_triangles(self, v, f)
             }
+            #[inline]
             fn edge_vertices(
                 &self,
                 e: $crate::core::ids::EdgeId,
@@ -101,6 +99,7 @@ macro_rules! che_topology {
                     $crate::core::ids::VertexId(vs[$crate::families::che::next(he).index()]),
                 ]
             }
+            #[inline]
             fn edge_edges(
                 &self,
                 e: $crate::core::ids::EdgeId,
@@ -116,6 +115,7 @@ macro_rules! che_topology {
                     sides(o);
                 }
             }
+            #[inline]
             fn edge_faces(
                 &self,
                 e: $crate::core::ids::EdgeId,
@@ -127,6 +127,7 @@ macro_rules! che_topology {
                     f($crate::families::che::triangle(o));
                 }
             }
+            #[inline]
             fn face_vertices(
                 &self,
                 face: $crate::core::ids::FaceId,
@@ -138,6 +139,7 @@ macro_rules! che_topology {
                     ));
                 }
             }
+            #[inline]
             fn face_edges(
                 &self,
                 face: $crate::core::ids::FaceId,
@@ -147,6 +149,7 @@ macro_rules! che_topology {
                     f(self.edge_of(he));
                 }
             }
+            #[inline]
             fn face_faces(
                 &self,
                 face: $crate::core::ids::FaceId,
@@ -154,15 +157,19 @@ macro_rules! che_topology {
             ) {
                 $crate::families::che::CheLevel::triangles_across(self, face, f)
             }
+            #[inline]
             fn is_boundary_vertex(&self, v: $crate::core::ids::VertexId) -> bool {
                 $crate::families::che::CheLevel::vertex_on_boundary(self, v)
             }
+            #[inline]
             fn is_boundary_edge(&self, e: $crate::core::ids::EdgeId) -> bool {
                 self.twin($crate::families::che::half_edge(e)).is_none()
             }
+            #[inline]
             fn boundary_curves(&self, out: &mut $crate::core::topology::BoundaryCurves) {
                 $crate::families::che::CheLevel::walk_boundary_curves(self, out)
             }
+            #[inline]
             fn edge_successor(
                 &self,
                 e: $crate::core::ids::EdgeId,
@@ -170,6 +177,7 @@ macro_rules! che_topology {
             ) -> Option<$crate::core::ids::EdgeId> {
                 $crate::families::che::topology::successor(self, e, face, true)
             }
+            #[inline]
             fn edge_predecessor(
                 &self,
                 e: $crate::core::ids::EdgeId,
@@ -185,6 +193,14 @@ macro_rules! che_topology {
             }
             fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
                 self.print_containers(w)
+            }
+            fn access(
+                op: $crate::core::topology::Operator,
+            ) -> Option<$crate::core::access::Access> {
+                $crate::families::che::access::model(
+                    <$ty as $crate::families::che::CheLevel>::LEVEL,
+                    op,
+                )
             }
         }
     };

@@ -1,7 +1,8 @@
-//! The scans shared by the two structures without adjacency: the vertex list (corners hold
-//! vertex indices) and explicit storage (corners hold coordinates). Both store only the faces'
-//! corners, so every relation is found by scanning them, as the lecture describes; the only
-//! difference is how a corner names its vertex (the key `K`) and how keys map to the lab's ids.
+//! The scans shared by the two structures without adjacency: the vertex list (corners hold vertex
+//! indices) and explicit storage (corners hold coordinates). Both store only the faces' corners, so
+//! every relation is found by scanning them, as the lecture on polygon-mesh data structures
+//! describes; the only difference is how a corner names its vertex (the key `K`) and how keys map
+//! to the lab's ids.
 //!
 //! Edge ids: edge `{a, b}` is the first corner (lowest index in `keys`) whose outgoing side
 //! is `{a, b}`. Because faces are contiguous and a face uses a vertex once, that is the corner

@@ -17,7 +17,39 @@
 //!   boundary?" is one test, and its rotation starts at the boundary;
 //! - non-manifold vertices (the `bowtie`) are refused with [`crate::Error::NonManifoldVertex`]:
 //!   one half-edge per vertex reaches only one fan by rotation.
+//!
+//! ## Costs
+//!
+//! As the summary table of the lecture on polygon-mesh data structures (*half-edge Struktur –
+//! Zusammenfassung*), except one row. The table gives an edge's successor and predecessor
+//! together as O(k): "Vorgänger in Kante und Vorgänger in k-gon entlang hangeln für
+//! Nachfolger", a predecessor stored in the half-edge and a walk around the k-gon for the
+//! successor. The lecture's own record declares the other link, `HE_edge::next`, and walks the
+//! face with `edge = edge->next`; the lab stores `next` as the record does, so the successor
+//! is one read, O(1), and it is the predecessor that needs the walk, O(k)
+//! ([`PointerHalfEdge`](crate::PointerHalfEdge)), unless `prev` is stored as well, O(1)
+//! ([`IndexHalfEdge`](crate::IndexHalfEdge), as OpenMesh does).
+//!
+//! ## Rotating one way
+//!
+//! The lab's fairness rule (the docs of [`MeshTopology`](crate::MeshTopology)) offers every
+//! structure that walks fans the walk from both ends at once, which made the CHE and the
+//! winged-edge faster. Here the backward rotation `twin(prev(g))` was measured beside the
+//! forward one and did not pay, so both storages rotate one way, the lecture's loop.
+//! Instruction counts (callgrind, the harness's R00 sweep of a 100k-triangle torus) and the
+//! R00 time as a multiple of OpenMesh's in the same process (1M-triangle torus, median of 5
+//! runs of 9 interleaved rounds on a shared machine, `cargo run --release --example
+//! fan_sweep`), one way → both ways:
+//!
+//! - index: 91 → 114 instructions per vertex, 0.49 → 0.66× OpenMesh. A step is one load
+//!   and an `xor`, so the rotation is bound by its instructions more than by its chain, and
+//!   the second chain only adds instructions.
+//! - pointer: 86 → 129 instructions per vertex, 3.41 → 3.41× OpenMesh (R01 2.76 → 3.28×,
+//!   smoothing 2.51 → 2.52×). Without a stored `prev`, each backward step walks the face
+//!   (`next` twice) before its `pair`, and the time goes to cache misses on records spread
+//!   over the heap rather than to one chain's latency.
 
+mod access;
 mod build;
 pub mod index;
 pub mod pointer;
@@ -100,6 +132,13 @@ pub trait HalfEdgeLinks: Sized {
     fn describe(w: &mut dyn Write) -> std::fmt::Result;
     /// For `explain`: the stored `prev` of `h`, if the storage keeps one.
     fn stored_prev(&self, h: Self::H<'_>) -> Option<u32>;
+
+    /// What `op` reads from this storage ([`MeshTopology::access`](crate::MeshTopology::access));
+    /// `None` (the default): no model.
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        let _ = op;
+        None
+    }
 }
 
 /// A half-edge structure over the storage `L`; see the module docs.

@@ -10,8 +10,9 @@ use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Op
 use glam::DVec3;
 use std::fmt::Write;
 
-/// The cost table of both half-edge structures (the lecture's half-edge table; the
-/// predecessor depends on whether `prev` is stored).
+/// The cost table of both half-edge structures: the summary table of the lecture on
+/// polygon-mesh data structures, except the successor (see "Costs" in the module docs); the
+/// predecessor depends on whether `prev` is stored.
 fn half_edge_cost(op: Operator, predecessor: Cost) -> Cost {
     match op {
         Operator::R00 | Operator::R01 | Operator::R02 => Cost::Local,
@@ -42,12 +43,15 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.links.num_vertices()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         self.links.num_half_edges() / 2
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.links.num_faces()
     }
@@ -56,6 +60,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             f(EdgeId::new(e));
         }
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.links.position(v)
     }
@@ -82,6 +87,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         let h = self.links.half_edge(2 * e.0);
         [self.links.vertex(h), self.links.vertex(self.links.twin(h))]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         let h = self.links.half_edge(2 * e.0);
         for side in [h, self.links.twin(h)] {
@@ -94,6 +100,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             }
         }
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         let h = self.links.half_edge(2 * e.0);
         for side in [h, self.links.twin(h)] {
@@ -135,6 +142,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
     /// One scan for the boundary half-edges (their ids land in `out.edges` as a sorted
     /// scratch list, so nothing is allocated beyond the caller's buffer), then each loop is
     /// walked with `next` once, finding "already walked" by binary search in the scratch list.
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         let l = &self.links;
@@ -170,10 +178,12 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             *s -= scratch as u32;
         }
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let h = self.half_edge_in(e, face)?;
         Some(self.edge_of(self.links.next(h)))
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let h = self.half_edge_in(e, face)?;
         Some(self.edge_of(self.links.prev(h)))
@@ -234,5 +244,9 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
             "\nface = null marks a boundary half-edge; boundary vertices keep their outgoing\n\
              boundary half-edge in `edge`, so `edge->face == null` tells the boundary in O(1)."
         )
+    }
+
+    fn access(op: Operator) -> Option<crate::core::access::Access> {
+        L::access(op)
     }
 }

@@ -1,9 +1,10 @@
 //! # Height field
 //!
-//! The lecture's *gemischte Struktur* (mixed structure): the regular grid's implicit topology
-//! (every operator is the same arithmetic, shared through [`Grid`]) with explicit geometry,
-//! one stored position per vertex, "e.g. the simulation of a flag". It accepts the grids of
-//! [`crate::testing::meshes::grid`] with any positions: heights, perturbations, a waving flag.
+//! The *gemischte Struktur* (mixed structure) of the lecture on polygon-mesh data structures: the
+//! regular grid's implicit topology (every operator is the same arithmetic, shared through
+//! [`Grid`]) with explicit geometry, one stored position per vertex, "e.g. the simulation of a
+//! flag". It accepts the grids of [`crate::testing::meshes::grid`] with any positions: heights,
+//! perturbations, a waving flag.
 //!
 //! | stores | bytes |
 //! |---|---|

@@ -1,13 +1,14 @@
 //! # Regular grid (and, beside it, the height field)
 //!
-//! The lecture's *regelmäßige Struktur*: a rectangular, uniform grid whose topology is given
-//! by the number of points in x and y, and whose geometry by the origin and the cell lengths.
-//! Nothing is stored per element: every operator is arithmetic on the vertex number
-//! `v = j·(nx+1) + i`. It represents exactly the grids of [`crate::testing::meshes::grid`] (quads, or
-//! each cell split into the triangles `(a, b, c)`, `(a, c, d)`); anything else is refused with
-//! [`crate::Error::NotAGrid`] naming the reason. Positions are answered by the formula
-//! `origin + (i·dx, j·dy, 0)`; an input is accepted when each vertex lies there up to
-//! rounding (1e-9 of the grid's extent), so a generator's `origin + i·dx` need not round as ours.
+//! The *regelmäßige Struktur* of the lecture on polygon-mesh data structures: a rectangular,
+//! uniform grid whose topology is given by the number of points in x and y, and whose geometry by
+//! the origin and the cell lengths. Nothing is stored per element: every operator is arithmetic on
+//! the vertex number `v = j·(nx+1) + i`. It represents exactly the grids of
+//! [`crate::testing::meshes::grid`] (quads, or each cell split into the triangles `(a, b, c)`, `(a,
+//! c, d)`); anything else is refused with [`crate::Error::NotAGrid`] naming the reason. Positions
+//! are answered by the formula `origin + (i·dx, j·dy, 0)`; an input is accepted when each vertex
+//! lies there up to rounding (1e-9 of the grid's extent), so a generator's `origin + i·dx` need not
+//! round as ours.
 //!
 //! The lecture's *gemischte Struktur* (implicit topology, explicit geometry, "e.g. the
 //! simulation of a flag") is [`HeightField`]: the same arithmetic topology with every vertex

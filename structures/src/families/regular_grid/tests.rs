@@ -7,24 +7,32 @@ use crate::core::topology::MeshTopology;
 use crate::testing::conformance::compare;
 use crate::testing::meshes;
 
-/// The lecture's example: origin (-1, 1), cells 0.2 x 0.2, 10 points... here 10 x 20 cells.
-fn lecture_grid() -> PolygonSoup {
-    let mut soup = meshes::grid(10, 20, false);
+/// The example of the lecture on polygon-mesh data structures: origin (-1, 1), cells
+/// 0.2 x 0.2, 10 points in x and 20 in y (points, not cells: 9 x 19 cells).
+fn lecture_grid() -> (PolygonSoup, [u32; 2]) {
+    let points = [10u32, 20];
+    let mut soup = meshes::grid(points[0] as usize - 1, points[1] as usize - 1, false);
     for p in &mut soup.positions {
         *p = DVec3::new(-1.0 + p.x * 0.2, 1.0 + p.y * 0.2, 0.0);
     }
-    soup
+    (soup, points)
 }
 
 #[test]
 fn the_lecture_example_answers_its_top_right_corner() {
-    let grid = RegularGrid::from_soup(&lecture_grid()).expect("a regular grid");
+    // "Koordinaten des rechten oberen Punktes?": the last of 10 x 20 points.
+    let (soup, [nx, ny]) = lecture_grid();
+    let grid = RegularGrid::from_soup(&soup).expect("a regular grid");
     assert_eq!(grid.heap_bytes(), 0, "nothing stored per element");
-    let top_right = grid.position(VertexId(11 * 21 - 1));
-    assert!(
-        (top_right - DVec3::new(1.0, 5.0, 0.0)).length() < 1e-12,
-        "{top_right}"
+    assert_eq!(grid.num_vertices(), (nx * ny) as usize);
+    let top_right = grid.position(VertexId(nx * ny - 1));
+    let expected = DVec3::new(
+        -1.0 + (nx - 1) as f64 * 0.2,
+        1.0 + (ny - 1) as f64 * 0.2,
+        0.0,
     );
+    assert!((top_right - expected).length() < 1e-12, "{top_right}");
+    assert!((expected - DVec3::new(0.8, 4.8, 0.0)).length() < 1e-12);
     grid.validate().expect("valid");
 }
 

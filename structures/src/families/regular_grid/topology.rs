@@ -37,15 +37,19 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
         Ok(Self { shape, geometry })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.shape.num_vertices()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         self.shape.num_edges()
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.shape.num_faces()
     }
+    #[inline]
     fn num_boundary_edges(&self) -> usize {
         2 * (self.shape.nx + self.shape.ny) as usize
     }
@@ -54,21 +58,27 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
             f(EdgeId::new(e));
         }
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.geometry.position(self.shape, v)
     }
+    #[inline]
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.shape.vertex_edges(v.0, |_, w| f(VertexId(w)));
     }
+    #[inline]
     fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         self.shape.vertex_edges(v.0, |e, _| f(EdgeId(e)));
     }
+    #[inline]
     fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
         self.shape.vertex_faces(v.0, |g| f(FaceId(g)));
     }
+    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         self.shape.edge_ends(e.0).map(VertexId)
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         for face in self.shape.edge_faces(e.0).into_iter().flatten() {
             for &x in self.shape.face_edges(face).as_slice() {
@@ -78,21 +88,25 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
             }
         }
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         for face in self.shape.edge_faces(e.0).into_iter().flatten() {
             f(FaceId(face));
         }
     }
+    #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
         for &v in self.shape.face_corners(face.0).as_slice() {
             f(VertexId(v));
         }
     }
+    #[inline]
     fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
         for &e in self.shape.face_edges(face.0).as_slice() {
             f(EdgeId(e));
         }
     }
+    #[inline]
     fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
         for &e in self.shape.face_edges(face.0).as_slice() {
             for g in self.shape.edge_faces(e).into_iter().flatten() {
@@ -102,14 +116,17 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
             }
         }
     }
+    #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.shape.is_boundary_vertex(v.0)
     }
+    #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.shape.edge_faces(e.0).contains(&None)
     }
     /// One curve around the border: bottom row left to right, right column up, top row
     /// right to left, left column down.
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
         let s = self.shape;
@@ -120,12 +137,14 @@ impl<G: GridGeometry> MeshTopology for Grid<G> {
         (0..s.ny).rev().for_each(|j| push(s.vertical(0, j)));
         out.end_curve();
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let ring = self.shape.face_edges(face.0);
         let edges = ring.as_slice();
         let k = edges.iter().position(|&x| x == e.0)?;
         Some(EdgeId(edges[(k + 1) % edges.len()]))
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         let ring = self.shape.face_edges(face.0);
         let edges = ring.as_slice();

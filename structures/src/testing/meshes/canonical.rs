@@ -18,7 +18,7 @@ pub struct CanonicalMesh {
     pub grid: bool,
 }
 
-/// The open tetrahedron of the CHE chapter's Figure 4.10: a tetrahedron without its base,
+/// The open tetrahedron of the CHE thesis chapter's Figure 4.10: a tetrahedron without its base,
 /// 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve (vertices 0, 1, 2).
 ///
 /// The figure is a drawing not reproduced in the text; this numbering is ours and is the one
@@ -136,7 +136,7 @@ macro_rules! for_each_canonical_mesh {
             single_triangle => "single-triangle", "one face, all boundary",
                 $crate::meshes::single_triangle(), false;
             open_tetrahedron => "open-tetrahedron",
-                "the CHE chapter's Figure 4.10: 4 vertices, 3 triangles, 6 edges, 1 boundary curve",
+                "the CHE thesis chapter's Figure 4.10: 4 vertices, 3 triangles, 6 edges, 1 boundary curve",
                 $crate::meshes::open_tetrahedron(), false;
             closed_tetrahedron => "closed-tetrahedron", "closed, no boundary",
                 $crate::meshes::closed_tetrahedron(), false;

@@ -12,8 +12,8 @@ use std::f64::consts::TAU;
 /// vertex `(i, j)` is `j (nx+1) + i` at `(i, j, 0)`. Cells row by row; each cell is a quad
 /// `(a, b, c, d)` or, `triangulated`, the triangles `(a, b, c)` and `(a, c, d)`.
 pub fn grid(nx: usize, ny: usize, triangulated: bool) -> PolygonSoup {
-    let per = if triangulated { 2 } else { 1 };
-    let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), nx * ny * per, nx * ny * 4 + 2);
+    let (per, corners) = if triangulated { (2, 6) } else { (1, 4) };
+    let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), nx * ny * per, nx * ny * corners);
     push_grid_vertices(&mut s, nx, ny);
     let w = (nx + 1) as u32;
     for j in 0..ny as u32 {
@@ -70,10 +70,16 @@ pub fn torus(nu: usize, nv: usize) -> PolygonSoup {
 
 /// A torus with about `triangles` triangles (at least 18), rings about three times the tube.
 pub fn torus_with_triangles(triangles: usize) -> PolygonSoup {
+    let (nu, nv) = torus_sides(triangles);
+    torus(nu, nv)
+}
+
+/// The `(nu, nv)` of [`torus_with_triangles`].
+pub(super) fn torus_sides(triangles: usize) -> (usize, usize) {
     let cells = (triangles / 2).max(9) as f64;
     let nv = ((cells / 3.0).sqrt().round() as usize).max(3);
     let nu = ((cells / nv as f64).round() as usize).max(3);
-    torus(nu, nv)
+    (nu, nv)
 }
 
 /// A closed UV sphere: `rings` ≥ 2 latitude bands, `segments` ≥ 3 longitudes, two poles;
@@ -83,7 +89,8 @@ pub fn sphere(rings: usize, segments: usize) -> PolygonSoup {
         rings >= 2 && segments >= 3,
         "a sphere needs 2 rings and 3 segments"
     );
-    let mut s = PolygonSoup::new();
+    let faces = 2 * segments * (rings - 1);
+    let mut s = PolygonSoup::with_capacity(2 + (rings - 1) * segments, faces, 3 * faces);
     s.push_vertex(DVec3::Z);
     for r in 1..rings {
         let theta = std::f64::consts::PI * r as f64 / rings as f64;
@@ -199,13 +206,10 @@ pub fn random_mesh(seed: u64, params: RandomMeshParams) -> PolygonSoup {
 /// Vertices are numbered top side row by row, then bottom side row by row; faces top, bottom,
 /// rim. Linear in the size (one pass per side, capacity reserved), so 16M triangles is fine.
 pub fn perforated_plate(genus: usize, holes: usize, triangles: usize) -> PolygonSoup {
+    let layout = PlateLayout::new(genus, holes, triangles);
+    let PlateLayout { cols, tile, .. } = layout;
     let slots = genus + holes;
-    let cols = ((slots as f64).sqrt().ceil() as usize).max(1);
-    let rows = slots.div_ceil(cols).max(1);
-    // Two sides of 2 t² triangles per tile, less a tunnel's t² or an opening's t² / 2.
-    let per_t2 = (4 * cols * rows) as f64 - genus as f64 - holes as f64 / 2.0;
-    let tile = ((triangles as f64 / per_t2).sqrt().round() as usize).max(4);
-    let (nx, ny) = (cols * tile, rows * tile);
+    let (nx, ny) = layout.cells();
     // The slot of cell (i, j): its index among all slots, if the cell is inside one.
     let slot_of = |i: usize, j: usize| -> Option<usize> {
         let (lo, hi) = (tile / 4, tile - tile / 4);
@@ -216,8 +220,8 @@ pub fn perforated_plate(genus: usize, holes: usize, triangles: usize) -> Polygon
     // Cells of the plate (not in a tunnel), and of its top side (not in a tunnel or an opening).
     let in_plate = |i: usize, j: usize| !matches!(slot_of(i, j), Some(s) if s < genus);
     let in_top = |i: usize, j: usize| slot_of(i, j).is_none();
-    let cells = nx * ny;
-    let mut s = PolygonSoup::with_capacity(2 * (nx + 1) * (ny + 1), 4 * cells, 12 * cells);
+    let (vertices, faces) = layout.counts();
+    let mut s = PolygonSoup::with_capacity(vertices, faces, 3 * faces);
     let top = add_grid_side(&mut s, nx, ny, 0.5, in_top);
     let bottom = add_grid_side(&mut s, nx, ny, -0.5, in_plate);
     let w = nx + 1;
@@ -268,6 +272,56 @@ pub fn perforated_plate(genus: usize, holes: usize, triangles: usize) -> Polygon
     s
 }
 
+/// How [`perforated_plate`] lays a plate out: `cols` × `rows` tiles of `tile` × `tile` cells,
+/// slot k (tunnels first, then openings) the middle half of tile k, row by row.
+#[derive(Copy, Clone, Debug)]
+pub(super) struct PlateLayout {
+    genus: usize,
+    holes: usize,
+    cols: usize,
+    rows: usize,
+    tile: usize,
+}
+
+impl PlateLayout {
+    pub(super) fn new(genus: usize, holes: usize, triangles: usize) -> Self {
+        let slots = genus + holes;
+        let cols = ((slots as f64).sqrt().ceil() as usize).max(1);
+        let rows = slots.div_ceil(cols).max(1);
+        // Two sides of 2 t² triangles per tile, less a tunnel's t² or an opening's t² / 2.
+        let per_t2 = (4 * cols * rows) as f64 - genus as f64 - holes as f64 / 2.0;
+        let tile = ((triangles as f64 / per_t2).sqrt().round() as usize).max(4);
+        Self {
+            genus,
+            holes,
+            cols,
+            rows,
+            tile,
+        }
+    }
+
+    /// The cell grid, `nx` × `ny`.
+    fn cells(&self) -> (usize, usize) {
+        (self.cols * self.tile, self.rows * self.tile)
+    }
+
+    /// The vertices and triangles of the plate, counted without building it: each slot is an
+    /// `m` × `m` square of cells (`m = tile - 2 (tile / 4)`) that touches no other slot and not
+    /// the rim, so it removes its `(m - 1)²` interior grid vertices and `2 m²` triangles from
+    /// each side it cuts (a tunnel both, an opening the top), and a tunnel adds a wall of
+    /// `4 m` quads (8 m triangles) to the rim.
+    pub(super) fn counts(&self) -> (usize, usize) {
+        let (nx, ny) = self.cells();
+        let m = self.tile - 2 * (self.tile / 4);
+        let (g, h) = (self.genus, self.holes);
+        let grid_vertices = (nx + 1) * (ny + 1);
+        let vertices = 2 * grid_vertices - (2 * g + h) * (m - 1) * (m - 1);
+        let sides = 4 * nx * ny - 2 * (2 * g + h) * m * m;
+        let rim = 4 * (nx + ny) + 8 * g * m;
+        (vertices, sides + rim)
+    }
+}
+
 /// Adds the vertices of one side of a plate at height `z`: grid vertex `(i, j)` of an
 /// `nx` × `ny` cell grid gets a new vertex when a cell around it is `in_side`. Returns the
 /// new id of each grid vertex (`u32::MAX` when unused), indexed `j (nx + 1) + i`.
@@ -308,10 +362,10 @@ fn cell_corners(id: &[u32], w: usize, i: usize, j: usize) -> [u32; 4] {
 /// pentagon and a triangle, or a quad and two triangles. One boundary curve; vertices as
 /// [`grid`] numbers them.
 pub fn mixed_grid(faces: usize) -> PolygonSoup {
-    // On average two faces per pair of cells, a square of 2 n × 2 n cells: 4 n² faces.
-    let n = ((faces as f64 / 4.0).sqrt().round() as usize).max(1);
+    let n = mixed_pairs(faces);
     let (nx, ny) = (2 * n, 2 * n);
-    let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), 4 * n * n, 12 * n * n);
+    let (f, corners) = mixed_counts(n);
+    let mut s = PolygonSoup::with_capacity((nx + 1) * (ny + 1), f, corners);
     push_grid_vertices(&mut s, nx, ny);
     let w = (nx + 1) as u32;
     for j in 0..ny as u32 {
@@ -341,6 +395,30 @@ pub fn mixed_grid(faces: usize) -> PolygonSoup {
         }
     }
     s
+}
+
+/// The `n` of [`mixed_grid`]: pairs of cells per row, on a square of 2 n × 2 n cells. On
+/// average two faces per pair: 4 n² faces.
+pub(super) fn mixed_pairs(faces: usize) -> usize {
+    ((faces as f64 / 4.0).sqrt().round() as usize).max(1)
+}
+
+/// The faces and corners of [`mixed_grid`] with `n` pairs per row, counted without building
+/// it: pair `(p, j)` of kind `(p + j) mod 4` makes 1, 2, 2 or 3 faces of 6, 8, 8 or 10 corners.
+pub(super) fn mixed_counts(n: usize) -> (usize, usize) {
+    // How many of 0..len are k mod 4, for each k.
+    let residues = |len: usize| [0, 1, 2, 3].map(|k| len / 4 + usize::from(k < len % 4));
+    let (rows, pairs) = (residues(2 * n), residues(n));
+    let (mut faces, mut corners) = (0, 0);
+    for (r, &row_count) in rows.iter().enumerate() {
+        for (p, &pair_count) in pairs.iter().enumerate() {
+            let times = row_count * pair_count;
+            let (f, c) = [(1, 6), (2, 8), (2, 8), (3, 10)][(p + r) % 4];
+            faces += times * f;
+            corners += times * c;
+        }
+    }
+    (faces, corners)
 }
 
 /// The same mesh with every position moved by a seeded random offset in

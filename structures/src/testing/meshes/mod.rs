@@ -8,7 +8,7 @@ mod spec;
 
 pub use canonical::*;
 pub use generators::*;
-pub use spec::from_spec;
+pub use spec::{from_spec, parse_spec, MeshSize, MeshSpec, SpecError, MAX_FACES, MAX_SLOTS};
 
 #[cfg(test)]
 use crate::core::soup::PolygonSoup;

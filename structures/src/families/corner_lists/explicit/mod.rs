@@ -1,10 +1,10 @@
 //! # Explicit storage
 //!
-//! The lecture's first and simplest general structure (*explizite Speicherung*): every polygon
-//! lists the coordinates of its own corners, `P = ((x1,y1,z1), ..., (xk,yk,zk))`. There is no
-//! shared vertex, so a vertex shared by six triangles is stored six times, and topology is
-//! found by comparing coordinates: "How does one find shared edges? All edges of a vertex?"
-//! Slow on purpose, faithful to the lecture.
+//! The first and simplest general structure of the lecture on polygon-mesh data structures
+//! (*explizite Speicherung*): every polygon lists the coordinates of its own corners, `P =
+//! ((x1,y1,z1), ..., (xk,yk,zk))`. There is no shared vertex, so a vertex shared by six triangles
+//! is stored six times, and topology is found by comparing coordinates: "How does one find shared
+//! edges? All edges of a vertex?" Slow on purpose, faithful to the lecture.
 //!
 //! | stores | bytes |
 //! |---|---|
@@ -109,17 +109,21 @@ impl MeshTopology for ExplicitStorage {
         })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.ids.positions.len()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         let mut n = 0;
         self.corners.enumerate_edges(&self.ids, |_, _| n += 1);
         n
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.corners.num_faces()
     }
+    #[inline]
     fn num_boundary_edges(&self) -> usize {
         let mut n = 0;
         self.corners
@@ -130,54 +134,69 @@ impl MeshTopology for ExplicitStorage {
         self.corners
             .enumerate_edges(&self.ids, |c, _| f(EdgeId::new(c)));
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.ids.positions[v.index()]
     }
+    #[inline]
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.corners
             .vertex_edges(self.ids.key(v), |_, w| f(self.ids.vertex(w)));
     }
+    #[inline]
     fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         self.corners
             .vertex_edges(self.ids.key(v), |e, _| f(EdgeId::new(e)));
     }
+    #[inline]
     fn vertex_faces(&self, v: VertexId, f: impl FnMut(FaceId)) {
         self.corners.vertex_faces(self.ids.key(v), f);
     }
+    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         let (a, b) = self.corners.ends(e.index());
         [self.ids.vertex(a), self.ids.vertex(b)]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId)) {
         self.corners.edge_edges(e.index(), f);
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, f: impl FnMut(FaceId)) {
         self.corners.edge_faces(e.index(), f);
     }
+    #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
         for &p in self.corners.face(face.index()) {
             f(self.ids.vertex(p));
         }
     }
+    #[inline]
     fn face_edges(&self, face: FaceId, f: impl FnMut(EdgeId)) {
         self.corners.face_edges(face.index(), f);
     }
+    #[inline]
     fn face_faces(&self, face: FaceId, f: impl FnMut(FaceId)) {
         self.corners.face_faces(face.index(), f);
     }
+    #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.corners.is_boundary_vertex(self.ids.key(v))
     }
+    #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.corners.twin(e.index()).is_none()
     }
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         self.corners.boundary_curves(out);
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.corners
             .neighbour_in_face(e.index(), face.index(), true)
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.corners
             .neighbour_in_face(e.index(), face.index(), false)

@@ -1,9 +1,9 @@
 //! # Vertex list (indexed face set)
 //!
-//! The lecture's *Eckenliste*, the layout of `.obj` files: a shared list of vertex positions
-//! and, per face, the indices of its corners. Nothing else is stored, so every relation that
-//! needs a neighbour is found by scanning the faces, as the lecture says ("finding shared
-//! edges and vertices of polygons is still hard").
+//! The *Eckenliste* of the lecture on polygon-mesh data structures, the layout of `.obj` files: a
+//! shared list of vertex positions and, per face, the indices of its corners. Nothing else is
+//! stored, so every relation that needs a neighbour is found by scanning the faces, as the lecture
+//! says ("finding shared edges and vertices of polygons is still hard").
 //!
 //! | stores | bytes |
 //! |---|---|
@@ -90,17 +90,21 @@ impl MeshTopology for VertexList {
         })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.positions.len()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         let mut n = 0;
         self.corners.enumerate_edges(&Indices, |_, _| n += 1);
         n
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.corners.num_faces()
     }
+    #[inline]
     fn num_boundary_edges(&self) -> usize {
         let mut n = 0;
         self.corners
@@ -111,52 +115,67 @@ impl MeshTopology for VertexList {
         self.corners
             .enumerate_edges(&Indices, |c, _| f(EdgeId::new(c)));
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.positions[v.index()]
     }
+    #[inline]
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.corners.vertex_edges(v.0, |_, w| f(VertexId(w)));
     }
+    #[inline]
     fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         self.corners.vertex_edges(v.0, |e, _| f(EdgeId::new(e)));
     }
+    #[inline]
     fn vertex_faces(&self, v: VertexId, f: impl FnMut(FaceId)) {
         self.corners.vertex_faces(v.0, f);
     }
+    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         let (a, b) = self.corners.ends(e.index());
         [VertexId(a), VertexId(b)]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId)) {
         self.corners.edge_edges(e.index(), f);
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, f: impl FnMut(FaceId)) {
         self.corners.edge_faces(e.index(), f);
     }
+    #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
         for &v in self.corners.face(face.index()) {
             f(VertexId(v));
         }
     }
+    #[inline]
     fn face_edges(&self, face: FaceId, f: impl FnMut(EdgeId)) {
         self.corners.face_edges(face.index(), f);
     }
+    #[inline]
     fn face_faces(&self, face: FaceId, f: impl FnMut(FaceId)) {
         self.corners.face_faces(face.index(), f);
     }
+    #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.corners.is_boundary_vertex(v.0)
     }
+    #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.corners.twin(e.index()).is_none()
     }
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         self.corners.boundary_curves(out);
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.corners
             .neighbour_in_face(e.index(), face.index(), true)
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.corners
             .neighbour_in_face(e.index(), face.index(), false)

@@ -1,12 +1,12 @@
 //! # Edge list
 //!
-//! The lecture's *Kantenliste*: vertices in a point list, edges in a list of their own, each
-//! edge `E = (start, end, left polygon, right polygon)`, and every polygon as the list of its
-//! edges' indices. The left polygon is the one that traverses the edge from start to end
-//! (counter-clockwise seen from outside, its interior on the left, as the lecture orients
-//! polygons); the right polygon traverses it from end to start and is `N` (none) on the
-//! boundary. "Finding shared edges is now easier (check the second polygon index); finding
-//! the shared vertices of polygons is still hard": nothing points from a vertex to its edges.
+//! The *Kantenliste* of the lecture on polygon-mesh data structures: vertices in a point list,
+//! edges in a list of their own, each edge `E = (start, end, left polygon, right polygon)`, and
+//! every polygon as the list of its edges' indices. The left polygon is the one that traverses the
+//! edge from start to end (counter-clockwise seen from outside, its interior on the left, as the
+//! lecture orients polygons); the right polygon traverses it from end to start and is `N` (none) on
+//! the boundary. "Finding shared edges is now easier (check the second polygon index); finding the
+//! shared vertices of polygons is still hard": nothing points from a vertex to its edges.
 //!
 //! | stores | bytes |
 //! |---|---|
@@ -170,22 +170,27 @@ impl MeshTopology for EdgeList {
         })
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.positions.len()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         self.edge_start.len()
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.face_offsets.len() - 1
     }
     fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
         (0..self.num_edges()).for_each(|e| f(EdgeId::new(e)));
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.positions[v.index()]
     }
 
+    #[inline]
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.scan_edges_of(v, |e, starts| {
             f(if starts {
@@ -195,9 +200,11 @@ impl MeshTopology for EdgeList {
             })
         });
     }
+    #[inline]
     fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         self.scan_edges_of(v, |e, _| f(e));
     }
+    #[inline]
     fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
         // A polygon through v leaves v along exactly one of its edges: the left polygon of an
         // edge starting at v, or the right polygon of an edge ending at v.
@@ -212,9 +219,11 @@ impl MeshTopology for EdgeList {
             }
         });
     }
+    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         [self.edge_start[e.index()], self.edge_end[e.index()]]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         self.edge_faces(e, |face| {
             for &x in self.edges_of(face) {
@@ -224,20 +233,24 @@ impl MeshTopology for EdgeList {
             }
         });
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         f(self.edge_left[e.index()]);
         if let Some(right) = self.edge_right[e.index()].valid() {
             f(right);
         }
     }
+    #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
         for &e in self.edges_of(face) {
             f(self.ends_in(e, face)[0]);
         }
     }
+    #[inline]
     fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
         self.edges_of(face).iter().for_each(|&e| f(e));
     }
+    #[inline]
     fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
         for &e in self.edges_of(face) {
             let (left, right) = (self.edge_left[e.index()], self.edge_right[e.index()]);
@@ -246,20 +259,25 @@ impl MeshTopology for EdgeList {
             }
         }
     }
+    #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         let mut boundary = false;
         self.scan_edges_of(v, |e, _| boundary |= !self.edge_right[e.index()].is_valid());
         boundary
     }
+    #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         !self.edge_right[e.index()].is_valid()
     }
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         boundary_walk::boundary_curves(self, out);
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.neighbour_in_face(e, face, true)
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.neighbour_in_face(e, face, false)
     }

@@ -157,7 +157,8 @@ impl WingedEdge {
     /// face is on its left. The face's slot stays as a tombstone (see the module docs). O(k)
     /// expected (index updates) in any order of removal: a vertex whose `av(v)` goes takes
     /// one of the face's surviving edges at v, else any edge from its ring in the index (v
-    /// may keep edges in another fan between add_face calls that leave several fans).
+    /// may keep edges in another fan: after add_face joined faces at a vertex only, as gift
+    /// wrapping does, or after remove_face took a face from the middle of v's fan).
     ///
     /// Fails with [`Error::Unsupported`] if `face` does not exist (never added, or removed).
     pub fn remove_face(&mut self, face: FaceId) -> Result<()> {

@@ -1,9 +1,10 @@
-//! The seed's edge record and what the incremental API keeps beside the records.
+//! The edge record of the lecture on 3D convex hulls, and what the incremental API keeps
+//! beside the records.
 
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use std::collections::HashMap;
 
-/// An edge's eight pointers, in the seed's names (see the module docs for their meaning).
+/// An edge's eight pointers, in the hull lecture's names (see the module docs for their meaning).
 /// `v1 == VertexId::INVALID` marks a removed edge.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub(super) struct EdgeRecord {
@@ -122,7 +123,7 @@ pub(super) fn ends_key(a: VertexId, b: VertexId) -> u64 {
     ((lo as u64) << 32) | hi as u64
 }
 
-/// What the incremental API keeps beside the seed's records (see the module docs).
+/// What the incremental API keeps beside the hull lecture's records (see the module docs).
 #[derive(Clone, Debug, Default)]
 pub(super) struct IncrementalIndex {
     /// Each live edge by its end vertices ([`ends_key`]).

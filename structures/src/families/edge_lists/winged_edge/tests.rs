@@ -1,5 +1,5 @@
-//! The winged-edge's own tests: the lecture's example records, incremental construction and
-//! removal, refusals and `validate`.
+//! The winged-edge's own tests: the polygon-mesh lecture's example records, incremental
+//! construction and removal, refusals and `validate`.
 
 use super::*;
 use crate::core::error::Error;
@@ -23,7 +23,7 @@ fn four_vertices() -> WingedEdge {
 
 #[test]
 fn records_match_the_lectures_example() {
-    // The lecture's P1 = (E5, E4, E1) and P2 = (E2, E4, E3) over V1..V4, 0-based.
+    // The polygon-mesh lecture's P1 = (E5, E4, E1) and P2 = (E2, E4, E3) over V1..V4, 0-based.
     let soup = PolygonSoup::from_polygons(
         vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y],
         &[[0u32, 3, 1], [2, 1, 3]],
@@ -258,7 +258,7 @@ fn heap_bytes_are_the_documented_bytes_per_element() {
 }
 
 #[test]
-fn explain_prints_the_seeds_fields_for_the_open_tetrahedron() {
+fn explain_prints_the_hull_lectures_fields_for_the_open_tetrahedron() {
     let m = WingedEdge::from_soup(&meshes::open_tetrahedron()).unwrap();
     let mut text = String::new();
     m.explain(&mut text).unwrap();
@@ -432,4 +432,42 @@ fn a_region_that_is_not_one_disk_is_refused_and_nothing_changes() {
     let mut m = WingedEdge::from_soup(&grid).unwrap();
     let err = m.replace_by_cone(&[f(0)], apex, &mut horizon).unwrap_err();
     assert_eq!(err.kind(), "unsupported", "{err}");
+}
+
+#[test]
+fn removing_faces_splits_a_fan_and_a_removed_fan_hands_av_to_the_other() {
+    // Vertex 4, the centre of the 2 x 2 triangulated grid, has the closed fan
+    // f0 f1 f4 f7 f6 f3; removing f1 and f6 leaves the fans {f4, f7} and {f3, f0}.
+    let soup = meshes::grid(2, 2, true);
+    let centre = VertexId(4);
+    let mut m = WingedEdge::from_soup(&soup).unwrap();
+    m.remove_face(FaceId(1)).unwrap();
+    m.remove_face(FaceId(6)).unwrap();
+    let err = m.validate().unwrap_err();
+    assert!(
+        matches!(err, Error::NonManifoldVertex { vertex: 4, fans: 2 }),
+        "{err}"
+    );
+    // Remove the whole fan av(4) belongs to: av(4) must move to an edge of the other fan,
+    // which no removed face has.
+    let mut fan = Vec::new();
+    m.walk_fan(centre, m.av[4], |_| {}, |f| fan.push(f.0));
+    fan.sort_unstable();
+    let other: Vec<u32> = [0u32, 3, 4, 7]
+        .into_iter()
+        .filter(|f| !fan.contains(f))
+        .collect();
+    assert_eq!((fan.len(), other.len()), (2, 2), "{fan:?}");
+    for &f in &fan {
+        m.remove_face(FaceId(f)).unwrap();
+    }
+    m.validate().unwrap();
+    let mut faces = Vec::new();
+    m.vertex_faces(centre, |f| faces.push(f.0));
+    faces.sort_unstable();
+    assert_eq!(faces, other);
+    let live: Vec<bool> = (0..8u32)
+        .map(|f| ![1, 6].contains(&f) && !fan.contains(&f))
+        .collect();
+    compare(&compacted(&m), &soup.with_faces(|j| live[j])).unwrap();
 }

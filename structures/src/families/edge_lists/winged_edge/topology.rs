@@ -34,12 +34,15 @@ impl MeshTopology for WingedEdge {
         Ok(mesh)
     }
 
+    #[inline]
     fn num_vertices(&self) -> usize {
         self.positions.len()
     }
+    #[inline]
     fn num_edges(&self) -> usize {
         self.live_edges
     }
+    #[inline]
     fn num_faces(&self) -> usize {
         self.live_faces
     }
@@ -50,23 +53,29 @@ impl MeshTopology for WingedEdge {
             }
         }
     }
+    #[inline]
     fn position(&self, v: VertexId) -> DVec3 {
         self.positions[v.index()]
     }
 
+    #[inline]
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.walk_star(v, |e| f(self.edge(e).other_end(v)), |_| {});
     }
+    #[inline]
     fn vertex_edges(&self, v: VertexId, f: impl FnMut(EdgeId)) {
         self.walk_star(v, f, |_| {});
     }
+    #[inline]
     fn vertex_faces(&self, v: VertexId, f: impl FnMut(FaceId)) {
         self.walk_star(v, |_| {}, f);
     }
+    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         let r = self.edge(e);
         [r.v1, r.v2]
     }
+    #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         self.edge_faces(e, |face| {
             self.walk_face(face, |x, _| {
@@ -76,6 +85,7 @@ impl MeshTopology for WingedEdge {
             })
         });
     }
+    #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         let r = self.edge(e);
         f(r.fccw);
@@ -83,12 +93,15 @@ impl MeshTopology for WingedEdge {
             f(right);
         }
     }
+    #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
         self.walk_face(face, |_, r| f(r.ends_in(face)[0]));
     }
+    #[inline]
     fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
         self.walk_face(face, |e, _| f(e));
     }
+    #[inline]
     fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
         self.walk_face(face, |_, r| {
             if let Some(other) = r.other_face(face).valid() {
@@ -96,18 +109,23 @@ impl MeshTopology for WingedEdge {
             }
         });
     }
+    #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.walk_star(v, |_| {}, |_| {})
     }
+    #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         !self.edge(e).fcw.is_valid()
     }
+    #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
         boundary_walk::boundary_curves(self, out);
     }
+    #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.edges.get(e.index())?.next_in(face)
     }
+    #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
         self.edges.get(e.index())?.prev_in(face)
     }
@@ -138,9 +156,9 @@ impl MeshTopology for WingedEdge {
         };
         writeln!(
             w,
-            "winged-edge (doppelt verkettete Kantenliste, arestas aladas): seed 004's records"
+            "winged-edge (doppelt verkettete Kantenliste, arestas aladas): the records of the lecture on 3D convex hulls"
         )?;
-        writeln!(w, "- = none (the lecture's N); pccw/nccw = before/after e in fccw (left face, runs v1 -> v2),")?;
+        writeln!(w, "- = none (the polygon-mesh lecture's N); pccw/nccw = before/after e in fccw (left face, runs v1 -> v2),")?;
         writeln!(w, "pcw/ncw = before/after e in fcw (right face, runs v2 -> v1), each in the face's own cycle")?;
         writeln!(
             w,

@@ -1,12 +1,12 @@
 //! # Index half-edge
 //!
-//! The lecture's half-edge structure stored the way OpenMesh and pmp-library store it:
-//! structure of arrays with `u32` handles instead of pointers. Edge `e` owns half-edges `2e`
-//! and `2e + 1`, so the lecture's `pair` is not stored: `pair(h) = h ^ 1`. Boundary edges get
-//! an explicit boundary half-edge with no face, linked by `next` around the hole, and a
-//! boundary vertex's half-edge is its outgoing boundary half-edge (as in OpenMesh), so the
-//! boundary test is one read. Every circulator is built from two primitives, `next` and
-//! `twin`; the operators are the ones shared with the pointer half-edge
+//! The half-edge structure of the lecture on polygon-mesh data structures stored the way OpenMesh
+//! and pmp-library store it: structure of arrays with `u32` handles instead of pointers. Edge `e`
+//! owns half-edges `2e` and `2e + 1`, so the lecture's `pair` is not stored: `pair(h) = h ^ 1`.
+//! Boundary edges get an explicit boundary half-edge with no face, linked by `next` around the
+//! hole, and a boundary vertex's half-edge is its outgoing boundary half-edge (as in OpenMesh), so
+//! the boundary test is one read. Every circulator is built from two primitives, `next` and `twin`;
+//! the operators are the ones shared with the pointer half-edge
 //! ([`crate::families::half_edge::HalfEdge`]), monomorphised for arrays.
 //!
 //! | stores | lecture field | bytes |
@@ -117,8 +117,17 @@ impl HalfEdgeLinks for IndexLinks {
     fn face(&self, h: u32) -> Option<FaceId> {
         FaceId(self.arrays.face[h as usize]).valid()
     }
+    /// Also asserts that the per-half-edge arrays have one length (it is called once per
+    /// rotation), so a rotation's reads of `next[x]`, `vertex[x]` and `prev[x]` at one index
+    /// `x` share one bounds check.
     #[inline(always)]
     fn outgoing(&self, v: VertexId) -> Option<u32> {
+        let a = &self.arrays;
+        let n = a.vertex.len();
+        assert!(
+            a.next.len() == n && a.face.len() == n && self.prev.len() == n,
+            "one entry per half-edge in every per-half-edge array"
+        );
         let h = self.arrays.vertex_half_edge[v.index()];
         (h != NONE).then_some(h)
     }
@@ -178,7 +187,8 @@ impl HalfEdgeLinks for IndexLinks {
     fn describe(w: &mut dyn Write) -> std::fmt::Result {
         writeln!(
             w,
-            "index half-edge (OpenMesh style): the lecture's records as arrays of u32 handles\n\
+            "index half-edge (OpenMesh style): the records of the lecture on polygon-mesh data\n\
+             structures as arrays of u32 handles\n\
              HE_vert v: positions[v] (x, y, z), vertex_half_edge[v] (edge)\n\
              HE_face f: face_half_edge[f] (edge)\n\
              HE_edge h: vertex[h] (vert), next[h], prev[h], face[h]; pair = h ^ 1 is not stored"
@@ -187,6 +197,9 @@ impl HalfEdgeLinks for IndexLinks {
 
     fn stored_prev(&self, h: u32) -> Option<u32> {
         Some(self.prev[h as usize])
+    }
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        super::access::index(op)
     }
 }
 

@@ -1,5 +1,6 @@
-//! The only unsafe code of the crate: the lecture's records linked by raw pointers, each
-//! record its own heap allocation, and a safe read-only API over them.
+//! The only unsafe code of the crate: the half-edge records of the lecture on polygon-mesh data
+//! structures, linked by raw pointers, each record its own heap allocation, and a safe read-only
+//! API over them.
 //!
 //! Soundness rests on three facts, all established here:
 //! 1. every record is allocated by [`Records::new`] with `Box::into_raw`, its links are written
@@ -17,7 +18,8 @@ use std::ptr;
 pub(super) struct HeEdge {
     /// Start vertex of the half-edge.
     vert: *const HeVert,
-    /// Oppositely oriented adjacent half-edge (never null: boundary edges have a boundary half-edge).
+    /// Oppositely oriented adjacent half-edge (never null: boundary edges have a boundary
+    /// half-edge).
     pair: *const HeEdge,
     /// Face the half-edge borders; null for a boundary half-edge.
     face: *const HeFace,

@@ -1,6 +1,7 @@
 //! # Pointer half-edge
 //!
-//! The lecture's half-edge structure exactly as its slides declare it, records linked by
+//! The half-edge structure of the lecture on polygon-mesh data structures exactly as its slides
+//! declare it, records linked by
 //! real pointers, each record its own heap allocation:
 //!
 //! ```text
@@ -9,11 +10,11 @@
 //! struct HE_face { HE_edge* edge; };
 //! ```
 //!
-//! Measuring what chasing those pointers costs against the same connectivity in index
-//! arrays ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every
-//! operator with the same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers
-//! here and for arrays there. All unsafe code of the crate is in the private `links` module:
-//! records are written only while they are built, never move, and are freed in `Drop`.
+//! Measuring what chasing those pointers costs against the same connectivity in index arrays
+//! ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every operator with the
+//! same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers here and for
+//! arrays there. All unsafe code of the crate is in the private `links` module: records are written
+//! only while they are built, never move, and are freed in `Drop`.
 //!
 //! | record (one allocation each) | fields | bytes |
 //! |---|---|---|
@@ -34,7 +35,7 @@
 //!
 //! `EdgeId` `e`: half-edges `2e` and `2e + 1`; edges numbered by first appearance in the soup.
 //!
-//! | operator | how (the lecture's table) | cost |
+//! | operator | how (the lecture's loops) | cost |
 //! |---|---|---|
 //! | R00, R01, R02 | from `vert->edge`, `edge = edge->pair->next` | O(k) |
 //! | R10, R12 | `edge->vert`, `edge->pair->vert`; `edge->face`, `edge->pair->face` | O(1) |
@@ -43,6 +44,9 @@
 //! | predecessor | no `prev` pointer: walk `next` around the face | O(k) |
 //! | boundary vertex, boundary edge | `face == null` | O(1) |
 //! | boundary curves | scan the half-edges for boundary ones, walk each loop | O(n) |
+//!
+//! The lecture's summary table gives the successor O(k) too; it assumes a stored predecessor
+//! instead of the record's `next` (see "Costs" in [`crate::families::half_edge`]).
 //!
 //! Construction: `soup.connectivity()` (one sort, O(c log c)), then linear. Non-manifold
 //! vertices are refused ([`crate::Error::NonManifoldVertex`]).
@@ -150,13 +154,17 @@ impl HalfEdgeLinks for PointerLinks {
     fn describe(w: &mut dyn Write) -> std::fmt::Result {
         writeln!(
             w,
-            "pointer half-edge: the lecture's HE_vert, HE_face and HE_edge records, each its own\n\
-             heap allocation, linked by pointers (printed as the id of the record pointed to)"
+            "pointer half-edge: the HE_vert, HE_face and HE_edge records of the lecture on\n\
+             polygon-mesh data structures, each its own heap allocation, linked by pointers\n\
+             (printed as the id of the record pointed to)"
         )
     }
 
     fn stored_prev(&self, _h: EdgeRef<'_>) -> Option<u32> {
         None
+    }
+    fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
+        super::access::pointer(op)
     }
 }
 

@@ -2,13 +2,66 @@
 //! the result, optionally renumbered (`--order`), to make the large inputs of the benchmarks
 //! from real or generated meshes, in files other tools (the C++ baseline) can read too.
 
-use crate::cli::{load_mesh, Failure};
+use crate::input::{built_in_size, load_mesh, Failure};
+use crate::limits;
+use crate::output::{check_mesh_out, write_mesh};
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::Instant;
 use topolab_structures::ordering::{reorder, Ordering};
-use topolab_structures::refine::{subdivide_levels, Scheme};
-use topolab_structures::Format;
+use topolab_structures::refine::{subdivide, subdivide_levels, Scheme};
+use topolab_structures::PolygonSoup;
+
+/// Refuses `levels` levels of a mesh of `input_faces` faces when the result's ids would pass
+/// `u32`; returns the request's description and the result's faces.
+fn levels_within_u32(
+    spec: &str,
+    input_faces: u64,
+    levels: usize,
+) -> Result<(String, u128), Failure> {
+    // Each level makes four triangles of one: 3 F 4^L corners, saturated far past u32.
+    let growth = 4u128.saturating_pow(u32::try_from(levels).unwrap_or(u32::MAX));
+    let faces = growth.saturating_mul(input_faces.into());
+    let what = format!("--levels {levels} of {spec} ({input_faces} faces)");
+    limits::within_u32(
+        &what,
+        &[("faces", faces), ("corners", faces.saturating_mul(3))],
+    )?;
+    Ok((what, faces))
+}
+
+/// Refuses `levels` levels of `soup` when the result's ids would pass `u32` or its last level
+/// would not fit in memory: that level's input, edge analysis and output, and the renumbered
+/// copy, measured on one level of [`limits::sample_mesh`] and scaled by the result's corners.
+fn admit_levels(
+    spec: &str,
+    soup: &PolygonSoup,
+    levels: usize,
+    scheme: Scheme,
+    ordering: Ordering,
+) -> Result<(), Failure> {
+    let (what, faces) = levels_within_u32(spec, soup.num_faces() as u64, levels)?;
+    let sample = limits::sample_mesh();
+    if levels == 0 || faces <= 4 * sample.num_faces() as u128 {
+        return Ok(());
+    }
+    let (fine_corners, peak) = limits::peak_of(|| {
+        let fine = subdivide(&sample, scheme).map_or(0, |fine| {
+            let corners = fine.num_corners();
+            if ordering != Ordering::Input {
+                reorder(&fine, ordering);
+            }
+            corners
+        });
+        fine as u64
+    });
+    let need = limits::scale(
+        peak + sample.heap_bytes() as u64,
+        fine_corners,
+        3 * faces as u64,
+    );
+    limits::admit(&what, need)
+}
 
 /// Refines `spec` (a file or built-in mesh) `levels` times with `scheme` (a name), renumbers
 /// it in `order` (an ordering name) and writes it to `out` (.obj or .off). Progress per level
@@ -34,18 +87,15 @@ pub fn refine(
             names.join(", ")
         ))
     })?;
-    // Refuse an unwritable output format before the (long) refinement, not after.
-    match topolab_structures::io::format_of(out) {
-        Ok(Format::Obj | Format::Off) => {}
-        Ok(format) => {
-            return Err(Failure::usage(format!(
-                "cannot write {format} ({}); use .obj or .off",
-                out.display()
-            )))
-        }
-        Err(e) => return Err(Failure::usage(format!("cannot write: {e}"))),
+    // Refuse an unwritable output before the (long) refinement, not after.
+    check_mesh_out(out)?;
+    // A built-in mesh's size is known before it is generated: too many levels of a large one
+    // are refused without generating it.
+    if let Some(size) = built_in_size(spec) {
+        levels_within_u32(spec, size.faces, levels)?;
     }
-    let soup = load_mesh(spec)?;
+    let soup = load_mesh(spec, |_| 0)?;
+    admit_levels(spec, &soup, levels, scheme, ordering)?;
     let started = Instant::now();
     eprintln!(
         "refine: level 0: {} vertices, {} faces",
@@ -77,10 +127,7 @@ pub fn refine(
         );
         ordered
     };
-    topolab_structures::io::write(out, &fine).map_err(|e| Failure {
-        message: format!("cannot write {}: {e}", out.display()),
-        code: 2,
-    })?;
+    write_mesh(out, &fine)?;
     let mut text = String::new();
     let _ = writeln!(
         text,

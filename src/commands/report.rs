@@ -1,18 +1,23 @@
 //! `topolab report`: measures every structure on the size sweep and writes `results.json` and
-//! a self-contained `index.html`.
+//! a self-contained `index.html`. [`report_with`] is the same report with structures from
+//! outside the lab beside the lab's (see [`crate::extend`]).
 
-use crate::cli::Failure;
-use crate::registry::{self, StructureVisitor};
+use crate::extend::Lab;
+use crate::input::Failure;
+use crate::registry::StructureVisitor;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
+use topolab_harness::kernels::Kernel;
+use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
-    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching,
+    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
-use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::registry::{duplicate_name, names, Structures};
+use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.
 #[derive(clap::Args, Debug, Clone)]
@@ -20,7 +25,8 @@ pub struct ReportArgs {
     /// A smaller, faster run (three sizes up to 16k triangles, short budgets): under 2 minutes.
     #[arg(long)]
     pub quick: bool,
-    /// Triangle counts of the size sweep, comma separated (default 1000,4000,16000,64000,256000,1000000).
+    /// Triangle counts of the size sweep, comma separated, each from 1 to 2^30, measured smallest
+    /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
     pub sizes: Option<Vec<usize>>,
     /// Structures to measure, comma separated (default: all; see `topolab list`).
@@ -33,8 +39,8 @@ pub struct ReportArgs {
     /// Output folder.
     #[arg(long, default_value = "reports/latest")]
     pub out: PathBuf,
-    /// Size of the memory probe's arrays, MiB (default 256, 64 with --quick).
-    #[arg(long, hide = true)]
+    /// Size of the memory probe's arrays, MiB, from 1 to 4096 (default 256, 64 with --quick).
+    #[arg(long, hide = true, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=4096))]
     pub probe_mb: Option<usize>,
 }
 
@@ -64,8 +70,9 @@ impl StructureVisitor for Describe {
                 .iter()
                 .map(|&op| CostRow {
                     operator: op,
-                    cost: M::cost(op).notation().into(),
+                    cost: M::cost(op),
                     expected_exponent: M::cost(op).expected_exponent(),
+                    access: M::access(op),
                 })
                 .collect(),
         };
@@ -93,33 +100,59 @@ impl StructureVisitor for Describe {
 
 /// Runs the report; returns a summary line or a failure (exit 1 on a checksum mismatch).
 pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
+    report_with::<()>(args, command)
+}
+
+/// The structure called `name` among the lab's and the list `X`'s.
+fn visit<X: Structures, V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    <(Lab, X)>::visit(name, visitor).ok()
+}
+
+/// [`report`] with the structures of the list `X` (structures outside the lab) measured beside
+/// the lab's, after them in every table. A name of `X` that is already taken is a usage error.
+pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<String, Failure> {
+    let all = names::<(Lab, X)>();
+    if let Some(name) = duplicate_name(&all) {
+        return Err(Failure::usage(format!(
+            "two structures are called {name:?}: a structure added to the report needs a name \
+             of its own (see `topolab list`)"
+        )));
+    }
     let quick = args.quick;
-    let sizes = args.sizes.clone().unwrap_or_else(|| {
+    let mut sizes = args.sizes.clone().unwrap_or_else(|| {
         if quick {
             vec![1_000, 4_000, 16_000]
         } else {
             vec![1_000, 4_000, 16_000, 64_000, 256_000, 1_000_000]
         }
     });
+    // Smallest first, each once: the skip-by-estimate extrapolates from the sizes before.
+    sizes.sort_unstable();
+    sizes.dedup();
     let names: Vec<String> = match &args.structures {
         Some(list) => {
+            let mut names: Vec<String> = Vec::with_capacity(list.len());
             for n in list {
-                if !registry::NAMES.contains(&n.as_str()) {
-                    return Err(Failure::usage(format!(
-                        "unknown structure {n:?}; known: {}",
-                        registry::NAMES.join(", ")
-                    )));
+                if !all.contains(&n.as_str()) {
+                    return Err(crate::input::unknown_structure(n));
+                }
+                if !names.contains(n) {
+                    names.push(n.clone());
                 }
             }
-            list.clone()
+            names
         }
-        None => registry::NAMES.iter().map(|s| s.to_string()).collect(),
+        None => all.iter().map(|s| s.to_string()).collect(),
     };
+    let mut families: Vec<&str> = Vec::with_capacity(args.meshes.len());
     for f in &args.meshes {
         if !["torus", "grid", "real"].contains(&f.as_str()) {
             return Err(Failure::usage(format!(
                 "unknown mesh family {f:?}; known: torus, grid, real"
             )));
+        }
+        if !families.contains(&f.as_str()) {
+            families.push(f);
         }
     }
     let plan = Plan {
@@ -130,7 +163,16 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
+    // The same glibc policy for every structure, C++ baselines included: freed memory stays
+    // with the process, so warm builds reuse it whatever the run built before.
+    if !crate::alloc::keep_freed_memory() {
+        eprintln!("topolab report: this allocator keeps its own policy (not glibc): warm builds may still fault in fresh pages");
+    }
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
+    // Refused here, before anything is measured: sizes past u32 ids, more memory than there
+    // is, an output folder that cannot be written (it used to fail after the whole run).
+    crate::limits::admit_report(&sizes, &families, &names, probe_mb)?;
+    crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
     let mut results = Results {
@@ -155,18 +197,20 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         notes: Vec::new(),
     };
     for n in &names {
-        let (info, teach) = registry::visit(n, Describe).expect("checked above");
+        let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
         results.teaching.push(teach);
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
     for size in &sizes {
-        for fam in args.meshes.iter().filter(|f| *f != "real") {
-            let soup = meshes::from_spec(&format!("{fam}:{size}")).expect("known family");
-            cases.push((format!("{fam}-{}", short(*size)), fam.clone(), soup));
+        for fam in families.iter().filter(|f| **f != "real") {
+            let spec = format!("{fam}:{size}");
+            let soup = meshes::from_spec(&spec)
+                .map_err(|e| Failure::usage(format!("cannot generate the mesh {spec}: {e}")))?;
+            cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
-    if args.meshes.iter().any(|f| f == "real") {
+    if families.contains(&"real") {
         for (name, soup) in real_meshes(&mut results.notes) {
             cases.push((name, "real".into(), soup));
         }
@@ -202,7 +246,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         }
         for s in &names {
             bar.set_message(format!("{name}: {s}"));
-            registry::visit(
+            visit::<X, _>(
                 s,
                 Measure {
                     case: &case,
@@ -229,14 +273,16 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
             faces: soup.num_faces(),
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
+            counts: MeshCounts::of(soup),
         });
     }
     bar.finish_and_clear();
-    orderings(&cases, &names, &plan, &mut results)?;
+    orderings::<X>(&cases, &names, &plan, &mut results)?;
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
     results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    limit::annotate(&mut results);
     let skipped = results
         .measurements
         .iter()
@@ -244,7 +290,7 @@ pub fn report(args: &ReportArgs, command: String) -> Result<String, Failure> {
         .count();
     if skipped > 0 {
         results.notes.push(format!(
-            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate from smaller sizes.",
+            "{skipped} cells were skipped because their estimated run exceeded {:.1} s; the table shows the estimate (from the smaller sizes, or, at a family's first size, from the time per query of a timed sample of its queries).",
             plan.cell_max.as_secs_f64()
         ));
     }
@@ -379,8 +425,9 @@ impl StructureVisitor for Sweep<'_> {
 }
 
 /// The effect of element order: the largest torus (at most 256k triangles) renumbered by each
-/// ordering, and the R00 sweep of a few structures on each.
-fn orderings(
+/// ordering, and the R00 sweep of a few structures on each (and of every structure of `X`:
+/// whoever adds a structure wants to see how it takes reordering).
+fn orderings<X: Structures>(
     cases: &[(String, String, PolygonSoup)],
     names: &[String],
     plan: &Plan,
@@ -393,9 +440,10 @@ fn orderings(
     else {
         return Ok(());
     };
+    let added = topolab_structures::registry::names::<X>();
     let structures: Vec<&String> = names
         .iter()
-        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()))
+        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(&n.as_str()))
         .collect();
     for ordering in topolab_structures::ordering::Ordering::ALL {
         eprintln!("topolab report: ordering {} of {base}", ordering.name());
@@ -409,7 +457,7 @@ fn orderings(
             queries: &queries,
         };
         for s in &structures {
-            let m = registry::visit(s, Sweep { case: &case, plan })
+            let m = visit::<X, _>(s, Sweep { case: &case, plan })
                 .expect("registered")
                 .map_err(|message| Failure { message, code: 1 })?;
             results.measurements.push(m);
@@ -469,11 +517,19 @@ fn libigl(
         };
         let edges = soup.connectivity().map(|c| c.num_edges()).unwrap_or(0);
         for r in v["results"].as_array().into_iter().flatten() {
-            let op = r["operator"].as_str().unwrap_or_default().to_string();
+            let Some(subject) = r["operator"].as_str().and_then(Subject::from_name) else {
+                continue;
+            };
+            // The lab's answer over the whole mesh: an operator's sweep, or the workload.
+            let kernel = match subject {
+                Subject::Query(_) => Kernel::Sweep,
+                Subject::Workload(_) => Kernel::Workload,
+                Subject::Construction => Kernel::Construction,
+            };
             let lab = measurements.iter().find(|m| {
                 m.mesh == *name
-                    && m.operator == op
-                    && (m.kernel == "sweep" || m.kernel == "workload")
+                    && m.operator == subject
+                    && m.kernel == kernel
                     && m.checksum.is_some()
             });
             let (checksum, agrees) = match (
@@ -491,14 +547,18 @@ fn libigl(
                 }
                 _ => continue,
             };
-            let items = match op.as_str() {
-                "r10" => edges,
-                "r22" | "boundary-curves" => soup.num_faces(),
-                _ => soup.num_vertices(),
+            let items = match subject {
+                Subject::Query(op) => match op.input() {
+                    Input::Vertex => soup.num_vertices(),
+                    Input::Edge => edges,
+                    // Boundary curves too: per face, like the face relations.
+                    Input::Face | Input::EdgeOfFace | Input::Mesh => soup.num_faces(),
+                },
+                Subject::Workload(_) | Subject::Construction => soup.num_vertices(),
             };
             rows.push(topolab_harness::results::LibiglRow {
                 mesh: name.clone(),
-                operator: op,
+                operator: subject,
                 function: r["function"].as_str().unwrap_or_default().into(),
                 checksum,
                 agrees,
@@ -511,13 +571,14 @@ fn libigl(
 }
 
 fn write(out: &Path, results: &Results) -> Result<(), Failure> {
-    let fail = |e: std::io::Error| Failure {
+    use std::io::Write as _;
+    std::fs::create_dir_all(out).map_err(|e| Failure {
         message: format!("cannot write the report to {}: {e}", out.display()),
         code: 2,
-    };
-    std::fs::create_dir_all(out).map_err(fail)?;
+    })?;
     let json = serde_json::to_string_pretty(results).expect("serialisable");
-    std::fs::write(out.join("results.json"), json).map_err(fail)?;
-    std::fs::write(out.join("index.html"), html::render(results)).map_err(fail)?;
+    crate::output::write_file(&out.join("results.json"), |w| w.write_all(json.as_bytes()))?;
+    let page = html::render(results);
+    crate::output::write_file(&out.join("index.html"), |w| w.write_all(page.as_bytes()))?;
     Ok(())
 }

@@ -2,9 +2,12 @@
 //! problem reported (not only the first). Exit code 0 when clean, 1 when problems were found,
 //! 2 when the file cannot be read.
 
+use crate::input::{input_file, Failure};
+use crate::limits;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use topolab_structures::checks::{self, Options, Report};
+use topolab_structures::io::RawSoup;
 
 /// Findings of one kind printed in the text report before "... and N more".
 const SHOWN_PER_KIND: usize = 10;
@@ -19,31 +22,72 @@ pub struct CheckArgs {
     pub json: bool,
     /// Distance under which positions are equal (duplicate vertices) and a face counts as
     /// flat to a line (degenerate).
-    #[arg(long, default_value_t = Options::default().tolerance)]
+    #[arg(long, default_value_t = Options::default().tolerance, value_parser = tolerance)]
     pub tolerance: f64,
     /// Largest distance of a corner from its face's plane, relative to the face's size.
-    #[arg(long, default_value_t = Options::default().planarity_tolerance)]
+    #[arg(long, default_value_t = Options::default().planarity_tolerance, value_parser = tolerance)]
     pub planarity_tolerance: f64,
+}
+
+/// A tolerance: a finite number, at least 0. NaN would make every comparison false (no
+/// duplicate, every face planar: a clean report of a broken file), and a negative or infinite
+/// one means nothing.
+fn tolerance(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(t) if t.is_finite() && t >= 0.0 => Ok(t),
+        Ok(_) => Err("a tolerance is a finite number, at least 0".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// Reads the file as written, refusing first what is not a regular file, or what would not fit
+/// in memory: reading it ([`limits::read_bytes`]) and the checks, measured on
+/// [`limits::sample_mesh`] and scaled by corners.
+fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
+    let name = args.file.display().to_string();
+    let bytes = input_file(&args.file)?;
+    limits::admit(&format!("reading {name}"), limits::read_bytes(bytes))?;
+    let raw = topolab_structures::io::read_raw(&args.file).map_err(|e| Failure {
+        message: format!("cannot read {name}: {e}"),
+        code: 2,
+    })?;
+    let sample = limits::sample_mesh();
+    let corners = raw.soup.num_corners() as u64;
+    let sample_corners = sample.num_corners() as u64;
+    if corners > sample_corners {
+        let sample = RawSoup {
+            soup: sample,
+            unrepresentable: Vec::new(),
+        };
+        let ((), peak) = limits::peak_of(|| {
+            checks::check(&sample, options);
+        });
+        limits::admit(
+            &format!("checking {name}"),
+            limits::scale(peak, sample_corners, corners),
+        )?;
+    }
+    Ok(raw)
 }
 
 /// Runs the check, prints the report; returns the exit code.
 pub fn run(args: CheckArgs) -> u8 {
-    let raw = match topolab_structures::io::read_raw(&args.file) {
-        Ok(raw) => raw,
-        Err(e) => {
-            eprintln!("topolab: cannot read {}: {e}", args.file.display());
-            return 2;
-        }
-    };
     let options = Options {
         tolerance: args.tolerance,
         planarity_tolerance: args.planarity_tolerance,
+    };
+    let raw = match read(&args, &options) {
+        Ok(raw) => raw,
+        Err(e) => {
+            eprintln!("topolab: {}", e.message);
+            return e.code;
+        }
     };
     let report = checks::check(&raw, &options);
     let name = args.file.display().to_string();
     if args.json {
         let mut v = serde_json::to_value(&report).expect("serialisable");
-        v["file"] = name.into();
+        v["file"] = name.clone().into();
         v["clean"] = report.is_clean().into();
         println!(
             "{}",
@@ -55,6 +99,8 @@ pub fn run(args: CheckArgs) -> u8 {
     if report.is_clean() {
         0
     } else {
+        // The findings are on stdout; the reason for exit code 1 goes with the other refusals.
+        eprintln!("topolab: {name}: {} problems found", report.findings.len());
         1
     }
 }

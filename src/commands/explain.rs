@@ -1,0 +1,61 @@
+//! `topolab explain`: what a structure stores for the CHE chapter's open tetrahedron (or a
+//! mesh given), record by record; `explain che` shows the four CHE levels
+//! ([`super::explain_che`]).
+
+use super::explain_che;
+use super::list::Row;
+use crate::input::{mesh_or_tetrahedron, unknown_structure, Failure};
+use crate::limits;
+use crate::registry::{self, StructureVisitor};
+use topolab_structures::{Error, MeshTopology, PolygonSoup};
+
+/// The text of `topolab explain NAME [--mesh M] [--trace OP --vertex N]`: the CHE levels for
+/// `che`, one structure's records otherwise (`--trace` is for `che` only).
+pub fn run(
+    name: &str,
+    mesh: Option<&str>,
+    trace: Option<&str>,
+    vertex: Option<u32>,
+) -> Result<String, Failure> {
+    if name == explain_che::NAME {
+        return explain_che::explain_che(mesh, trace, vertex);
+    }
+    match trace {
+        Some(_) => Err(Failure::usage(format!(
+            "--trace works with `explain {}` only",
+            explain_che::NAME
+        ))),
+        None => explain(name, mesh),
+    }
+}
+
+/// The structure's records after a heading, in one string (no copy of the long part).
+struct ExplainVisit<'a>(&'a PolygonSoup, String);
+impl StructureVisitor for ExplainVisit<'_> {
+    type Output = Result<String, Error>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        let m = M::from_soup(self.0)?;
+        let mut out = self.1;
+        m.explain(&mut out)
+            .expect("writing to a String cannot fail");
+        Ok(out)
+    }
+}
+
+fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
+    let grids_only = registry::visit(name, Row)
+        .ok_or_else(|| unknown_structure(name))?
+        .capabilities
+        .grids_only;
+    let (soup, label) = mesh_or_tetrahedron(mesh, grids_only, |sample| {
+        let text = registry::visit(name, ExplainVisit(sample, String::new()));
+        let text = text.and_then(Result::ok).unwrap_or_default();
+        limits::growing_text(&text) + limits::outside_rust(name, sample)
+    })?;
+    registry::visit(name, ExplainVisit(&soup, format!("{name} for {label}\n\n")))
+        .ok_or_else(|| unknown_structure(name))?
+        .map_err(|e| Failure {
+            message: format!("{name} cannot store {label}: {e}"),
+            code: 1,
+        })
+}

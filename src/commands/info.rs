@@ -1,0 +1,96 @@
+//! `topolab info`: counts, boundary curves, Euler characteristic and genus of a mesh, computed
+//! through a structure.
+
+use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
+use crate::limits;
+use crate::registry::{self, StructureVisitor};
+use std::fmt::Write as _;
+use topolab_structures::summary::{summarize, Summary};
+use topolab_structures::{Error, MeshTopology, PolygonSoup};
+
+struct InfoVisit<'a>(&'a PolygonSoup);
+impl StructureVisitor for InfoVisit<'_> {
+    type Output = Result<Summary, Error>;
+    fn visit<M: MeshTopology>(self) -> Self::Output {
+        let m = M::from_soup(self.0)?;
+        Ok(summarize(&m))
+    }
+}
+
+/// What `info` computes on a mesh: the structure's summary (or why it cannot store the mesh),
+/// and the non-manifold vertices from the edge analysis. `None` for an unknown structure.
+fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<(Result<Summary, Error>, usize)> {
+    let summary = registry::visit(structure, InfoVisit(soup))?;
+    let non_manifold_vertices = soup
+        .connectivity()
+        .map(|c| c.vertex_fans(soup).iter().filter(|&&n| n > 1).count())
+        .unwrap_or(0);
+    Some((summary, non_manifold_vertices))
+}
+
+/// The text of `topolab info MESH [--structure NAME] [--json]`.
+pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
+    if !registry::NAMES.contains(&structure) {
+        return Err(unknown_structure(structure));
+    }
+    let soup = load_mesh(spec, |sample| {
+        summary_of(structure, sample);
+        limits::outside_rust(structure, sample)
+    })?;
+    refuse_empty(spec, &soup)?;
+    let (summary, non_manifold_vertices) =
+        summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
+    let summary = summary.map_err(|e| Failure {
+        message: format!("{structure} cannot store {spec}: {e}"),
+        code: 1,
+    })?;
+    if json {
+        let mut v = serde_json::to_value(&summary).expect("serialisable");
+        v["mesh"] = spec.into();
+        v["non_manifold_vertices"] = non_manifold_vertices.into();
+        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
+    }
+    let s = &summary;
+    let mut out = String::new();
+    let _ = writeln!(out, "mesh:                 {spec}");
+    let _ = writeln!(out, "structure:            {}", s.structure);
+    let _ = writeln!(
+        out,
+        "vertices:             {} ({} unused)",
+        s.vertices, s.unused_vertices
+    );
+    let _ = writeln!(out, "edges:                {}", s.edges);
+    let _ = writeln!(
+        out,
+        "faces:                {} ({})",
+        s.faces,
+        if s.triangles_only {
+            "triangles"
+        } else {
+            "polygons"
+        }
+    );
+    let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
+    let _ = writeln!(out, "boundary curves:      {}", s.boundary_curves);
+    let _ = writeln!(out, "components:           {}", s.components);
+    let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
+    match s.genus {
+        Some(g) => writeln!(out, "genus:                {g}"),
+        None => writeln!(
+            out,
+            "genus:                undefined ({} components)",
+            s.components
+        ),
+    }
+    .ok();
+    let _ = writeln!(
+        out,
+        "manifold:             {}",
+        if non_manifold_vertices == 0 {
+            "yes (oriented, every vertex one fan)".to_string()
+        } else {
+            format!("edges yes, {non_manifold_vertices} non-manifold vertices")
+        }
+    );
+    Ok(out)
+}

@@ -1,0 +1,102 @@
+//! `topolab list`: the structures, the operators and each structure's theoretical cost per
+//! operator, as a table or JSON.
+
+use crate::input::Failure;
+use crate::registry::{self, StructureVisitor};
+use std::fmt::Write as _;
+use topolab_structures::{Capabilities, MeshTopology, Operator};
+
+#[derive(serde::Serialize)]
+pub(crate) struct StructureRow {
+    pub(crate) name: &'static str,
+    pub(crate) capabilities: Capabilities,
+    pub(crate) costs: Vec<(&'static str, &'static str)>,
+}
+
+/// A structure's row of the list (`explain` reads its capabilities too).
+pub(crate) struct Row;
+impl StructureVisitor for Row {
+    type Output = StructureRow;
+    fn visit<M: MeshTopology>(self) -> StructureRow {
+        StructureRow {
+            name: M::NAME,
+            capabilities: M::capabilities(),
+            costs: Operator::ALL
+                .iter()
+                .map(|&op| (op.name(), M::cost(op).notation()))
+                .collect(),
+        }
+    }
+}
+
+/// The text of `topolab list [--json]`.
+pub fn list(json: bool) -> Result<String, Failure> {
+    let rows: Vec<StructureRow> = registry::NAMES
+        .iter()
+        .map(|n| registry::visit(n, Row).expect("registered"))
+        .collect();
+    if json {
+        let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
+        let v = serde_json::json!({ "structures": rows, "operators": ops });
+        return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
+    }
+    let mut out = String::new();
+    let _ = writeln!(out, "Structures and the theoretical cost of each operator");
+    let _ = writeln!(
+        out,
+        "(n: elements scanned, k: local size (valence or face size), ∂n1: boundary edges)\n"
+    );
+    // Columns as wide as the longest structure name (`pointer-half-edge`) plus a gap.
+    let width = rows
+        .iter()
+        .map(|r| r.name.len() + 2)
+        .max()
+        .unwrap_or(0)
+        .max(14);
+    let _ = write!(out, "{:<18}", "operator");
+    for r in &rows {
+        let _ = write!(out, "{:>width$}", r.name);
+    }
+    out.push('\n');
+    for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
+        let _ = write!(out, "{:<18}", spec.name);
+        for r in &rows {
+            let _ = write!(out, "{:>width$}", r.costs[i].1);
+        }
+        out.push('\n');
+    }
+    out.push('\n');
+    for r in &rows {
+        let c = r.capabilities;
+        let _ = writeln!(
+            out,
+            "{:<width$} {}{}{}{}",
+            r.name,
+            if c.triangles_only {
+                "triangles only"
+            } else {
+                "polygons"
+            },
+            if c.non_manifold_vertices {
+                ", non-manifold vertices"
+            } else {
+                ""
+            },
+            if c.grids_only {
+                ", regular grids only"
+            } else {
+                ""
+            },
+            if c.distinct_positions {
+                ", distinct positions"
+            } else {
+                ""
+            },
+        );
+    }
+    let _ = writeln!(out, "\noperators:");
+    for spec in &topolab_harness::catalogue::CATALOGUE {
+        let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);
+    }
+    Ok(out)
+}

@@ -1,0 +1,170 @@
+//! What the subcommands share: reading a mesh named on the command line, and the
+//! [`Failure`] a command returns (its message and exit code).
+
+use crate::{limits, registry};
+use std::path::Path;
+use topolab_structures::meshes::{self, MeshSize, SpecError};
+use topolab_structures::{Error, PolygonSoup};
+
+/// A failed command: what to tell the user and the exit code.
+#[derive(Debug)]
+pub struct Failure {
+    /// The message, with context.
+    pub message: String,
+    /// The exit code.
+    pub code: u8,
+}
+
+impl Failure {
+    fn unreadable(what: &str, e: Error) -> Self {
+        Self {
+            message: format!("cannot read {what}: {e}"),
+            code: 2,
+        }
+    }
+    /// A usage error (exit code 2).
+    pub fn usage(message: String) -> Self {
+        Self { message, code: 2 }
+    }
+}
+
+/// Refuses an input path that is not a regular file: a directory cannot be read as a mesh, and
+/// a device or pipe (`/dev/zero`) may never end. Returns the file's size in bytes.
+pub fn input_file(path: &Path) -> Result<u64, Failure> {
+    let meta = std::fs::metadata(path).map_err(|e| Failure {
+        message: format!("cannot read {}: {e}", path.display()),
+        code: 2,
+    })?;
+    if meta.is_dir() {
+        return Err(Failure::usage(format!(
+            "cannot read {}: it is a directory, not a mesh file",
+            path.display()
+        )));
+    }
+    if !meta.is_file() {
+        return Err(Failure::usage(format!(
+            "cannot read {}: it is not a regular file (a device or a pipe)",
+            path.display()
+        )));
+    }
+    Ok(meta.len())
+}
+
+/// Reads a mesh file for a command, refusing before reading one whose reading would exceed the
+/// available memory ([`limits::read_bytes`]).
+fn read_file(spec: &str, path: &Path) -> Result<PolygonSoup, Failure> {
+    let bytes = input_file(path)?;
+    limits::admit(&format!("reading {spec}"), limits::read_bytes(bytes))?;
+    topolab_structures::io::read(path).map_err(|e| Failure::unreadable(spec, e))
+}
+
+/// The failure for a name that is no file and no built-in mesh it can generate.
+fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
+    match e {
+        SpecError::Unknown => {
+            let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
+            Failure::usage(format!(
+                "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
+                names.join(", ")
+            ))
+        }
+        too_large @ SpecError::TooLarge { .. } => Failure::usage(format!("{spec}: {too_large}")),
+    }
+}
+
+/// Loads a mesh named on the command line, a file or a built-in mesh, for `work`: what the
+/// command will do with it. Refused (exit code 2) before it is read or generated when its ids
+/// or the memory of reading it, generating it and running `work` on it would not fit
+/// ([`crate::limits`]: `work` is measured on a sample mesh and scaled to this one's corners;
+/// it returns bytes to add to its measured peak, usually 0: a heap outside Rust's allocator,
+/// [`limits::outside_rust`], or a text's growth, [`limits::growing_text`]).
+pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<PolygonSoup, Failure> {
+    let path = Path::new(spec);
+    if path.exists() {
+        let soup = read_file(spec, path)?;
+        admit_work(spec, &MeshSize::of(&soup), 0, work)?;
+        return Ok(soup);
+    }
+    let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
+    let size = parsed.size();
+    admit_work(spec, &size, size.soup_bytes(), work)?;
+    Ok(parsed.generate())
+}
+
+/// The size of the built-in mesh `spec` names, when it names one and no file (`None` for a
+/// file, or a name that is not a built-in mesh: [`load_mesh`] says why).
+pub fn built_in_size(spec: &str) -> Option<MeshSize> {
+    if Path::new(spec).exists() {
+        return None;
+    }
+    meshes::parse_spec(spec).ok().map(|m| m.size())
+}
+
+/// Refuses a mesh of `size` when `base` bytes (its soup, if not yet built) and `work` on it,
+/// measured on [`limits::sample_mesh`] and scaled by corners, exceed the available memory.
+/// Meshes no larger than the sample pass unmeasured.
+fn admit_work(
+    spec: &str,
+    size: &MeshSize,
+    base: u64,
+    work: impl Fn(&PolygonSoup) -> u64,
+) -> Result<(), Failure> {
+    let sample = limits::sample_mesh();
+    let sample_corners = sample.num_corners() as u64;
+    if size.corners <= sample_corners {
+        return Ok(());
+    }
+    let (outside, peak) = limits::peak_of(|| work(&sample));
+    let work = limits::scale(peak + outside, sample_corners, size.corners);
+    limits::admit(spec, base.saturating_add(work))
+}
+
+/// Refuses a mesh with no vertex and no face (exit code 1): every count of it would be 0 and
+/// "manifold" or "genus" would be vacuous; `topolab check` reports it as `empty-mesh`.
+pub fn refuse_empty(spec: &str, soup: &PolygonSoup) -> Result<(), Failure> {
+    if soup.num_vertices() == 0 && soup.num_faces() == 0 {
+        return Err(Failure {
+            message: format!(
+                "{spec} is an empty mesh: it has no vertices and no faces (`topolab check` reports it as empty-mesh)"
+            ),
+            code: 1,
+        });
+    }
+    Ok(())
+}
+
+/// The mesh `explain` shows: the one named (loaded for `work`, see [`load_mesh`]), or the open
+/// tetrahedron (a 2x2 grid for grid-only structures, which cannot store it); with a label.
+pub fn mesh_or_tetrahedron(
+    mesh: Option<&str>,
+    grids_only: bool,
+    work: impl Fn(&PolygonSoup) -> u64,
+) -> Result<(PolygonSoup, String), Failure> {
+    Ok(match mesh {
+        Some(spec) => {
+            let soup = load_mesh(spec, work)?;
+            refuse_empty(spec, &soup)?;
+            (soup, spec.to_string())
+        }
+        // The tetrahedron is not a grid: grid-only structures explain a 2x2 grid instead.
+        None if grids_only => (
+            meshes::grid(2, 2, true),
+            "a 2x2 triangulated grid (the open tetrahedron is not a grid)".to_string(),
+        ),
+        None => (
+            meshes::open_tetrahedron(),
+            "the open tetrahedron of the CHE thesis chapter's Figure 4.10 (apex 3, triangle t = (t, t+1 mod 3, 3))".to_string(),
+        ),
+    })
+}
+
+/// The failure for a structure name that is not in this build (OpenMesh says how to get it).
+pub fn unknown_structure(name: &str) -> Failure {
+    if name == registry::OPENMESH {
+        return Failure::usage(format!("{name}: {}", crate::OPENMESH_MISSING));
+    }
+    Failure::usage(format!(
+        "unknown structure {name:?}; known: {}",
+        registry::NAMES.join(", ")
+    ))
+}

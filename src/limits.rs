@@ -1,0 +1,307 @@
+//! What a request needs, checked before the work: every command that generates, reads, refines
+//! or measures something large asks here first, and a request that cannot fit is refused with
+//! one line and exit code 2 instead of running until the ids overflow or the memory is gone.
+//!
+//! Two limits:
+//! - **ids**: the lab numbers vertices, faces and corners with `u32` ids, so no count may reach
+//!   `u32::MAX` ([`within_u32`]). Nothing overrides this: such a mesh cannot be stored.
+//! - **memory**: the estimated peak heap of the request against the memory the system has
+//!   available ([`available`]: `MemAvailable` of `/proc/meminfo`, or less under a container's
+//!   cgroup limit).
+//!   `--allow-memory` ([`set_allow_memory`]) overrides this one: the estimate may be pessimistic,
+//!   and swap or a smaller real mesh may make it fit.
+//!
+//! **The estimates.** A mesh's own arrays are counted exactly ([`MeshSize::soup_bytes`]). What
+//! a command builds from it (a structure, an edge analysis, the text of `explain`, a hull, a
+//! refined level) is *measured*, not guessed: [`peak_of`] runs the command's own work on a
+//! small sample ([`sample_mesh`], [`SAMPLE_POINTS`] points for hulls) under the process's
+//! counting allocator and scales its peak linearly to the request. So the estimate is the
+//! bytes per corner of the structure being built (per point of the hull), as this build
+//! allocates them; fixed costs of the sample make it err on the large side for small
+//! requests, which are not checked at all (no larger than the sample). A structure that
+//! allocates outside Rust (the OpenMesh baseline, in C++) adds the heap it declares.
+//! Decimation, when it exists, goes through the same checks.
+
+use crate::input::Failure;
+use crate::registry::{self, StructureVisitor};
+use std::sync::atomic::{AtomicBool, Ordering};
+use topolab_structures::meshes::{self, MeshSize};
+use topolab_structures::{MeshTopology, PolygonSoup};
+
+/// Set by `--allow-memory`: go on when the estimate exceeds the available memory.
+static ALLOW_MEMORY: AtomicBool = AtomicBool::new(false);
+
+/// `--allow-memory`: when `true`, [`admit`] lets requests above the available memory run (the
+/// id limit still holds).
+pub fn set_allow_memory(allow: bool) {
+    ALLOW_MEMORY.store(allow, Ordering::Relaxed);
+}
+
+/// Points of the sample a hull's memory is measured on.
+pub const SAMPLE_POINTS: usize = 2048;
+
+/// The mesh a command's work is measured on before it runs on a larger one: a triangulated
+/// 45 × 45 grid (4,050 triangles, 12,150 corners), which every structure stores (the grid-only
+/// ones included) and which has a boundary, so boundary handling is measured too.
+pub fn sample_mesh() -> PolygonSoup {
+    meshes::grid(45, 45, true)
+}
+
+/// Bytes the system can still give this process: `MemAvailable` of `/proc/meminfo` (what the
+/// kernel estimates can be allocated without swapping), lowered to the headroom of the cgroup
+/// (v2) mounted at `/sys/fs/cgroup` when that has a limit (`memory.max - memory.current`): in
+/// a container, its own cgroup, whose limit the host's `MemAvailable` does not show. (On a
+/// host, the root cgroup there has no `memory.max`, and a limit on a nested cgroup is not
+/// seen.) `None` where neither can be read (not Linux): nothing is
+/// refused for memory then. The environment variable `TOPOLAB_AVAILABLE_MEMORY` (bytes), when
+/// set, takes the place of all this: to plan for less than the machine has, and for tests.
+pub fn available() -> Option<u64> {
+    if let Some(bytes) = std::env::var_os("TOPOLAB_AVAILABLE_MEMORY") {
+        return bytes.to_str().and_then(|b| b.trim().parse().ok());
+    }
+    let meminfo = std::fs::read_to_string("/proc/meminfo").ok().and_then(|m| {
+        let line = m.lines().find(|l| l.starts_with("MemAvailable:"))?;
+        let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+        Some(kib * 1024)
+    });
+    let read = |file: &str| -> Option<u64> {
+        std::fs::read_to_string(format!("/sys/fs/cgroup/{file}"))
+            .ok()?
+            .trim()
+            .parse()
+            .ok()
+    };
+    // "max" (no limit) does not parse: no cgroup headroom then.
+    let cgroup =
+        read("memory.max").map(|max| max.saturating_sub(read("memory.current").unwrap_or(0)));
+    match (meminfo, cgroup) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
+}
+
+/// `bytes` for people: `1.5 GB`, `320.0 MB`, `12.0 kB`, `12 bytes` (powers of 1000).
+pub fn human(bytes: u64) -> String {
+    let b = bytes as f64;
+    match bytes {
+        0..1_000 => format!("{bytes} bytes"),
+        1_000..1_000_000 => format!("{:.1} kB", b / 1e3),
+        1_000_000..1_000_000_000 => format!("{:.1} MB", b / 1e6),
+        _ => format!("{:.1} GB", b / 1e9),
+    }
+}
+
+/// Refuses (exit code 2) a request whose estimated peak heap `bytes` exceeds the available
+/// memory, unless `--allow-memory` was given; `what` names the request as the user wrote it.
+pub fn admit(what: &str, bytes: u64) -> Result<(), Failure> {
+    let Some(free) = available() else {
+        return Ok(());
+    };
+    if bytes <= free || ALLOW_MEMORY.load(Ordering::Relaxed) {
+        return Ok(());
+    }
+    Err(Failure::usage(format!(
+        "{what} needs about {} of memory, more than the {} available; --allow-memory runs it anyway",
+        human(bytes),
+        human(free)
+    )))
+}
+
+/// Refuses (exit code 2) counts that `u32` ids cannot number: each must be below `u32::MAX`,
+/// the limit [`PolygonSoup::check`] enforces. `counts` pairs a name (`corners`, `points`) with
+/// a count (saturated: `u128::MAX` for "more than anything").
+pub fn within_u32(what: &str, counts: &[(&str, u128)]) -> Result<(), Failure> {
+    match counts.iter().find(|(_, n)| *n >= u32::MAX as u128) {
+        None => Ok(()),
+        Some((name, n)) => Err(Failure::usage(format!(
+            "{what} makes {} {name}, more than u32 ids number (at most {}); no option allows it",
+            if *n == u128::MAX {
+                "more than 2^128".to_string()
+            } else {
+                n.to_string()
+            },
+            u32::MAX - 1
+        ))),
+    }
+}
+
+/// [`within_u32`] for a mesh's counts.
+pub fn mesh_within_u32(what: &str, size: &MeshSize) -> Result<(), Failure> {
+    within_u32(
+        what,
+        &[
+            ("vertices", size.vertices.into()),
+            ("faces", size.faces.into()),
+            ("corners", size.corners.into()),
+        ],
+    )
+}
+
+/// The peak heap `work` allocates beyond what was allocated when it started, in bytes, as the
+/// process's counting allocator ([`crate::ALLOCATOR`]) sees it. `work` must allocate on the
+/// calling thread: the allocator counts one thread's bytes.
+pub fn peak_of<T>(work: impl FnOnce() -> T) -> (T, u64) {
+    let (out, peak) = crate::ALLOCATOR.measure(work);
+    (out, peak as u64)
+}
+
+/// What a text built by appending may take beyond what a sample of it measured: a `String`
+/// doubles its buffer as it grows, so the peak of a text of length L lies between L and 3L (the
+/// old buffer and the new one, twice as large, during the last copy), and where in that range
+/// depends on how L falls between powers of two. Adding `2 × text.len()` to the sample's
+/// measured peak (at least L) makes it cover 3L at any length.
+pub fn growing_text(text: &str) -> u64 {
+    2 * text.len() as u64
+}
+
+/// `bytes × elements / sample`, rounded up, saturating.
+pub fn scale(bytes: u64, sample: u64, elements: u64) -> u64 {
+    let scaled = (bytes as u128 * elements as u128).div_ceil(sample.max(1) as u128);
+    u64::try_from(scaled).unwrap_or(u64::MAX)
+}
+
+/// Builds a structure and returns the heap it declares ([`MeshTopology::heap_bytes`]).
+struct Declared<'a>(&'a PolygonSoup);
+impl StructureVisitor for Declared<'_> {
+    type Output = u64;
+    fn visit<M: MeshTopology>(self) -> u64 {
+        M::from_soup(self.0).map_or(0, |m| m.heap_bytes() as u64)
+    }
+}
+
+/// The heap `structure` allocates on `soup` outside Rust, which the counting allocator does
+/// not see: the OpenMesh baseline's C++ heap, as it declares it; 0 for every other structure.
+pub fn outside_rust(structure: &str, soup: &PolygonSoup) -> u64 {
+    if structure != registry::OPENMESH {
+        return 0;
+    }
+    registry::visit(structure, Declared(soup)).unwrap_or(0)
+}
+
+/// Builds a structure twice at once, as `report` does (the measured build and a timed
+/// rebuild); returns the heap they hold outside Rust ([`outside_rust`]).
+struct TwoBuilds<'a>(&'a PolygonSoup);
+impl StructureVisitor for TwoBuilds<'_> {
+    type Output = u64;
+    fn visit<M: MeshTopology>(self) -> u64 {
+        let (a, b) = (M::from_soup(self.0), M::from_soup(self.0));
+        if M::NAME != registry::OPENMESH {
+            return 0;
+        }
+        [a, b].iter().flatten().map(|m| m.heap_bytes() as u64).sum()
+    }
+}
+
+/// `topolab report`'s request, checked before the memory probe: every size a triangle count
+/// from 1 to [`meshes::MAX_FACES`] that each family generates within `u32` ids, and the memory
+/// of the run below what is available. The report holds every generated mesh at once, and
+/// measures one structure at a time on each: its peak is the larger of the probe's array
+/// (`probe_mb` MiB, freed before the meshes are made) and all the meshes plus two builds of the
+/// largest structure on the largest mesh (measured on [`sample_mesh`] and scaled by corners).
+/// The real meshes of `bench-data/cache/` (at most 64 MB of file each) and the hull benchmark
+/// (at most 1M points, about 0.3 GB) are not counted.
+pub fn admit_report(
+    sizes: &[usize],
+    families: &[&str],
+    structures: &[String],
+    probe_mb: usize,
+) -> Result<(), Failure> {
+    let mut meshes_bytes = 0u64;
+    let mut largest = 0u64;
+    for &size in sizes {
+        let bad = || {
+            Failure::usage(format!(
+                "--sizes {size}: a size is a triangle count from 1 to {} (the generated meshes number their elements with u32 ids)",
+                meshes::MAX_FACES
+            ))
+        };
+        if size == 0 {
+            return Err(bad());
+        }
+        for family in families.iter().filter(|f| **f != "real") {
+            let spec = meshes::parse_spec(&format!("{family}:{size}")).map_err(|_| bad())?;
+            let mesh = spec.size();
+            meshes_bytes = meshes_bytes.saturating_add(mesh.soup_bytes());
+            largest = largest.max(mesh.corners);
+        }
+    }
+    let sample = sample_mesh();
+    let sample_corners = sample.num_corners() as u64;
+    let per_structure = structures.iter().map(|name| {
+        let (outside, peak) = peak_of(|| registry::visit(name, TwoBuilds(&sample)).unwrap_or(0));
+        scale(peak + outside, sample_corners, largest)
+    });
+    let measured = meshes_bytes.saturating_add(per_structure.max().unwrap_or(0));
+    let probe = (probe_mb as u64) << 20;
+    let largest_size = sizes.iter().max().copied().unwrap_or(0);
+    admit(
+        &format!(
+            "the report ({} sizes up to {largest_size} triangles, {} structures)",
+            sizes.len(),
+            structures.len()
+        ),
+        measured.max(probe),
+    )
+}
+
+/// The estimated peak of reading a mesh file of `file_bytes` bytes: the file's bytes, which the
+/// readers hold whole, plus a soup up to three times as large. A soup takes 24 bytes per vertex
+/// and 16 per triangle; a text file spends at least 8 bytes on each (`v 0 0 0`, `f 1 2 3`),
+/// a binary PLY 12 and 13: up to 3 and 2 times the file, and files as tools write them
+/// (several digits per coordinate) stay near 1.
+pub fn read_bytes(file_bytes: u64) -> u64 {
+    file_bytes.saturating_mul(4)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_at_u32_max_are_refused_and_below_accepted() {
+        assert!(within_u32("x", &[("corners", u32::MAX as u128 - 1)]).is_ok());
+        let e = within_u32(
+            "--levels 20",
+            &[("faces", 1), ("corners", u32::MAX as u128)],
+        )
+        .unwrap_err();
+        assert_eq!(e.code, 2);
+        assert!(
+            e.message
+                .starts_with("--levels 20 makes 4294967295 corners"),
+            "{}",
+            e.message
+        );
+        let e = within_u32("x", &[("points", u128::MAX)]).unwrap_err();
+        assert!(
+            e.message.contains("more than 2^128 points"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn the_estimate_is_refused_above_the_available_memory_unless_allowed() {
+        let Some(free) = available() else { return };
+        assert!(free > 0);
+        assert!(admit("small", 1).is_ok());
+        let e = admit("torus:N", u64::MAX).unwrap_err();
+        assert_eq!(e.code, 2);
+        assert!(
+            e.message.starts_with("torus:N needs about"),
+            "{}",
+            e.message
+        );
+        assert!(e.message.contains("--allow-memory"), "{}", e.message);
+    }
+
+    #[test]
+    fn scaling_rounds_up_and_saturates() {
+        assert_eq!(scale(10, 3, 1), 4);
+        assert_eq!(scale(12, 4, 8), 24);
+        assert_eq!(scale(u64::MAX, 1, 2), u64::MAX);
+        assert_eq!(human(1_500_000_000), "1.5 GB");
+        assert_eq!(human(320_000_000), "320.0 MB");
+        assert_eq!(human(12), "12 bytes");
+    }
+}

@@ -1,0 +1,165 @@
+//! The files a command writes, checked before the work starts: a run that would only fail at
+//! the end (an unwritable folder, a directory or a device where a file goes) fails at once.
+//! The writing itself goes through [`topolab_structures::io::write_atomically`]: a temporary
+//! file in the same folder, renamed over the target once complete, so a failed or interrupted
+//! run never leaves a half-written file under the target's name.
+
+use crate::input::Failure;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+use topolab_structures::io::{temporary_path, write_atomically};
+use topolab_structures::{Error, Format, PolygonSoup};
+
+fn cannot(path: &Path, why: impl std::fmt::Display) -> Failure {
+    Failure::usage(format!("cannot write {}: {why}", path.display()))
+}
+
+/// The folder a file goes in (`.` for a bare file name).
+fn folder_of(path: &Path) -> PathBuf {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+/// Refuses what is at `path` if it is not a regular file: writing renames a finished file over
+/// it, which must not replace a directory or a device (`/dev/null`).
+fn refuse_non_file(path: &Path) -> Result<(), Failure> {
+    match std::fs::metadata(path) {
+        Ok(m) if m.is_dir() => Err(cannot(path, "it is a directory")),
+        Ok(m) if !m.is_file() => Err(cannot(
+            path,
+            "it is not a regular file (a device or a pipe); give a file name",
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// Creates and removes the temporary file a write of `path` would fill: the one sure test of
+/// "creatable and writable" (permission bits do not tell, for root or on read-only mounts).
+fn probe(path: &Path) -> Result<(), Failure> {
+    let tmp = temporary_path(path);
+    File::create(&tmp).map_err(|e| cannot(path, e))?;
+    let _ = std::fs::remove_file(&tmp);
+    Ok(())
+}
+
+/// Checks, before the work, that the file `path` can be written: its folder exists, nothing but
+/// a regular file is in its place, and a file can be created next to it.
+pub fn check_file(path: &Path) -> Result<(), Failure> {
+    if path.file_name().is_none() {
+        return Err(cannot(path, "it names a folder, not a file"));
+    }
+    refuse_non_file(path)?;
+    let folder = folder_of(path);
+    if !folder.is_dir() {
+        return Err(cannot(
+            path,
+            format!("the folder {} does not exist", folder.display()),
+        ));
+    }
+    probe(path)
+}
+
+/// Checks, before the work, that the folder `dir` can receive `files`: it is a folder (or can
+/// be created: its nearest existing ancestor is a writable folder), and each file can be
+/// written in it. Creates nothing that stays.
+pub fn check_folder(dir: &Path, files: &[&str]) -> Result<(), Failure> {
+    if dir.exists() {
+        if !dir.is_dir() {
+            return Err(cannot(dir, "it is not a folder"));
+        }
+        for f in files {
+            let path = dir.join(f);
+            refuse_non_file(&path)?;
+            probe(&path)?;
+        }
+        return Ok(());
+    }
+    // Created at the end: its nearest existing ancestor must take a new entry.
+    let mut ancestor = folder_of(dir);
+    while !ancestor.exists() {
+        let up = folder_of(&ancestor);
+        if up == ancestor {
+            // `.` itself is gone (the working directory was removed).
+            return Err(cannot(dir, "no existing folder above it"));
+        }
+        ancestor = up;
+    }
+    if !ancestor.is_dir() {
+        return Err(cannot(
+            dir,
+            format!("{} is not a folder", ancestor.display()),
+        ));
+    }
+    probe(&ancestor.join("topolab-out")).map_err(|_| {
+        cannot(
+            dir,
+            format!("cannot create a folder in {}", ancestor.display()),
+        )
+    })
+}
+
+/// Checks, before the work, an output mesh file: a format the lab writes (.obj or .off), then
+/// [`check_file`].
+pub fn check_mesh_out(path: &Path) -> Result<(), Failure> {
+    match topolab_structures::io::format_of(path) {
+        Ok(Format::Obj | Format::Off) => {}
+        Ok(format) => {
+            return Err(Failure::usage(format!(
+                "cannot write {format} ({}); use .obj or .off",
+                path.display()
+            )))
+        }
+        Err(e) => return Err(Failure::usage(format!("cannot write: {e}"))),
+    }
+    check_file(path)
+}
+
+/// Writes a mesh file (by extension, atomically: [`topolab_structures::io::write`]); a failure
+/// names the file (exit code 2).
+pub fn write_mesh(path: &Path, soup: &PolygonSoup) -> Result<(), Failure> {
+    topolab_structures::io::write(path, soup).map_err(|e| match e {
+        Error::Io { source, .. } => cannot(path, source),
+        e => cannot(path, e),
+    })
+}
+
+/// Writes `path` atomically ([`write_atomically`]); a failure names the file (exit code 2).
+pub fn write_file(
+    path: &Path,
+    fill: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>,
+) -> Result<(), Failure> {
+    write_atomically(path, fill).map_err(|e| cannot(path, e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn what_cannot_be_written_is_refused_before_the_work() {
+        let dir = std::env::temp_dir().join(format!("topolab-output-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        assert!(check_file(&dir.join("ok.obj")).is_ok());
+        assert!(!dir.join("ok.obj").exists(), "the check leaves no file");
+        for bad in [
+            dir.clone(),
+            dir.join("missing/x.obj"),
+            PathBuf::from("/dev/null"),
+        ] {
+            let e = check_file(&bad).unwrap_err();
+            assert_eq!(e.code, 2, "{}", bad.display());
+            assert!(e.message.starts_with("cannot write"), "{}", e.message);
+        }
+        assert!(check_folder(&dir.join("new/deeper"), &["results.json"]).is_ok());
+        assert!(!dir.join("new").exists(), "the check creates no folder");
+        std::fs::create_dir_all(dir.join("taken/results.json")).unwrap();
+        assert!(check_folder(&dir.join("taken"), &["results.json"]).is_err());
+        std::fs::write(dir.join("file"), "").unwrap();
+        assert!(check_folder(&dir.join("file"), &[]).is_err());
+        assert!(check_folder(&dir.join("file/below"), &[]).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
