@@ -224,11 +224,13 @@ impl ConflictGraph {
         };
         let ((mut i, i_end), (mut j, j_end)) = (range(removed), range(kept));
         // The new list is at most the union; grow by a quarter at least, not double: the
-        // pool is the algorithm's memory.
+        // pool is the algorithm's memory (`reserve_exact`: `resize` alone would let the
+        // vector double its capacity).
         let room = self.top + (i_end - i) + (j_end - j);
         if room > self.pool.len() {
-            self.pool
-                .resize(room.max(self.pool.len() + self.pool.len() / 4), ROOM);
+            let grown = room.max(self.pool.len() + self.pool.len() / 4);
+            self.pool.reserve_exact(grown - self.pool.len());
+            self.pool.resize(grown, ROOM);
         }
         let start = self.top;
         let mut top = start;
