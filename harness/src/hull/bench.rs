@@ -66,7 +66,7 @@ pub fn benchmark_row(
 ) -> Result<Timed> {
     // The lab's allocator counts only while asked, on this thread. Counting costs a few
     // thread-local operations per allocation, and the hull allocates rarely (its arrays
-    // grow by doubling), so the counted run is also the timed one.
+    // grow geometrically), so the counted run is also the timed one.
     let before = meter.map(|m| {
         m.counting(true);
         m.reset_peak();
