@@ -2,6 +2,7 @@
 //! a self-contained `index.html`. [`report_with`] is the same report with structures from
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
+use super::report_sections::{Selection, LIBIGL};
 use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
@@ -14,7 +15,9 @@ use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
+    FORMAT_VERSION,
 };
+use topolab_harness::sections::Section;
 use topolab_harness::{fit, html, machine, probe, svg};
 use topolab_structures::registry::{duplicate_name, names, Structures};
 use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
@@ -29,9 +32,16 @@ pub struct ReportArgs {
     /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
     pub sizes: Option<Vec<usize>>,
-    /// Structures to measure, comma separated (default: all; see `topolab list`).
+    /// Structures to measure, comma separated (default: all; see `topolab list`). Given, the
+    /// libigl section runs only when it names `libigl`, the hull section only when it names
+    /// `winged-edge` (the structure the hull algorithms build).
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
+    /// Sections of the page to measure and show, comma separated (default: all): targets,
+    /// table-4-1, plots, sweeps, workloads, memory, construction, orderings, real-meshes,
+    /// libigl, hull, teaching, meshes. Only what they are drawn from is measured.
+    #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
+    pub sections: Option<Vec<Section>>,
     /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
     /// (the meshes `make data` fetched into bench-data/cache/, when present).
     #[arg(long, value_delimiter = ',', default_value = "torus,grid,real")]
@@ -132,7 +142,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     let names: Vec<String> = match &args.structures {
         Some(list) => {
             let mut names: Vec<String> = Vec::with_capacity(list.len());
-            for n in list {
+            for n in list.iter().filter(|n| *n != LIBIGL) {
                 if !all.contains(&n.as_str()) {
                     return Err(crate::input::unknown_structure(n));
                 }
@@ -175,7 +185,14 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
+    let mut notes = Vec::new();
+    let selection = Selection::new(
+        args.sections.as_deref(),
+        args.structures.as_deref(),
+        &mut notes,
+    );
     let mut results = Results {
+        format_version: FORMAT_VERSION,
         machine: machine::facts(),
         probe,
         settings: Settings {
@@ -185,6 +202,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cell_budget_s: plan.cell_budget.as_secs_f64(),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command,
+            sections: selection.sections.clone(),
         },
         structures: Vec::new(),
         meshes: Vec::new(),
@@ -194,7 +212,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull: Vec::new(),
         hull_fits: Vec::new(),
         teaching: Vec::new(),
-        notes: Vec::new(),
+        notes,
     };
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
@@ -202,7 +220,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.teaching.push(teach);
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
-    for size in &sizes {
+    for size in sizes.iter().filter(|_| selection.generated) {
         for fam in families.iter().filter(|f| **f != "real") {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
@@ -210,12 +228,16 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
-    if families.contains(&"real") {
+    let mut repaired = std::collections::HashMap::new();
+    if families.contains(&"real") && selection.real_meshes {
         for (name, soup) in real_meshes(&mut results.notes) {
+            let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
+            repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
         }
     }
-    let bar = ProgressBar::new((cases.len() * names.len()) as u64);
+    let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
+    let bar = ProgressBar::new((measured * names.len()) as u64);
     bar.set_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template")
@@ -228,7 +250,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let plan = if fam == "real" { &light } else { &plan };
+        let plan = if selection.light(fam) { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
@@ -244,7 +266,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
                 soup.num_faces()
             );
         }
-        for s in &names {
+        for s in names.iter().filter(|_| selection.measures(fam)) {
             bar.set_message(format!("{name}: {s}"));
             visit::<X, _>(
                 s,
@@ -274,13 +296,20 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
             counts: MeshCounts::of(soup),
+            repaired: repaired.remove(name),
         });
     }
     bar.finish_and_clear();
-    orderings::<X>(&cases, &names, &plan, &mut results)?;
-    results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
-    results.hull = hull(quick, &mut results.notes)?;
-    results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    if selection.orderings {
+        orderings::<X>(&cases, &names, &plan, &mut results)?;
+    }
+    if selection.libigl {
+        results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+    }
+    if selection.hull {
+        results.hull = hull(quick, &mut results.notes)?;
+        results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     let skipped = results
