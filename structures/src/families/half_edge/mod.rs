@@ -51,6 +51,7 @@
 
 mod access;
 mod build;
+pub mod edit;
 pub mod index;
 pub mod pointer;
 mod topology;
@@ -145,6 +146,8 @@ pub trait HalfEdgeLinks: Sized {
 pub struct HalfEdge<L> {
     /// The storage that answers the primitives.
     pub(crate) links: L,
+    /// What edits deleted and `garbage_collection` has not yet removed.
+    pub(crate) marks: edit::Marks,
 }
 
 impl<L: HalfEdgeLinks> HalfEdge<L> {
@@ -200,7 +203,6 @@ impl<L: HalfEdgeLinks> HalfEdge<L> {
     }
 }
 
-#[cfg(test)]
 #[cfg(test)]
 mod tests {
     use crate::core::soup::PolygonSoup;
