@@ -68,6 +68,7 @@ pub fn render(r: &Results) -> String {
     real_meshes(&mut h, r, names.as_slice());
     libigl(&mut h, r);
     hull(&mut h, r);
+    crate::changing::render(&mut h, &r.changing);
     teaching(&mut h, r);
     meshes(&mut h, r);
     if !r.notes.is_empty() {
@@ -245,6 +246,9 @@ fn targets(h: &mut String, r: &Results) {
             2.0,
             sweep.and_then(|m| m.limit.as_ref()).map(limit_text),
         );
+    }
+    for (what, value, goal) in crate::changing::targets(&r.changing) {
+        row(what, value, goal, None);
     }
     h.push_str(
         "</table><p class=small>Construction: warm builds reuse the memory the build before them freed; cold builds fault in fresh pages (see Construction time). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>",

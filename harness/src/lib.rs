@@ -8,6 +8,7 @@
 
 pub mod bench;
 pub mod catalogue;
+pub mod changing;
 pub mod checksum;
 pub mod fit;
 pub mod html;

@@ -26,6 +26,8 @@ pub struct Results {
     pub libigl: Vec<LibiglRow>,
     /// The 3D convex hull algorithms (and Qhull) against n.
     pub hull: Vec<crate::hull::bench::HullRow>,
+    /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
+    pub changing: Vec<crate::changing::ChangingRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Anything the reader should know (skipped baselines, missing data).

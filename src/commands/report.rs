@@ -225,6 +225,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         fits: Vec::new(),
         libigl: Vec::new(),
         hull: Vec::new(),
+        changing: Vec::new(),
         teaching: Vec::new(),
         notes: Vec::new(),
     };
@@ -312,6 +313,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     orderings::<X>(&cases, &names, &plan, &mut results)?;
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
+    results.changing = super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     let skipped = results
