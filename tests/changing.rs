@@ -1,6 +1,8 @@
 //! The changing workloads (√3 subdivision, the collapse test) give the same meshes on
 //! OpenMesh, run natively by the protocol's C++ loop, as on the lab's editable structures.
 
+#![cfg(has_openmesh)]
+
 use topolab::openmesh::OpenMesh;
 use topolab_harness::changing::mesh_checksum;
 use topolab_structures::algorithms::changing::Changing;

@@ -3,10 +3,13 @@
 //! those asked for, and OpenMesh natively, on the closed tori of the run.
 
 use crate::input::Failure;
+#[cfg(has_openmesh)]
 use crate::openmesh::OpenMesh;
 use topolab_harness::changing::{cross_check, mesh_checksum, time, ChangingRow, MeshChecksum};
 use topolab_structures::algorithms::changing::Changing;
-use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
+use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
+#[cfg(has_openmesh)]
+use topolab_structures::MeshTopology;
 
 // OpenMesh is built through MeshTopology::from_soup.
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
@@ -26,6 +29,7 @@ fn timed<M: MeshEdit>(
     time(runs, || M::from_soup(soup), |m| w.run(m), mesh_checksum)
 }
 
+#[cfg(has_openmesh)]
 fn timed_openmesh(
     soup: &PolygonSoup,
     w: Changing,
@@ -34,7 +38,7 @@ fn timed_openmesh(
     time(
         runs,
         || {
-            let mut m = OpenMesh::from_soup(soup)?;
+            let mut m = <OpenMesh as MeshTopology>::from_soup(soup)?;
             m.prepare_changing()?;
             Ok(m)
         },
@@ -77,7 +81,10 @@ pub fn measure(
                 let got = match s {
                     "index-half-edge" => timed::<IndexHalfEdge>(soup, w, runs),
                     "pointer-half-edge" => timed::<PointerHalfEdge>(soup, w, runs),
+                    #[cfg(has_openmesh)]
                     _ => timed_openmesh(soup, w, runs),
+                    #[cfg(not(has_openmesh))]
+                    _ => unreachable!("openmesh is not registered without OpenMesh"),
                 };
                 let (seconds, result) = got.map_err(|e| Failure {
                     message: format!("{} on {mesh} failed on {s}: {e}", w.name()),
