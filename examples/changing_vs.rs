@@ -22,7 +22,10 @@ fn main() -> std::process::ExitCode {
     use topolab_structures::{meshes, IndexHalfEdge, MeshTopology, PointerHalfEdge};
 
     let mut args = std::env::args().skip(1);
-    let triangles: usize = args.next().and_then(|a| a.parse().ok()).unwrap_or(1_000_000);
+    let triangles: usize = args
+        .next()
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1_000_000);
     let rounds: usize = args.next().and_then(|a| a.parse().ok()).unwrap_or(7);
     let soup = meshes::torus_with_triangles(triangles);
     println!("torus of {} faces, {rounds} rounds", soup.num_faces());

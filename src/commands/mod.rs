@@ -11,3 +11,4 @@ pub mod list;
 pub mod refine;
 pub mod report;
 pub mod report_changing;
+pub mod subdivide;

@@ -7,9 +7,9 @@ use crate::input::Failure;
 use crate::openmesh::OpenMesh;
 use topolab_harness::changing::{cross_check, mesh_checksum, time, ChangingRow, MeshChecksum};
 use topolab_structures::algorithms::changing::Changing;
-use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
 #[cfg(has_openmesh)]
 use topolab_structures::MeshTopology;
+use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
 
 // OpenMesh is built through MeshTopology::from_soup.
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =

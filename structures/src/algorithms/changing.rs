@@ -14,8 +14,27 @@
 use crate::core::edit::MeshEdit;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::MeshTopology;
 use glam::DVec3;
 use std::f64::consts::TAU;
+
+/// The face list and positions of `m` as a soup, ids as the structure's (after
+/// [`MeshEdit::garbage_collection`], when it marks deletions): what an edited mesh is written as.
+pub fn to_soup<M: MeshTopology>(m: &M) -> PolygonSoup {
+    let positions = (0..m.num_vertices())
+        .map(|v| m.position(VertexId::new(v)))
+        .collect();
+    let mut soup = PolygonSoup::with_capacity(0, m.num_faces(), 3 * m.num_faces());
+    soup.positions = positions;
+    let mut face = Vec::new();
+    for f in 0..m.num_faces() {
+        face.clear();
+        m.face_vertices(FaceId::new(f), |v| face.push(v.0));
+        soup.push_face(&face);
+    }
+    soup
+}
 
 /// A changing workload.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
@@ -124,12 +143,12 @@ pub fn collapse_test<M: MeshEdit>(m: &mut M) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::editing::{canonical_face, soup_of};
+    use crate::testing::editing::canonical_face;
     use crate::testing::meshes;
     use crate::{IndexHalfEdge, PointerHalfEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {
-        let soup = soup_of(m);
+        let soup = to_soup(m);
         let mut out: Vec<Vec<u32>> = soup.faces().map(canonical_face).collect();
         out.sort();
         out

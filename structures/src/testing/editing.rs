@@ -6,6 +6,7 @@
 //! ([`compare`]). The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
 //! structure in one line.
 
+use crate::algorithms::changing::to_soup;
 use crate::core::edit::MeshEdit;
 use crate::core::error::Error;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -519,20 +520,6 @@ fn face_set<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
     out
 }
 
-/// The structure's face list and positions as a soup (ids as the structure's).
-pub fn soup_of<M: MeshEdit>(m: &M) -> PolygonSoup {
-    let positions = (0..m.num_vertices())
-        .map(|v| m.position(VertexId::new(v)))
-        .collect();
-    let mut faces = Vec::with_capacity(m.num_faces());
-    for f in 0..m.num_faces() {
-        let mut face = Vec::new();
-        m.face_vertices(FaceId::new(f), |v| face.push(v.0));
-        faces.push(face);
-    }
-    PolygonSoup::from_polygons(positions, &faces)
-}
-
 /// Checks the structure against the model after an edit.
 fn agree<M: MeshEdit>(m: &M, model: &Model) -> Result<(), String> {
     m.validate()
@@ -560,7 +547,7 @@ fn agree<M: MeshEdit>(m: &M, model: &Model) -> Result<(), String> {
     let clean =
         model.positions.iter().all(Option::is_some) && model.faces.iter().all(Option::is_some);
     if clean {
-        compare(m, &soup_of(m))?;
+        compare(m, &to_soup(m))?;
     }
     Ok(())
 }
