@@ -562,7 +562,7 @@ pub fn start_mesh(seed: u64) -> PolygonSoup {
         meshes::random_mesh(
             seed,
             RandomMeshParams {
-                triangles_only: seed % 3 != 0,
+                triangles_only: !seed.is_multiple_of(3),
                 max_side: 5,
                 keep: 0.9,
             },

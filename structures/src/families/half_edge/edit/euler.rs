@@ -24,14 +24,14 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     }
     /// The vertex `h` starts at.
     #[inline(always)]
-    pub(super) fn from_v(&self, h: u32) -> u32 {
+    pub(super) fn start_v(&self, h: u32) -> u32 {
         let l = &self.links;
         l.vertex(l.half_edge(h)).0
     }
     /// The vertex `h` points to.
     #[inline(always)]
     fn to_v(&self, h: u32) -> u32 {
-        self.from_v(h ^ 1)
+        self.start_v(h ^ 1)
     }
     /// `h`'s face, [`NONE`] on the boundary.
     #[inline(always)]
@@ -295,7 +295,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         let start = self.face_he(f);
         let mut h = start;
         loop {
-            let v = self.from_v(h);
+            let v = self.start_v(h);
             let on_boundary = self.is_bnd(self.out_of(v));
             if on_boundary && !self.is_bnd(self.pv(h) ^ 1) && !self.is_bnd(h ^ 1) {
                 return Err(Self::refuse(op, Refusal::NonManifoldVertex));
@@ -362,7 +362,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
                     // Every corner of the face (a polygon's too) loses it.
                     let mut g = self.nx(h);
                     while g != h {
-                        neighbours.push(self.from_v(g));
+                        neighbours.push(self.start_v(g));
                         g = self.nx(g);
                     }
                 }
@@ -403,7 +403,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         if x == y || self.find_half_edge(x, y) != NONE {
             return Err(Self::refuse(op, Refusal::EdgeExists));
         }
-        let (u, w) = (self.from_v(a0), self.from_v(b0));
+        let (u, w) = (self.start_v(a0), self.start_v(b0));
         let (fa, fb) = (self.face_of(a0), self.face_of(b0));
         let l = &mut self.links;
         l.set_vertex(a0, y);
@@ -444,7 +444,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             return Err(Self::refuse(op, Refusal::EdgeExists));
         }
         self.room(1, 3, 2)?;
-        let a = self.from_v(h0);
+        let a = self.start_v(h0);
         let v = self.links.push_vertex(p);
         let e1 = self.links.push_edge(v, a);
         let t1 = e1 ^ 1;
@@ -456,7 +456,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             let f0 = self.face_of(h0);
             let h1 = self.nx(h0);
             let h2 = self.nx(h1);
-            let c = self.from_v(h2);
+            let c = self.start_v(h2);
             let e0 = self.links.push_edge(v, c);
             let t0 = e0 ^ 1;
             let f1 = self.links.push_face(h2);
@@ -479,7 +479,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             let f3 = self.face_of(o0);
             let o1 = self.nx(o0);
             let o2 = self.nx(o1);
-            let d = self.from_v(o2);
+            let d = self.start_v(o2);
             let e2 = self.links.push_edge(v, d);
             let t2 = e2 ^ 1;
             let f2 = self.links.push_face(o1);
@@ -559,7 +559,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     /// pmp's `is_collapse_ok` for the half-edge `h` from v0 to v1 (both sides triangles).
     fn is_collapse_ok(&self, h: u32) -> bool {
         let o = h ^ 1;
-        let (v0, v1) = (self.from_v(h), self.to_v(h));
+        let (v0, v1) = (self.start_v(h), self.to_v(h));
         let (mut vl, mut vr) = (NONE, NONE);
         if !self.is_bnd(h) {
             let h1 = self.nx(h);
@@ -658,7 +658,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         let o = h ^ 1;
         let (on, op) = (self.nx(o), self.pv(o));
         let (fh, fo) = (self.face_of(h), self.face_of(o));
-        let (vh, vo) = (self.to_v(h), self.from_v(h));
+        let (vh, vo) = (self.to_v(h), self.start_v(h));
         // Every half-edge leaving vo now leaves vh.
         let start = self.out_of(vo);
         let mut g = start;

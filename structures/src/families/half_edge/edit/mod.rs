@@ -45,9 +45,9 @@ pub trait HalfEdgeLinksMut: HalfEdgeLinks {
     fn set_next(&mut self, h: u32, n: u32);
     /// Half-edge `h` starts at vertex `v`.
     fn set_vertex(&mut self, h: u32, v: u32);
-    /// Half-edge `h` borders face `f` ([`NONE`]: a boundary half-edge).
+    /// Half-edge `h` borders face `f` (`u32::MAX`: a boundary half-edge).
     fn set_face(&mut self, h: u32, f: u32);
-    /// Vertex `v`'s half-edge ([`NONE`]: unused).
+    /// Vertex `v`'s half-edge (`u32::MAX`: unused).
     fn set_outgoing(&mut self, v: u32, h: u32);
     /// Face `f`'s half-edge.
     fn set_face_half_edge(&mut self, f: u32, h: u32);
@@ -232,7 +232,7 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
             if emap[(h >> 1) as usize] == NONE {
                 continue;
             }
-            arrays.vertex.push(vmap[self.from_v(h) as usize]);
+            arrays.vertex.push(vmap[self.start_v(h) as usize]);
             arrays.next.push(hmap(self.nx(h)));
             let f = self.face_of(h);
             arrays
