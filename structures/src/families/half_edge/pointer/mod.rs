@@ -14,7 +14,8 @@
 //! ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every operator with the
 //! same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers here and for
 //! arrays there. All unsafe code of the crate is in the private `links` module: records are written
-//! only while they are built, never move, and are freed in `Drop`.
+//! only while they are built or edited (through `&mut`: no reference to a record is alive then),
+//! never move, and are freed in `Drop` (garbage collection after edits builds them anew).
 //!
 //! | record (one allocation each) | fields | bytes |
 //! |---|---|---|
