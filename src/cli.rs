@@ -156,10 +156,13 @@ pub fn run(cli: Cli) -> u8 {
         } => commands::subdivide::subdivide(&mesh, &scheme, levels, &out),
     };
     match result {
-        Ok(text) => {
-            print!("{text}");
-            0
-        }
+        Ok(text) => match crate::output::print(&text) {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("topolab: {}", e.message);
+                e.code
+            }
+        },
         Err(e) => {
             eprintln!("topolab: {}", e.message);
             e.code
