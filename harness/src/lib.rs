@@ -17,6 +17,7 @@ pub mod limit;
 pub mod machine;
 pub mod measure;
 pub mod probe;
+pub mod reads;
 pub mod results;
 pub mod svg;
 pub mod timing;

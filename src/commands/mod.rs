@@ -5,6 +5,7 @@
 pub mod check;
 pub mod explain;
 pub mod explain_che;
+pub mod explain_trace;
 pub mod hull;
 pub mod info;
 pub mod list;

@@ -9,6 +9,7 @@ pub mod access;
 pub mod attributes;
 pub mod error;
 pub mod ids;
+pub mod reads;
 pub mod soup;
 pub mod topology;
 pub mod workload;
