@@ -59,6 +59,7 @@ pub fn render(r: &Results) -> String {
     machine_section(&mut h, r);
     targets(&mut h, r);
     table_4_1(&mut h, r, &names);
+    crate::reads::section::table(&mut h, r);
     plots(&mut h, r, &ci);
     sweeps(&mut h, r, &names);
     workloads(&mut h, r, &ci);
@@ -69,6 +70,7 @@ pub fn render(r: &Results) -> String {
     libigl(&mut h, r);
     hull(&mut h, r);
     teaching(&mut h, r);
+    crate::reads::section::teaching(&mut h);
     meshes(&mut h, r);
     if !r.notes.is_empty() {
         h.push_str("<h2>Notes</h2><ul>");

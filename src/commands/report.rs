@@ -226,6 +226,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         libigl: Vec::new(),
         hull: Vec::new(),
         teaching: Vec::new(),
+        reads: Vec::new(),
         notes: Vec::new(),
     };
     for n in &names {
@@ -313,6 +314,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
     limit::annotate(&mut results);
     let skipped = results
         .measurements
