@@ -131,7 +131,7 @@ const TAUGHT: (Operator, u32, &[&str]) = (
     &["vertex-list", "index-half-edge", "che-l2"],
 );
 
-/// Appends the teaching section: [`TAUGHT`] traced on Figure 4.10, one picture per structure
+/// Appends the teaching section: R00 of the apex traced on Figure 4.10, one picture per structure
 /// with the elements each read touched numbered in order, and the trace beside it.
 pub fn teaching(h: &mut String) {
     let (op, v, names) = TAUGHT;

@@ -202,7 +202,12 @@ fn check(op: Operator, q: Query, soup: &PolygonSoup, edges: &SoupEdges) -> Resul
             op.name()
         ))),
         Some(x) if x as usize >= n => Err(TraceError::BadQuery(format!(
-            "--{what} {x}: the mesh has {n} {what}s (0 to {})",
+            "--{what} {x}: the mesh has {n} {} (0 to {})",
+            if what == "vertex" {
+                "vertices".to_string()
+            } else {
+                format!("{what}s")
+            },
             n as i64 - 1
         ))),
         Some(_) => Ok(()),

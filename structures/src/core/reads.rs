@@ -3,9 +3,9 @@
 //! code.
 //!
 //! Every read a structure's query code makes from one of its containers is written through
-//! [`read!`](read) (`read!("O", o, he)` reads `o[he]`) or, where an iterator or a
+//! `read!` (`read!("O", o, he)` reads `o[he]`) or, where an iterator or a
 //! library call reads for it (a scan with `iter()`, a binary search), announced right after
-//! with [`traced!`](traced). Both are macros whose expansion depends on the cargo
+//! with `traced!`. Both are macros whose expansion depends on the cargo
 //! feature `count-reads` of the crate they expand in:
 //!
 //! - without it (every build the lab times: `topolab`, the benches), `read!(name, s, i)` is
@@ -22,7 +22,7 @@
 //! position, one record of a record structure such as the winged-edge's `E[e]`, one field
 //! of a pointer structure's record, reached through its pointer). Arithmetic on ids (the
 //! CHE's `next`, the index half-edge's `h ^ 1`, a grid's rows and columns) reads nothing;
-//! the grids announce theirs with [`computed!`](computed), which a trace prints and
+//! the grids announce theirs with `computed!`, which a trace prints and
 //! the count leaves out.
 
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -143,8 +143,8 @@ thread_local! {
     static SINK: RefCell<Option<Sink>> = const { RefCell::new(None) };
 }
 
-/// Reports a read to the sink of this thread, if one is open. Called by [`read!`](read)
-/// and [`traced!`](traced) in the `count-reads` build only.
+/// Reports a read to the sink of this thread, if one is open. Called by `read!`
+/// and `traced!` in the `count-reads` build only.
 #[inline(never)]
 pub fn record(container: &'static str, index: u64, value: &dyn Traced) {
     SINK.with(|s| match &mut *s.borrow_mut() {
@@ -158,7 +158,7 @@ pub fn record(container: &'static str, index: u64, value: &dyn Traced) {
     });
 }
 
-/// Reports arithmetic to a trace (not counted). Called by [`computed!`](computed) in the
+/// Reports arithmetic to a trace (not counted). Called by `computed!` in the
 /// `count-reads` build only.
 #[inline(never)]
 pub fn record_computed(what: &'static str, value: i64) {

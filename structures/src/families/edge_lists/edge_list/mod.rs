@@ -136,8 +136,12 @@ impl EdgeList {
         let edges = self.edges_of(f);
         let i = edges.iter().position(|&x| x == e);
         #[cfg(feature = "count-reads")]
-        for j in 0..i.map_or(edges.len(), |i| i + 1) {
-            traced!("face_edges", _start as usize + j, edges[j]);
+        for (j, x) in edges
+            .iter()
+            .take(i.map_or(edges.len(), |i| i + 1))
+            .enumerate()
+        {
+            traced!("face_edges", _start as usize + j, *x);
         }
         let i = i?;
         let step = if forward { 1 } else { edges.len() - 1 };
