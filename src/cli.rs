@@ -65,13 +65,24 @@ pub enum Command {
         /// Explain this mesh (a file or built-in mesh) instead of the open tetrahedron.
         #[arg(long)]
         mesh: Option<String>,
-        /// With `explain che`: print the steps of this relation's algorithm at each level
-        /// (`r00`, `r01` or `r02`: the vertex star) instead of the containers.
-        #[arg(long, requires = "vertex")]
+        /// Print every container read of one query of this operator (`r00` ... `r22`,
+        /// `boundary-vertex`, ...; see `topolab list`), then the answer and the number of reads.
+        /// `explain che --trace r00 --vertex N` follows Algorithm 7 at each level.
+        #[arg(long)]
         trace: Option<String>,
-        /// The vertex whose star `--trace` follows.
+        /// The vertex `--trace` asks about.
         #[arg(long)]
         vertex: Option<u32>,
+        /// The edge `--trace` asks about, numbered as the mesh's edges in order of first
+        /// appearance (the edge list's ids) on every structure.
+        #[arg(long)]
+        edge: Option<u32>,
+        /// The face `--trace` asks about.
+        #[arg(long)]
+        face: Option<u32>,
+        /// With `--trace`: more structures side by side, comma-separated.
+        #[arg(long, value_delimiter = ',', requires = "trace")]
+        structures: Vec<String>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
     Report(commands::report::ReportArgs),
@@ -132,7 +143,18 @@ pub fn run(cli: Cli) -> u8 {
             mesh,
             trace,
             vertex,
-        } => commands::explain::run(&name, mesh.as_deref(), trace.as_deref(), vertex),
+            edge,
+            face,
+            structures,
+        } => commands::explain::run_traced(
+            &name,
+            mesh.as_deref(),
+            trace.map(|op| commands::explain_trace::TraceRequest {
+                op,
+                query: topolab_harness::reads::trace::Query { vertex, edge, face },
+                structures,
+            }),
+        ),
         Command::Report(args) => {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
             commands::report::report(&args, command)

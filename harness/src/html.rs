@@ -62,7 +62,10 @@ pub fn render(r: &Results) -> String {
     let shows = |s: Section| r.settings.sections.contains(&s);
     let draw = |s: Section, h: &mut String| match s {
         Section::Targets => targets(h, r),
-        Section::Table41 => table_4_1(h, r, &names),
+        Section::Table41 => {
+            table_4_1(h, r, &names);
+            crate::reads::section::table(h, r);
+        }
         Section::Plots => plots(h, r, &ci),
         Section::Sweeps => sweeps(h, r, &names),
         Section::Workloads => workloads(h, r, &ci),
@@ -76,7 +79,10 @@ pub fn render(r: &Results) -> String {
             hull_analysis(h, r);
         }
         Section::Changing => crate::changing::render(h, &r.changing),
-        Section::Teaching => teaching(h, r),
+        Section::Teaching => {
+            teaching(h, r);
+            crate::reads::section::teaching(h);
+        }
         Section::Meshes => meshes(h, r),
     };
     for s in Section::ALL.into_iter().filter(|&s| shows(s)) {

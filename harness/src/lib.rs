@@ -20,6 +20,7 @@ pub mod limit;
 pub mod machine;
 pub mod measure;
 pub mod probe;
+pub mod reads;
 pub mod repaired;
 pub mod results;
 pub mod sections;

@@ -41,6 +41,9 @@ pub struct Results {
     pub changing: Vec<crate::changing::ChangingRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
+    /// Reads per query of every operator on every structure against mesh size, counted
+    /// ([`crate::reads::count`]).
+    pub reads: Vec<crate::reads::count::ReadsRow>,
     /// Anything the reader should know (skipped baselines, missing data).
     pub notes: Vec<String>,
 }

@@ -1,32 +1,61 @@
 //! `topolab explain`: what a structure stores for the CHE chapter's open tetrahedron (or a
 //! mesh given), record by record; `explain che` shows the four CHE levels
-//! ([`super::explain_che`]).
+//! ([`super::explain_che`]); `--trace` prints the reads of one query ([`super::explain_trace`]).
 
 use super::explain_che;
+use super::explain_trace::{explain_trace, TraceRequest};
 use super::list::Row;
 use crate::input::{mesh_or_tetrahedron, unknown_structure, Failure};
 use crate::limits;
 use crate::registry::{self, StructureVisitor};
+use topolab_harness::reads::trace::Query;
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
 /// The text of `topolab explain NAME [--mesh M] [--trace OP --vertex N]`: the CHE levels for
-/// `che`, one structure's records otherwise (`--trace` is for `che` only).
+/// `che`, one structure's records otherwise; with `--trace`, the reads of one query ([`run_traced`]).
 pub fn run(
     name: &str,
     mesh: Option<&str>,
     trace: Option<&str>,
     vertex: Option<u32>,
 ) -> Result<String, Failure> {
+    run_traced(
+        name,
+        mesh,
+        trace.map(|op| TraceRequest {
+            op: op.to_string(),
+            query: Query {
+                vertex,
+                ..Query::default()
+            },
+            structures: Vec::new(),
+        }),
+    )
+}
+
+/// [`run`] with a whole trace request (`--trace OP --vertex N | --edge E | --face F
+/// --structures a,b`, [`explain_trace`]).
+pub fn run_traced(
+    name: &str,
+    mesh: Option<&str>,
+    trace: Option<TraceRequest>,
+) -> Result<String, Failure> {
+    let Some(request) = trace else {
+        return if name == explain_che::NAME {
+            explain_che::explain_che(mesh, None, None)
+        } else {
+            explain(name, mesh)
+        };
+    };
+    let star = matches!(request.op.as_str(), "r00" | "r01" | "r02");
     if name == explain_che::NAME {
-        return explain_che::explain_che(mesh, trace, vertex);
+        // The CHE's own trace of each level's vertex-star algorithm (Algorithm 7's order).
+        if star && request.structures.is_empty() && request.query.vertex.is_some() {
+            return explain_che::explain_che(mesh, Some(&request.op), request.query.vertex);
+        }
+        return explain_trace(&["che-l0", "che-l1", "che-l2", "che-l3"], mesh, &request);
     }
-    match trace {
-        Some(_) => Err(Failure::usage(format!(
-            "--trace works with `explain {}` only",
-            explain_che::NAME
-        ))),
-        None => explain(name, mesh),
-    }
+    explain_trace(&[name], mesh, &request)
 }
 
 /// The structure's records after a heading, in one string (no copy of the long part).

@@ -213,6 +213,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull_fits: Vec::new(),
         changing: Vec::new(),
         teaching: Vec::new(),
+        reads: Vec::new(),
         notes,
     };
     for n in &names {
@@ -316,6 +317,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
     }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    if selection.sections.contains(&Section::Table41) {
+        results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
+    }
     limit::annotate(&mut results);
     let skipped = results
         .measurements

@@ -10,6 +10,7 @@ pub mod attributes;
 pub mod edit;
 pub mod error;
 pub mod ids;
+pub mod reads;
 pub mod soup;
 pub mod topology;
 pub mod workload;

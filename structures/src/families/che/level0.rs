@@ -6,6 +6,7 @@ use super::{che_topology, half_edges_of, next, prev, print_container, triangle};
 use super::{vec_bytes, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::reads::read;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -85,7 +86,7 @@ impl CheL0 {
     /// `V[he]`.
     #[inline(always)]
     fn start(&self, he: HalfEdgeId) -> VertexId {
-        VertexId(self.v[he.index()])
+        VertexId(read!("V", self.v, he.index()))
     }
 
     /// The scan of Algorithm 8: the half-edge from `a` to `b`, each `V[]` read reported.

@@ -7,6 +7,7 @@ use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_contain
 use super::{CheL0, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
+use crate::core::reads::traced;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -138,6 +139,7 @@ impl CheLevel for CheL1 {
     ) -> Option<HalfEdgeId> {
         let mut first = None;
         for (he, &start) in (0u32..).map(HalfEdgeId).zip(self.start_vertices()) {
+            traced!("V", he.0, start);
             let vertex = VertexId(start);
             trace(StarRead::Vertex { he, vertex });
             if vertex == v {

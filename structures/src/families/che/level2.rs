@@ -9,6 +9,7 @@ use super::{fan_spokes, next, triangle};
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::reads::read;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -98,7 +99,7 @@ impl CheL2 {
             o.len(),
             "V[] and O[] hold one entry per half-edge"
         );
-        let he = self.vh[v.index()];
+        let he = read!("VH", self.vh, v.index());
         if he < 0 {
             return None;
         }
@@ -174,7 +175,7 @@ impl CheLevel for CheL2 {
         mut trace: impl FnMut(StarRead),
         corner: impl FnMut(HalfEdgeId),
     ) -> Option<HalfEdgeId> {
-        let he = self.vh[v.index()];
+        let he = read!("VH", self.vh, v.index());
         trace(StarRead::VertexHalfEdge { vertex: v, he });
         if he < 0 {
             return None;
@@ -197,8 +198,8 @@ impl CheLevel for CheL2 {
     #[inline(always)]
     fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         let vs = self.start_vertices();
-        if let Some(b) = self.spokes(v, |e, _| f(VertexId(vs[e.index()]))) {
-            f(VertexId(vs[next(b).index()]));
+        if let Some(b) = self.spokes(v, |e, _| f(VertexId(read!("V", vs, e.index())))) {
+            f(VertexId(read!("V", vs, next(b).index())));
         }
     }
 
@@ -222,8 +223,8 @@ impl CheLevel for CheL2 {
     /// `O[VH[v]] < 0` (§4.3).
     #[inline(always)]
     fn vertex_on_boundary(&self, v: VertexId) -> bool {
-        let he = self.vh[v.index()];
-        he >= 0 && self.l1.opposite()[he as usize] < 0
+        let he = read!("VH", self.vh, v.index());
+        he >= 0 && read!("O", self.l1.opposite(), he as usize) < 0
     }
 
     fn each_edge(&self, mut f: impl FnMut(EdgeId)) {

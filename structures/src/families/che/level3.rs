@@ -10,6 +10,7 @@ use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_
 use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::reads;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Cost, MeshTopology, Operator};
 use glam::DVec3;
@@ -181,7 +182,7 @@ impl CheLevel for CheL3 {
     /// Algorithm 10 (§4.6): each curve walked from its half-edge in `CH[]`, O(∂n1).
     fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
-        for &he in &self.ch {
+        for he in reads::each("CH", &self.ch, 0) {
             walk_boundary_curve(HalfEdgeId(he), |h| self.twin(h), out);
         }
     }

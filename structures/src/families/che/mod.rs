@@ -132,6 +132,7 @@ pub use level2::CheL2;
 pub use level3::CheL3;
 
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::reads::read;
 use crate::core::topology::BoundaryCurves;
 use topology::che_topology;
 
@@ -176,7 +177,7 @@ pub const fn half_edge(e: EdgeId) -> HalfEdgeId {
 /// `O[he]` as a half-edge, `None` on the boundary (any negative value: `-1`, or `-k` at level 3).
 #[inline(always)]
 pub fn opposite_of(o: &[i32], he: HalfEdgeId) -> Option<HalfEdgeId> {
-    let x = o[he.index()];
+    let x = read!("O", o, he.index());
     (x >= 0).then_some(HalfEdgeId(x as u32))
 }
 
@@ -259,7 +260,7 @@ pub trait CheLevel {
     #[inline(always)]
     fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         let vs = self.start_vertices();
-        let neighbour = |h: HalfEdgeId| VertexId(vs[h.index()]);
+        let neighbour = |h: HalfEdgeId| VertexId(read!("V", vs, h.index()));
         if let Some(p) = self.vertex_star(v, |_| {}, |h| f(neighbour(next(h)))) {
             f(neighbour(p));
         }
@@ -373,7 +374,7 @@ pub fn fan_walk_algorithm_7(
         trace(StarRead::Corner { he: h });
         corner(h);
         let entering = prev(h);
-        let opposite = o[entering.index()];
+        let opposite = read!("O", o, entering.index());
         trace(StarRead::Opposite {
             he: entering,
             opposite,
@@ -409,12 +410,12 @@ pub fn fan_spokes(
     start: HalfEdgeId,
     mut spoke: impl FnMut(HalfEdgeId, i32),
 ) -> Option<HalfEdgeId> {
-    let mut back = o[start.index()];
+    let mut back = read!("O", o, start.index());
     let mut h = start;
     if back < 0 {
         loop {
             let e = prev(h);
-            let x = o[e.index()];
+            let x = read!("O", o, e.index());
             spoke(e, x);
             if x < 0 {
                 return Some(start);
@@ -427,7 +428,7 @@ pub fn fan_spokes(
     let mut g = start;
     loop {
         let e = prev(h);
-        let x = o[e.index()];
+        let x = read!("O", o, e.index());
         spoke(e, x);
         h = HalfEdgeId(x as u32);
         if h == g {
@@ -439,7 +440,7 @@ pub fn fan_spokes(
         if g == h {
             return None;
         }
-        back = o[g.index()];
+        back = read!("O", o, g.index());
     }
 }
 

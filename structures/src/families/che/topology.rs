@@ -3,6 +3,7 @@
 
 use super::{half_edge, half_edges_of, next, prev, CheLevel};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId};
+use crate::core::reads::read;
 
 /// The edge after (`forward`) or before `e` in triangle `t`, found among `t`'s three
 /// half-edges by `e`'s end vertices: O(1) at every level.
@@ -13,7 +14,7 @@ fn neighbour_in_face<L: CheLevel>(
     forward: bool,
 ) -> Option<HalfEdgeId> {
     let v = level.start_vertices();
-    let ends = |h: HalfEdgeId| (v[h.index()], v[next(h).index()]);
+    let ends = |h: HalfEdgeId| (read!("V", v, h.index()), read!("V", v, next(h).index()));
     let (a, b) = ends(half_edge(e));
     half_edges_of(t)
         .find(|&h| {
@@ -95,8 +96,12 @@ macro_rules! che_topology {
                 let vs = self.start_vertices();
                 let he = $crate::families::che::half_edge(e);
                 [
-                    $crate::core::ids::VertexId(vs[he.index()]),
-                    $crate::core::ids::VertexId(vs[$crate::families::che::next(he).index()]),
+                    $crate::core::ids::VertexId($crate::core::reads::read!("V", vs, he.index())),
+                    $crate::core::ids::VertexId($crate::core::reads::read!(
+                        "V",
+                        vs,
+                        $crate::families::che::next(he).index()
+                    )),
                 ]
             }
             #[inline]
@@ -134,9 +139,11 @@ macro_rules! che_topology {
                 mut f: impl FnMut($crate::core::ids::VertexId),
             ) {
                 for he in $crate::families::che::half_edges_of(face) {
-                    f($crate::core::ids::VertexId(
-                        self.start_vertices()[he.index()],
-                    ));
+                    f($crate::core::ids::VertexId($crate::core::reads::read!(
+                        "V",
+                        self.start_vertices(),
+                        he.index()
+                    )));
                 }
             }
             #[inline]

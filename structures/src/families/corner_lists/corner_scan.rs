@@ -9,6 +9,7 @@
 //! in the first face (in face order) that contains the edge.
 
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::{read, traced, Traced};
 use crate::core::topology::{BoundaryCurves, Cost, Operator};
 
 /// The cost table of the scans: both structures of this family (vertex list, explicit
@@ -49,26 +50,34 @@ struct Seen<K> {
     len: usize,
 }
 
-impl<K: Copy + PartialEq> Corners<K> {
+impl<K: Copy + PartialEq + Traced> Corners<K> {
     pub fn num_faces(&self) -> usize {
         self.offsets.len() - 1
     }
 
     #[inline]
     pub fn face(&self, f: usize) -> &[K] {
-        &self.keys[self.offsets[f] as usize..self.offsets[f + 1] as usize]
+        &self.keys[read!("offsets", self.offsets, f) as usize
+            ..read!("offsets", self.offsets, f + 1) as usize]
     }
 
     /// The face of corner `c`: binary search of the offsets, O(log n2).
     #[inline]
     pub fn face_of(&self, c: usize) -> usize {
-        self.offsets.partition_point(|&o| o as usize <= c) - 1
+        self.offsets.partition_point(|o: &u32| {
+            traced!(
+                "offsets",
+                (o as *const u32 as usize - self.offsets.as_ptr() as usize) / 4,
+                *o
+            );
+            *o as usize <= c
+        }) - 1
     }
 
     #[inline]
     fn next_in(&self, c: usize, f: usize) -> usize {
-        if c + 1 == self.offsets[f + 1] as usize {
-            self.offsets[f] as usize
+        if c + 1 == read!("offsets", self.offsets, f + 1) as usize {
+            read!("offsets", self.offsets, f) as usize
         } else {
             c + 1
         }
@@ -76,8 +85,8 @@ impl<K: Copy + PartialEq> Corners<K> {
 
     #[inline]
     fn prev_in(&self, c: usize, f: usize) -> usize {
-        if c == self.offsets[f] as usize {
-            self.offsets[f + 1] as usize - 1
+        if c == read!("offsets", self.offsets, f) as usize {
+            read!("offsets", self.offsets, f + 1) as usize - 1
         } else {
             c - 1
         }
@@ -87,15 +96,22 @@ impl<K: Copy + PartialEq> Corners<K> {
     #[inline]
     pub fn ends(&self, c: usize) -> (K, K) {
         let f = self.face_of(c);
-        (self.keys[c], self.keys[self.next_in(c, f)])
+        (
+            read!("corners", self.keys, c),
+            read!("corners", self.keys, self.next_in(c, f)),
+        )
     }
 
     /// Does face `f` contain edge `{a, b}`? Returns the corner of `f` whose outgoing side it is.
     fn find_in_face(&self, f: usize, a: K, b: K) -> Option<usize> {
-        let (s, e) = (self.offsets[f] as usize, self.offsets[f + 1] as usize);
+        let (s, e) = (
+            read!("offsets", self.offsets, f) as usize,
+            read!("offsets", self.offsets, f + 1) as usize,
+        );
         (s..e).find(|&c| {
-            let n = self.keys[self.next_in(c, f)];
-            (self.keys[c] == a && n == b) || (self.keys[c] == b && n == a)
+            let n = read!("corners", self.keys, self.next_in(c, f));
+            let k = read!("corners", self.keys, c);
+            (k == a && n == b) || (k == b && n == a)
         })
     }
 
@@ -122,13 +138,19 @@ impl<K: Copy + PartialEq> Corners<K> {
             len: 0,
         };
         for face in 0..self.num_faces() {
-            let (s, e) = (self.offsets[face] as usize, self.offsets[face + 1] as usize);
-            let Some(c) = (s..e).find(|&c| self.keys[c] == k) else {
+            let (s, e) = (
+                read!("offsets", self.offsets, face) as usize,
+                read!("offsets", self.offsets, face + 1) as usize,
+            );
+            let Some(c) = (s..e).find(|&c| read!("corners", self.keys, c) == k) else {
                 continue;
             };
             let (n, p) = (self.next_in(c, face), self.prev_in(c, face));
             // The outgoing edge lives at corner c, the incoming one at corner p.
-            for (corner, other) in [(c, self.keys[n]), (p, self.keys[p])] {
+            for (corner, other) in [
+                (c, read!("corners", self.keys, n)),
+                (p, read!("corners", self.keys, p)),
+            ] {
                 if !self.seen_before(&mut seen, face, k, other) {
                     f(corner, other);
                 }
@@ -154,7 +176,16 @@ impl<K: Copy + PartialEq> Corners<K> {
     /// Faces containing key `k`.
     pub fn vertex_faces(&self, k: K, mut f: impl FnMut(FaceId)) {
         for face in 0..self.num_faces() {
-            if self.face(face).contains(&k) {
+            let corners = self.face(face);
+            #[cfg(feature = "count-reads")]
+            for (i, x) in corners.iter().enumerate() {
+                let first = self.offsets[face] as usize;
+                traced!("corners", first + i, *x);
+                if *x == k {
+                    break;
+                }
+            }
+            if corners.contains(&k) {
                 f(FaceId::new(face));
             }
         }
@@ -173,7 +204,10 @@ impl<K: Copy + PartialEq> Corners<K> {
     pub fn edge_edges(&self, e: usize, mut f: impl FnMut(EdgeId)) {
         for c in std::iter::once(e).chain(self.twin(e)) {
             let face = self.face_of(c);
-            let (s, end) = (self.offsets[face] as usize, self.offsets[face + 1] as usize);
+            let (s, end) = (
+                read!("offsets", self.offsets, face) as usize,
+                read!("offsets", self.offsets, face + 1) as usize,
+            );
             for x in (s..end).filter(|&x| x != c) {
                 f(EdgeId::new(self.canonical(x)));
             }
@@ -190,14 +224,22 @@ impl<K: Copy + PartialEq> Corners<K> {
 
     /// Edges of face `face` in order.
     pub fn face_edges(&self, face: usize, mut f: impl FnMut(EdgeId)) {
-        for c in self.offsets[face] as usize..self.offsets[face + 1] as usize {
+        let (s, end) = (
+            read!("offsets", self.offsets, face) as usize,
+            read!("offsets", self.offsets, face + 1) as usize,
+        );
+        for c in s..end {
             f(EdgeId::new(self.canonical(c)));
         }
     }
 
     /// Faces across the edges of `face`.
     pub fn face_faces(&self, face: usize, mut f: impl FnMut(FaceId)) {
-        for c in self.offsets[face] as usize..self.offsets[face + 1] as usize {
+        let (s, end) = (
+            read!("offsets", self.offsets, face) as usize,
+            read!("offsets", self.offsets, face + 1) as usize,
+        );
+        for c in s..end {
             if let Some(t) = self.twin(c) {
                 f(FaceId::new(self.face_of(t)));
             }
@@ -225,7 +267,7 @@ impl<K: Copy + PartialEq> Corners<K> {
             if !is_boundary(start) || out.edges.contains(&EdgeId::new(self.canonical(start))) {
                 continue;
             }
-            let first_key = self.keys[start];
+            let first_key = read!("corners", self.keys, start);
             let mut cur = start;
             loop {
                 out.edges.push(EdgeId::new(self.canonical(cur)));
@@ -235,7 +277,7 @@ impl<K: Copy + PartialEq> Corners<K> {
                 }
                 // The unused boundary corner that leaves `end`.
                 let next = (0..self.keys.len()).find(|&c| {
-                    self.keys[c] == end
+                    read!("corners", self.keys, c) == end
                         && is_boundary(c)
                         && !out.edges.contains(&EdgeId::new(self.canonical(c)))
                 });

@@ -1,6 +1,7 @@
 //! The topology of a grid as arithmetic: the numbering of vertices, edges and faces (see the
 //! module docs) and every relation computed from it.
 
+use crate::core::reads::computed;
 use crate::core::soup::PolygonSoup;
 
 /// The topology of a grid: everything the operators compute from.
@@ -97,6 +98,8 @@ impl GridShape {
     }
     #[inline]
     pub(super) fn coords(&self, v: u32) -> (u32, u32) {
+        computed!("column i = v % (nx + 1)", v % self.width());
+        computed!("row j = v / (nx + 1)", v / self.width());
         (v % self.width(), v / self.width())
     }
     #[inline]
@@ -114,6 +117,10 @@ impl GridShape {
     #[inline]
     pub(super) fn edge(&self, e: u32) -> (EdgeKind, u32, u32) {
         let (nh, nv) = (self.num_horizontal(), self.num_vertical());
+        computed!(
+            "kind of e (0 horizontal, 1 vertical, 2 diagonal)",
+            (e >= nh) as u32 + (e >= nh + nv) as u32
+        );
         if e < nh {
             (EdgeKind::Horizontal, e % self.nx, e / self.nx)
         } else if e < nh + nv {
@@ -139,6 +146,9 @@ impl GridShape {
     pub(super) fn face_cell(&self, f: u32) -> (u32, u32, bool) {
         let per = self.faces_per_cell();
         let cell = f / per;
+        computed!("cell = f / faces per cell", cell);
+        computed!("column i = cell % nx", cell % self.nx);
+        computed!("row j = cell / nx", cell / self.nx);
         (cell % self.nx, cell / self.nx, f % per == 1)
     }
     pub(super) fn face_corners(&self, f: u32) -> Ring {

@@ -25,6 +25,7 @@
 
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::{self, read, traced};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use crate::families::corner_lists::corner_scan::{scan_cost, Corners, Naming};
@@ -58,11 +59,14 @@ fn bits(p: DVec3) -> [u64; 3] {
 impl Naming<DVec3> for PositionIds {
     #[inline]
     fn key(&self, v: VertexId) -> DVec3 {
-        self.positions[v.index()]
+        read!("positions", self.positions, v.index())
     }
     #[inline]
     fn vertex(&self, k: DVec3) -> VertexId {
-        VertexId(self.lookup[&bits(k)])
+        let v = self.lookup[&bits(k)];
+        // The hash map from coordinates to the lab's vertex ids: one read, indexed by its answer.
+        traced!("lookup", v, v);
+        VertexId(v)
     }
 }
 
@@ -167,7 +171,8 @@ impl MeshTopology for ExplicitStorage {
     }
     #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        for &p in self.corners.face(face.index()) {
+        let first = read!("offsets", self.corners.offsets, face.index());
+        for p in reads::each("corners", self.corners.face(face.index()), first as usize) {
             f(self.ids.vertex(p));
         }
     }

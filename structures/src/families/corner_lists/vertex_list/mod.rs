@@ -29,6 +29,7 @@
 
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::{self, read};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use crate::families::corner_lists::corner_scan::{scan_cost, Corners, Naming};
@@ -146,7 +147,8 @@ impl MeshTopology for VertexList {
     }
     #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        for &v in self.corners.face(face.index()) {
+        let first = read!("offsets", self.corners.offsets, face.index());
+        for v in reads::each("corners", self.corners.face(face.index()), first as usize) {
             f(VertexId(v));
         }
     }

@@ -50,6 +50,7 @@
 
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::{self, read, traced};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use crate::families::edge_lists::boundary_walk;
@@ -85,11 +86,22 @@ impl EdgeList {
             [self.face_offsets[f.index()] as usize..self.face_offsets[f.index() + 1] as usize]
     }
 
+    /// The edges of face `f` in order, as the queries read them (see [`crate::core::reads`]).
+    #[inline]
+    fn listed(&self, f: FaceId) -> impl Iterator<Item = EdgeId> + '_ {
+        let start = read!("face_offsets", self.face_offsets, f.index()) as usize;
+        let end = read!("face_offsets", self.face_offsets, f.index() + 1) as usize;
+        reads::each("face_edges", &self.face_edges[start..end], start)
+    }
+
     /// Where face `f` enters and leaves edge `e`: e's start and end in f's traversal.
     #[inline]
     fn ends_in(&self, e: EdgeId, f: FaceId) -> [VertexId; 2] {
-        let (start, end) = (self.edge_start[e.index()], self.edge_end[e.index()]);
-        if self.edge_left[e.index()] == f {
+        let (start, end) = (
+            read!("edge_start", self.edge_start, e.index()),
+            read!("edge_end", self.edge_end, e.index()),
+        );
+        if read!("edge_left", self.edge_left, e.index()) == f {
             [start, end]
         } else {
             [end, start]
@@ -101,6 +113,8 @@ impl EdgeList {
     #[inline]
     fn scan_edges_of(&self, v: VertexId, mut f: impl FnMut(EdgeId, bool)) {
         for (e, (&start, &end)) in self.edge_start.iter().zip(&self.edge_end).enumerate() {
+            traced!("edge_start", e, start);
+            traced!("edge_end", e, end);
             if start == v || end == v {
                 f(EdgeId::new(e), start == v);
             }
@@ -113,10 +127,27 @@ impl EdgeList {
         if f.index() >= self.num_faces() {
             return None;
         }
+        let _start = read!("face_offsets", self.face_offsets, f.index());
+        traced!(
+            "face_offsets",
+            f.index() + 1,
+            self.face_offsets[f.index() + 1]
+        );
         let edges = self.edges_of(f);
-        let i = edges.iter().position(|&x| x == e)?;
+        let i = edges.iter().position(|&x| x == e);
+        #[cfg(feature = "count-reads")]
+        for (j, x) in edges
+            .iter()
+            .take(i.map_or(edges.len(), |i| i + 1))
+            .enumerate()
+        {
+            traced!("face_edges", _start as usize + j, *x);
+        }
+        let i = i?;
         let step = if forward { 1 } else { edges.len() - 1 };
-        Some(edges[(i + step) % edges.len()])
+        let j = (i + step) % edges.len();
+        traced!("face_edges", _start as usize + j, edges[j]);
+        Some(edges[j])
     }
 }
 
@@ -194,9 +225,9 @@ impl MeshTopology for EdgeList {
     fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
         self.scan_edges_of(v, |e, starts| {
             f(if starts {
-                self.edge_end[e.index()]
+                read!("edge_end", self.edge_end, e.index())
             } else {
-                self.edge_start[e.index()]
+                read!("edge_start", self.edge_start, e.index())
             })
         });
     }
@@ -210,9 +241,9 @@ impl MeshTopology for EdgeList {
         // edge starting at v, or the right polygon of an edge ending at v.
         self.scan_edges_of(v, |e, starts| {
             let leaving = if starts {
-                self.edge_left[e.index()]
+                read!("edge_left", self.edge_left, e.index())
             } else {
-                self.edge_right[e.index()]
+                read!("edge_right", self.edge_right, e.index())
             };
             if let Some(face) = leaving.valid() {
                 f(face);
@@ -221,12 +252,15 @@ impl MeshTopology for EdgeList {
     }
     #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
-        [self.edge_start[e.index()], self.edge_end[e.index()]]
+        [
+            read!("edge_start", self.edge_start, e.index()),
+            read!("edge_end", self.edge_end, e.index()),
+        ]
     }
     #[inline]
     fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
         self.edge_faces(e, |face| {
-            for &x in self.edges_of(face) {
+            for x in self.listed(face) {
                 if x != e {
                     f(x);
                 }
@@ -235,25 +269,28 @@ impl MeshTopology for EdgeList {
     }
     #[inline]
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
-        f(self.edge_left[e.index()]);
-        if let Some(right) = self.edge_right[e.index()].valid() {
+        f(read!("edge_left", self.edge_left, e.index()));
+        if let Some(right) = read!("edge_right", self.edge_right, e.index()).valid() {
             f(right);
         }
     }
     #[inline]
     fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        for &e in self.edges_of(face) {
+        for e in self.listed(face) {
             f(self.ends_in(e, face)[0]);
         }
     }
     #[inline]
-    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
-        self.edges_of(face).iter().for_each(|&e| f(e));
+    fn face_edges(&self, face: FaceId, f: impl FnMut(EdgeId)) {
+        self.listed(face).for_each(f);
     }
     #[inline]
     fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
-        for &e in self.edges_of(face) {
-            let (left, right) = (self.edge_left[e.index()], self.edge_right[e.index()]);
+        for e in self.listed(face) {
+            let (left, right) = (
+                read!("edge_left", self.edge_left, e.index()),
+                read!("edge_right", self.edge_right, e.index()),
+            );
             if let Some(other) = (if left == face { right } else { left }).valid() {
                 f(other);
             }
@@ -262,12 +299,14 @@ impl MeshTopology for EdgeList {
     #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
         let mut boundary = false;
-        self.scan_edges_of(v, |e, _| boundary |= !self.edge_right[e.index()].is_valid());
+        self.scan_edges_of(v, |e, _| {
+            boundary |= !read!("edge_right", self.edge_right, e.index()).is_valid()
+        });
         boundary
     }
     #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
-        !self.edge_right[e.index()].is_valid()
+        !read!("edge_right", self.edge_right, e.index()).is_valid()
     }
     #[inline]
     fn boundary_curves(&self, out: &mut BoundaryCurves) {

@@ -132,6 +132,7 @@ pub use editing::Renumbering;
 pub use stitching::HorizonEdge;
 
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::{read, traced};
 use glam::DVec3;
 use records::{EdgeRecord, IncrementalIndex};
 
@@ -165,7 +166,9 @@ impl WingedEdge {
 
     #[inline]
     fn edge(&self, e: EdgeId) -> &EdgeRecord {
-        &self.edges[e.index()]
+        let r = &self.edges[e.index()];
+        traced!("E", e.0, *r);
+        r
     }
 
     /// Walks the fan of faces around `v` from its edge `start`: calls `on_edge` once for each
@@ -228,7 +231,7 @@ impl WingedEdge {
         on_edge: impl FnMut(EdgeId),
         on_face: impl FnMut(FaceId),
     ) -> bool {
-        match self.av[v.index()].valid() {
+        match read!("av", self.av, v.index()).valid() {
             Some(start) => self.walk_fan(v, start, on_edge, on_face),
             None => false,
         }
@@ -240,6 +243,7 @@ impl WingedEdge {
         let Some(start) = self.af.get(face.index()).and_then(|e| e.valid()) else {
             return;
         };
+        traced!("af", face.0, start);
         let mut e = start;
         loop {
             let r = self.edge(e);

@@ -116,6 +116,25 @@ impl EdgeRecord {
     }
 }
 
+impl crate::core::reads::Traced for EdgeRecord {
+    fn traced(&self) -> crate::core::reads::Value {
+        const FIELDS: &[&str] = &["v1", "v2", "fccw", "fcw", "pccw", "nccw", "pcw", "ncw"];
+        crate::core::reads::Value::Record(
+            FIELDS,
+            [
+                self.v1.0,
+                self.v2.0,
+                self.fccw.0,
+                self.fcw.0,
+                self.pccw.0,
+                self.nccw.0,
+                self.pcw.0,
+                self.ncw.0,
+            ],
+        )
+    }
+}
+
 /// The key of an undirected edge in the incremental index: smaller end in the high half.
 #[inline]
 pub(super) fn ends_key(a: VertexId, b: VertexId) -> u64 {

@@ -5,6 +5,7 @@ use super::records::EdgeRecord;
 use super::WingedEdge;
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::reads::traced;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use crate::families::edge_lists::boundary_walk;
@@ -123,11 +124,15 @@ impl MeshTopology for WingedEdge {
     }
     #[inline]
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        self.edges.get(e.index())?.next_in(face)
+        let r = self.edges.get(e.index())?;
+        traced!("E", e.0, *r);
+        r.next_in(face)
     }
     #[inline]
     fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        self.edges.get(e.index())?.prev_in(face)
+        let r = self.edges.get(e.index())?;
+        traced!("E", e.0, *r);
+        r.prev_in(face)
     }
 
     fn validate(&self) -> Result<()> {

@@ -40,6 +40,7 @@
 
 use crate::core::error::Result;
 use crate::core::ids::{FaceId, VertexId};
+use crate::core::reads::read;
 use crate::core::topology::Cost;
 use crate::families::half_edge::edit::HalfEdgeLinksMut;
 use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
@@ -104,19 +105,19 @@ impl HalfEdgeLinks for IndexLinks {
     }
     #[inline(always)]
     fn next(&self, h: u32) -> u32 {
-        self.arrays.next[h as usize]
+        read!("next", self.arrays.next, h as usize)
     }
     #[inline(always)]
     fn prev(&self, h: u32) -> u32 {
-        self.prev[h as usize]
+        read!("prev", self.prev, h as usize)
     }
     #[inline(always)]
     fn vertex(&self, h: u32) -> VertexId {
-        VertexId(self.arrays.vertex[h as usize])
+        VertexId(read!("vert", self.arrays.vertex, h as usize))
     }
     #[inline(always)]
     fn face(&self, h: u32) -> Option<FaceId> {
-        FaceId(self.arrays.face[h as usize]).valid()
+        FaceId(read!("face", self.arrays.face, h as usize)).valid()
     }
     /// Also asserts that the per-half-edge arrays have one length (it is called once per
     /// rotation), so a rotation's reads of `next[x]`, `vertex[x]` and `prev[x]` at one index
@@ -129,12 +130,12 @@ impl HalfEdgeLinks for IndexLinks {
             a.next.len() == n && a.face.len() == n && self.prev.len() == n,
             "one entry per half-edge in every per-half-edge array"
         );
-        let h = self.arrays.vertex_half_edge[v.index()];
+        let h = read!("HE_vert.edge", self.arrays.vertex_half_edge, v.index());
         (h != NONE).then_some(h)
     }
     #[inline(always)]
     fn face_half_edge(&self, f: FaceId) -> u32 {
-        self.arrays.face_half_edge[f.index()]
+        read!("HE_face.edge", self.arrays.face_half_edge, f.index())
     }
     #[inline(always)]
     fn position(&self, v: VertexId) -> DVec3 {

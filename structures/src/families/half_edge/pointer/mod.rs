@@ -57,6 +57,7 @@ mod links;
 
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
+use crate::core::reads::traced;
 use crate::core::topology::Cost;
 use crate::families::half_edge::edit::HalfEdgeLinksMut;
 use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
@@ -116,27 +117,39 @@ impl HalfEdgeLinks for PointerLinks {
     }
     #[inline(always)]
     fn twin<'a>(&'a self, h: EdgeRef<'a>) -> EdgeRef<'a> {
-        EdgeRef(h.0.pair())
+        let pair = h.0.pair();
+        traced!("pair", h.0.id(), pair.id());
+        EdgeRef(pair)
     }
     #[inline(always)]
     fn next<'a>(&'a self, h: EdgeRef<'a>) -> EdgeRef<'a> {
-        EdgeRef(h.0.next())
+        let next = h.0.next();
+        traced!("next", h.0.id(), next.id());
+        EdgeRef(next)
     }
     #[inline(always)]
     fn vertex(&self, h: EdgeRef<'_>) -> VertexId {
-        VertexId(h.0.vert().id())
+        let vert = h.0.vert().id();
+        traced!("vert", h.0.id(), vert);
+        VertexId(vert)
     }
     #[inline(always)]
     fn face(&self, h: EdgeRef<'_>) -> Option<FaceId> {
-        h.0.face().map(|f| FaceId(f.id()))
+        let face = h.0.face().map(|f| FaceId(f.id()));
+        traced!("face", h.0.id(), face.unwrap_or(FaceId::INVALID));
+        face
     }
     #[inline(always)]
     fn outgoing(&self, v: VertexId) -> Option<EdgeRef<'_>> {
-        self.records.vert(v.0).edge().map(EdgeRef)
+        let edge = self.records.vert(v.0).edge();
+        traced!("HE_vert.edge", v.0, edge.map_or(u32::MAX, |e| e.id()));
+        edge.map(EdgeRef)
     }
     #[inline(always)]
     fn face_half_edge(&self, f: FaceId) -> EdgeRef<'_> {
-        EdgeRef(self.records.face(f.0).edge())
+        let edge = self.records.face(f.0).edge();
+        traced!("HE_face.edge", f.0, edge.id());
+        EdgeRef(edge)
     }
     #[inline(always)]
     fn position(&self, v: VertexId) -> DVec3 {
