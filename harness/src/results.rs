@@ -3,7 +3,7 @@
 use crate::kernels::Kernel;
 use crate::machine::Machine;
 use crate::probe::Probe;
-use topolab_structures::{Capabilities, Cost, Operator, Workload};
+use topolab_structures::{Capabilities, Cost, Family, Operator, Workload};
 
 /// Everything one run measured.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -54,6 +54,8 @@ pub struct Settings {
 pub struct StructureInfo {
     /// Kebab-case name.
     pub name: String,
+    /// Its family (what it stores for adjacency), as it declares it.
+    pub family: Family,
     /// What it stores.
     pub capabilities: Capabilities,
     /// Declared cost per operator.

@@ -98,6 +98,7 @@ impl StructureVisitor for Describe {
     fn visit<M: MeshTopology>(self) -> Self::Output {
         let info = StructureInfo {
             name: M::NAME.into(),
+            family: M::FAMILY,
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()
