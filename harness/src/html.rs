@@ -58,6 +58,7 @@ pub fn render(r: &Results) -> String {
     let ci = |s: &str| styles[names.iter().position(|&n| n == s).unwrap_or(0)];
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
+    crate::chooser::section(&mut h, r);
     machine_section(&mut h, r);
     targets(&mut h, r);
     table_4_1(&mut h, r, &names);
@@ -68,6 +69,7 @@ pub fn render(r: &Results) -> String {
     construction(&mut h, r, &ci);
     orderings(&mut h, r, names.as_slice());
     real_meshes(&mut h, r, names.as_slice());
+    crate::scale::section(&mut h, r, names.as_slice());
     libigl(&mut h, r);
     hull(&mut h, r);
     teaching(&mut h, r);
@@ -598,13 +600,28 @@ fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
 }
 
 fn orderings(h: &mut String, r: &Results, names: &[&str]) {
-    let ms: Vec<&Measurement> = r
+    let all: Vec<&Measurement> = r
         .measurements
         .iter()
         .filter(|m| m.family == "ordering")
         .collect();
-    let Some(first) = ms.first() else { return };
-    let base = first.mesh.split('/').next().unwrap_or_default();
+    // One table per renumbered mesh (the torus, a refined real mesh), in the run's order.
+    let mut bases: Vec<&str> = all
+        .iter()
+        .map(|m| m.mesh.split('/').next().unwrap_or_default())
+        .collect();
+    bases.dedup();
+    for base in bases {
+        let ms: Vec<&Measurement> = all
+            .iter()
+            .copied()
+            .filter(|m| m.mesh.split('/').next() == Some(base))
+            .collect();
+        ordering_table(h, base, &ms, names);
+    }
+}
+
+fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str]) {
     let mut meshes: Vec<&str> = ms.iter().map(|m| m.mesh.as_str()).collect();
     meshes.dedup();
     let cols: Vec<&str> = names
@@ -612,7 +629,7 @@ fn orderings(h: &mut String, r: &Results, names: &[&str]) {
         .copied()
         .filter(|n| ms.iter().any(|m| m.structure == *n))
         .collect();
-    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated, at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
+    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated (or as refined: each new vertex appended after the old ones, as real tools do), at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
     for c in &cols {
         let _ = write!(h, "<th>{c}</th>");
     }

@@ -9,6 +9,7 @@
 pub mod bench;
 pub mod catalogue;
 pub mod checksum;
+pub mod chooser;
 pub mod fit;
 pub mod html;
 pub mod hull;
@@ -19,6 +20,7 @@ pub mod measure;
 pub mod plot;
 pub mod probe;
 pub mod results;
+pub mod scale;
 pub mod svg;
 pub mod thumbnail;
 pub mod timing;

@@ -10,3 +10,4 @@ pub mod info;
 pub mod list;
 pub mod refine;
 pub mod report;
+pub mod report_scale;
