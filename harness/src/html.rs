@@ -72,6 +72,7 @@ pub fn render(r: &Results) -> String {
     crate::scale::section(&mut h, r, names.as_slice());
     libigl(&mut h, r);
     hull(&mut h, r);
+    hull_analysis(&mut h, r);
     teaching(&mut h, r);
     meshes(&mut h, r);
     if !r.notes.is_empty() {
@@ -779,6 +780,70 @@ fn hull(h: &mut String, r: &Results) {
             .find(|y| y.shape == x.shape && y.n == x.n && y.algorithm == "qhull")
             .map(|y| y.seconds);
         let _ = write!(h, "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.4}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", x.shape, x.n, x.algorithm, x.seconds, q.map(|q| format!("{:.1}", x.seconds / q)).unwrap_or_default(), x.hull_vertices, x.faces_created.map(|c| c.to_string()).unwrap_or_default(), x.faces_created.map(|c| format!("{:.3}", c as f64 / (6.0 * x.n as f64 - 20.0))).unwrap_or_default());
+    }
+    h.push_str("</table>");
+}
+
+/// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.
+fn hull_analysis(h: &mut String, r: &Results) {
+    use crate::hull::bench::{bound, n_lg_n};
+    let ours: Vec<_> = r
+        .hull
+        .iter()
+        .filter(|x| x.volume6_tests.is_some())
+        .collect();
+    if ours.is_empty() {
+        return;
+    }
+    h.push_str("<h3>The lecture's analysis, measured</h3><div class=read><b>How to read it.</b> What the lecture on 3D convex hulls counts to bound each algorithm, counted in the same runs as the table above. <i>Volume6</i>: orientation tests, the algorithms' unit of work; <i>/ bound</i> divides them by the algorithm's bound (gift wrapping n·h, incremental n², randomized n lg n): a ratio that stays level as n grows means the bound describes the work, a falling one that the bound is loose for this input (the incremental algorithm's n² is its worst case, reached on a sphere). <i>Σ|P(e)|</i>: the conflict-list work of the randomized algorithm, the sum of the merged lists P(e) = P(f1) ∪ P(f2) over all horizon edges, expected O(n lg n). <i>exact</i>: the tests the floating-point filter of the face's plane left to exact arithmetic (gift wrapping calls the adaptive predicate directly: 0). <i>B per point</i>: the peak heap the call allocated beyond its input, per point. The second table fits t ∝ n<sup>e</sup> to the time and to the work (Σ|P(e)| for the randomized algorithm, Volume6 tests otherwise) and compares the work's exponent with the bound's at the same n and h: green when it grows no faster.</div>");
+    h.push_str("<table><tr><th class=l>points</th><th>n</th><th class=l>algorithm</th><th>hull vertices</th><th>µs per point</th><th>Volume6</th><th class=l>bound</th><th>Volume6 / bound</th><th>Σ|P(e)|</th><th>Σ|P(e)| / n lg n</th><th>exact</th><th>B per point</th></tr>");
+    for x in &ours {
+        let b = bound(&x.algorithm, x.n, x.hull_vertices);
+        let tests = x.volume6_tests.unwrap_or(0);
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            x.shape,
+            x.n,
+            x.algorithm,
+            x.hull_vertices,
+            x.seconds * 1e6 / x.n as f64,
+            tests,
+            b.map_or("", |b| b.0),
+            b.map(|b| format!("{:.3}", tests as f64 / b.1)).unwrap_or_default(),
+            x.conflict_work.map(|w| w.to_string()).unwrap_or_default(),
+            x.conflict_work
+                .map(|w| format!("{:.2}", w as f64 / n_lg_n(x.n)))
+                .unwrap_or_default(),
+            x.exact_tests.map(|e| e.to_string()).unwrap_or_default(),
+            x.peak_bytes
+                .map(|p| format!("{:.0}", p as f64 / x.n as f64))
+                .unwrap_or_default(),
+        );
+    }
+    h.push_str("</table>");
+    if r.hull_fits.is_empty() {
+        return;
+    }
+    h.push_str("<table><tr><th class=l>points</th><th class=l>algorithm</th><th>sizes</th><th>time exponent</th><th>work exponent</th><th class=l>bound</th><th>bound's exponent</th></tr>");
+    for f in &r.hull_fits {
+        let e = |x: Option<f64>| x.map(|x| format!("{x:.2}")).unwrap_or_default();
+        let class = match f.within_bound {
+            Some(true) => "ok",
+            Some(false) => "bad",
+            None => "l",
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td class={class}>{}</td><td class=l>{}</td><td>{}</td></tr>",
+            f.shape,
+            f.algorithm,
+            f.sizes,
+            f.time_exponent,
+            e(f.conflict_exponent.or(f.tests_exponent)),
+            f.bound.as_deref().unwrap_or(""),
+            e(f.bound_exponent),
+        );
     }
     h.push_str("</table>");
 }

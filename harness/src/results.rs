@@ -26,6 +26,8 @@ pub struct Results {
     pub libigl: Vec<LibiglRow>,
     /// The 3D convex hull algorithms (and Qhull) against n.
     pub hull: Vec<crate::hull::bench::HullRow>,
+    /// Fitted exponents of the hull rows against n, next to the lecture's bounds.
+    pub hull_fits: Vec<crate::hull::bench::HullFit>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Anything the reader should know (skipped baselines, missing data).

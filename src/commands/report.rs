@@ -12,9 +12,7 @@ use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
-use topolab_harness::measure::{
-    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-};
+use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
 };
@@ -48,37 +46,6 @@ pub struct ReportArgs {
     pub probe_mb: Option<usize>,
 }
 
-/// The process's allocator as the harness's memory meter.
-struct Allocator;
-
-impl MemoryMeter for Allocator {
-    fn current(&self) -> usize {
-        crate::ALLOCATOR.current()
-    }
-    fn peak(&self) -> usize {
-        crate::ALLOCATOR.peak()
-    }
-    fn reset_peak(&self) {
-        crate::ALLOCATOR.reset_peak()
-    }
-    fn counting(&self, on: bool) {
-        if on {
-            crate::ALLOCATOR.start()
-        } else {
-            crate::ALLOCATOR.stop()
-        }
-    }
-    fn minor_faults(&self) -> Option<u64> {
-        crate::alloc::minor_faults()
-    }
-    fn release_free_memory(&self) {
-        crate::alloc::release_free_memory()
-    }
-    fn thread_cpu_ns(&self) -> Option<u64> {
-        crate::alloc::thread_cpu_ns()
-    }
-}
-
 struct Measure<'a> {
     case: &'a MeshCase<'a>,
     plan: &'a Plan,
@@ -89,7 +56,7 @@ struct Measure<'a> {
 impl StructureVisitor for Measure<'_> {
     type Output = Result<(), String>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
-        measure_structure::<M>(self.case, self.plan, &Allocator, self.est, self.out)
+        measure_structure::<M>(self.case, self.plan, &crate::ALLOCATOR, self.est, self.out)
     }
 }
 
@@ -233,6 +200,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         fits: Vec::new(),
         libigl: Vec::new(),
         hull: Vec::new(),
+        hull_fits: Vec::new(),
         teaching: Vec::new(),
         notes: Vec::new(),
     };
@@ -330,6 +298,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     orderings::<X>(&cases, &names, &plan, &mut results)?;
     results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
     results.hull = hull(quick, &mut results.notes)?;
+    results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     let skipped = results
@@ -363,8 +332,8 @@ fn short(n: usize) -> String {
     }
 }
 
-/// The hull benchmark: points in a ball up to 1M (10k with `--quick`), on a sphere up to 100k
-/// (1k with `--quick`).
+/// The hull benchmark: points in a ball and on a sphere up to 1M (10k and 1k with
+/// `--quick`), each run's peak heap measured by the process's counting allocator.
 fn hull(
     quick: bool,
     notes: &mut Vec<String>,
@@ -380,11 +349,11 @@ fn hull(
         );
     }
     let mut rows = Vec::new();
-    // Largest n per shape: on a sphere every point is on the hull (h = n), so gift wrapping's
-    // O(n·h) is quadratic there.
+    // Largest n per shape, full and with --quick: on a sphere every point is on the hull
+    // (h = n), so gift wrapping's O(n·h) is quadratic there; the quick run keeps it small.
     for (shape, name, max, quick_max) in [
         (Shape::Ball, "ball", 1_000_000, 10_000),
-        (Shape::Sphere, "sphere", 100_000, 1_000),
+        (Shape::Sphere, "sphere", 1_000_000, 1_000),
     ] {
         let sizes: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
             .into_iter()
@@ -396,6 +365,7 @@ fn hull(
             &sizes,
             python.as_deref().map(|p| (p, root)),
             1.0,
+            Some(&crate::ALLOCATOR),
             |row| {
                 eprintln!(
                     "topolab report: hull {} {} {}: {:.3} s",
