@@ -93,13 +93,7 @@ pub fn section(h: &mut String, r: &Results) {
                 && m.status == Status::Refused
         });
         let fam = if refused_torus { "grid" } else { "torus" };
-        let build = cell(
-            r,
-            &s.name,
-            Subject::Construction,
-            Kernel::Construction,
-            fam,
-        );
+        let build = cell(r, &s.name, Subject::Construction, Kernel::Construction, fam);
         let bytes = build.and_then(|m| {
             let per = |b: u64| b as f64 / m.triangles.max(1) as f64;
             match m.bytes {
@@ -108,7 +102,13 @@ pub fn section(h: &mut String, r: &Results) {
                 b => b.map(per),
             }
         });
-        let r00 = cell(r, &s.name, Subject::Query(Operator::R00), Kernel::Sweep, fam);
+        let r00 = cell(
+            r,
+            &s.name,
+            Subject::Query(Operator::R00),
+            Kernel::Sweep,
+            fam,
+        );
         let smooth = cell(
             r,
             &s.name,
@@ -123,7 +123,11 @@ pub fn section(h: &mut String, r: &Results) {
                 m.triangles,
                 m.reps,
                 ns(x),
-                if fam == "grid" { " <span class=small>(grid)</span>" } else { "" }
+                if fam == "grid" {
+                    " <span class=small>(grid)</span>"
+                } else {
+                    ""
+                }
             ),
             None => "<td class=skip>–</td>".into(),
         };

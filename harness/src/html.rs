@@ -2,8 +2,8 @@
 
 use crate::kernels::Kernel;
 use crate::limit::{Bound, Limit};
-use crate::results::{Measurement, Results, Status, Subject};
 use crate::plot::{self, Style};
+use crate::results::{Measurement, Results, Status, Subject};
 use crate::svg;
 use std::fmt::Write;
 use topolab_structures::{Family, Input, Operator, Workload};

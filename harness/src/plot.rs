@@ -85,7 +85,11 @@ impl Marker {
                 r * 1.7
             ),
             Marker::TriangleUp | Marker::TriangleDown => {
-                let s = if self == Marker::TriangleUp { 1.0 } else { -1.0 };
+                let s = if self == Marker::TriangleUp {
+                    1.0
+                } else {
+                    -1.0
+                };
                 format!(
                     r#"<polygon points="{:.1},{:.1} {:.1},{:.1} {:.1},{:.1}" {paint}/>"#,
                     x,

@@ -36,9 +36,9 @@ fn find<'a>(
     subject: Subject,
     kernel: Kernel,
 ) -> Option<&'a Measurement> {
-    r.measurements.iter().find(|m| {
-        m.mesh == mesh && m.structure == s && m.operator == subject && m.kernel == kernel
-    })
+    r.measurements
+        .iter()
+        .find(|m| m.mesh == mesh && m.structure == s && m.operator == subject && m.kernel == kernel)
 }
 
 /// The section: one table per refined mesh; nothing when there is none.
@@ -50,15 +50,19 @@ pub fn section(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("<h2>Real meshes at scale</h2><div class=read><b>How to read it.</b> Real meshes of <code>bench-data/cache/</code> refined by Loop subdivision (each level splits every triangle into four; the new vertices are appended after the old ones, as real tools do, so neighbours are far apart in memory), measured like the tori: every operator swept over every element, the workloads, construction. Each cell: nanoseconds per element (construction: per face) and, below, the ratio to the same cell on the torus of the nearest size, whose order is ideal (above 1×: what the real mesh's order and shape cost). The element-order section renumbers the smallest of them.</div>");
     let mut rows: Vec<(String, Subject, Kernel)> = Operator::ALL
         .iter()
-        .map(|&op| (format!("{} sweep", op.name()), Subject::Query(op), Kernel::Sweep))
+        .map(|&op| {
+            (
+                format!("{} sweep", op.name()),
+                Subject::Query(op),
+                Kernel::Sweep,
+            )
+        })
         .collect();
-    rows.extend(Workload::ALL.iter().map(|&w| {
-        (
-            w.name().to_string(),
-            Subject::Workload(w),
-            Kernel::Workload,
-        )
-    }));
+    rows.extend(
+        Workload::ALL
+            .iter()
+            .map(|&w| (w.name().to_string(), Subject::Workload(w), Kernel::Workload)),
+    );
     rows.push((
         "construction".into(),
         Subject::Construction,

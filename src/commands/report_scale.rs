@@ -54,11 +54,10 @@ pub fn refined_meshes(
     let mut out: Vec<(String, PolygonSoup)> = Vec::new();
     for r in list {
         let found = std::fs::read_dir(dir).ok().and_then(|d| {
-            d.filter_map(|e| e.ok().map(|e| e.path()))
-                .find(|p| {
-                    p.file_stem().and_then(|s| s.to_str()) == Some(r.source)
-                        && topolab_structures::io::format_of(p).is_ok()
-                })
+            d.filter_map(|e| e.ok().map(|e| e.path())).find(|p| {
+                p.file_stem().and_then(|s| s.to_str()) == Some(r.source)
+                    && topolab_structures::io::format_of(p).is_ok()
+            })
         });
         let Some(path) = found else {
             notes.push(format!(

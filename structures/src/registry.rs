@@ -255,7 +255,11 @@ mod tests {
         for &name in NAMES {
             let family = visit(name, FamilyOf).unwrap();
             assert_ne!(family, crate::Family::Outside, "{name}");
-            assert_eq!(family == crate::Family::Che, name.starts_with("che-"), "{name}");
+            assert_eq!(
+                family == crate::Family::Che,
+                name.starts_with("che-"),
+                "{name}"
+            );
         }
     }
 
