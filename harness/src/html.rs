@@ -14,7 +14,8 @@ fn esc(s: &str) -> String {
         .replace('>', "&gt;")
 }
 
-fn ns(x: f64) -> String {
+/// A time in nanoseconds with its unit (ns, µs, ms).
+pub(crate) fn ns(x: f64) -> String {
     if x >= 1e6 {
         format!("{:.1} ms", x / 1e6)
     } else if x >= 1e3 {

@@ -2,6 +2,7 @@
 //! `bench-data/cache/` refined by Loop subdivision, new vertices appended after the old ones)
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
+use crate::html::ns;
 use crate::kernels::Kernel;
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
@@ -9,16 +10,6 @@ use topolab_structures::{Operator, Workload};
 
 /// The family name of the refined meshes.
 pub const FAMILY: &str = "refined";
-
-fn ns(x: f64) -> String {
-    if x >= 1e3 {
-        format!("{:.1} µs", x / 1e3)
-    } else if x >= 10.0 {
-        format!("{x:.0} ns")
-    } else {
-        format!("{x:.1} ns")
-    }
-}
 
 /// The torus whose triangle count is nearest (in ratio) to `triangles`.
 fn nearest_torus(r: &Results, triangles: usize) -> Option<&MeshInfo> {
