@@ -4,11 +4,12 @@ use crate::kernels::Kernel;
 use crate::limit::{Bound, Limit};
 use crate::plot::{self, Style};
 use crate::results::{Measurement, Results, Status, Subject};
+use crate::sections::Section;
 use crate::svg;
 use std::fmt::Write;
 use topolab_structures::{Family, Input, Operator, Workload};
 
-fn esc(s: &str) -> String {
+pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -59,23 +60,36 @@ pub fn render(r: &Results) -> String {
     let ci = |s: &str| styles[names.iter().position(|&n| n == s).unwrap_or(0)];
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
-    crate::chooser::section(&mut h, r);
+    // `--sections`: only the sections the run measured.
+    let shows = |s: Section| r.settings.sections.contains(&s);
+    // The chooser comes first, above the machine: what a reader wants before the details.
+    if shows(Section::Chooser) {
+        crate::chooser::section(&mut h, r);
+    }
     machine_section(&mut h, r);
-    targets(&mut h, r);
-    table_4_1(&mut h, r, &names);
-    plots(&mut h, r, &ci);
-    sweeps(&mut h, r, &names);
-    workloads(&mut h, r, &ci);
-    memory(&mut h, r, &ci);
-    construction(&mut h, r, &ci);
-    orderings(&mut h, r, names.as_slice());
-    real_meshes(&mut h, r, names.as_slice());
-    crate::scale::section(&mut h, r, names.as_slice());
-    libigl(&mut h, r);
-    hull(&mut h, r);
-    hull_analysis(&mut h, r);
-    teaching(&mut h, r);
-    meshes(&mut h, r);
+    let draw = |s: Section, h: &mut String| match s {
+        Section::Chooser => {}
+        Section::Targets => targets(h, r),
+        Section::Table41 => table_4_1(h, r, &names),
+        Section::Plots => plots(h, r, &ci),
+        Section::Sweeps => sweeps(h, r, &names),
+        Section::Workloads => workloads(h, r, &ci),
+        Section::Memory => memory(h, r, &ci),
+        Section::Construction => construction(h, r, &ci),
+        Section::Orderings => orderings(h, r, names.as_slice()),
+        Section::RealMeshes => real_meshes(h, r, names.as_slice()),
+        Section::RealAtScale => crate::scale::section(h, r, names.as_slice()),
+        Section::Libigl => libigl(h, r),
+        Section::Hull => {
+            hull(h, r);
+            hull_analysis(h, r);
+        }
+        Section::Teaching => teaching(h, r),
+        Section::Meshes => meshes(h, r),
+    };
+    for s in Section::ALL.into_iter().filter(|&s| shows(s)) {
+        draw(s, &mut h);
+    }
     if !r.notes.is_empty() {
         h.push_str("<h2>Notes</h2><ul>");
         for n in &r.notes {
@@ -661,7 +675,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     if real.is_empty() {
         return;
     }
-    h.push_str("<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles).</div><table><tr><th class=l>mesh</th><th>faces</th>");
+    let _ = write!(h, "<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles). {}</div><table><tr><th class=l>mesh</th><th>faces</th>", crate::repaired::HOW_TO_READ);
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
@@ -669,8 +683,9 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     for mesh in real {
         let _ = write!(
             h,
-            "<tr><th class=l>{}</th><td>{}</td>",
+            "<tr><th class=l>{}{}</th><td>{}</td>",
             esc(&mesh.name),
+            crate::repaired::mark(mesh),
             mesh.faces
         );
         for n in names {
@@ -867,9 +882,10 @@ fn meshes(h: &mut String, r: &Results) {
     for m in &r.meshes {
         let _ = write!(
             h,
-            "<figure>{}<figcaption>{}<br>{} vertices, {} faces</figcaption></figure>",
+            "<figure>{}<figcaption>{}{}<br>{} vertices, {} faces</figcaption></figure>",
             m.thumbnail_svg,
             esc(&m.name),
+            crate::repaired::mark(m),
             m.vertices,
             m.faces
         );

@@ -3,6 +3,7 @@
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
 use super::report_scale;
+use super::report_sections::{Selection, LIBIGL};
 use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
@@ -15,7 +16,9 @@ use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
+    FORMAT_VERSION,
 };
+use topolab_harness::sections::Section;
 use topolab_harness::{fit, html, machine, probe, svg};
 use topolab_structures::registry::{duplicate_name, names, Structures};
 use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
@@ -30,9 +33,17 @@ pub struct ReportArgs {
     /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
     pub sizes: Option<Vec<usize>>,
-    /// Structures to measure, comma separated (default: all; see `topolab list`).
+    /// Structures to measure, comma separated (default: all; see `topolab list`). Given, the
+    /// libigl section runs only when it names `libigl`, the hull section only when it names
+    /// `winged-edge` (the structure the hull algorithms build).
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
+    /// Sections of the page to measure and show, comma separated (default: all): chooser,
+    /// targets, table-4-1, plots, sweeps, workloads, memory, construction, orderings,
+    /// real-meshes, real-at-scale, libigl, hull, teaching, meshes. Only what they are drawn
+    /// from is measured.
+    #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
+    pub sections: Option<Vec<Section>>,
     /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
     /// (the meshes `make data` fetched into bench-data/cache/, when present), `refined` (two of
     /// them refined by Loop subdivision to 1.2M and 3.3M triangles, measured like the tori).
@@ -135,7 +146,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     let names: Vec<String> = match &args.structures {
         Some(list) => {
             let mut names: Vec<String> = Vec::with_capacity(list.len());
-            for n in list {
+            for n in list.iter().filter(|n| *n != LIBIGL) {
                 if !all.contains(&n.as_str()) {
                     return Err(crate::input::unknown_structure(n));
                 }
@@ -183,7 +194,14 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
+    let mut notes = Vec::new();
+    let selection = Selection::new(
+        args.sections.as_deref(),
+        args.structures.as_deref(),
+        &mut notes,
+    );
     let mut results = Results {
+        format_version: FORMAT_VERSION,
         machine: machine::facts(),
         probe,
         settings: Settings {
@@ -193,6 +211,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cell_budget_s: plan.cell_budget.as_secs_f64(),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command,
+            sections: selection.sections.clone(),
         },
         structures: Vec::new(),
         meshes: Vec::new(),
@@ -202,7 +221,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull: Vec::new(),
         hull_fits: Vec::new(),
         teaching: Vec::new(),
-        notes: Vec::new(),
+        notes,
     };
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
@@ -210,7 +229,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.teaching.push(teach);
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
-    for size in &sizes {
+    for size in sizes.iter().filter(|_| selection.generated) {
         for fam in &generated {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
@@ -218,12 +237,15 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
-    if families.contains(&"real") {
+    let mut repaired = std::collections::HashMap::new();
+    if families.contains(&"real") && selection.real_meshes {
         for (name, soup) in real_meshes(&mut results.notes) {
+            let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
+            repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
         }
     }
-    if families.contains(&report_scale::FAMILY) {
+    if families.contains(&report_scale::FAMILY) && selection.refined {
         let list: &[report_scale::Refined] = if quick {
             &report_scale::QUICK
         } else {
@@ -233,7 +255,8 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((name, report_scale::FAMILY.into(), soup));
         }
     }
-    let bar = ProgressBar::new((cases.len() * names.len()) as u64);
+    let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
+    let bar = ProgressBar::new((measured * names.len()) as u64);
     bar.set_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template")
@@ -246,7 +269,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let plan = if fam == "real" { &light } else { &plan };
+        let plan = if selection.light(fam) { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
@@ -262,7 +285,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
                 soup.num_faces()
             );
         }
-        for s in &names {
+        for s in names.iter().filter(|_| selection.measures(fam)) {
             bar.set_message(format!("{name}: {s}"));
             visit::<X, _>(
                 s,
@@ -292,13 +315,20 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
             counts: MeshCounts::of(soup),
+            repaired: repaired.remove(name),
         });
     }
     bar.finish_and_clear();
-    orderings::<X>(&cases, &names, &plan, &mut results)?;
-    results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
-    results.hull = hull(quick, &mut results.notes)?;
-    results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    if selection.orderings {
+        orderings::<X>(&cases, &names, &plan, &mut results)?;
+    }
+    if selection.libigl {
+        results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+    }
+    if selection.hull {
+        results.hull = hull(quick, &mut results.notes)?;
+        results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     let skipped = results

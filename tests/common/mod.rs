@@ -4,6 +4,8 @@
 // Each test crate that includes this module uses part of it.
 #![allow(dead_code)]
 
+pub mod run;
+
 use glam::DVec3;
 use topolab_harness::checksum::{edge_key, mix};
 use topolab_structures::{
