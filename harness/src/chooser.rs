@@ -83,7 +83,7 @@ pub fn section(h: &mut String, r: &Results) {
     {
         return;
     }
-    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (OpenMesh: its allocator's measurement); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure offers the lecture's editing operations (insert, delete, weld); none does yet. The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
+    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (OpenMesh: its allocator's measurement); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure offers the lecture's editing operations (insert and delete vertices and faces, flip, split and collapse edges; see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
     h.push_str("<table><tr><th class=l>structure</th><th class=l>family</th><th>bytes per triangle</th><th>construction, ns/face</th><th>R00 sweep, ns/vertex</th><th>smoothing, ns/vertex</th><th class=l>stores</th><th class=l>editable</th><th class=l>pick it when</th></tr>");
     for s in &r.structures {
         let refused_torus = r.measurements.iter().any(|m| {
@@ -138,7 +138,7 @@ pub fn section(h: &mut String, r: &Results) {
         });
         let _ = write!(
             h,
-            "<tr><th class=l>{}</th><td class=l>{}</td>{}{}{}{}<td class=l>{}</td><td class=l>not yet</td><td class=l>{}</td></tr>",
+            "<tr><th class=l>{}</th><td class=l>{}</td>{}{}{}{}<td class=l>{}</td><td class=l>{}</td><td class=l>{}</td></tr>",
             s.name,
             s.family,
             match (build, bytes) {
@@ -154,6 +154,7 @@ pub fn section(h: &mut String, r: &Results) {
             td(r00, r00.and_then(|m| m.ns_per_item)),
             td(smooth, smooth.and_then(|m| m.ns_per_item)),
             stores(s),
+            if s.editable { "yes" } else { "not yet" },
             pick
         );
     }

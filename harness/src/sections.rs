@@ -33,6 +33,9 @@ pub enum Section {
     Libigl,
     /// The 3D convex hull algorithms and Qhull.
     Hull,
+    /// The changing workloads of the Surface_mesh benchmark (√3 subdivision, the collapse
+    /// test) on the editable structures and OpenMesh.
+    Changing,
     /// What each structure stores for the CHE thesis chapter's Figure 4.10.
     Teaching,
     /// Thumbnails of the meshes.
@@ -53,7 +56,7 @@ pub enum SizeSweep {
 
 impl Section {
     /// Every section, in page order.
-    pub const ALL: [Section; 15] = [
+    pub const ALL: [Section; 16] = [
         Section::Chooser,
         Section::Targets,
         Section::Table41,
@@ -67,6 +70,7 @@ impl Section {
         Section::RealAtScale,
         Section::Libigl,
         Section::Hull,
+        Section::Changing,
         Section::Teaching,
         Section::Meshes,
     ];
@@ -87,6 +91,7 @@ impl Section {
             Section::RealAtScale => "real-at-scale",
             Section::Libigl => "libigl",
             Section::Hull => "hull",
+            Section::Changing => "changing",
             Section::Teaching => "teaching",
             Section::Meshes => "meshes",
         }
@@ -114,6 +119,7 @@ impl Section {
             | Section::RealMeshes
             | Section::RealAtScale
             | Section::Hull
+            | Section::Changing
             | Section::Teaching
             | Section::Meshes => SizeSweep::None,
         }

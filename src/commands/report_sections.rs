@@ -43,6 +43,8 @@ pub struct Selection {
     pub libigl: bool,
     /// The hull section runs.
     pub hull: bool,
+    /// The changing workloads run (on the generated tori).
+    pub changing: bool,
 }
 
 impl Selection {
@@ -75,11 +77,13 @@ impl Selection {
             measure_real: shows(Section::RealMeshes),
             generated: size_sweep != SizeSweep::None
                 || shows(Section::Orderings)
+                || shows(Section::Changing)
                 || shows(Section::Meshes),
             refined: shows(Section::RealAtScale) || shows(Section::Orderings),
             orderings: shows(Section::Orderings),
             libigl: shows(Section::Libigl),
             hull: shows(Section::Hull),
+            changing: shows(Section::Changing),
             sections,
         }
     }
@@ -132,6 +136,9 @@ mod tests {
         assert!(scale.refined && scale.measures("refined") && !scale.light("refined"));
         assert!(!scale.measures("torus") && !scale.generated && !scale.orderings);
         assert!(!memory.refined);
+        let changing = Selection::new(Some(&[Section::Changing]), None, &mut notes);
+        assert!(changing.changing && changing.generated && !changing.measures("torus"));
+        assert!(!memory.changing);
     }
 
     #[test]
