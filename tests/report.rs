@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use topolab::registry;
+use topolab_harness::plot;
 use topolab_structures::Operator;
 
 fn out_dir(name: &str) -> PathBuf {
@@ -123,7 +124,35 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
         !html.contains("<script src") && !html.contains("<link"),
         "the page must be self-contained"
     );
+    every_legend_is_outside_its_data_area(&html);
+    assert!(html.contains("<h2>Choosing a structure</h2>"));
+    // The chooser is at the top: before the machine and every measured section.
+    assert!(html.find("Choosing a structure") < html.find("<h2>Machine</h2>"));
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Every log-log plot of the page has a data area and a legend, and they do not overlap; the
+/// page has as many plots as operators, workloads and construction families at least.
+fn every_legend_is_outside_its_data_area(html: &str) {
+    let plots: Vec<&str> = html
+        .split("<svg ")
+        .skip(1)
+        .filter(|s| s.starts_with(r#"xmlns="http://www.w3.org/2000/svg" class="loglog""#))
+        .map(|s| &s[..s.find("</svg>").expect("a closed svg")])
+        .collect();
+    assert!(
+        plots.len() >= Operator::ALL.len() + 4 + 2,
+        "{} plots",
+        plots.len()
+    );
+    for p in plots {
+        let area = plot::rect_of(p, "plot-area").expect("a plot area");
+        let legend = plot::rect_of(p, "legend").expect("a legend");
+        assert!(
+            !area.overlaps(&legend),
+            "a legend {legend:?} overlaps its data {area:?}"
+        );
+    }
 }
 
 #[test]

@@ -2,11 +2,12 @@
 
 use crate::kernels::Kernel;
 use crate::limit::{Bound, Limit};
+use crate::plot::{self, Style};
 use crate::results::{Measurement, Results, Status, Subject};
 use crate::sections::Section;
 use crate::svg;
 use std::fmt::Write;
-use topolab_structures::{Input, Operator, Workload};
+use topolab_structures::{Family, Input, Operator, Workload};
 
 pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -14,6 +15,7 @@ pub(crate) fn esc(s: &str) -> String {
         .replace('>', "&gt;")
 }
 
+/// A time in nanoseconds with its unit (ns, µs, ms).
 pub(crate) fn ns(x: f64) -> String {
     if x >= 1e6 {
         format!("{:.1} ms", x / 1e6)
@@ -54,13 +56,19 @@ pre{background:#f6f8fa;padding:.6em;overflow-x:auto;font-size:12px;max-height:42
 pub fn render(r: &Results) -> String {
     let mut h = String::new();
     let names: Vec<&str> = r.structures.iter().map(|s| s.name.as_str()).collect();
-    let ci = |s: &str| names.iter().position(|&n| n == s).unwrap_or(0);
+    let styles = plot::styles(&r.structures.iter().map(|s| s.family).collect::<Vec<_>>());
+    let ci = |s: &str| styles[names.iter().position(|&n| n == s).unwrap_or(0)];
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
-    machine_section(&mut h, r);
     // `--sections`: only the sections the run measured.
     let shows = |s: Section| r.settings.sections.contains(&s);
+    // The chooser comes first, above the machine: what a reader wants before the details.
+    if shows(Section::Chooser) {
+        crate::chooser::section(&mut h, r);
+    }
+    machine_section(&mut h, r);
     let draw = |s: Section, h: &mut String| match s {
+        Section::Chooser => {}
         Section::Targets => targets(h, r),
         Section::Table41 => {
             table_4_1(h, r, &names);
@@ -73,6 +81,7 @@ pub fn render(r: &Results) -> String {
         Section::Construction => construction(h, r, &ci),
         Section::Orderings => orderings(h, r, names.as_slice()),
         Section::RealMeshes => real_meshes(h, r, names.as_slice()),
+        Section::RealAtScale => crate::scale::section(h, r, names.as_slice()),
         Section::Libigl => libigl(h, r),
         Section::Hull => {
             hull(h, r);
@@ -137,16 +146,24 @@ fn lines(
     op: Subject,
     kernel: Kernel,
     family: &str,
-    ci: &dyn Fn(&str) -> usize,
-) -> Vec<svg::Series> {
+    ci: &dyn Fn(&str) -> Style,
+) -> Vec<plot::Line> {
     r.structures
         .iter()
-        .map(|s| svg::Series {
+        .map(|s| plot::Line {
             name: s.name.clone(),
-            colour: ci(&s.name),
+            style: ci(&s.name),
             points: cells(r, &s.name, op, kernel, family)
                 .iter()
-                .filter_map(|m| m.ns_per_item.map(|t| (m.triangles as f64, t)))
+                .filter_map(|m| {
+                    Some(plot::Point {
+                        x: m.triangles as f64,
+                        y: m.ns_per_item?,
+                        min: m.min_ns_per_item,
+                        max: m.max_ns_per_item,
+                        reps: m.reps,
+                    })
+                })
                 .collect(),
         })
         .collect()
@@ -380,15 +397,16 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("</table>");
 }
 
-fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("<h2>Time per query against mesh size</h2><div class=read><b>How to read them.</b> Both axes are logarithmic, so a power law is a straight line whose slope is its exponent: a flat line is a constant-time query, a line rising one decade per decade of size is a linear scan. Lines that stop early were skipped at larger sizes (too slow to measure).</div><div class=plots>");
     for op in Operator::ALL {
         let fam = family_of(op);
         let kernel = table_kernel(op);
         let series = lines(r, Subject::Query(op), kernel, fam, ci);
-        h.push_str(&svg::loglog(
+        h.push_str(&plot::loglog(
             &format!("{} ({fam}, {kernel})", op.name()),
             "triangles",
+            "ns per query",
             "ns per query",
             &series,
         ));
@@ -491,13 +509,14 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("</tr></table>");
 }
 
-fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("<h2>Application workloads (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The workloads of the published Surface_mesh benchmark, which OpenMesh and pmp-library users compare on: <i>circulators</i> (for each vertex count its faces, for each face subtract its vertices; the total must be 0), <i>barycenter</i> (mean of all positions), <i>normals</i> (face normals, then vertex normals), <i>smoothing</i> (one step of uniform 1-ring averaging of interior vertices). Time per element on closed tori of growing size; every structure's result is cross-checked.</div><div class=plots>");
     for w in Workload::ALL {
         let series = lines(r, Subject::Workload(w), Kernel::Workload, "torus", ci);
-        h.push_str(&svg::loglog(
+        h.push_str(&plot::loglog(
             w.name(),
             "triangles",
+            "ns per element",
             "ns per element",
             &series,
         ));
@@ -505,11 +524,11 @@ fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     h.push_str("</div>");
 }
 
-fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let rows: Vec<(String, usize, f64, Option<f64>)> =
+    let rows: Vec<(String, Style, f64, Option<f64>)> =
         r.measurements
             .iter()
             .filter(|m| {
@@ -533,7 +552,7 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
             })
             .collect();
     let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
-    let peak: Vec<(String, usize, f64, Option<f64>)> = r
+    let peak: Vec<(String, Style, f64, Option<f64>)> = r
         .measurements
         .iter()
         .filter(|m| {
@@ -557,13 +576,14 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
     ));
 }
 
-fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
+fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and OpenMesh share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
     for fam in ["torus", "grid"] {
         let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
-        h.push_str(&svg::loglog(
+        h.push_str(&plot::loglog(
             &format!("construction ({fam})"),
             "faces",
+            "ns per face",
             "ns per face",
             &series,
         ));
@@ -606,13 +626,28 @@ fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> usize) {
 }
 
 fn orderings(h: &mut String, r: &Results, names: &[&str]) {
-    let ms: Vec<&Measurement> = r
+    let all: Vec<&Measurement> = r
         .measurements
         .iter()
         .filter(|m| m.family == "ordering")
         .collect();
-    let Some(first) = ms.first() else { return };
-    let base = first.mesh.split('/').next().unwrap_or_default();
+    // One table per renumbered mesh (the torus, a refined real mesh), in the run's order.
+    let mut bases: Vec<&str> = all
+        .iter()
+        .map(|m| m.mesh.split('/').next().unwrap_or_default())
+        .collect();
+    bases.dedup();
+    for base in bases {
+        let ms: Vec<&Measurement> = all
+            .iter()
+            .copied()
+            .filter(|m| m.mesh.split('/').next() == Some(base))
+            .collect();
+        ordering_table(h, base, &ms, names);
+    }
+}
+
+fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str]) {
     let mut meshes: Vec<&str> = ms.iter().map(|m| m.mesh.as_str()).collect();
     meshes.dedup();
     let cols: Vec<&str> = names
@@ -620,7 +655,7 @@ fn orderings(h: &mut String, r: &Results, names: &[&str]) {
         .copied()
         .filter(|n| ms.iter().any(|m| m.structure == *n))
         .collect();
-    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated, at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
+    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated (or as refined: each new vertex appended after the old ones, as real tools do), at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
     for c in &cols {
         let _ = write!(h, "<th>{c}</th>");
     }
@@ -718,24 +753,37 @@ fn hull(h: &mut String, r: &Results) {
     }
     h.push_str("<h2>3D convex hull on the winged-edge (the lecture on 3D convex hulls)</h2><div class=read><b>How to read it.</b> The lecture's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the lecture's expected bound 6n − 20.</div><div class=plots>");
     let algos = ["gift", "incremental", "randomized", "qhull"];
+    // The lecture's three algorithms build a winged-edge: that family's hue; Qhull is outside.
+    let styles = plot::styles(&[
+        Family::EdgeLists,
+        Family::EdgeLists,
+        Family::EdgeLists,
+        Family::Outside,
+    ]);
     let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
     shapes.dedup();
     for shape in &shapes {
-        let series: Vec<svg::Series> = algos
+        let series: Vec<plot::Line> = algos
             .iter()
             .enumerate()
-            .map(|(i, a)| svg::Series {
+            .map(|(i, a)| plot::Line {
                 name: a.to_string(),
-                colour: i,
+                style: styles[i],
                 points: r
                     .hull
                     .iter()
                     .filter(|x| x.shape == *shape && x.algorithm == *a)
-                    .map(|x| (x.n as f64, x.seconds * 1e9 / x.n as f64))
+                    .map(|x| plot::Point {
+                        x: x.n as f64,
+                        y: x.seconds * 1e9 / x.n as f64,
+                        min: None,
+                        max: None,
+                        reps: 0,
+                    })
                     .collect(),
             })
             .collect();
-        h.push_str(&svg::loglog(
+        h.push_str(&plot::loglog(
             &format!(
                 "hull of points {}",
                 if *shape == "sphere" {
@@ -745,6 +793,7 @@ fn hull(h: &mut String, r: &Results) {
                 }
             ),
             "points",
+            "ns per point",
             "ns per point",
             &series,
         ));

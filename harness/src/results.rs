@@ -3,7 +3,7 @@
 use crate::kernels::Kernel;
 use crate::machine::Machine;
 use crate::probe::Probe;
-use topolab_structures::{Capabilities, Cost, Operator, Workload};
+use topolab_structures::{Capabilities, Cost, Family, Operator, Workload};
 
 /// The version of `results.json`'s format, written as its `format_version`: raised when a
 /// field that readers rely on (`topolab compare` reads the machine, the settings' command, the
@@ -72,6 +72,11 @@ pub struct Settings {
 pub struct StructureInfo {
     /// Kebab-case name.
     pub name: String,
+    /// Its family (what it stores for adjacency), as it declares it.
+    pub family: Family,
+    /// Whether it offers the editing operations (`MeshEdit`), which the changing workloads run.
+    #[serde(default)]
+    pub editable: bool,
     /// What it stores.
     pub capabilities: Capabilities,
     /// Declared cost per operator.

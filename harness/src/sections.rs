@@ -5,6 +5,9 @@
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Section {
+    /// "Choosing a structure", at the top: per structure its memory, construction, R00 sweep
+    /// and smoothing on the largest torus, what it stores and when to pick it.
+    Chooser,
     /// The project's performance targets on the largest torus.
     Targets,
     /// The measured Table 4.1 of the CHE thesis chapter: declared cost, fitted exponent, time.
@@ -24,6 +27,8 @@ pub enum Section {
     Orderings,
     /// The real meshes of `bench-data/cache/` (repaired where the structures refuse them).
     RealMeshes,
+    /// Real meshes refined to 1M triangles and more (family `refined`), measured like the tori.
+    RealAtScale,
     /// libigl's functions timed on the tori, their answers checked against the lab's.
     Libigl,
     /// The 3D convex hull algorithms and Qhull.
@@ -51,7 +56,8 @@ pub enum SizeSweep {
 
 impl Section {
     /// Every section, in page order.
-    pub const ALL: [Section; 14] = [
+    pub const ALL: [Section; 16] = [
+        Section::Chooser,
         Section::Targets,
         Section::Table41,
         Section::Plots,
@@ -61,6 +67,7 @@ impl Section {
         Section::Construction,
         Section::Orderings,
         Section::RealMeshes,
+        Section::RealAtScale,
         Section::Libigl,
         Section::Hull,
         Section::Changing,
@@ -71,6 +78,7 @@ impl Section {
     /// The kebab-case name of `--sections` and `results.json`.
     pub fn name(self) -> &'static str {
         match self {
+            Section::Chooser => "chooser",
             Section::Targets => "targets",
             Section::Table41 => "table-4-1",
             Section::Plots => "plots",
@@ -80,6 +88,7 @@ impl Section {
             Section::Construction => "construction",
             Section::Orderings => "orderings",
             Section::RealMeshes => "real-meshes",
+            Section::RealAtScale => "real-at-scale",
             Section::Libigl => "libigl",
             Section::Hull => "hull",
             Section::Changing => "changing",
@@ -94,10 +103,12 @@ impl Section {
     }
 
     /// What of the size sweep this section is drawn from. libigl's answers are checked against
-    /// the lab's sweeps and workloads on the tori, so it needs them all.
+    /// the lab's sweeps and workloads on the tori, so it needs them all; the chooser shows a
+    /// workload; the refined real meshes are measured on their own, not by the size sweep.
     pub fn size_sweep(self) -> SizeSweep {
         match self {
-            Section::Targets
+            Section::Chooser
+            | Section::Targets
             | Section::Table41
             | Section::Plots
             | Section::Sweeps
@@ -106,6 +117,7 @@ impl Section {
             Section::Memory | Section::Construction => SizeSweep::Light,
             Section::Orderings
             | Section::RealMeshes
+            | Section::RealAtScale
             | Section::Hull
             | Section::Changing
             | Section::Teaching

@@ -1,145 +1,14 @@
-//! SVG drawings of the report: log-log plots (plotters), bar charts, mesh thumbnails and the CHE
-//! thesis chapter's Figure 4.10. Everything is inline SVG with real `<text>`, no fonts or network.
+//! SVG drawings of the report: bar charts, mesh thumbnails ([`crate::thumbnail`]) and the CHE
+//! thesis chapter's Figure 4.10 (the log-log plots are [`crate::plot`]'s). Everything is
+//! inline SVG with real `<text>`, no fonts or network.
 
-use glam::DVec3;
-use plotters::prelude::*;
+use crate::plot::Style;
 use std::fmt::Write;
 use topolab_structures::PolygonSoup;
 
-/// Colour of series `i` (a palette that stays distinguishable for ~14 series).
-pub fn colour(i: usize) -> RGBColor {
-    const P: [(u8, u8, u8); 14] = [
-        (31, 119, 180),
-        (255, 127, 14),
-        (44, 160, 44),
-        (214, 39, 40),
-        (148, 103, 189),
-        (140, 86, 75),
-        (227, 119, 194),
-        (127, 127, 127),
-        (188, 189, 34),
-        (23, 190, 207),
-        (0, 0, 0),
-        (174, 199, 232),
-        (255, 152, 150),
-        (152, 223, 138),
-    ];
-    let (r, g, b) = P[i % P.len()];
-    RGBColor(r, g, b)
-}
-
-/// CSS hex of [`colour`].
-pub fn colour_hex(i: usize) -> String {
-    let c = colour(i);
-    format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
-}
-
-fn si(x: f64) -> String {
-    match x {
-        x if x >= 1e6 => format!("{}M", trim(x / 1e6)),
-        x if x >= 1e3 => format!("{}k", trim(x / 1e3)),
-        x if x >= 1.0 => trim(x),
-        x => format!("{x:.2}"),
-    }
-}
-
-fn trim(x: f64) -> String {
-    let s = format!("{x:.1}");
-    s.strip_suffix(".0").map(str::to_string).unwrap_or(s)
-}
-
-/// One line of a plot.
-#[derive(Clone, Debug)]
-pub struct Series {
-    /// Legend label.
-    pub name: String,
-    /// Colour index (see [`colour`]).
-    pub colour: usize,
-    /// (x, y) points.
-    pub points: Vec<(f64, f64)>,
-}
-
-/// A log-log line plot of `series`.
-pub fn loglog(title: &str, xlabel: &str, ylabel: &str, series: &[Series]) -> String {
-    let pts: Vec<(f64, f64)> = series
-        .iter()
-        .flat_map(|s| s.points.iter().copied())
-        .filter(|p| p.0 > 0.0 && p.1 > 0.0)
-        .collect();
-    if pts.is_empty() {
-        return format!("<p class=\"empty\">{title}: nothing measured</p>");
-    }
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for (x, y) in &pts {
-        x0 = x0.min(*x);
-        x1 = x1.max(*x);
-        y0 = y0.min(*y);
-        y1 = y1.max(*y);
-    }
-    let (x0, x1) = (x0 / 1.5, x1 * 1.5);
-    let (y0, y1) = (y0 / 2.0, y1 * 2.0);
-    let mut out = String::new();
-    {
-        let root = SVGBackend::with_string(&mut out, (520, 340)).into_drawing_area();
-        let _ = root.fill(&WHITE);
-        let chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 18))
-            .margin(10)
-            .x_label_area_size(40)
-            .y_label_area_size(64)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale());
-        let Ok(mut chart) = chart else {
-            return String::new();
-        };
-        let _ = chart
-            .configure_mesh()
-            .x_desc(xlabel)
-            .y_desc(ylabel)
-            .x_label_formatter(&|x| si(*x))
-            .y_label_formatter(&|y| si(*y))
-            .x_labels(8)
-            .y_labels(6)
-            .light_line_style(RGBColor(245, 245, 245))
-            .label_style(("sans-serif", 13))
-            .axis_desc_style(("sans-serif", 14))
-            .draw();
-        for Series {
-            name,
-            colour: ci,
-            points,
-        } in series
-        {
-            let c = colour(*ci);
-            let mut p: Vec<(f64, f64)> = points
-                .iter()
-                .copied()
-                .filter(|p| p.0 > 0.0 && p.1 > 0.0)
-                .collect();
-            p.sort_by(|a, b| a.0.total_cmp(&b.0));
-            if p.is_empty() {
-                continue;
-            }
-            if let Ok(s) = chart.draw_series(LineSeries::new(p.clone(), c.stroke_width(2))) {
-                s.label(name.clone()).legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
-                });
-            }
-            let _ = chart.draw_series(p.into_iter().map(|q| Circle::new(q, 3, c.filled())));
-        }
-        let _ = chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.3))
-            .label_font(("sans-serif", 12))
-            .draw();
-        let _ = root.present();
-    }
-    out
-}
-
-/// Horizontal bars: (label, colour index, value, optional second value drawn as a tick).
-pub fn bars(title: &str, unit: &str, rows: &[(String, usize, f64, Option<f64>)]) -> String {
+/// Horizontal bars: (label, style (its colour fills the bar), value, optional second value
+/// drawn as a tick).
+pub fn bars(title: &str, unit: &str, rows: &[(String, Style, f64, Option<f64>)]) -> String {
     let max = rows
         .iter()
         .map(|r| r.2.max(r.3.unwrap_or(0.0)))
@@ -153,7 +22,7 @@ pub fn bars(title: &str, unit: &str, rows: &[(String, usize, f64, Option<f64>)])
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif"><text x="{}" y="18" font-size="15" text-anchor="middle">{title}</text>"#,
         w / 2.0
     );
-    for (i, (label, ci, v, tick)) in rows.iter().enumerate() {
+    for (i, (label, style, v, tick)) in rows.iter().enumerate() {
         let y = 30.0 + i as f64 * row_h;
         let bw = (w - left - right) * v / max;
         let _ = write!(
@@ -163,7 +32,7 @@ pub fn bars(title: &str, unit: &str, rows: &[(String, usize, f64, Option<f64>)])
             y + 14.0,
             y + 3.0,
             row_h - 6.0,
-            colour_hex(*ci),
+            style.hex(),
             left + bw + 4.0,
             y + 14.0,
             trim_num(*v)
@@ -193,55 +62,9 @@ fn trim_num(v: f64) -> String {
     }
 }
 
-/// A shaded orthographic thumbnail of a mesh (at most ~1500 faces drawn, evenly sampled).
+/// A shaded orthographic thumbnail of a mesh, at every size (see [`crate::thumbnail`]).
 pub fn thumbnail(soup: &PolygonSoup, size: f64) -> String {
-    let view = DVec3::new(1.0, -1.6, 1.2).normalize();
-    let right = DVec3::Z.cross(view).normalize_or(DVec3::X);
-    let up = view.cross(right);
-    let light = DVec3::new(0.3, -0.5, 1.0).normalize();
-    let (lo, hi) = soup
-        .positions
-        .iter()
-        .fold((DVec3::MAX, DVec3::MIN), |(a, b), p| (a.min(*p), b.max(*p)));
-    let centre = (lo + hi) * 0.5;
-    let scale = size * 0.45 / ((hi - lo).length() * 0.5).max(1e-12);
-    let stride = (soup.num_faces() / 1500).max(1);
-    let mut polys: Vec<(f64, String)> = Vec::new();
-    for (j, f) in soup.faces().enumerate().step_by(stride) {
-        let ps: Vec<DVec3> = f
-            .iter()
-            .map(|&v| soup.positions[v as usize] - centre)
-            .collect();
-        let mut n = DVec3::ZERO;
-        for i in 0..ps.len() {
-            n += ps[i].cross(ps[(i + 1) % ps.len()]);
-        }
-        let n = n.normalize_or_zero();
-        let facing = n.dot(view);
-        let shade = (0.25 + 0.75 * n.dot(light).abs()) * if facing < 0.0 { 0.6 } else { 1.0 };
-        let g = (60.0 + 170.0 * shade).min(235.0) as u8;
-        let depth = ps.iter().map(|p| p.dot(view)).sum::<f64>() / ps.len() as f64;
-        let mut pts = String::new();
-        for p in &ps {
-            let _ = write!(
-                pts,
-                "{:.1},{:.1} ",
-                size / 2.0 + p.dot(right) * scale,
-                size / 2.0 - p.dot(up) * scale
-            );
-        }
-        let _ = j;
-        polys.push((depth, format!(r#"<polygon points="{pts}" fill="rgb({g},{g},{})" stroke="rgb(40,40,60)" stroke-width="0.3"/>"#, g.saturating_add(15))));
-    }
-    polys.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut s = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{size}" height="{size}" viewBox="0 0 {size} {size}">"#
-    );
-    for (_, p) in polys {
-        s.push_str(&p);
-    }
-    s.push_str("</svg>");
-    s
+    crate::thumbnail::thumbnail(soup, size)
 }
 
 /// The CHE thesis chapter's Figure 4.10, unfolded: the open tetrahedron (apex 3 in the middle,
@@ -314,22 +137,12 @@ mod tests {
 
     #[test]
     fn drawings_are_svg_with_text() {
-        let p = loglog(
-            "t",
-            "x",
-            "y",
-            &[Series {
-                name: "a".into(),
-                colour: 0,
-                points: vec![(1e3, 5.0), (1e4, 7.0)],
-            }],
-        );
-        assert!(p.starts_with("<svg") && p.contains("<text"), "{p}");
         let f = figure_4_10();
         assert!(f.contains(">h8<") && f.contains(">t2<"));
         let t = thumbnail(&topolab_structures::meshes::torus(6, 4), 120.0);
         assert_eq!(t.matches("<polygon").count(), 48);
-        let b = bars("m", "B", &[("x".into(), 0, 24.0, Some(20.0))]);
-        assert!(b.contains("24.0 B"));
+        let style = crate::plot::styles(&[topolab_structures::Family::Che])[0];
+        let b = bars("m", "B", &[("x".into(), style, 24.0, Some(20.0))]);
+        assert!(b.contains("24.0 B") && b.contains(&style.hex()));
     }
 }

@@ -16,5 +16,6 @@ pub mod report;
 pub mod report_changing;
 pub mod report_reads;
 pub mod report_repair;
+pub mod report_scale;
 pub mod report_sections;
 pub mod subdivide;

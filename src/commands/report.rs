@@ -2,6 +2,7 @@
 //! a self-contained `index.html`. [`report_with`] is the same report with structures from
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
+use super::report_scale;
 use super::report_sections::{Selection, LIBIGL};
 use crate::extend::Lab;
 use crate::input::Failure;
@@ -37,14 +38,16 @@ pub struct ReportArgs {
     /// `winged-edge` (the structure the hull algorithms build).
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
-    /// Sections of the page to measure and show, comma separated (default: all): targets,
-    /// table-4-1, plots, sweeps, workloads, memory, construction, orderings, real-meshes,
-    /// libigl, hull, teaching, meshes. Only what they are drawn from is measured.
+    /// Sections of the page to measure and show, comma separated (default: all): chooser,
+    /// targets, table-4-1, plots, sweeps, workloads, memory, construction, orderings,
+    /// real-meshes, real-at-scale, libigl, hull, teaching, meshes. Only what they are drawn
+    /// from is measured.
     #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
     pub sections: Option<Vec<Section>>,
     /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
-    /// (the meshes `make data` fetched into bench-data/cache/, when present).
-    #[arg(long, value_delimiter = ',', default_value = "torus,grid,real")]
+    /// (the meshes `make data` fetched into bench-data/cache/, when present), `refined` (two of
+    /// them refined by Loop subdivision to 1.2M and 3.3M triangles, measured like the tori).
+    #[arg(long, value_delimiter = ',', default_value = "torus,grid,real,refined")]
     pub meshes: Vec<String>,
     /// Output folder.
     #[arg(long, default_value = "reports/latest")]
@@ -75,6 +78,8 @@ impl StructureVisitor for Describe {
     fn visit<M: MeshTopology>(self) -> Self::Output {
         let info = StructureInfo {
             name: M::NAME.into(),
+            family: M::FAMILY,
+            editable: super::report_changing::EDITABLE.contains(&M::NAME),
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()
@@ -156,9 +161,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     };
     let mut families: Vec<&str> = Vec::with_capacity(args.meshes.len());
     for f in &args.meshes {
-        if !["torus", "grid", "real"].contains(&f.as_str()) {
+        if !["torus", "grid", "real", report_scale::FAMILY].contains(&f.as_str()) {
             return Err(Failure::usage(format!(
-                "unknown mesh family {f:?}; known: torus, grid, real"
+                "unknown mesh family {f:?}; known: torus, grid, real, refined"
             )));
         }
         if !families.contains(&f.as_str()) {
@@ -181,7 +186,12 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     let probe_mb = args.probe_mb.unwrap_or(if quick { 64 } else { 256 });
     // Refused here, before anything is measured: sizes past u32 ids, more memory than there
     // is, an output folder that cannot be written (it used to fail after the whole run).
-    crate::limits::admit_report(&sizes, &families, &names, probe_mb)?;
+    let generated: Vec<&str> = families
+        .iter()
+        .copied()
+        .filter(|f| ["torus", "grid"].contains(f))
+        .collect();
+    crate::limits::admit_report(&sizes, &generated, &names, probe_mb)?;
     crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
@@ -223,7 +233,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
     for size in sizes.iter().filter(|_| selection.generated) {
-        for fam in families.iter().filter(|f| **f != "real") {
+        for fam in &generated {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
                 .map_err(|e| Failure::usage(format!("cannot generate the mesh {spec}: {e}")))?;
@@ -236,6 +246,16 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
             repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
+        }
+    }
+    if families.contains(&report_scale::FAMILY) && selection.refined {
+        let list: &[report_scale::Refined] = if quick {
+            &report_scale::QUICK
+        } else {
+            &report_scale::FULL
+        };
+        for (name, soup) in report_scale::refined_meshes(list, &names, &mut results.notes)? {
+            cases.push((name, report_scale::FAMILY.into(), soup));
         }
     }
     let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
@@ -462,46 +482,50 @@ impl StructureVisitor for Sweep<'_> {
     }
 }
 
-/// The effect of element order: the largest torus (at most 256k triangles) renumbered by each
-/// ordering, and the R00 sweep of a few structures on each (and of every structure of `X`:
-/// whoever adds a structure wants to see how it takes reordering).
+/// The effect of element order: the largest torus (at most 256k triangles) and the smallest
+/// refined real mesh, each renumbered by each ordering, and the R00 sweep of a few structures
+/// on each (and of every structure of `X`: whoever adds a structure wants to see how it takes
+/// reordering).
 fn orderings<X: Structures>(
     cases: &[(String, String, PolygonSoup)],
     names: &[String],
     plan: &Plan,
     results: &mut Results,
 ) -> Result<(), Failure> {
-    let Some((base, _, soup)) = cases
+    let torus = cases
         .iter()
         .filter(|c| c.1 == "torus" && c.2.num_faces() <= 300_000)
-        .max_by_key(|c| c.2.num_faces())
-    else {
-        return Ok(());
-    };
+        .max_by_key(|c| c.2.num_faces());
+    let refined = cases
+        .iter()
+        .filter(|c| c.1 == report_scale::FAMILY)
+        .min_by_key(|c| c.2.num_faces());
     let added = topolab_structures::registry::names::<X>();
     let structures: Vec<&String> = names
         .iter()
         .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(&n.as_str()))
         .collect();
-    for ordering in topolab_structures::ordering::Ordering::ALL {
-        eprintln!("topolab report: ordering {} of {base}", ordering.name());
-        let re = topolab_structures::ordering::reorder(soup, ordering).soup;
-        let name = format!("{base}/{}", ordering.name());
-        let queries = sample_queries(&re, 1, 0);
-        let case = MeshCase {
-            name: &name,
-            family: "ordering",
-            soup: &re,
-            queries: &queries,
-        };
-        for s in &structures {
-            let m = visit::<X, _>(s, Sweep { case: &case, plan })
-                .expect("registered")
+    for (base, _, soup) in torus.into_iter().chain(refined) {
+        for ordering in topolab_structures::ordering::Ordering::ALL {
+            eprintln!("topolab report: ordering {} of {base}", ordering.name());
+            let re = topolab_structures::ordering::reorder(soup, ordering).soup;
+            let name = format!("{base}/{}", ordering.name());
+            let queries = sample_queries(&re, 1, 0);
+            let case = MeshCase {
+                name: &name,
+                family: "ordering",
+                soup: &re,
+                queries: &queries,
+            };
+            for s in &structures {
+                let m = visit::<X, _>(s, Sweep { case: &case, plan })
+                    .expect("registered")
+                    .map_err(|message| Failure { message, code: 1 })?;
+                results.measurements.push(m);
+            }
+            cross_check(&results.measurements, &name)
                 .map_err(|message| Failure { message, code: 1 })?;
-            results.measurements.push(m);
         }
-        cross_check(&results.measurements, &name)
-            .map_err(|message| Failure { message, code: 1 })?;
     }
     Ok(())
 }

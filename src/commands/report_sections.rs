@@ -34,6 +34,9 @@ pub struct Selection {
     pub measure_real: bool,
     /// The generated meshes are made: for the size sweep, the element orders or thumbnails.
     pub generated: bool,
+    /// The refined real meshes are made: for their section (which measures them) or the
+    /// element-order section (which renumbers the smallest).
+    pub refined: bool,
     /// The element-order section runs.
     pub orderings: bool,
     /// The libigl section runs.
@@ -76,6 +79,7 @@ impl Selection {
                 || shows(Section::Orderings)
                 || shows(Section::Changing)
                 || shows(Section::Meshes),
+            refined: shows(Section::RealAtScale) || shows(Section::Orderings),
             orderings: shows(Section::Orderings),
             libigl: shows(Section::Libigl),
             hull: shows(Section::Hull),
@@ -86,16 +90,21 @@ impl Selection {
 
     /// Whether a mesh of `family` is measured.
     pub fn measures(&self, family: &str) -> bool {
-        if family == "real" {
-            self.measure_real
-        } else {
-            self.size_sweep != SizeSweep::None
+        match family {
+            "real" => self.measure_real,
+            topolab_harness::scale::FAMILY => self.sections.contains(&Section::RealAtScale),
+            _ => self.size_sweep != SizeSweep::None,
         }
     }
 
-    /// Whether a mesh of `family` is measured lightly (construction and the 1-ring sweep).
+    /// Whether a mesh of `family` is measured lightly (construction and the 1-ring sweep); the
+    /// refined real meshes never are: they are measured like the tori.
     pub fn light(&self, family: &str) -> bool {
-        family == "real" || self.size_sweep == SizeSweep::Light
+        match family {
+            "real" => true,
+            topolab_harness::scale::FAMILY => false,
+            _ => self.size_sweep == SizeSweep::Light,
+        }
     }
 }
 
@@ -121,6 +130,12 @@ mod tests {
         assert!(real.measures("real") && !real.measures("torus") && !real.generated);
         let orders = Selection::new(Some(&[Section::Orderings]), None, &mut notes);
         assert!(orders.generated && !orders.measures("torus"));
+        // The element order renumbers a refined mesh without measuring it.
+        assert!(orders.refined && !orders.measures("refined"));
+        let scale = Selection::new(Some(&[Section::RealAtScale]), None, &mut notes);
+        assert!(scale.refined && scale.measures("refined") && !scale.light("refined"));
+        assert!(!scale.measures("torus") && !scale.generated && !scale.orderings);
+        assert!(!memory.refined);
         let changing = Selection::new(Some(&[Section::Changing]), None, &mut notes);
         assert!(changing.changing && changing.generated && !changing.measures("torus"));
         assert!(!memory.changing);

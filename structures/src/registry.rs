@@ -239,6 +239,30 @@ mod tests {
         assert_eq!(duplicate_name(NAMES), None);
     }
 
+    /// The family a visit reached.
+    struct FamilyOf;
+    impl StructureVisitor for FamilyOf {
+        type Output = crate::Family;
+        fn visit<M: MeshTopology>(self) -> crate::Family {
+            M::FAMILY
+        }
+    }
+
+    #[test]
+    fn every_structure_of_the_lab_declares_its_family() {
+        // `Outside` is the default, for structures the lab did not write: each of the lab's
+        // declares its own, and the CHE levels are one family.
+        for &name in NAMES {
+            let family = visit(name, FamilyOf).unwrap();
+            assert_ne!(family, crate::Family::Outside, "{name}");
+            assert_eq!(
+                family == crate::Family::Che,
+                name.starts_with("che-"),
+                "{name}"
+            );
+        }
+    }
+
     #[test]
     fn every_name_is_unique_and_visits_its_own_structure() {
         for (i, &name) in NAMES.iter().enumerate() {

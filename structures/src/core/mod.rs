@@ -2,13 +2,14 @@
 //! built from ([`soup`]), the one trait every structure implements with its operators and
 //! declared costs ([`topology`]), the application workloads named across the lab ([`workload`]),
 //! the editing operations beside it ([`edit`]), the typed errors ([`error`]) and the geometric attributes
-//! computed through the trait ([`attributes`]), and the access model a structure may declare for
-//! each operator ([`access`]).
+//! computed through the trait ([`attributes`]), the access model a structure may declare for
+//! each operator ([`access`]), and the family a structure belongs to ([`family`]).
 
 pub mod access;
 pub mod attributes;
 pub mod edit;
 pub mod error;
+pub mod family;
 pub mod ids;
 pub mod reads;
 pub mod soup;

@@ -307,6 +307,10 @@ pub trait MeshTopology: Sized {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
 
+    /// The family it belongs to (what it stores for adjacency); the default, for structures
+    /// the lab did not write, is [`crate::Family::Outside`].
+    const FAMILY: crate::Family = crate::Family::Outside;
+
     /// What kinds of meshes it stores.
     fn capabilities() -> Capabilities;
 

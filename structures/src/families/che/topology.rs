@@ -30,6 +30,7 @@ macro_rules! che_topology {
     ($ty:ty, $name:literal, $cost:path) => {
         impl $crate::core::topology::MeshTopology for $ty {
             const NAME: &'static str = $name;
+            const FAMILY: $crate::Family = $crate::Family::Che;
 
             fn capabilities() -> $crate::core::topology::Capabilities {
                 $crate::core::topology::Capabilities {

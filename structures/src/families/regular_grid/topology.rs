@@ -11,6 +11,7 @@ use std::fmt::Write;
 
 impl<G: GridGeometry> MeshTopology for Grid<G> {
     const NAME: &'static str = G::NAME;
+    const FAMILY: crate::Family = crate::Family::RegularGrid;
 
     fn capabilities() -> Capabilities {
         Capabilities {

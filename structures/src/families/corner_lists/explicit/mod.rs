@@ -72,6 +72,7 @@ impl Naming<DVec3> for PositionIds {
 
 impl MeshTopology for ExplicitStorage {
     const NAME: &'static str = "explicit";
+    const FAMILY: crate::Family = crate::Family::CornerLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {

@@ -67,6 +67,7 @@ impl VertexList {
 
 impl MeshTopology for VertexList {
     const NAME: &'static str = "vertex-list";
+    const FAMILY: crate::Family = crate::Family::CornerLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {

@@ -153,6 +153,7 @@ impl EdgeList {
 
 impl MeshTopology for EdgeList {
     const NAME: &'static str = "edge-list";
+    const FAMILY: crate::Family = crate::Family::EdgeLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {

@@ -1,0 +1,177 @@
+//! "Choosing a structure": the table at the top of the report, one row per structure, measured
+//! in the same run (memory, construction, the vertex 1-ring sweep and the smoothing workload on
+//! the largest torus), with what it stores and one line on when to pick it.
+//!
+//! The lines are written from the lecture on polygon-mesh data structures (explicit storage,
+//! vertex list, edge list, winged-edge, half-edge, regular and mixed structures, with their
+//! cost tables) and the CHE thesis chapter (what each level adds and what it makes cheap). They
+//! state what the design gives; the numbers beside them say what it measured on this machine.
+
+use crate::kernels::Kernel;
+use crate::results::{Measurement, Results, Status, StructureInfo, Subject};
+use std::fmt::Write;
+use topolab_structures::{Family, Operator, Workload};
+
+/// When to pick a structure of the lab (by its name), from the two sources; `None` for a
+/// structure the lab does not know (from another crate), which gets a generic line.
+pub fn when_to_pick(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "explicit" => "Only to hand polygons over one by one (drawing, export): each polygon repeats its corners' coordinates, and shared edges and a vertex's edges are found by comparing coordinates.",
+        "vertex-list" => "To store and exchange meshes (the .obj layout): each vertex stored once and geometry changeable apart from topology, but shared edges and neighbours are still found by scanning the faces.",
+        "edge-list" => "When questions start from edges: an edge's end points and faces in O(1), a face's edges in O(k); a vertex's edges and neighbours scan every edge (O(n)).",
+        "winged-edge" => "Polygon meshes that move along edges: an edge's faces and its successor and predecessor in both faces in O(1), a vertex's ring by its stored edge; the record the convex-hull algorithms build.",
+        "pointer-half-edge" => "The lecture's half-edge as written (HE_edge with real pointers): every relation in O(1) or O(k) on any polygons, with one heap record per element followed by pointer.",
+        "index-half-edge" => "General polygon meshes: every relation in O(1) or O(k) from u32 arrays indexed by half-edge (the layout of OpenMesh); the twin of h is h ^ 1.",
+        "regular-grid" => "A regular grid only (an image, a height map on a lattice): topology and geometry implicit in the counts, origin and cell size; nothing stored per element.",
+        "height-field" => "A grid whose points move (the lecture's mixed structure, e.g. a simulated flag): implicit topology, explicit positions; no adaptive refinement.",
+        "che-l0" => "Triangle soups to draw (level 0 of the CHE: G and V only, three integers per triangle); every adjacency query scans V (O(n2)).",
+        "che-l1" => "Triangle meshes walked triangle to triangle: O gives the neighbours across each edge in O(1); a vertex's star first searches V for one of its half-edges (O(n2) worst case).",
+        "che-l2" => "Triangle meshes with vertex stars: VH and EH make every relation O(1) or O(deg v) and give each edge an explicit entry for attributes (e.g. a simplification cost).",
+        "che-l3" => "Level 2 plus CH, one half-edge per boundary curve: boundary curves walked in O(∂n1) instead of O(n2), for algorithms that follow the boundary (advancing fronts).",
+        "openmesh" => "OpenMesh (C++), the baseline: a maintained half-edge library with its own attributes and I/O, measured through its own loops.",
+        _ => return None,
+    })
+}
+
+/// What the structure stores, by its capabilities.
+fn stores(s: &StructureInfo) -> &'static str {
+    let c = &s.capabilities;
+    if c.grids_only {
+        "grids only"
+    } else if c.triangles_only {
+        "triangles"
+    } else {
+        "polygons"
+    }
+}
+
+/// The cell of `s` for `subject`/`kernel` on the largest mesh of `family` it was measured on.
+fn cell<'a>(
+    r: &'a Results,
+    s: &str,
+    subject: Subject,
+    kernel: Kernel,
+    family: &str,
+) -> Option<&'a Measurement> {
+    r.measurements
+        .iter()
+        .filter(|m| {
+            m.structure == s
+                && m.operator == subject
+                && m.kernel == kernel
+                && m.family == family
+                && m.status == Status::Measured
+        })
+        .max_by_key(|m| m.triangles)
+}
+
+fn ns(x: Option<f64>) -> String {
+    match x {
+        Some(x) if x >= 1e3 => format!("{:.1} µs", x / 1e3),
+        Some(x) if x >= 10.0 => format!("{x:.0}"),
+        Some(x) => format!("{x:.1}"),
+        None => "–".into(),
+    }
+}
+
+/// The section: nothing when no structure was measured on a torus or grid.
+pub fn section(h: &mut String, r: &Results) {
+    if !r
+        .measurements
+        .iter()
+        .any(|m| m.family == "torus" || m.family == "grid")
+    {
+        return;
+    }
+    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (OpenMesh: its allocator's measurement); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure offers the lecture's editing operations (insert and delete vertices and faces, flip, split and collapse edges; see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
+    h.push_str("<table><tr><th class=l>structure</th><th class=l>family</th><th>bytes per triangle</th><th>construction, ns/face</th><th>R00 sweep, ns/vertex</th><th>smoothing, ns/vertex</th><th class=l>stores</th><th class=l>editable</th><th class=l>pick it when</th></tr>");
+    for s in &r.structures {
+        let refused_torus = r.measurements.iter().any(|m| {
+            m.structure == s.name
+                && m.family == "torus"
+                && m.kernel == Kernel::Construction
+                && m.status == Status::Refused
+        });
+        let fam = if refused_torus { "grid" } else { "torus" };
+        let build = cell(r, &s.name, Subject::Construction, Kernel::Construction, fam);
+        let bytes = build.and_then(|m| {
+            let per = |b: u64| b as f64 / m.triangles.max(1) as f64;
+            match m.bytes {
+                // A C++ baseline allocates outside the counting allocator: its own measurement.
+                Some(0) => m.declared_bytes.map(per),
+                b => b.map(per),
+            }
+        });
+        let r00 = cell(
+            r,
+            &s.name,
+            Subject::Query(Operator::R00),
+            Kernel::Sweep,
+            fam,
+        );
+        let smooth = cell(
+            r,
+            &s.name,
+            Subject::Workload(Workload::Smoothing),
+            Kernel::Workload,
+            fam,
+        );
+        let td = |m: Option<&Measurement>, x: Option<f64>| match m {
+            Some(m) => format!(
+                "<td title=\"{} ({} triangles), {} runs\">{}{}</td>",
+                m.mesh,
+                m.triangles,
+                m.reps,
+                ns(x),
+                if fam == "grid" {
+                    " <span class=small>(grid)</span>"
+                } else {
+                    ""
+                }
+            ),
+            None => "<td class=skip>–</td>".into(),
+        };
+        let pick = when_to_pick(&s.name).unwrap_or(if s.family == Family::Outside {
+            "A structure from outside the lab: see its own documentation; its numbers are measured like the lab's."
+        } else {
+            "–"
+        });
+        let _ = write!(
+            h,
+            "<tr><th class=l>{}</th><td class=l>{}</td>{}{}{}{}<td class=l>{}</td><td class=l>{}</td><td class=l>{}</td></tr>",
+            s.name,
+            s.family,
+            match (build, bytes) {
+                (Some(m), Some(b)) => format!(
+                    "<td title=\"{} ({} triangles)\">{b:.0}{}</td>",
+                    m.mesh,
+                    m.triangles,
+                    if fam == "grid" { " <span class=small>(grid)</span>" } else { "" }
+                ),
+                _ => "<td class=skip>–</td>".into(),
+            },
+            td(build, build.and_then(|m| m.ns_per_item)),
+            td(r00, r00.and_then(|m| m.ns_per_item)),
+            td(smooth, smooth.and_then(|m| m.ns_per_item)),
+            stores(s),
+            if s.editable { "yes" } else { "not yet" },
+            pick
+        );
+    }
+    h.push_str("</table>");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_structure_of_the_lab_has_a_line_on_when_to_pick_it() {
+        for &name in topolab_structures::registry::NAMES {
+            let line = when_to_pick(name).unwrap_or_else(|| panic!("{name} has no line"));
+            assert!(line.ends_with('.') && line.len() < 260, "{name}: {line}");
+        }
+        assert!(when_to_pick("openmesh").is_some());
+        assert_eq!(when_to_pick("sorted-edge-table"), None);
+    }
+}

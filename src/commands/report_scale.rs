@@ -1,0 +1,91 @@
+//! Real meshes at scale for `topolab report`: two meshes of `bench-data/cache/` refined by Loop
+//! subdivision to the sizes where the structures differ most, measured like the tori (every
+//! operator, sampled and swept, the workloads, construction and memory; family `refined`).
+//!
+//! Refinement appends each new vertex after the old ones, as real tools do, so a refined mesh
+//! keeps the input order a subdivided scan really has: far from the ideal the generated tori
+//! have. The element-order section runs on the smallest of them too.
+
+use crate::input::Failure;
+use topolab_structures::refine::{subdivide_levels, Scheme};
+use topolab_structures::PolygonSoup;
+
+/// The mesh family of the refined meshes in results and on the page.
+pub use topolab_harness::scale::FAMILY;
+
+/// One refined mesh: the file stem in `bench-data/cache/` and the Loop levels.
+#[derive(Copy, Clone, Debug)]
+pub struct Refined {
+    /// File stem of the source mesh.
+    pub source: &'static str,
+    /// Loop subdivision levels (each multiplies the triangles by four).
+    pub levels: usize,
+}
+
+/// The full report's refined meshes: CGAL's bunny (75,408 triangles) to 1.2M and the
+/// armadillo (52,000) to 3.3M. Measured alone on the 2-core machine (see the README's report
+/// section), these two take about what the tori of 256k and 1M take together.
+pub const FULL: [Refined; 2] = [
+    Refined {
+        source: "bunny00",
+        levels: 2,
+    },
+    Refined {
+        source: "armadillo",
+        levels: 3,
+    },
+];
+
+/// `--quick`: the npm bunny (3,720 triangles) one level up, 15k: the section is shown, small.
+pub const QUICK: [Refined; 1] = [Refined {
+    source: "npm-bunny",
+    levels: 1,
+}];
+
+/// The refined meshes, smallest first (so the skip-by-estimate of the larger extrapolates from
+/// the smaller), named `SOURCE-loopLEVELS`. A source that is missing or cannot be read or
+/// refined is left out with a note; the report goes on.
+pub fn refined_meshes(
+    list: &[Refined],
+    structures: &[String],
+    notes: &mut Vec<String>,
+) -> Result<Vec<(String, PolygonSoup)>, Failure> {
+    let dir = std::path::Path::new("bench-data/cache");
+    let mut out: Vec<(String, PolygonSoup)> = Vec::new();
+    for r in list {
+        let found = std::fs::read_dir(dir).ok().and_then(|d| {
+            d.filter_map(|e| e.ok().map(|e| e.path())).find(|p| {
+                p.file_stem().and_then(|s| s.to_str()) == Some(r.source)
+                    && topolab_structures::io::format_of(p).is_ok()
+            })
+        });
+        let Some(path) = found else {
+            notes.push(format!(
+                "{}: not refined, bench-data/cache/ has no such mesh (run `make data`)",
+                r.source
+            ));
+            continue;
+        };
+        let soup = match topolab_structures::io::read(&path) {
+            Ok(s) => s,
+            Err(e) => {
+                notes.push(format!("{}: not refined: {e}", path.display()));
+                continue;
+            }
+        };
+        // Checked before refining, as a torus of as many triangles (4^levels times the faces)
+        // with two builds of the largest structure: within u32 ids and the memory there is.
+        let faces = soup.num_faces().saturating_mul(1 << (2 * r.levels));
+        crate::limits::admit_report(&[faces], &["torus"], structures, 0)?;
+        eprintln!(
+            "topolab report: refining {} by {} Loop levels",
+            r.source, r.levels
+        );
+        match subdivide_levels(soup, Scheme::Loop, r.levels, |_, _| {}) {
+            Ok(s) => out.push((format!("{}-loop{}", r.source, r.levels), s)),
+            Err(e) => notes.push(format!("{}: not refined: {e}", path.display())),
+        }
+    }
+    out.sort_by_key(|m| m.1.num_faces());
+    Ok(out)
+}
