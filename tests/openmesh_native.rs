@@ -13,51 +13,23 @@ mod common;
 
 #[cfg(has_openmesh)]
 mod native {
-    use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
+    use super::common::{
+        baseline_meshes as meshes, broken_soups, checksum, close, closed_fan_soups,
+        heap_alone as alone, heap_shared as shared, query_count, sampled, smoothing_sum,
+        uniform_vertex_normals_sum, NoMeter,
+    };
     use glam::DVec3;
-    use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
     use std::time::Duration;
     use topolab::openmesh::OpenMesh;
     use topolab_harness::kernels::{sample_queries, Kernel};
-    use topolab_harness::measure::{
-        cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-    };
+    use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
     use topolab_harness::results::Subject;
-    use topolab_structures::meshes::{self, RandomMeshParams};
-    use topolab_structures::{
-        Input, MeshTopology, Operator, PolygonSoup, VertexId, VertexList, Workload,
-    };
-
-    /// The heap measurement (glibc `mallinfo2`) counts every thread's allocations, so it runs
-    /// alone ([`alone`]); every other test of this file runs in parallel with the others
-    /// ([`shared`]), as OpenMesh must be usable from parallel threads.
-    static HEAP: RwLock<()> = RwLock::new(());
-    fn shared() -> RwLockReadGuard<'static, ()> {
-        HEAP.read().unwrap_or_else(|poisoned| poisoned.into_inner())
-    }
-    fn alone() -> RwLockWriteGuard<'static, ()> {
-        HEAP.write()
-            .unwrap_or_else(|poisoned| poisoned.into_inner())
-    }
+    use topolab_structures::meshes;
+    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList, Workload};
 
     /// A native answer with OpenMesh's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
         answer.expect("OpenMesh failed inside the shim")
-    }
-
-    /// A torus (closed), a triangle grid (boundary), a quad grid and mixed polygons (PolyMesh),
-    /// and a shuffled random mesh with holes and corner-touching cells.
-    fn meshes() -> Vec<(&'static str, PolygonSoup)> {
-        vec![
-            ("torus", meshes::torus(12, 7)),
-            ("grid", meshes::grid(6, 4, true)),
-            ("quad-grid", meshes::grid(5, 3, false)),
-            ("mixed-polygons", meshes::mixed_polygons()),
-            (
-                "random",
-                meshes::random_mesh(7, RandomMeshParams::default()),
-            ),
-        ]
     }
 
     #[test]
@@ -126,18 +98,6 @@ mod native {
                 assert!(om.native_sampled(op, &[n]).is_none(), "id out of range");
             }
         }
-    }
-
-    /// A memory meter that measures nothing (the heap is measured alone, in its own test).
-    struct NoMeter;
-    impl MemoryMeter for NoMeter {
-        fn current(&self) -> usize {
-            0
-        }
-        fn peak(&self) -> usize {
-            0
-        }
-        fn reset_peak(&self) {}
     }
 
     /// The harness reaches OpenMesh's own loops through `MeshTopology::native`: construction,
@@ -220,22 +180,7 @@ mod native {
                 "normals on {name}: {normals} vs {expected}"
             );
 
-            let smoothed: Vec<DVec3> = (0..soup.num_vertices())
-                .map(|v| {
-                    let v = VertexId::new(v);
-                    let (mut sum, mut k) = (DVec3::ZERO, 0.0);
-                    reference.vertex_vertices(v, |w| {
-                        sum += soup.positions[w.index()];
-                        k += 1.0;
-                    });
-                    if reference.is_boundary_vertex(v) || k == 0.0 {
-                        soup.positions[v.index()]
-                    } else {
-                        sum / k
-                    }
-                })
-                .collect();
-            let expected: f64 = smoothed.iter().map(|p| p.element_sum()).sum();
+            let expected = smoothing_sum(&soup, &reference);
             let smoothing = ok(om.native_workload(Workload::Smoothing));
             assert!(close(smoothing, expected), "smoothing on {name}");
             // The step is computed into a buffer: the mesh keeps its positions, so a second
@@ -261,20 +206,6 @@ mod native {
         );
     }
 
-    /// Three triangles on one edge, then two triangles traversing their shared edge the same way.
-    fn broken_soups() -> Vec<PolygonSoup> {
-        let positions = (0..5)
-            .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0))
-            .collect();
-        vec![
-            PolygonSoup::from_polygons(positions, &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]),
-            PolygonSoup::from_polygons(
-                (0..4).map(|i| DVec3::new(i as f64, 0.0, 1.0)).collect(),
-                &[[0u32, 1, 2], [0, 1, 3]],
-            ),
-        ]
-    }
-
     #[test]
     fn refusals_name_elements_like_the_lab() {
         let _shared = shared();
@@ -286,21 +217,6 @@ mod native {
             assert_eq!(checked, lab);
             assert_eq!(native, lab);
         }
-    }
-
-    /// A closed tetrahedron plus a triangle at its vertex 0, the triangle first or last.
-    fn closed_fan_soups() -> Vec<PolygonSoup> {
-        let tetrahedron = meshes::closed_tetrahedron();
-        let mut positions = tetrahedron.positions.clone();
-        positions.extend([DVec3::new(5.0, 5.0, 5.0), DVec3::new(6.0, 5.0, 5.0)]);
-        let faces: Vec<Vec<u32>> = tetrahedron.faces().map(|f| f.to_vec()).collect();
-        let triangle = vec![0u32, 4, 5];
-        let last: Vec<Vec<u32>> = faces.iter().cloned().chain([triangle.clone()]).collect();
-        let first: Vec<Vec<u32>> = [triangle].into_iter().chain(faces).collect();
-        vec![
-            PolygonSoup::from_polygons(positions.clone(), &last),
-            PolygonSoup::from_polygons(positions, &first),
-        ]
     }
 
     #[test]

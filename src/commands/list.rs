@@ -35,9 +35,13 @@ pub fn list(json: bool) -> Result<String, Failure> {
         .iter()
         .map(|n| registry::visit(n, Row).expect("registered"))
         .collect();
+    let absent: Vec<_> = registry::absent_baselines()
+        .into_iter()
+        .map(|(name, why)| serde_json::json!({ "name": name, "why": why }))
+        .collect();
     if json {
         let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
-        let v = serde_json::json!({ "structures": rows, "operators": ops });
+        let v = serde_json::json!({ "structures": rows, "operators": ops, "absent": absent });
         return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
     }
     let mut out = String::new();
@@ -93,6 +97,9 @@ pub fn list(json: bool) -> Result<String, Failure> {
                 ""
             },
         );
+    }
+    for (name, why) in registry::absent_baselines() {
+        let _ = writeln!(out, "{name:<width$} not in this build: {why}");
     }
     let _ = writeln!(out, "\noperators:");
     for spec in &topolab_harness::catalogue::CATALOGUE {
