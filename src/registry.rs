@@ -149,6 +149,21 @@ mod tests {
         );
     }
 
+    #[test]
+    fn the_report_notes_each_missing_baseline_once_with_why() {
+        let mut notes = Vec::new();
+        note_absent(&mut notes);
+        let absent = absent_baselines();
+        for (name, why) in &absent {
+            let with: Vec<_> = notes.iter().filter(|n| n.contains(why)).collect();
+            assert_eq!(with.len(), 1, "{notes:?}");
+            assert!(with[0].contains(name), "{notes:?}");
+        }
+        if absent.is_empty() {
+            assert!(notes.is_empty(), "{notes:?}");
+        }
+    }
+
     struct Name;
     impl StructureVisitor for Name {
         type Output = &'static str;

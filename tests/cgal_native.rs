@@ -19,19 +19,15 @@ mod common;
 #[cfg(has_cgal)]
 mod native {
     use super::common::{
-        baseline_meshes, broken_soups, checksum, close, closed_fan_soups, heap_alone, heap_shared,
-        query_count, sampled, smoothing_sum, uniform_vertex_normals_sum, NoMeter,
+        baseline_meshes, broken_soups, check_native_workloads, checksum, close, closed_fan_soups,
+        harness_times_native_loops, heap_alone, heap_shared, query_count, sampled,
     };
     use glam::DVec3;
-    use std::time::Duration;
     use topolab::cgal::hull::convex_hull_3;
     use topolab::cgal::{self, Cgal, CgalStructure, Polyhedron, SurfaceMesh};
-    use topolab_harness::kernels::{sample_queries, Kernel};
-    use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
-    use topolab_harness::results::Subject;
     use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
     use topolab_structures::meshes;
-    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList, Workload};
+    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
 
     /// A native answer with CGAL's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
@@ -136,35 +132,12 @@ mod native {
     }
 
     fn workloads_compute_what_the_benchmark_says<S: CgalStructure>() {
-        for (name, soup) in baseline_meshes() {
-            let mut mesh = Cgal::<S>::from_soup(&soup).unwrap();
-            let reference = VertexList::from_soup(&soup).unwrap();
-            let what = format!("{} on {name}", S::NAME);
-            let circulators = ok(mesh.native_workload(Workload::Circulators));
-            assert_eq!(circulators, soup.num_corners() as f64, "circulators {what}");
-
-            let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
-            let barycenter = ok(mesh.native_workload(Workload::Barycenter));
-            assert!(close(barycenter, mean.element_sum()), "barycenter {what}");
-
-            let expected = uniform_vertex_normals_sum(&soup);
-            ok(mesh.prepare_workload(Workload::Normals));
-            let normals = ok(mesh.native_workload(Workload::Normals));
-            assert!(
-                close(normals, expected),
-                "normals {what}: {normals} vs {expected}"
-            );
-
-            let expected = smoothing_sum(&soup, &reference);
-            let smoothing = ok(mesh.native_workload(Workload::Smoothing));
-            assert!(close(smoothing, expected), "smoothing {what}");
-            // The step is computed into a buffer: the mesh keeps its positions, so a second
-            // run computes the same step.
-            for (v, p) in soup.positions.iter().enumerate() {
-                assert_eq!(mesh.position(VertexId::new(v)), *p, "smoothing moved v{v}");
-            }
-            assert_eq!(ok(mesh.native_workload(Workload::Smoothing)), smoothing);
-        }
+        check_native_workloads(
+            |soup| Cgal::<S>::from_soup(soup).unwrap(),
+            |mesh, w| ok(mesh.prepare_workload(w)),
+            |mesh, w| ok(mesh.native_workload(w)),
+            |mesh, v| mesh.position(VertexId::new(v)),
+        );
     }
 
     #[test]
@@ -174,52 +147,12 @@ mod native {
         workloads_compute_what_the_benchmark_says::<cgal::PolyhedronClass>();
     }
 
-    /// The harness reaches CGAL's own loops through `MeshTopology::native`: construction,
-    /// sweeps, vertex and face samples and workloads run natively, and their checksums are
-    /// the lab's.
-    fn the_harness_times_cgals_own_loops<S: CgalStructure>() {
-        let soup = meshes::torus(6, 5);
-        let queries = sample_queries(&soup, 8, 3);
-        let case = MeshCase {
-            name: "torus",
-            family: "torus",
-            soup: &soup,
-            queries: &queries,
-        };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(10),
-            min_reps: 1,
-            max_reps: 2,
-            light: false,
-        };
-        let (mut out, mut est) = (Vec::new(), Estimator::default());
-        measure_structure::<Cgal<S>>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        assert_eq!(
-            out.len(),
-            1 + 13 * 2 + 1 + Workload::ALL.len(),
-            "{}",
-            S::NAME
-        );
-        for m in &out {
-            // The harness hands a baseline vertex and face samples only (measure::time_kernel).
-            let native = match (m.operator, m.kernel) {
-                (Subject::Query(op), Kernel::Sampled) => {
-                    matches!(op.input(), Input::Vertex | Input::Face)
-                }
-                _ => true,
-            };
-            assert_eq!(m.native, native, "{} {} {}", S::NAME, m.operator, m.kernel);
-        }
-        measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        cross_check(&out, "torus").unwrap();
-    }
-
+    /// The harness reaches CGAL's own loops through `MeshTopology::native`.
     #[test]
     fn the_harness_times_cgals_own_loops_in_both() {
         let _shared = heap_shared();
-        the_harness_times_cgals_own_loops::<cgal::SurfaceMeshClass>();
-        the_harness_times_cgals_own_loops::<cgal::PolyhedronClass>();
+        harness_times_native_loops::<SurfaceMesh>();
+        harness_times_native_loops::<Polyhedron>();
     }
 
     #[test]

@@ -14,18 +14,13 @@ mod common;
 #[cfg(has_openmesh)]
 mod native {
     use super::common::{
-        baseline_meshes as meshes, broken_soups, checksum, close, closed_fan_soups,
-        heap_alone as alone, heap_shared as shared, query_count, sampled, smoothing_sum,
-        uniform_vertex_normals_sum, NoMeter,
+        baseline_meshes as meshes, broken_soups, check_native_workloads, checksum,
+        closed_fan_soups, harness_times_native_loops, heap_alone as alone, heap_shared as shared,
+        query_count, sampled,
     };
-    use glam::DVec3;
-    use std::time::Duration;
     use topolab::openmesh::OpenMesh;
-    use topolab_harness::kernels::{sample_queries, Kernel};
-    use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
-    use topolab_harness::results::Subject;
     use topolab_structures::meshes;
-    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList, Workload};
+    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
 
     /// A native answer with OpenMesh's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
@@ -100,42 +95,11 @@ mod native {
         }
     }
 
-    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`: construction,
-    /// sweeps, vertex and face samples and workloads run natively, and their checksums are
-    /// the lab's.
+    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`.
     #[test]
     fn the_harness_times_openmeshs_own_loops() {
         let _shared = shared();
-        let soup = meshes::torus(6, 5);
-        let queries = sample_queries(&soup, 8, 3);
-        let case = MeshCase {
-            name: "torus",
-            family: "torus",
-            soup: &soup,
-            queries: &queries,
-        };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(10),
-            min_reps: 1,
-            max_reps: 2,
-            light: false,
-        };
-        let (mut out, mut est) = (Vec::new(), Estimator::default());
-        measure_structure::<OpenMesh>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        assert_eq!(out.len(), 1 + 13 * 2 + 1 + Workload::ALL.len());
-        for m in &out {
-            // The harness hands a baseline vertex and face samples only (measure::time_kernel).
-            let native = match (m.operator, m.kernel) {
-                (Subject::Query(op), Kernel::Sampled) => {
-                    matches!(op.input(), Input::Vertex | Input::Face)
-                }
-                _ => true,
-            };
-            assert_eq!(m.native, native, "{} {}", m.operator, m.kernel);
-        }
-        measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        cross_check(&out, "torus").unwrap();
+        harness_times_native_loops::<OpenMesh>();
     }
 
     #[test]
@@ -155,41 +119,12 @@ mod native {
     #[test]
     fn workloads_compute_what_the_benchmark_says() {
         let _shared = shared();
-        for (name, soup) in meshes() {
-            let mut om = OpenMesh::from_soup(&soup).unwrap();
-            let reference = VertexList::from_soup(&soup).unwrap();
-            let circulators = ok(om.native_workload(Workload::Circulators));
-            assert_eq!(
-                circulators,
-                soup.num_corners() as f64,
-                "circulators on {name}"
-            );
-
-            let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
-            let barycenter = ok(om.native_workload(Workload::Barycenter));
-            assert!(
-                close(barycenter, mean.element_sum()),
-                "barycenter on {name}"
-            );
-
-            let expected = uniform_vertex_normals_sum(&soup);
-            ok(om.prepare_workload(Workload::Normals));
-            let normals = ok(om.native_workload(Workload::Normals));
-            assert!(
-                close(normals, expected),
-                "normals on {name}: {normals} vs {expected}"
-            );
-
-            let expected = smoothing_sum(&soup, &reference);
-            let smoothing = ok(om.native_workload(Workload::Smoothing));
-            assert!(close(smoothing, expected), "smoothing on {name}");
-            // The step is computed into a buffer: the mesh keeps its positions, so a second
-            // run computes the same step.
-            for (v, p) in soup.positions.iter().enumerate() {
-                assert_eq!(om.position(VertexId::new(v)), *p, "smoothing moved v{v}");
-            }
-            assert_eq!(ok(om.native_workload(Workload::Smoothing)), smoothing);
-        }
+        check_native_workloads(
+            |soup| OpenMesh::from_soup(soup).unwrap(),
+            |om, w| ok(om.prepare_workload(w)),
+            |om, w| ok(om.native_workload(w)),
+            |om, v| om.position(VertexId::new(v)),
+        );
     }
 
     #[test]

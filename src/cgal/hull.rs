@@ -104,3 +104,54 @@ pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> std::result::Result<(), Stri
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::hull::{convex_hull, Algorithm};
+
+    fn row(algorithm: &str, n: usize, hull_vertices: usize) -> HullRow {
+        HullRow {
+            shape: "ball".into(),
+            n,
+            algorithm: algorithm.into(),
+            hull_vertices,
+            ..HullRow::default()
+        }
+    }
+
+    #[test]
+    fn cgal_rows_follow_their_point_sets_and_must_agree_with_the_randomized_hull() {
+        let h = |n| {
+            let points = random_points(Shape::Ball, n, 42);
+            convex_hull(&points, Algorithm::Randomized { seed: 7 })
+                .unwrap()
+                .vertices()
+                .len()
+        };
+        let (h1, h2) = (h(500), h(900));
+        let mut rows = vec![
+            row("gift", 500, h1),
+            row("randomized", 500, h1),
+            row("randomized", 900, h2),
+        ];
+        add_to_benchmark(&mut rows).unwrap();
+        let names: Vec<(&str, usize)> = rows.iter().map(|r| (r.algorithm.as_str(), r.n)).collect();
+        assert_eq!(
+            names,
+            [
+                ("gift", 500),
+                ("randomized", 500),
+                (ALGORITHM, 500),
+                ("randomized", 900),
+                (ALGORITHM, 900)
+            ]
+        );
+        assert_eq!(rows[2].hull_vertices, h1);
+        assert!(rows[2].seconds > 0.0 && rows[2].faces_created.is_none());
+        // A hull that disagrees stops the benchmark with an error naming the point set.
+        let mut wrong = vec![row("randomized", 500, h1 + 1)];
+        let e = add_to_benchmark(&mut wrong).unwrap_err();
+        assert!(e.contains("500 points ball"), "{e}");
+    }
+}

@@ -6,11 +6,17 @@
 
 use glam::DVec3;
 use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
-use topolab_harness::measure::MemoryMeter;
+use topolab_harness::kernels::{sample_queries, Kernel};
+use topolab_harness::measure::{
+    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
+};
+use topolab_harness::results::Subject;
 use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
+    VertexList, Workload,
 };
 
 fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
@@ -231,4 +237,91 @@ pub fn smoothing_sum<M: MeshTopology>(soup: &PolygonSoup, reference: &M) -> f64 
         })
         .map(|p| p.element_sum())
         .sum()
+}
+
+/// Checks that the harness reaches a baseline's own loops through `MeshTopology::native`:
+/// construction, sweeps, vertex and face samples and workloads run natively, and their
+/// checksums are the lab's.
+pub fn harness_times_native_loops<M: MeshTopology>() {
+    let soup = meshes::torus(6, 5);
+    let queries = sample_queries(&soup, 8, 3);
+    let case = MeshCase {
+        name: "torus",
+        family: "torus",
+        soup: &soup,
+        queries: &queries,
+    };
+    let plan = Plan {
+        cell_budget: Duration::from_millis(1),
+        cell_max: Duration::from_secs(10),
+        min_reps: 1,
+        max_reps: 2,
+        light: false,
+    };
+    let (mut out, mut est) = (Vec::new(), Estimator::default());
+    measure_structure::<M>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+    assert_eq!(
+        out.len(),
+        1 + 13 * 2 + 1 + Workload::ALL.len(),
+        "{}",
+        M::NAME
+    );
+    for m in &out {
+        // The harness hands a baseline vertex and face samples only (measure::time_kernel).
+        let native = match (m.operator, m.kernel) {
+            (Subject::Query(op), Kernel::Sampled) => {
+                matches!(op.input(), Input::Vertex | Input::Face)
+            }
+            _ => true,
+        };
+        assert_eq!(m.native, native, "{} {} {}", M::NAME, m.operator, m.kernel);
+    }
+    measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+    cross_check(&out, "torus").unwrap();
+}
+
+/// Checks a baseline's native workloads on every mesh of [`baseline_meshes`] against what the
+/// benchmark says each computes: `build` builds the baseline, `run` runs a workload on it
+/// (after `prepare` for the normals, as the report does), `position` reads a position back.
+pub fn check_native_workloads<M>(
+    build: impl Fn(&PolygonSoup) -> M,
+    prepare: impl Fn(&mut M, Workload),
+    run: impl Fn(&mut M, Workload) -> f64,
+    position: impl Fn(&M, usize) -> DVec3,
+) {
+    for (name, soup) in baseline_meshes() {
+        let mut mesh = build(&soup);
+        let reference = VertexList::from_soup(&soup).unwrap();
+        let circulators = run(&mut mesh, Workload::Circulators);
+        assert_eq!(
+            circulators,
+            soup.num_corners() as f64,
+            "circulators on {name}"
+        );
+
+        let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
+        let barycenter = run(&mut mesh, Workload::Barycenter);
+        assert!(
+            close(barycenter, mean.element_sum()),
+            "barycenter on {name}"
+        );
+
+        let expected = uniform_vertex_normals_sum(&soup);
+        prepare(&mut mesh, Workload::Normals);
+        let normals = run(&mut mesh, Workload::Normals);
+        assert!(
+            close(normals, expected),
+            "normals on {name}: {normals} vs {expected}"
+        );
+
+        let expected = smoothing_sum(&soup, &reference);
+        let smoothing = run(&mut mesh, Workload::Smoothing);
+        assert!(close(smoothing, expected), "smoothing on {name}");
+        // The step is computed into a buffer: the mesh keeps its positions, so a second run
+        // computes the same step.
+        for (v, p) in soup.positions.iter().enumerate() {
+            assert_eq!(position(&mesh, v), *p, "smoothing moved v{v} on {name}");
+        }
+        assert_eq!(run(&mut mesh, Workload::Smoothing), smoothing, "{name}");
+    }
 }
