@@ -228,6 +228,37 @@ pub fn thread_cpu_ns() -> Option<u64> {
     }
 }
 
+/// The lab's allocator as the harness's memory meter, for the report's measurements and the
+/// hull benchmark: counting starts and stops with [`CountingAllocator::start`] and
+/// [`CountingAllocator::stop`], on the calling thread only.
+impl topolab_harness::measure::MemoryMeter for CountingAllocator {
+    fn current(&self) -> usize {
+        CountingAllocator::current(self)
+    }
+    fn peak(&self) -> usize {
+        CountingAllocator::peak(self)
+    }
+    fn reset_peak(&self) {
+        CountingAllocator::reset_peak(self)
+    }
+    fn counting(&self, on: bool) {
+        if on {
+            self.start()
+        } else {
+            self.stop()
+        }
+    }
+    fn minor_faults(&self) -> Option<u64> {
+        minor_faults()
+    }
+    fn release_free_memory(&self) {
+        release_free_memory()
+    }
+    fn thread_cpu_ns(&self) -> Option<u64> {
+        thread_cpu_ns()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -52,6 +52,11 @@ pub enum Command {
     /// problem, with the elements it concerns. Exit code 0 when clean, 1 when problems were found,
     /// 2 when unreadable.
     Check(commands::check::CheckArgs),
+    /// Repair what `topolab check` finds in a mesh's topology: drop duplicate faces, split
+    /// non-manifold edges and vertices, orient each orientable component, drop unused vertices;
+    /// write the result and say what changed and what remains. Exit code 0 when nothing of
+    /// that remains, 1 when something does (a non-orientable component), 2 when unreadable.
+    Repair(commands::repair::RepairArgs),
     /// For teaching: what a structure stores for the CHE thesis chapter's open tetrahedron
     /// (Figure 4.10).
     Explain {
@@ -70,6 +75,10 @@ pub enum Command {
     },
     /// Measure every operator on every structure and write results.json and index.html.
     Report(commands::report::ReportArgs),
+    /// Compare two report runs (their results.json): every cell measured in both, new/old,
+    /// flagged when outside both runs' spread, the largest change first; text and an HTML page.
+    /// Exit code 0 (it informs), 2 when a file is not a topolab results.json of a known format.
+    Compare(commands::compare::CompareArgs),
     /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
     Refine {
         /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
@@ -121,7 +130,9 @@ pub fn run(cli: Cli) -> u8 {
             order,
         } => commands::refine::refine(&mesh, levels, &scheme, &order, &out),
         Command::Check(args) => return commands::check::run(args),
+        Command::Repair(args) => return commands::repair::run(args),
         Command::Hull(args) => commands::hull::hull(&args),
+        Command::Compare(args) => commands::compare::compare(&args),
     };
     match result {
         Ok(text) => {

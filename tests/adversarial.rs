@@ -53,6 +53,11 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("out", vec!["--out", "@DIR/refined.obj"]),
         ],
         "hull" => vec![("random", vec!["--random", "10"])],
+        "repair" => vec![
+            ("file", vec!["@FILE"]),
+            ("out", vec!["--out", "@DIR/repaired.obj"]),
+        ],
+        "compare" => vec![("old", vec!["@FILE"]), ("new", vec!["@FILE"])],
         _ => return None,
     })
 }
@@ -182,6 +187,22 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["report", "--out", "@FILE"],
         vec!["report", "--out", "@DIR/taken"],
         vec!["report", "--out", "@FILE/below"],
+        vec!["report", "--sections", "nope", "--out", "@DIR/r"],
+        vec!["repair", "/dev/zero", "--out", "@DIR/x.obj"],
+        vec!["repair", "@DIR", "--out", "@DIR/x.obj"],
+        vec!["repair", "@FILE", "--out", "/proc/nope.obj"],
+        vec!["repair", "@FILE", "--out", "/dev/full"],
+        vec!["repair", "@FILE", "--out", "@DIR/taken.obj"],
+        vec!["repair", "@FILE", "--out", "@DIR/x.ply"],
+        // A point cloud: no face to repair (dropping its unused vertices would leave nothing).
+        vec!["repair", "@DIR/far.obj", "--out", "@DIR/x.obj"],
+        vec!["repair", "torus:1073741824", "--out", "@DIR/x.obj"],
+        vec!["compare", "@FILE", "@FILE"],
+        vec!["compare", "/proc/nope", "@FILE"],
+        vec!["compare", "@FILE", "/dev/zero"],
+        vec!["compare", "@DIR", "@FILE"],
+        vec!["compare", "@FILE", "@FILE", "--out", "/dev/null"],
+        vec!["compare", "@FILE", "@FILE", "--out", "@FILE"],
     ]
 }
 

@@ -7,7 +7,7 @@
 //! One test function: the allocator's counters and the environment are the process's.
 
 use std::path::PathBuf;
-use topolab::commands::{explain, hull, info, refine};
+use topolab::commands::{compare, explain, hull, info, refine, repair};
 use topolab::input::Failure;
 use topolab::limits::peak_of;
 
@@ -108,6 +108,23 @@ fn estimates_cover_the_peak_of_each_command_without_excess() {
             || refine::refine("torus:3000", 3, "midpoint", order, &out),
         );
     }
+    let args = repair::RepairArgs {
+        file: mesh.into(),
+        out: dir.join("repaired.obj"),
+        skip: Vec::new(),
+    };
+    compare("repair torus:200000", || repair::repair_file(&args));
+    // Two results.json of 40k cells each: read, compared, drawn.
+    let runs = [dir.join("old.json"), dir.join("new.json")];
+    for run in &runs {
+        std::fs::write(run, topolab_harness::compare::sample_results(40_000)).unwrap();
+    }
+    let args = compare::CompareArgs {
+        old: runs[0].clone(),
+        new: runs[1].clone(),
+        out: dir.join("compare"),
+    };
+    compare("compare OLD NEW (40k cells)", || compare::compare(&args));
     for (shape, algo, n) in [
         ("ball", "randomized", 200_000),
         ("sphere", "randomized", 50_000),

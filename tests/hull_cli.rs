@@ -37,6 +37,21 @@ fn random_points_on_a_sphere_give_a_hull_through_all_of_them() {
         );
         assert!(text.contains("hull vertices: 300"), "{algo}:\n{text}");
         assert!(text.contains("hull faces:    596"), "{algo}:\n{text}");
+        // The work of the lecture's analysis: Volume6 tests, and Σ|P(e)| for the randomized
+        // algorithm, which every one of the 300 points on the sphere goes through.
+        let count = |label: &str| -> Option<u64> {
+            let line = text.lines().find(|l| l.starts_with(label))?;
+            line[label.len()..].split_whitespace().next()?.parse().ok()
+        };
+        assert!(
+            count("Volume6 tests:").is_some_and(|t| t > 300),
+            "{algo}:\n{text}"
+        );
+        assert_eq!(
+            count("conflict work:").is_some_and(|w| w >= 300),
+            algo == "randomized",
+            "{algo}:\n{text}"
+        );
         let obj = std::fs::read_to_string(&out).unwrap();
         assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count(), 300);
         assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count(), 596);

@@ -3,17 +3,18 @@
 use crate::kernels::Kernel;
 use crate::limit::{Bound, Limit};
 use crate::results::{Measurement, Results, Status, Subject};
+use crate::sections::Section;
 use crate::svg;
 use std::fmt::Write;
 use topolab_structures::{Input, Operator, Workload};
 
-fn esc(s: &str) -> String {
+pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
 }
 
-fn ns(x: f64) -> String {
+pub(crate) fn ns(x: f64) -> String {
     if x >= 1e6 {
         format!("{:.1} ms", x / 1e6)
     } else if x >= 1e3 {
@@ -57,19 +58,29 @@ pub fn render(r: &Results) -> String {
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
     machine_section(&mut h, r);
-    targets(&mut h, r);
-    table_4_1(&mut h, r, &names);
-    plots(&mut h, r, &ci);
-    sweeps(&mut h, r, &names);
-    workloads(&mut h, r, &ci);
-    memory(&mut h, r, &ci);
-    construction(&mut h, r, &ci);
-    orderings(&mut h, r, names.as_slice());
-    real_meshes(&mut h, r, names.as_slice());
-    libigl(&mut h, r);
-    hull(&mut h, r);
-    teaching(&mut h, r);
-    meshes(&mut h, r);
+    // `--sections`: only the sections the run measured.
+    let shows = |s: Section| r.settings.sections.contains(&s);
+    let draw = |s: Section, h: &mut String| match s {
+        Section::Targets => targets(h, r),
+        Section::Table41 => table_4_1(h, r, &names),
+        Section::Plots => plots(h, r, &ci),
+        Section::Sweeps => sweeps(h, r, &names),
+        Section::Workloads => workloads(h, r, &ci),
+        Section::Memory => memory(h, r, &ci),
+        Section::Construction => construction(h, r, &ci),
+        Section::Orderings => orderings(h, r, names.as_slice()),
+        Section::RealMeshes => real_meshes(h, r, names.as_slice()),
+        Section::Libigl => libigl(h, r),
+        Section::Hull => {
+            hull(h, r);
+            hull_analysis(h, r);
+        }
+        Section::Teaching => teaching(h, r),
+        Section::Meshes => meshes(h, r),
+    };
+    for s in Section::ALL.into_iter().filter(|&s| shows(s)) {
+        draw(s, &mut h);
+    }
     if !r.notes.is_empty() {
         h.push_str("<h2>Notes</h2><ul>");
         for n in &r.notes {
@@ -629,7 +640,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     if real.is_empty() {
         return;
     }
-    h.push_str("<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles).</div><table><tr><th class=l>mesh</th><th>faces</th>");
+    let _ = write!(h, "<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles). {}</div><table><tr><th class=l>mesh</th><th>faces</th>", crate::repaired::HOW_TO_READ);
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
@@ -637,8 +648,9 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     for mesh in real {
         let _ = write!(
             h,
-            "<tr><th class=l>{}</th><td>{}</td>",
+            "<tr><th class=l>{}{}</th><td>{}</td>",
             esc(&mesh.name),
+            crate::repaired::mark(mesh),
             mesh.faces
         );
         for n in names {
@@ -748,6 +760,70 @@ fn hull(h: &mut String, r: &Results) {
     }
 }
 
+/// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.
+fn hull_analysis(h: &mut String, r: &Results) {
+    use crate::hull::bench::{bound, n_lg_n};
+    let ours: Vec<_> = r
+        .hull
+        .iter()
+        .filter(|x| x.volume6_tests.is_some())
+        .collect();
+    if ours.is_empty() {
+        return;
+    }
+    h.push_str("<h3>The lecture's analysis, measured</h3><div class=read><b>How to read it.</b> What the lecture on 3D convex hulls counts to bound each algorithm, counted in the same runs as the table above. <i>Volume6</i>: orientation tests, the algorithms' unit of work; <i>/ bound</i> divides them by the algorithm's bound (gift wrapping n·h, incremental n², randomized n lg n): a ratio that stays level as n grows means the bound describes the work, a falling one that the bound is loose for this input (the incremental algorithm's n² is its worst case, reached on a sphere). <i>Σ|P(e)|</i>: the conflict-list work of the randomized algorithm, the sum of the merged lists P(e) = P(f1) ∪ P(f2) over all horizon edges, expected O(n lg n). <i>exact</i>: the tests the floating-point filter of the face's plane left to exact arithmetic (gift wrapping calls the adaptive predicate directly: 0). <i>B per point</i>: the peak heap the call allocated beyond its input, per point. The second table fits t ∝ n<sup>e</sup> to the time and to the work (Σ|P(e)| for the randomized algorithm, Volume6 tests otherwise) and compares the work's exponent with the bound's at the same n and h: green when it grows no faster.</div>");
+    h.push_str("<table><tr><th class=l>points</th><th>n</th><th class=l>algorithm</th><th>hull vertices</th><th>µs per point</th><th>Volume6</th><th class=l>bound</th><th>Volume6 / bound</th><th>Σ|P(e)|</th><th>Σ|P(e)| / n lg n</th><th>exact</th><th>B per point</th></tr>");
+    for x in &ours {
+        let b = bound(&x.algorithm, x.n, x.hull_vertices);
+        let tests = x.volume6_tests.unwrap_or(0);
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            x.shape,
+            x.n,
+            x.algorithm,
+            x.hull_vertices,
+            x.seconds * 1e6 / x.n as f64,
+            tests,
+            b.map_or("", |b| b.0),
+            b.map(|b| format!("{:.3}", tests as f64 / b.1)).unwrap_or_default(),
+            x.conflict_work.map(|w| w.to_string()).unwrap_or_default(),
+            x.conflict_work
+                .map(|w| format!("{:.2}", w as f64 / n_lg_n(x.n)))
+                .unwrap_or_default(),
+            x.exact_tests.map(|e| e.to_string()).unwrap_or_default(),
+            x.peak_bytes
+                .map(|p| format!("{:.0}", p as f64 / x.n as f64))
+                .unwrap_or_default(),
+        );
+    }
+    h.push_str("</table>");
+    if r.hull_fits.is_empty() {
+        return;
+    }
+    h.push_str("<table><tr><th class=l>points</th><th class=l>algorithm</th><th>sizes</th><th>time exponent</th><th>work exponent</th><th class=l>bound</th><th>bound's exponent</th></tr>");
+    for f in &r.hull_fits {
+        let e = |x: Option<f64>| x.map(|x| format!("{x:.2}")).unwrap_or_default();
+        let class = match f.within_bound {
+            Some(true) => "ok",
+            Some(false) => "bad",
+            None => "l",
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td class={class}>{}</td><td class=l>{}</td><td>{}</td></tr>",
+            f.shape,
+            f.algorithm,
+            f.sizes,
+            f.time_exponent,
+            e(f.conflict_exponent.or(f.tests_exponent)),
+            f.bound.as_deref().unwrap_or(""),
+            e(f.bound_exponent),
+        );
+    }
+    h.push_str("</table>");
+}
+
 fn teaching(h: &mut String, r: &Results) {
     let _ = write!(h, "<h2>Teaching: what each structure stores for Figure 4.10</h2><div class=read>The CHE thesis chapter's example, a tetrahedron with one face removed: 4 vertices, 3 triangles, 9 half-edges, 6 edges, 1 boundary curve. Triangle t owns half-edges 3t, 3t+1, 3t+2. Open a structure to see its records, field by field, as <code>topolab explain NAME</code> prints them.</div><div class=teach><div>{}</div><div>", svg::figure_4_10());
     for t in &r.teaching {
@@ -766,9 +842,10 @@ fn meshes(h: &mut String, r: &Results) {
     for m in &r.meshes {
         let _ = write!(
             h,
-            "<figure>{}<figcaption>{}<br>{} vertices, {} faces</figcaption></figure>",
+            "<figure>{}<figcaption>{}{}<br>{} vertices, {} faces</figcaption></figure>",
             m.thumbnail_svg,
             esc(&m.name),
+            crate::repaired::mark(m),
             m.vertices,
             m.faces
         );

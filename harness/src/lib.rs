@@ -2,13 +2,15 @@
 //!
 //! The operator catalogue (what each operator takes and answers), the kernels that time it on
 //! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)), timing with
-//! medians, complexity fits, the machine probe, and the results model and HTML report.
+//! medians, complexity fits, the machine probe, the results model and HTML report and its
+//! [`sections`](mod@sections), and [`compare`](mod@compare): two runs side by side.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
 pub mod bench;
 pub mod catalogue;
 pub mod checksum;
+pub mod compare;
 pub mod fit;
 pub mod html;
 pub mod hull;
@@ -17,6 +19,8 @@ pub mod limit;
 pub mod machine;
 pub mod measure;
 pub mod probe;
+pub mod repaired;
 pub mod results;
+pub mod sections;
 pub mod svg;
 pub mod timing;

@@ -5,9 +5,18 @@ use crate::machine::Machine;
 use crate::probe::Probe;
 use topolab_structures::{Capabilities, Cost, Operator, Workload};
 
+/// The version of `results.json`'s format, written as its `format_version`: raised when a
+/// field that readers rely on (`topolab compare` reads the machine, the settings' command, the
+/// meshes and the measurements) changes its meaning or its name. Adding a field does not raise
+/// it. Files without the field were written before it existed; their measurements read as
+/// version 1's (version 0).
+pub const FORMAT_VERSION: u32 = 1;
+
 /// Everything one run measured.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Results {
+    /// [`FORMAT_VERSION`] of the code that wrote it.
+    pub format_version: u32,
     /// Machine and build facts.
     pub machine: Machine,
     /// The memory probe, measured in the same run.
@@ -26,6 +35,8 @@ pub struct Results {
     pub libigl: Vec<LibiglRow>,
     /// The 3D convex hull algorithms (and Qhull) against n.
     pub hull: Vec<crate::hull::bench::HullRow>,
+    /// Fitted exponents of the hull rows against n, next to the lecture's bounds.
+    pub hull_fits: Vec<crate::hull::bench::HullFit>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Anything the reader should know (skipped baselines, missing data).
@@ -47,6 +58,8 @@ pub struct Settings {
     pub cell_max_s: f64,
     /// The command that produced the results.
     pub command: String,
+    /// The sections of the report this run measured and shows (`--sections`).
+    pub sections: Vec<crate::sections::Section>,
 }
 
 /// A structure and its declared costs.
@@ -96,6 +109,10 @@ pub struct MeshInfo {
     /// analysed).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub counts: Option<crate::limit::MeshCounts>,
+    /// What `topolab repair` changed, when the file as read was refused by the structures
+    /// that need an oriented manifold and its repaired version was measured instead.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub repaired: Option<topolab_structures::repair::RepairLog>,
 }
 
 /// Writes a cost in its notation (`O(k)`), as results.json has it.

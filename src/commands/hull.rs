@@ -1,6 +1,7 @@
-//! `topolab hull`: the 3D convex hull of a point file or of random points, by one of the algorithms
-//! of the lecture on 3D convex hulls, built on the winged-edge; prints counts and time, optionally
-//! writes the hull as OBJ (outward triangles, the hull's vertices only).
+//! `topolab hull`: the 3D convex hull of a point file or of random points, by one of the
+//! algorithms of the lecture on 3D convex hulls, built on the winged-edge; prints counts, the
+//! work the lecture's analysis counts, and time, optionally writes the hull as OBJ (outward
+//! triangles, the hull's vertices only).
 
 use crate::input::{load_mesh, Failure};
 use crate::limits;
@@ -51,13 +52,25 @@ fn refused(e: topolab_structures::Error) -> Failure {
     }
 }
 
-/// The hull's memory on [`limits::SAMPLE_POINTS`] points of `shape`, scaled to `n` points:
-/// the points, the hull and the soup `--out` writes. Doubled: the winged-edge's arrays grow as
-/// faces are created, doubling their buffers, so where a sample's and a full run's sizes fall
+/// The sample the randomized algorithm's memory is measured on: its conflict pool collects
+/// garbage only once 2^16 entries (1 MB) are garbage, a fixed cost that made the peak per
+/// point of 2,048 points 1.8 to 4.5 times that of 200k (measured: 714 against 157 bytes per
+/// point in a ball, 806 against 441 on a sphere); at 32k points it is within 15% of the
+/// larger sets' (163 against 157 to 165 bytes in a ball from 65k to 1M points, 382 against
+/// 390 to 445 on a sphere). A randomized hull of 32k points takes milliseconds.
+const RANDOMIZED_SAMPLE_POINTS: usize = 32_768;
+
+/// The hull's memory on a sample of `shape` ([`limits::SAMPLE_POINTS`] points, or
+/// [`RANDOMIZED_SAMPLE_POINTS`] for the randomized algorithm, at most `n`), scaled to `n`
+/// points: the points, the hull and the soup `--out` writes. Doubled: the arrays grow as faces
+/// are created, doubling their buffers, so where a sample's and a full run's sizes fall
 /// between powers of two changes the peak per point (the plain scaling came out at 0.85 to
 /// 1.12 times the measured peak on 50k to 200k points in a ball and on a sphere).
 fn hull_bytes(shape: Shape, n: usize, algorithm: Algorithm) -> u64 {
-    let sample = limits::SAMPLE_POINTS;
+    let sample = match algorithm {
+        Algorithm::Randomized { .. } => RANDOMIZED_SAMPLE_POINTS.min(n),
+        _ => limits::SAMPLE_POINTS,
+    };
     let ((), peak) = limits::peak_of(|| {
         let points = random_points(shape, sample, 1);
         if let Ok(hull) = convex_hull(&points, algorithm) {
@@ -115,6 +128,22 @@ pub fn hull(args: &HullArgs) -> Result<String, Failure> {
         hull.faces_created as f64 / (6.0 * n as f64 - 20.0),
         6 * n as i64 - 20
     );
+    let w = hull.work;
+    let n_lg_n = n as f64 * (n as f64).log2();
+    let _ = writeln!(
+        text,
+        "Volume6 tests: {} ({} exact after the floating-point filter)",
+        w.volume6_tests, w.exact_tests
+    );
+    if w.conflict_work > 0 {
+        let _ = writeln!(
+            text,
+            "conflict work: {} (sum of |P(e)|; {:.3} of n lg n = {:.0})",
+            w.conflict_work,
+            w.conflict_work as f64 / n_lg_n,
+            n_lg_n
+        );
+    }
     let _ = writeln!(text, "volume:        {}", hull.volume());
     let _ = writeln!(text, "time:          {:.6} s", seconds);
     if let Some(out) = &args.out {

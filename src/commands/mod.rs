@@ -1,12 +1,16 @@
 //! The subcommands of `topolab`, one module each; [`crate::cli`] parses the command line and
-//! calls them. Each returns the text to print or a [`crate::input::Failure`] (`check` returns
-//! its exit code itself: it prints findings either way).
+//! calls them. Each returns the text to print or a [`crate::input::Failure`] (`check` and
+//! `repair` return their exit code themselves: they print their findings either way).
 
 pub mod check;
+pub mod compare;
 pub mod explain;
 pub mod explain_che;
 pub mod hull;
 pub mod info;
 pub mod list;
 pub mod refine;
+pub mod repair;
 pub mod report;
+pub mod report_repair;
+pub mod report_sections;

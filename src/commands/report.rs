@@ -2,6 +2,7 @@
 //! a self-contained `index.html`. [`report_with`] is the same report with structures from
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
+use super::report_sections::{Selection, LIBIGL};
 use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
@@ -11,12 +12,12 @@ use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
-use topolab_harness::measure::{
-    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-};
+use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
+    FORMAT_VERSION,
 };
+use topolab_harness::sections::Section;
 use topolab_harness::{fit, html, machine, probe, svg};
 use topolab_structures::registry::{duplicate_name, names, Structures};
 use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
@@ -31,9 +32,16 @@ pub struct ReportArgs {
     /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
     pub sizes: Option<Vec<usize>>,
-    /// Structures to measure, comma separated (default: all; see `topolab list`).
+    /// Structures to measure, comma separated (default: all; see `topolab list`). Given, the
+    /// libigl section runs only when it names `libigl`, the hull section only when it names
+    /// `winged-edge` (the structure the hull algorithms build).
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
+    /// Sections of the page to measure and show, comma separated (default: all): targets,
+    /// table-4-1, plots, sweeps, workloads, memory, construction, orderings, real-meshes,
+    /// libigl, hull, teaching, meshes. Only what they are drawn from is measured.
+    #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
+    pub sections: Option<Vec<Section>>,
     /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
     /// (the meshes `make data` fetched into bench-data/cache/, when present).
     #[arg(long, value_delimiter = ',', default_value = "torus,grid,real")]
@@ -46,37 +54,6 @@ pub struct ReportArgs {
     pub probe_mb: Option<usize>,
 }
 
-/// The process's allocator as the harness's memory meter.
-struct Allocator;
-
-impl MemoryMeter for Allocator {
-    fn current(&self) -> usize {
-        crate::ALLOCATOR.current()
-    }
-    fn peak(&self) -> usize {
-        crate::ALLOCATOR.peak()
-    }
-    fn reset_peak(&self) {
-        crate::ALLOCATOR.reset_peak()
-    }
-    fn counting(&self, on: bool) {
-        if on {
-            crate::ALLOCATOR.start()
-        } else {
-            crate::ALLOCATOR.stop()
-        }
-    }
-    fn minor_faults(&self) -> Option<u64> {
-        crate::alloc::minor_faults()
-    }
-    fn release_free_memory(&self) {
-        crate::alloc::release_free_memory()
-    }
-    fn thread_cpu_ns(&self) -> Option<u64> {
-        crate::alloc::thread_cpu_ns()
-    }
-}
-
 struct Measure<'a> {
     case: &'a MeshCase<'a>,
     plan: &'a Plan,
@@ -87,7 +64,7 @@ struct Measure<'a> {
 impl StructureVisitor for Measure<'_> {
     type Output = Result<(), String>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
-        measure_structure::<M>(self.case, self.plan, &Allocator, self.est, self.out)
+        measure_structure::<M>(self.case, self.plan, &crate::ALLOCATOR, self.est, self.out)
     }
 }
 
@@ -165,7 +142,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     let names: Vec<String> = match &args.structures {
         Some(list) => {
             let mut names: Vec<String> = Vec::with_capacity(list.len());
-            for n in list {
+            for n in list.iter().filter(|n| *n != LIBIGL) {
                 if !all.contains(&n.as_str()) {
                     return Err(crate::input::unknown_structure(n));
                 }
@@ -208,7 +185,14 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let probe = probe::measure(probe_mb, probe_mb);
+    let mut notes = Vec::new();
+    let selection = Selection::new(
+        args.sections.as_deref(),
+        args.structures.as_deref(),
+        &mut notes,
+    );
     let mut results = Results {
+        format_version: FORMAT_VERSION,
         machine: machine::facts(),
         probe,
         settings: Settings {
@@ -218,6 +202,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cell_budget_s: plan.cell_budget.as_secs_f64(),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command,
+            sections: selection.sections.clone(),
         },
         structures: Vec::new(),
         meshes: Vec::new(),
@@ -225,8 +210,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         fits: Vec::new(),
         libigl: Vec::new(),
         hull: Vec::new(),
+        hull_fits: Vec::new(),
         teaching: Vec::new(),
-        notes: Vec::new(),
+        notes,
     };
     crate::registry::note_absent(&mut results.notes);
     for n in &names {
@@ -235,7 +221,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.teaching.push(teach);
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
-    for size in &sizes {
+    for size in sizes.iter().filter(|_| selection.generated) {
         for fam in families.iter().filter(|f| **f != "real") {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
@@ -243,12 +229,16 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
         }
     }
-    if families.contains(&"real") {
+    let mut repaired = std::collections::HashMap::new();
+    if families.contains(&"real") && selection.real_meshes {
         for (name, soup) in real_meshes(&mut results.notes) {
+            let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
+            repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
         }
     }
-    let bar = ProgressBar::new((cases.len() * names.len()) as u64);
+    let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
+    let bar = ProgressBar::new((measured * names.len()) as u64);
     bar.set_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template")
@@ -261,7 +251,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let plan = if fam == "real" { &light } else { &plan };
+        let plan = if selection.light(fam) { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
@@ -277,7 +267,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
                 soup.num_faces()
             );
         }
-        for s in &names {
+        for s in names.iter().filter(|_| selection.measures(fam)) {
             bar.set_message(format!("{name}: {s}"));
             visit::<X, _>(
                 s,
@@ -307,12 +297,20 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             triangles: soup.num_faces(),
             thumbnail_svg: svg::thumbnail(soup, 140.0),
             counts: MeshCounts::of(soup),
+            repaired: repaired.remove(name),
         });
     }
     bar.finish_and_clear();
-    orderings::<X>(&cases, &names, &plan, &mut results)?;
-    results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
-    results.hull = hull(quick, &mut results.notes)?;
+    if selection.orderings {
+        orderings::<X>(&cases, &names, &plan, &mut results)?;
+    }
+    if selection.libigl {
+        results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+    }
+    if selection.hull {
+        results.hull = hull(quick, &mut results.notes)?;
+        results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     let skipped = results
@@ -346,8 +344,8 @@ fn short(n: usize) -> String {
     }
 }
 
-/// The hull benchmark: points in a ball up to 1M (10k with `--quick`), on a sphere up to 100k
-/// (1k with `--quick`).
+/// The hull benchmark: points in a ball and on a sphere up to 1M (10k and 1k with
+/// `--quick`), each run's peak heap measured by the process's counting allocator.
 fn hull(
     quick: bool,
     notes: &mut Vec<String>,
@@ -363,11 +361,11 @@ fn hull(
         );
     }
     let mut rows = Vec::new();
-    // Largest n per shape: on a sphere every point is on the hull (h = n), so gift wrapping's
-    // O(n·h) is quadratic there.
+    // Largest n per shape, full and with --quick: on a sphere every point is on the hull
+    // (h = n), so gift wrapping's O(n·h) is quadratic there; the quick run keeps it small.
     for (shape, name, max, quick_max) in [
         (Shape::Ball, "ball", 1_000_000, 10_000),
-        (Shape::Sphere, "sphere", 100_000, 1_000),
+        (Shape::Sphere, "sphere", 1_000_000, 1_000),
     ] {
         let sizes: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
             .into_iter()
@@ -379,6 +377,7 @@ fn hull(
             &sizes,
             python.as_deref().map(|p| (p, root)),
             1.0,
+            Some(&crate::ALLOCATOR),
             |row| {
                 eprintln!(
                     "topolab report: hull {} {} {}: {:.3} s",

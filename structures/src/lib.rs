@@ -52,7 +52,7 @@ pub mod registry;
 pub mod testing;
 
 // The module paths the other crates use (`topolab_structures::hull::convex_hull`, ...).
-pub use algorithms::{checks, hull, ordering, refine, summary};
+pub use algorithms::{checks, hull, ordering, refine, repair, summary};
 pub use families::che;
 pub use testing::{conformance, meshes};
 // The error types' short path inside the crate (`crate::error::Error`).

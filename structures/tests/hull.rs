@@ -289,3 +289,26 @@ proptest! {
         }
     }
 }
+
+/// Larger point sets, many insertion orders: the randomized algorithm (one face per point
+/// and the merges of the conflict lists keeping it right) finds the same vertices and volume
+/// as the incremental one, which tests every face for every point.
+#[test]
+fn the_randomized_conflict_graph_misses_no_point_on_larger_sets() {
+    for (shape, n) in [
+        (Shape::Sphere, 3000),
+        (Shape::Ball, 6000),
+        (Shape::Cube, 6000),
+    ] {
+        let points = random_points(shape, n, 21);
+        let reference = convex_hull(&points, Algorithm::Incremental).unwrap();
+        for seed in 0..6 {
+            let hull = convex_hull(&points, Algorithm::Randomized { seed }).unwrap();
+            let what = format!("{shape:?} n={n} seed={seed}");
+            assert_eq!(hull.vertices(), reference.vertices(), "{what}");
+            let (v, r) = (hull.volume(), reference.volume());
+            assert!((v - r).abs() <= 1e-9 * r, "{what}: volume {v} vs {r}");
+            hull.mesh.validate().unwrap();
+        }
+    }
+}

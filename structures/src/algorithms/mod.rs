@@ -1,9 +1,11 @@
 //! What the lab does with the structures: the 3D convex [`hull`] built on the winged-edge,
-//! the consistency [`checks`] of a file as written and its topological [`summary`], mesh
-//! refinement ([`refine`]) and element renumbering ([`ordering`]).
+//! the consistency [`checks`] of a file as written and its topological [`summary`], the
+//! [`repair`] of what the checks find in a mesh's topology, mesh refinement ([`refine`]) and
+//! element renumbering ([`ordering`]).
 
 pub mod checks;
 pub mod hull;
 pub mod ordering;
 pub mod refine;
+pub mod repair;
 pub mod summary;

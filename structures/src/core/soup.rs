@@ -383,16 +383,34 @@ impl Connectivity {
     /// Per vertex, the number of fans its faces fall into (0 for an unused vertex, 1 for a
     /// manifold vertex). Union-find over corners joined across interior edges, O(c α(c)).
     pub fn vertex_fans(&self, soup: &PolygonSoup) -> Vec<u32> {
-        let nc = soup.num_corners();
-        let mut parent: Vec<u32> = (0..nc as u32).collect();
-        fn find(parent: &mut [u32], mut x: u32) -> u32 {
-            while parent[x as usize] != x {
-                let p = parent[parent[x as usize] as usize];
-                parent[x as usize] = p;
-                x = p;
+        // Counted on the forest itself: constructions call this, and their timings and peaks
+        // are measured, so no per-corner array beyond the forest.
+        let mut parent = self.fan_forest(soup);
+        let mut fans = vec![0u32; soup.num_vertices()];
+        for c in 0..soup.num_corners() {
+            if find_root(&mut parent, c as u32) == c as u32 {
+                fans[soup.indices[c] as usize] += 1;
             }
-            x
         }
+        fans
+    }
+
+    /// Per corner, the fan of its vertex it lies in, named by one corner of that fan (the
+    /// same for the whole fan): corners at one vertex are in one fan when a walk across
+    /// interior edges (edges of exactly two corners) joins their faces around the vertex. A
+    /// non-manifold edge joins nothing: its faces meet there as at a cut. O(c α(c)).
+    pub fn corner_fans(&self, soup: &PolygonSoup) -> Vec<u32> {
+        let mut parent = self.fan_forest(soup);
+        for c in 0..parent.len() as u32 {
+            parent[c as usize] = find_root(&mut parent, c);
+        }
+        parent
+    }
+
+    /// The union-find forest over corners of [`Connectivity::corner_fans`]: corners that meet
+    /// at a vertex across an interior edge are joined.
+    fn fan_forest(&self, soup: &PolygonSoup) -> Vec<u32> {
+        let mut parent: Vec<u32> = (0..soup.num_corners() as u32).collect();
         for &[c0, c1] in &self.edge_corners {
             if c1 == u32::MAX {
                 continue;
@@ -409,19 +427,16 @@ impl Connectivity {
                 [(c0, n1), (n0, c1)]
             };
             for (x, y) in meetings {
-                let (rx, ry) = (find(&mut parent, x as u32), find(&mut parent, y as u32));
+                let (rx, ry) = (
+                    find_root(&mut parent, x as u32),
+                    find_root(&mut parent, y as u32),
+                );
                 if rx != ry {
                     parent[rx as usize] = ry;
                 }
             }
         }
-        let mut fans = vec![0u32; soup.num_vertices()];
-        for c in 0..nc {
-            if find(&mut parent, c as u32) == c as u32 {
-                fans[soup.indices[c] as usize] += 1;
-            }
-        }
-        fans
+        parent
     }
 
     /// Fails with [`Error::NonManifoldVertex`] on the first vertex whose star is not one fan.
@@ -439,4 +454,14 @@ impl Connectivity {
             None => Ok(()),
         }
     }
+}
+
+/// The root of `x` in a union-find forest, halving the path on the way.
+fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let p = parent[parent[x as usize] as usize];
+        parent[x as usize] = p;
+        x = p;
+    }
+    x
 }

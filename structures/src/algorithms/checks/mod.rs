@@ -219,17 +219,17 @@ impl Report {
     }
 }
 
-/// Union-find over `0..n` (shared by the duplicate and manifold checks) that also keeps, per
-/// element, the parity of its path to the root: plain unions for components, parity unions for
-/// orientability.
-struct UnionFind {
+/// Union-find over `0..n` (shared by the duplicate and manifold checks, and by the repair's
+/// orientation) that also keeps, per element, the parity of its path to the root: plain unions
+/// for components, parity unions for orientability.
+pub(crate) struct UnionFind {
     parent: Vec<u32>,
     /// Parity of the link to `parent` (the root's is `false`).
     flip: Vec<bool>,
 }
 
 impl UnionFind {
-    fn new(n: usize) -> Self {
+    pub(crate) fn new(n: usize) -> Self {
         Self {
             parent: (0..n as u32).collect(),
             flip: vec![false; n],
@@ -237,7 +237,7 @@ impl UnionFind {
     }
 
     /// The root of `x` and the parity of `x` relative to it (path compressed).
-    fn find(&mut self, x: u32) -> (u32, bool) {
+    pub(crate) fn find(&mut self, x: u32) -> (u32, bool) {
         let (mut root, mut parity) = (x, false);
         while self.parent[root as usize] != root {
             parity ^= self.flip[root as usize];
@@ -256,7 +256,7 @@ impl UnionFind {
 
     /// Joins `a` and `b` with relative parity `flip`; `false` if they were already joined
     /// with the other parity (a contradiction).
-    fn union(&mut self, a: u32, b: u32, flip: bool) -> bool {
+    pub(crate) fn union(&mut self, a: u32, b: u32, flip: bool) -> bool {
         let ((ra, pa), (rb, pb)) = (self.find(a), self.find(b));
         if ra == rb {
             return pa ^ pb == flip;

@@ -27,16 +27,20 @@
 //! no facet found so far has the side b → a.
 
 use super::predicates::{collinear, farther_on_ray, volume6};
+use super::Work;
 use crate::core::error::{Error, Result};
 use crate::core::ids::VertexId;
 use crate::families::edge_lists::winged_edge::WingedEdge;
 use glam::DVec3;
+use std::cell::Cell;
 use std::collections::{HashSet, VecDeque};
 
 /// The points and the distinct ones among them (the only candidates).
 struct Wrapper<'a> {
     points: &'a [DVec3],
     distinct: &'a [u32],
+    /// `Volume6` evaluations so far.
+    tests: Cell<u64>,
 }
 
 fn broken(message: impl Into<String>) -> Error {
@@ -47,6 +51,13 @@ impl Wrapper<'_> {
     #[inline]
     fn at(&self, i: u32) -> DVec3 {
         self.points[i as usize]
+    }
+
+    /// `Volume6`, counted.
+    #[inline]
+    fn volume6(&self, a: DVec3, b: DVec3, c: DVec3, p: DVec3) -> f64 {
+        self.tests.set(self.tests.get() + 1);
+        volume6(a, b, c, p)
     }
 
     /// Turns a plane around the line u v: the point q (not on the line) such that every point
@@ -61,7 +72,7 @@ impl Wrapper<'_> {
                 continue;
             }
             match best {
-                Some(q) if volume6(v, u, self.at(q), pr) <= 0.0 => {}
+                Some(q) if self.volume6(v, u, self.at(q), pr) <= 0.0 => {}
                 _ => best = Some(r),
             }
         }
@@ -73,7 +84,7 @@ impl Wrapper<'_> {
         let mut on = Vec::new();
         let mut inner = None;
         for &r in self.distinct {
-            let v = volume6(a, b, c, self.at(r));
+            let v = self.volume6(a, b, c, self.at(r));
             if v == 0.0 {
                 on.push(r);
             } else if v < 0.0 {
@@ -103,7 +114,7 @@ impl Wrapper<'_> {
                     Some(w) => {
                         let pw = self.at(w);
                         // Counter-clockwise seen from outside: inner is below, Volume6 < 0.
-                        let v = volume6(pc, pw, ps, inner);
+                        let v = self.volume6(pc, pw, ps, inner);
                         if v > 0.0 || (v == 0.0 && farther_on_ray(pc, pw, ps)) {
                             s
                         } else {
@@ -219,10 +230,14 @@ impl Found {
     }
 }
 
-/// `Embrulho3D` over the distinct points `distinct`. Returns the hull and the number of
-/// triangles created (every facet's fan).
-pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdge, usize)> {
-    let wrapper = Wrapper { points, distinct };
+/// `Embrulho3D` over the distinct points `distinct`. Returns the hull, the number of
+/// triangles created (every facet's fan) and the work.
+pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdge, usize, Work)> {
+    let wrapper = Wrapper {
+        points,
+        distinct,
+        tests: Cell::new(0),
+    };
     let mut mesh = WingedEdge::new();
     points.iter().for_each(|&p| {
         mesh.add_vertex(p);
@@ -243,6 +258,9 @@ pub(super) fn gift_wrap(points: &[DVec3], distinct: &[u32]) -> Result<(WingedEdg
             found.insert(wrapper.adjacent_face(a, b)?, &mut mesh)?;
         }
     }
-    let created = found.triangles;
-    Ok((mesh, created))
+    let work = Work {
+        volume6_tests: wrapper.tests.get(),
+        ..Work::default()
+    };
+    Ok((mesh, found.triangles, work))
 }

@@ -12,11 +12,15 @@
 //! **The result.** Vertex i of the winged-edge is input point i (the lab's rule); points that
 //! are not hull vertices stay as vertices without edges. Faces are triangles, counter-clockwise
 //! seen from outside, numbered densely (tombstones compacted). [`Hull::faces_created`] counts
-//! every face the algorithm made, including those it removed later: the lecture's lemma bounds
-//! its expectation by 6n − 20 for the randomized algorithm.
+//! every face the algorithm made, including those it removed later: the lecture's lemma
+//! bounds its expectation by 6n − 20 for the randomized algorithm. [`Hull::work`] counts the
+//! rest of what the lecture's analysis counts ([`Work`]): `Volume6` tests, and Σ|P(e)| over
+//! the horizon edges for the randomized algorithm (expected O(n log n)).
 //!
 //! **Beyond the lecture** (it assumes no four points coplanar, which real inputs break):
-//! - every orientation test is exact ([`predicates`], Shewchuk's `orient3d`);
+//! - every orientation test is exact ([`predicates`], Shewchuk's `orient3d`; the incremental
+//!   algorithms test against each face's plane prepared once, [`plane`], with the same
+//!   first-stage filter, and go exact only when it is unsure);
 //! - NaN or infinite coordinates: [`Error::NonFiniteCoordinate`]; coordinates whose products
 //!   inside the predicates would overflow or underflow (a magnitude above 2^250, or non-zero
 //!   below 2^-250): [`Error::CoordinateOutOfRange`]; fewer than four distinct
@@ -29,18 +33,19 @@
 //!   wrapping: a fan from the facet's first corner; the incremental ones: whatever the
 //!   insertion order leaves), so the algorithms agree on vertices and volume, not faces.
 //!
-//! **Speed** (`cargo run --release -p topolab-harness --example hull_bench`, and the report's
-//! hull section): the randomized algorithm is about 10 times slower than Qhull on points in a
-//! ball (the reference report, `reports/reference/`: 0.31 s against 0.029 s at 100k points,
-//! 5.98 s against 0.52 s at 1M, 11.5×) and 2.5 times slower on a sphere at 100k (2.36 s
-//! against 0.96 s), where every point is a hull vertex. Visible faces are removed in
-//! breadth-first order: [`WingedEdge::remove_face`] scans all edges for a new `av(v)` when a
-//! vertex's faces go out of rotation order (the structure keeps no edge list per vertex), and
-//! in arbitrary order that scan took 59% of a run on a sphere (perf); a per-vertex edge list
-//! in the winged-edge's incremental index would remove the scan altogether.
+//! **Speed** (`cargo run --release -p topolab-harness --example hull_bench`, next to Qhull in
+//! the same run): both incremental algorithms replace the visible faces by the cone in one
+//! step ([`WingedEdge::replace_by_cone`], O(faces removed + horizon), whatever the order),
+//! so the lecture's bounds hold by construction; the randomized one keeps its conflict graph
+//! in flat arrays (see [`randomized`]). Measured on a shared 2-core machine: the randomized
+//! hull of 1M points in a ball takes about 1.8 times Qhull's time (it merges about 3 n lg n
+//! conflict-list entries, where Qhull's furthest-point order discards the inside points
+//! early), its time per point stays flat from 10k to 1M points, and on 1M points on a sphere
+//! it takes about Qhull's time.
 
 pub mod gift_wrap;
 pub mod incremental;
+pub mod plane;
 pub mod predicates;
 pub mod randomized;
 
@@ -105,6 +110,28 @@ pub struct Hull {
     pub mesh: WingedEdge,
     /// Faces the algorithm created, including those removed later.
     pub faces_created: usize,
+    /// The work the lecture's cost analysis counts.
+    pub work: Work,
+}
+
+/// The work behind a hull, in the units of the lecture's analysis: what the bounds O(n·h),
+/// O(n²) and expected O(n log n) count.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// `Volume6` evaluations, the algorithms' unit of work: gift wrapping tests every point
+    /// for each facet side it turns around (`FaceAdjacente`, O(n) each, O(n·h) in all), the
+    /// incremental algorithm every face of P(k−1) for each point (O(n²) in all), the
+    /// randomized one the candidates of the conflict lists plus the faces around each
+    /// visible region (Σ|P(e)| + O(faces created)).
+    pub volume6_tests: u64,
+    /// Of `volume6_tests`, those that the floating-point filter of the face's plane could not
+    /// decide, so that exact arithmetic did. The incremental algorithms filter against each
+    /// face's plane; gift wrapping calls the adaptive predicate directly and counts none.
+    pub exact_tests: u64,
+    /// Σ|P(e)| over the horizon edges e of every insertion: the sizes of the merged conflict
+    /// lists, expected O(n log n) (the lecture, after de Berg et al.). Randomized only; 0 for
+    /// the others.
+    pub conflict_work: u64,
 }
 
 impl Hull {
@@ -169,7 +196,7 @@ impl Hull {
 /// The convex hull of `points` by `algorithm`; errors as in the module docs.
 pub fn convex_hull(points: &[DVec3], algorithm: Algorithm) -> Result<Hull> {
     let prepared = predicates::prepare(points)?;
-    let (mut mesh, faces_created) = match algorithm {
+    let (mut mesh, faces_created, work) = match algorithm {
         Algorithm::Gift => gift_wrap::gift_wrap(points, &prepared.distinct)?,
         Algorithm::Incremental => {
             incremental::incremental(points, &prepared.distinct, prepared.simplex)?
@@ -180,6 +207,7 @@ pub fn convex_hull(points: &[DVec3], algorithm: Algorithm) -> Result<Hull> {
     Ok(Hull {
         mesh,
         faces_created,
+        work,
     })
 }
 
@@ -238,14 +266,14 @@ pub fn random_points(shape: Shape, n: usize, seed: u64) -> Vec<DVec3> {
 }
 
 /// A winged-edge with every point of `points` as a vertex and the outward tetrahedron
-/// `simplex` as its faces (the lecture's `Tetraedro`); 4 faces created.
-fn start_with_tetrahedron(points: &[DVec3], simplex: [u32; 4]) -> Result<(WingedEdge, usize)> {
-    let mut mesh = WingedEdge::new();
-    points.iter().for_each(|&p| {
-        mesh.add_vertex(p);
-    });
-    for face in predicates::tetrahedron_faces(points, simplex) {
-        mesh.add_face(&face.map(VertexId))?;
-    }
-    Ok((mesh, 4))
+/// `simplex` as its faces (the lecture's `Tetraedro`), and the tetrahedron's faces by slot.
+/// Built from a soup, so the structure has no incremental index to keep up: the hull
+/// algorithms change it only with [`WingedEdge::replace_by_cone`].
+fn start_with_tetrahedron(
+    points: &[DVec3],
+    simplex: [u32; 4],
+) -> Result<(WingedEdge, [[VertexId; 3]; 4])> {
+    let faces = predicates::tetrahedron_faces(points, simplex);
+    let mesh = WingedEdge::from_owned_soup(PolygonSoup::from_polygons(points.to_vec(), &faces))?;
+    Ok((mesh, faces.map(|f| f.map(VertexId))))
 }

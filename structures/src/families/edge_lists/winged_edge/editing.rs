@@ -36,7 +36,7 @@ impl WingedEdge {
         self.positions.push(p);
         self.av.push(EdgeId::INVALID);
         if let Some(index) = &mut self.index {
-            index.degree.push(0);
+            index.add_vertex();
         }
         VertexId::new(self.positions.len() - 1)
     }
@@ -128,9 +128,7 @@ impl WingedEdge {
                     fccw: face,
                     ..EdgeRecord::REMOVED
                 });
-                index.edge_by_ends.insert(ends_key(a, b), e);
-                index.degree[a.index()] += 1;
-                index.degree[b.index()] += 1;
+                index.link(e, a, b);
                 self.live_edges += 1;
                 e
             });
@@ -156,12 +154,11 @@ impl WingedEdge {
 
     /// Removes face `face`: its side of each of its edges is emptied, an edge left without
     /// faces is removed, and an edge that keeps only its right face is turned around so the
-    /// face is on its left. The face's slot stays as a tombstone (see the module docs). O(k),
-    /// plus a scan of all edges, O(n1), for each vertex of the face whose `av(v)` is removed
-    /// while v keeps edges in another fan, none of them in this face: the face was the last
-    /// of v's fan through `av(v)`. A vertex has several fans after add_face joined faces at a
-    /// vertex only (gift wrapping) or after remove_face took a face from the middle of a fan
-    /// (the incremental hull algorithms removing visible faces in breadth-first order).
+    /// face is on its left. The face's slot stays as a tombstone (see the module docs). O(k)
+    /// expected (index updates) in any order of removal: a vertex whose `av(v)` goes takes
+    /// one of the face's surviving edges at v, else any edge from its ring in the index (v
+    /// may keep edges in another fan: after add_face joined faces at a vertex only, as gift
+    /// wrapping does, or after remove_face took a face from the middle of v's fan).
     ///
     /// Fails with [`Error::Unsupported`] if `face` does not exist (never added, or removed).
     pub fn remove_face(&mut self, face: FaceId) -> Result<()> {
@@ -189,9 +186,8 @@ impl WingedEdge {
                 let (a, b) = (r.v1, r.v2);
                 *r = EdgeRecord::REMOVED;
                 self.live_edges -= 1;
-                index.edge_by_ends.remove(&ends_key(a, b));
+                index.unlink(e, a, b);
                 for v in [a, b] {
-                    index.degree[v.index()] -= 1;
                     if self.av[v.index()] == e {
                         orphaned.push(v);
                     }
@@ -206,26 +202,18 @@ impl WingedEdge {
         Ok(())
     }
 
-    /// A live edge at `v` to replace a removed `av(v)`: none if v has no edges left, else one
-    /// of the removed face's surviving edges at v, else (v's other fans) a scan of the edges.
+    /// A live edge at `v` to replace a removed `av(v)`: one of the removed face's surviving
+    /// edges at v (the same fan), else any edge of v's ring in the index, else none.
     fn another_edge_at(&self, v: VertexId, cycle: &[EdgeId]) -> EdgeId {
-        if self
-            .index
-            .as_ref()
-            .is_some_and(|i| i.degree[v.index()] == 0)
-        {
-            return EdgeId::INVALID;
-        }
         let at_v = |e: &EdgeId| {
             let r = self.edge(*e);
             r.is_live() && (r.v1 == v || r.v2 == v)
         };
-        cycle
-            .iter()
-            .copied()
-            .find(at_v)
-            .or_else(|| (0..self.edges.len()).map(EdgeId::new).find(at_v))
-            .unwrap_or(EdgeId::INVALID)
+        cycle.iter().copied().find(at_v).unwrap_or_else(|| {
+            self.index
+                .as_ref()
+                .map_or(EdgeId::INVALID, |i| i.any_edge_at(v))
+        })
     }
 
     /// Closes the gaps that removed faces and edges left: live faces and edges are renumbered
@@ -280,11 +268,12 @@ impl WingedEdge {
         for av in &mut self.av {
             *av = edge(*av);
         }
-        if let Some(index) = &mut self.index {
-            for e in index.edge_by_ends.values_mut() {
-                *e = edge(*e);
-            }
+        if self.index.is_some() {
+            self.index = Some(build_index(self.positions.len(), &self.edges));
         }
+        // The free slots were tombstones: gone now.
+        self.stitching.free_faces.clear();
+        self.stitching.free_edges.clear();
         Renumbering { faces, edges }
     }
 }

@@ -89,32 +89,47 @@
 //! face touches only that face's side of its edges: the wings on one side of an edge describe only
 //! that side's face. Between calls a vertex may have several fans: gift wrapping adds faces that
 //! touch the hull at a vertex only, and removing a face from the middle of a vertex's fan splits it
-//! in two, as the incremental hull algorithms do when they remove the visible faces in an order
-//! other than around each vertex. add_face still finds every edge, through an index by end vertices
-//! that the first add_face or remove_face builds (O(n) once; it is not part of the hull lecture's
-//! record, and structures built by `from_soup`, which pairs edges by sorting, never pay for it).
-//! While a vertex has several fans the vertex queries see only the fan of `av(v)`, and
-//! [`MeshTopology::validate`](crate::MeshTopology::validate) reports the vertex with
-//! [`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex).
+//! in two. add_face still finds every edge, through an index by end vertices that the first
+//! add_face or remove_face builds (O(n) once; it is not part of the hull lecture's record, and
+//! structures built by `from_soup`, which pairs edges by sorting, never pay for it). The index also
+//! keeps each vertex's edges in a ring (a circular list through the edges' ends), so a vertex whose
+//! `av(v)` is removed with a face takes another of its edges in O(1), even one in another fan:
+//! removal costs O(k) in any order. While a vertex has several fans the vertex queries see only the
+//! fan of `av(v)`, and [`MeshTopology::validate`](crate::MeshTopology::validate) reports the vertex
+//! with [`Error::NonManifoldVertex`](crate::Error::NonManifoldVertex).
 //!
 //! Removed elements are tombstones: a removed face keeps its slot with `af = none`, an edge that
-//! loses its last face keeps its slot with every pointer none. Ids are never reused, so a handle an
-//! algorithm holds is either live or detectably dead ([`WingedEdge::is_face_live`]);
-//! [`WingedEdge::live_faces`] and
+//! loses its last face keeps its slot with every pointer none. add_face and remove_face never reuse
+//! ids, so a handle an algorithm holds is either live or detectably dead
+//! ([`WingedEdge::is_face_live`]); [`WingedEdge::live_faces`] and
 //! [`MeshTopology::for_each_edge`](crate::MeshTopology::for_each_edge) skip tombstones, the counts
 //! (`num_faces`, `num_edges`) count live elements, and [`WingedEdge::compact`] closes the gaps and
 //! returns the renumbering. When a face is removed from an edge's left side while the right one
 //! stays, the edge is turned around (v1 ↔ v2, cw fields moved to ccw) so its remaining face is on
 //! its left again. Vertices are never removed; one without edges has `av = none`.
+//!
+//! ## Cone stitching (the incremental hull algorithms' step)
+//!
+//! [`WingedEdge::replace_by_cone`] removes a disk of faces and adds the cone from a new vertex
+//! over its border in one call, in O(faces removed + border edges): the border is walked
+//! around each border vertex through the removed faces only, every vertex handle is set
+//! directly (a border vertex gets its border edge, a vertex inside the disk none, the apex
+//! its first new edge), and the border edges keep their ids with the new face written into
+//! the removed face's side. So the bounds of the lecture on 3D convex hulls, which count the
+//! faces created and removed, hold by construction. The slots the call frees are reused by
+//! the next calls (a hull's slots stay near its live size); regions that are not one disk
+//! bounded by one simple cycle are refused before anything changes.
 
 mod editing;
 mod records;
+mod stitching;
 #[cfg(test)]
 mod tests;
 mod topology;
 mod validation;
 
 pub use editing::Renumbering;
+pub use stitching::HorizonEdge;
 
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use glam::DVec3;
@@ -137,6 +152,8 @@ pub struct WingedEdge {
     live_faces: usize,
     /// The incremental API's index, built by its first use.
     index: Option<IncrementalIndex>,
+    /// What [`WingedEdge::replace_by_cone`] keeps between calls (marks, free slots).
+    stitching: stitching::Stitching,
 }
 
 impl WingedEdge {

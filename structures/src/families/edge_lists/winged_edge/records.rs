@@ -128,23 +128,116 @@ pub(super) fn ends_key(a: VertexId, b: VertexId) -> u64 {
 pub(super) struct IncrementalIndex {
     /// Each live edge by its end vertices ([`ends_key`]).
     pub(super) edge_by_ends: HashMap<u64, EdgeId>,
-    /// `degree[v]`: the number of live edges at v, so a vertex that loses the edge `av(v)`
-    /// knows whether another one is left without a search.
-    pub(super) degree: Vec<u32>,
+    /// `first[v]`: an edge end ([`edge_end`]) at v, the entry to v's ring; none when v has no
+    /// edges. A vertex that loses the edge `av(v)` takes another from here, in O(1), even
+    /// when that edge is in another fan of v.
+    pub(super) first: Vec<u32>,
+    /// `ring[x]`: for the edge end x, the next and the previous edge end in the ring of its
+    /// vertex (a circular list of all live edges at the vertex).
+    pub(super) ring: Vec<[u32; 2]>,
+}
+
+/// No edge end.
+const NO_END: u32 = u32::MAX;
+
+/// The edge end of e at its end v: 2e at the smaller of its end vertices, 2e + 1 at the
+/// larger (by id, so turning the edge around keeps its ends' names).
+#[inline]
+pub(super) fn edge_end(e: EdgeId, a: VertexId, b: VertexId, v: VertexId) -> u32 {
+    2 * e.0 + u32::from(v == a.max(b))
+}
+
+impl IncrementalIndex {
+    /// Makes room for a new vertex, without edges.
+    pub(super) fn add_vertex(&mut self) {
+        self.first.push(NO_END);
+    }
+
+    /// Records the new live edge e = {a, b}.
+    pub(super) fn link(&mut self, e: EdgeId, a: VertexId, b: VertexId) {
+        self.edge_by_ends.insert(ends_key(a, b), e);
+        if self.ring.len() < 2 * e.index() + 2 {
+            self.ring.resize(2 * e.index() + 2, [NO_END; 2]);
+        }
+        for v in [a, b] {
+            let x = edge_end(e, a, b, v);
+            let head = self.first[v.index()];
+            if head == NO_END {
+                self.first[v.index()] = x;
+                self.ring[x as usize] = [x, x];
+            } else {
+                let next = self.ring[head as usize][0];
+                self.ring[x as usize] = [next, head];
+                self.ring[head as usize][0] = x;
+                self.ring[next as usize][1] = x;
+            }
+        }
+    }
+
+    /// Forgets the edge e = {a, b}, which is being removed.
+    pub(super) fn unlink(&mut self, e: EdgeId, a: VertexId, b: VertexId) {
+        self.edge_by_ends.remove(&ends_key(a, b));
+        for v in [a, b] {
+            let x = edge_end(e, a, b, v);
+            let [next, prev] = self.ring[x as usize];
+            if next == x {
+                self.first[v.index()] = NO_END;
+            } else {
+                self.ring[prev as usize][0] = next;
+                self.ring[next as usize][1] = prev;
+                if self.first[v.index()] == x {
+                    self.first[v.index()] = next;
+                }
+            }
+            self.ring[x as usize] = [NO_END; 2];
+        }
+    }
+
+    /// A live edge at v, none if v has none.
+    #[inline]
+    pub(super) fn any_edge_at(&self, v: VertexId) -> EdgeId {
+        match self.first[v.index()] {
+            NO_END => EdgeId::INVALID,
+            x => EdgeId(x / 2),
+        }
+    }
+
+    /// The edges in v's ring, in ring order (for validation).
+    pub(super) fn ring_of(&self, v: VertexId, mut f: impl FnMut(u32) -> bool) {
+        let head = self.first[v.index()];
+        if head == NO_END {
+            return;
+        }
+        let mut x = head;
+        loop {
+            if !f(x) {
+                return;
+            }
+            x = self.ring[x as usize][0];
+            if x == head || x == NO_END {
+                return;
+            }
+        }
+    }
+
+    /// Heap bytes.
+    pub(super) fn heap_bytes(&self) -> usize {
+        // The hash map's buckets (key + value) plus one control byte each.
+        self.edge_by_ends.capacity() * (std::mem::size_of::<(u64, EdgeId)>() + 1)
+            + self.first.capacity() * 4
+            + self.ring.capacity() * 8
+    }
 }
 
 /// The incremental index of `edges` over `vertices` vertices (see [`IncrementalIndex`]).
 pub(super) fn build_index(vertices: usize, edges: &[EdgeRecord]) -> IncrementalIndex {
     let mut index = IncrementalIndex {
         edge_by_ends: HashMap::with_capacity(edges.len()),
-        degree: vec![0; vertices],
+        first: vec![NO_END; vertices],
+        ring: vec![[NO_END; 2]; 2 * edges.len()],
     };
     for (e, r) in edges.iter().enumerate().filter(|(_, r)| r.is_live()) {
-        index
-            .edge_by_ends
-            .insert(ends_key(r.v1, r.v2), EdgeId::new(e));
-        index.degree[r.v1.index()] += 1;
-        index.degree[r.v2.index()] += 1;
+        index.link(EdgeId::new(e), r.v1, r.v2);
     }
     index
 }

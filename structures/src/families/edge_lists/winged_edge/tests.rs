@@ -149,15 +149,27 @@ fn refused_faces_leave_the_structure_unchanged() {
     assert_eq!(err.kind(), "non-manifold-edge", "{err}");
 }
 
-#[test]
-fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
-    let bowtie = meshes::bowtie();
+/// The bowtie's vertices with its two triangles, which meet at v0 only: two fans there.
+fn two_fans_at_v0() -> WingedEdge {
     let mut m = WingedEdge::new();
-    for p in &bowtie.positions {
+    for p in &meshes::bowtie().positions {
         m.add_vertex(*p);
     }
     m.add_face(&ids(&[0, 2, 1])).unwrap();
     m.add_face(&ids(&[0, 3, 4])).unwrap();
+    m
+}
+
+/// A compacted copy (dense ids), to compare with an oracle.
+fn compacted(m: &WingedEdge) -> WingedEdge {
+    let mut dense = m.clone();
+    dense.compact();
+    dense
+}
+
+#[test]
+fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
+    let mut m = two_fans_at_v0();
     let err = m.validate().unwrap_err();
     assert!(
         matches!(err, Error::NonManifoldVertex { vertex: 0, fans: 2 }),
@@ -179,9 +191,7 @@ fn a_vertex_with_two_fans_is_reported_until_a_face_joins_them() {
 fn check_intermediate(m: &WingedEdge, soup: &PolygonSoup, live: &[bool], step: &str) {
     match m.validate() {
         Ok(()) => {
-            let mut dense = m.clone();
-            dense.compact();
-            compare(&dense, &soup.with_faces(|j| live[j]))
+            compare(&compacted(m), &soup.with_faces(|j| live[j]))
                 .unwrap_or_else(|e| panic!("{step}: {e}"));
         }
         Err(Error::NonManifoldVertex { .. }) => {}
@@ -267,6 +277,164 @@ fn explain_prints_the_hull_lectures_fields_for_the_open_tetrahedron() {
 }
 
 #[test]
+fn a_vertex_that_loses_one_fan_keeps_an_edge_of_its_other_fan() {
+    let mut m = two_fans_at_v0();
+    // av(0) is an edge of face 0, whose two edges at v0 go with it: v0's edge handle must
+    // come from the other fan (from v0's ring in the index, no search).
+    assert!(m.edge(m.av[0]).fccw == FaceId(0));
+    m.remove_face(FaceId(0)).unwrap();
+    m.validate().unwrap();
+    let mut faces = Vec::new();
+    m.vertex_faces(VertexId(0), |f| faces.push(f.0));
+    assert_eq!(faces, [1]);
+    let left = PolygonSoup::from_polygons(meshes::bowtie().positions, &[[0u32, 3, 4]]);
+    compare(&compacted(&m), &left).unwrap();
+}
+
+/// The directed sides a → b of the faces `region` of `soup` whose reverse is not a side of
+/// another face of `region`: the border the cone goes over.
+fn border_sides(soup: &PolygonSoup, region: &[usize]) -> Vec<(u32, u32)> {
+    let sides: Vec<(u32, u32)> = region
+        .iter()
+        .flat_map(|&f| {
+            let c = soup.face(f);
+            (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()]))
+        })
+        .collect();
+    let mut border: Vec<(u32, u32)> = sides
+        .iter()
+        .copied()
+        .filter(|&(a, b)| !sides.contains(&(b, a)))
+        .collect();
+    border.sort_unstable();
+    border
+}
+
+/// The torus with one more vertex, the apex, without edges.
+fn torus_and_apex() -> (PolygonSoup, VertexId) {
+    let mut soup = meshes::torus(6, 5);
+    let apex = soup.push_vertex(DVec3::new(0.0, 0.0, 3.0));
+    (soup, apex)
+}
+
+#[test]
+fn a_cone_replaces_a_disk_of_faces_in_one_step() {
+    let (soup, apex) = torus_and_apex();
+    // The faces around two neighbouring vertices: a disk with two inner vertices.
+    let (v, w) = (7u32, 8u32);
+    let region: Vec<usize> = (0..soup.num_faces())
+        .filter(|&f| soup.face(f).contains(&v) || soup.face(f).contains(&w))
+        .collect();
+    for with_index in [false, true] {
+        let mut m = if with_index {
+            // Built by add_face: the index exists and the cone must keep it right.
+            let mut m = WingedEdge::new();
+            soup.positions.iter().for_each(|&p| {
+                m.add_vertex(p);
+            });
+            for face in soup.faces() {
+                m.add_face(&ids(face)).unwrap();
+            }
+            m
+        } else {
+            WingedEdge::from_soup(&soup).unwrap()
+        };
+        let faces: Vec<FaceId> = region.iter().map(|&f| FaceId::new(f)).collect();
+        let mut horizon = Vec::new();
+        m.replace_by_cone(&faces, apex, &mut horizon).unwrap();
+        m.validate().unwrap();
+        // The horizon is the region's border, as one cycle, each edge with its faces.
+        let k = horizon.len();
+        for (i, h) in horizon.iter().enumerate() {
+            assert_eq!(h.b, horizon[(i + 1) % k].a, "cycle at {i}");
+            assert!(faces.contains(&h.removed) && !faces.contains(&h.kept));
+            let ends = m.edge_vertices(h.edge);
+            assert!(ends == [h.a, h.b] || ends == [h.b, h.a], "{h:?}: {ends:?}");
+        }
+        let mut got: Vec<(u32, u32)> = horizon.iter().map(|h| (h.a.0, h.b.0)).collect();
+        got.sort_unstable();
+        assert_eq!(got, border_sides(&soup, &region));
+        for x in [v, w] {
+            assert!(
+                !m.av[x as usize].is_valid(),
+                "inner vertex v{x} keeps an edge"
+            );
+        }
+        // Every answer matches the oracle of the kept faces and the cone (compaction puts
+        // the cone's new slots after the kept faces, in horizon order).
+        let mut expected = soup.with_faces(|f| !region.contains(&f));
+        for h in &horizon {
+            expected.push_face(&[h.a.0, h.b.0, apex.0]);
+        }
+        compare(&compacted(&m), &expected).unwrap();
+        // A second cone reuses the slots the first one freed.
+        let (slots, edge_slots) = (m.face_slots(), m.edge_slots());
+        let apex2 = m.add_vertex(DVec3::new(0.0, 0.0, -3.0));
+        let cone: Vec<FaceId> = horizon.iter().map(|h| h.created).take(2).collect();
+        let mut second = Vec::new();
+        m.replace_by_cone(&cone, apex2, &mut second).unwrap();
+        m.validate().unwrap();
+        assert_eq!((m.face_slots(), m.edge_slots()), (slots, edge_slots));
+        assert!(second.iter().all(|h| region.contains(&h.created.index())));
+        if with_index {
+            // The index still finds every edge: a removed face can be added back.
+            let f = second[0].created;
+            let corners = {
+                let mut c = Vec::new();
+                m.face_vertices(f, |x| c.push(x));
+                c
+            };
+            m.remove_face(f).unwrap();
+            m.add_face(&corners).unwrap();
+            m.validate().unwrap();
+        }
+    }
+}
+
+#[test]
+fn a_region_that_is_not_one_disk_is_refused_and_nothing_changes() {
+    let (soup, apex) = torus_and_apex();
+    let nv = 5;
+    let f = FaceId::new;
+    // Faces 0 .. 2nv: the band of cells (0, j) around the tube, an annulus.
+    let band: Vec<FaceId> = (0..2 * nv).map(f).collect();
+    let cases: Vec<(&str, Vec<FaceId>, VertexId)> = vec![
+        ("empty", vec![], apex),
+        ("named twice", vec![f(0), f(1), f(0)], apex),
+        ("no such face", vec![f(999)], apex),
+        ("the apex has edges", vec![f(0)], VertexId(3)),
+        ("no such apex", vec![f(0)], VertexId(9999)),
+        ("two pieces", vec![f(0), f(20)], apex),
+        ("an annulus", band.clone(), apex),
+        // The band without one triangle: a strip whose border passes v(0, 0) twice.
+        ("pinched", band[1..].to_vec(), apex),
+        (
+            "the whole mesh",
+            (0..soup.num_faces()).map(f).collect(),
+            apex,
+        ),
+    ];
+    let mut m = WingedEdge::from_soup(&soup).unwrap();
+    let before = m.clone();
+    let mut horizon = Vec::new();
+    for (what, region, apex) in cases {
+        let err = m.replace_by_cone(&region, apex, &mut horizon).unwrap_err();
+        assert_eq!(err.kind(), "unsupported", "{what}: {err}");
+        assert_eq!(
+            (&m.edges, &m.af, &m.av),
+            (&before.edges, &before.af, &before.av)
+        );
+        m.validate().unwrap();
+    }
+    // An open mesh: a region on its boundary has a border edge without a face outside.
+    let mut grid = meshes::grid(3, 3, true);
+    let apex = grid.push_vertex(DVec3::Z);
+    let mut m = WingedEdge::from_soup(&grid).unwrap();
+    let err = m.replace_by_cone(&[f(0)], apex, &mut horizon).unwrap_err();
+    assert_eq!(err.kind(), "unsupported", "{err}");
+}
+
+#[test]
 fn removing_faces_splits_a_fan_and_a_removed_fan_hands_av_to_the_other() {
     // Vertex 4, the centre of the 2 x 2 triangulated grid, has the closed fan
     // f0 f1 f4 f7 f6 f3; removing f1 and f6 leaves the fans {f4, f7} and {f3, f0}.
@@ -301,7 +469,5 @@ fn removing_faces_splits_a_fan_and_a_removed_fan_hands_av_to_the_other() {
     let live: Vec<bool> = (0..8u32)
         .map(|f| ![1, 6].contains(&f) && !fan.contains(&f))
         .collect();
-    let mut dense = m.clone();
-    dense.compact();
-    compare(&dense, &soup.with_faces(|j| live[j])).unwrap();
+    compare(&compacted(&m), &soup.with_faces(|j| live[j])).unwrap();
 }

@@ -29,53 +29,9 @@ impl MeshTopology for WingedEdge {
     }
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        let conn = soup.connectivity()?;
-        conn.check_vertex_fans(soup)?;
-        let corner_face = |c: usize| conn.corner_face[c] as usize;
-        // The edges leaving the corners before and after corner c in its face.
-        let wings = |c: usize| {
-            let f = corner_face(c);
-            (
-                EdgeId(conn.corner_edge[soup.prev_corner(c, f)]),
-                EdgeId(conn.corner_edge[soup.next_corner(c, f)]),
-            )
-        };
-        let mut edges = Vec::with_capacity(conn.num_edges());
-        for &[first, other] in &conn.edge_corners {
-            let first = first as usize;
-            let (pccw, nccw) = wings(first);
-            let mut record = EdgeRecord {
-                v1: VertexId(soup.indices()[first]),
-                v2: VertexId(soup.indices()[soup.next_corner(first, corner_face(first))]),
-                fccw: FaceId::new(corner_face(first)),
-                pccw,
-                nccw,
-                ..EdgeRecord::REMOVED
-            };
-            if other != u32::MAX {
-                let other = other as usize;
-                (record.pcw, record.ncw) = wings(other);
-                record.fcw = FaceId::new(corner_face(other));
-            }
-            edges.push(record);
-        }
-        // av(v): the edge leaving v's last corner; af(f): the edge leaving f's first corner.
-        let mut av = vec![EdgeId::INVALID; soup.num_vertices()];
-        for (&v, &e) in soup.indices().iter().zip(&conn.corner_edge) {
-            av[v as usize] = EdgeId(e);
-        }
-        let af = (0..soup.num_faces())
-            .map(|f| EdgeId(conn.corner_edge[soup.face_start(f)]))
-            .collect();
-        Ok(Self {
-            positions: soup.positions.clone(),
-            av,
-            af,
-            live_edges: edges.len(),
-            live_faces: soup.num_faces(),
-            edges,
-            index: None,
-        })
+        let mut mesh = Self::records_of(soup)?;
+        mesh.positions = soup.positions.clone();
+        Ok(mesh)
     }
 
     #[inline]
@@ -182,15 +138,12 @@ impl MeshTopology for WingedEdge {
     }
 
     fn heap_bytes(&self) -> usize {
-        let index = self.index.as_ref().map_or(0, |i| {
-            // The hash map's buckets (key + value) plus one control byte each.
-            i.edge_by_ends.capacity() * (std::mem::size_of::<(u64, EdgeId)>() + 1)
-                + i.degree.capacity() * 4
-        });
+        let index = self.index.as_ref().map_or(0, |i| i.heap_bytes());
         self.positions.capacity() * std::mem::size_of::<DVec3>()
             + (self.av.capacity() + self.af.capacity()) * 4
             + self.edges.capacity() * std::mem::size_of::<EdgeRecord>()
             + index
+            + self.stitching.heap_bytes()
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
@@ -255,5 +208,67 @@ impl MeshTopology for WingedEdge {
             w,
             "all edges of a vertex: rotate from av through the wings, O(k)"
         )
+    }
+}
+
+impl WingedEdge {
+    /// [`MeshTopology::from_soup`] without copying the coordinates: the structure takes the
+    /// soup's (the 3D hull algorithms start from a soup of all their points).
+    pub fn from_owned_soup(mut soup: PolygonSoup) -> Result<Self> {
+        let mut mesh = Self::records_of(&soup)?;
+        mesh.positions = std::mem::take(&mut soup.positions);
+        Ok(mesh)
+    }
+
+    /// Everything [`MeshTopology::from_soup`] builds except the coordinates (left empty).
+    fn records_of(soup: &PolygonSoup) -> Result<Self> {
+        let conn = soup.connectivity()?;
+        conn.check_vertex_fans(soup)?;
+        let corner_face = |c: usize| conn.corner_face[c] as usize;
+        // The edges leaving the corners before and after corner c in its face.
+        let wings = |c: usize| {
+            let f = corner_face(c);
+            (
+                EdgeId(conn.corner_edge[soup.prev_corner(c, f)]),
+                EdgeId(conn.corner_edge[soup.next_corner(c, f)]),
+            )
+        };
+        let mut edges = Vec::with_capacity(conn.num_edges());
+        for &[first, other] in &conn.edge_corners {
+            let first = first as usize;
+            let (pccw, nccw) = wings(first);
+            let mut record = EdgeRecord {
+                v1: VertexId(soup.indices()[first]),
+                v2: VertexId(soup.indices()[soup.next_corner(first, corner_face(first))]),
+                fccw: FaceId::new(corner_face(first)),
+                pccw,
+                nccw,
+                ..EdgeRecord::REMOVED
+            };
+            if other != u32::MAX {
+                let other = other as usize;
+                (record.pcw, record.ncw) = wings(other);
+                record.fcw = FaceId::new(corner_face(other));
+            }
+            edges.push(record);
+        }
+        // av(v): the edge leaving v's last corner; af(f): the edge leaving f's first corner.
+        let mut av = vec![EdgeId::INVALID; soup.num_vertices()];
+        for (&v, &e) in soup.indices().iter().zip(&conn.corner_edge) {
+            av[v as usize] = EdgeId(e);
+        }
+        let af = (0..soup.num_faces())
+            .map(|f| EdgeId(conn.corner_edge[soup.face_start(f)]))
+            .collect();
+        Ok(Self {
+            positions: Vec::new(),
+            av,
+            af,
+            live_edges: edges.len(),
+            live_faces: soup.num_faces(),
+            edges,
+            index: None,
+            stitching: Default::default(),
+        })
     }
 }

@@ -1,7 +1,7 @@
 //! `validate()` of the winged-edge: every record, face cycle, vertex rotation and the
 //! incremental index checked against each other.
 
-use super::records::{ends_key, EdgeRecord};
+use super::records::{edge_end, ends_key, EdgeRecord};
 use super::WingedEdge;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -177,7 +177,7 @@ impl WingedEdge {
     }
 
     /// The incremental index, if built: every live edge under its ends and nothing else, and
-    /// each vertex's edge count.
+    /// each vertex's ring holding exactly its live edges.
     pub(super) fn check_index(&self) -> Result<()> {
         let Some(index) = &self.index else {
             return Ok(());
@@ -194,8 +194,36 @@ impl WingedEdge {
                 return Self::broken(format!("the index does not find e{e}"));
             }
         }
-        if index.degree != self.degrees() {
-            return Self::broken("the index's edge counts per vertex are wrong".into());
+        // Each vertex's ring: exactly its live edges, each linked both ways.
+        if index.first.len() != self.positions.len() {
+            return Self::broken("the index's rings do not cover every vertex".into());
+        }
+        for (v, degree) in self.degrees().into_iter().enumerate() {
+            let vertex = VertexId::new(v);
+            let mut count = 0u32;
+            let mut bad = None;
+            index.ring_of(vertex, |x| {
+                count += 1;
+                let e = EdgeId(x / 2);
+                let ok = self.is_edge_live(e) && {
+                    let r = self.edge(e);
+                    edge_end(e, r.v1, r.v2, vertex) == x
+                        && (r.v1 == vertex || r.v2 == vertex)
+                        && index.ring[index.ring[x as usize][0] as usize][1] == x
+                };
+                if !ok {
+                    bad = Some(e);
+                }
+                ok && count <= degree
+            });
+            if let Some(e) = bad {
+                return Self::broken(format!("the ring of v{v} holds {e:?} wrongly"));
+            }
+            if count != degree {
+                return Self::broken(format!(
+                    "the ring of v{v} holds {count} edges, v{v} has {degree}"
+                ));
+            }
         }
         Ok(())
     }

@@ -1,0 +1,145 @@
+//! What a `topolab report` run measures, from `--sections` and `--structures`: the sections
+//! of the page it shows ([`Section`]), and of those the parts that take long on their own (the
+//! libigl and hull sections) only when `--structures` names what they measure, so that a run
+//! focused on a few structures stays quick.
+
+use topolab_harness::sections::{self, Section, SizeSweep};
+
+/// The name `--structures` accepts for libigl (an outside baseline, run from Python, not a
+/// structure of the registry): the libigl section runs when the list names it.
+pub const LIBIGL: &str = "libigl";
+
+/// The structure the hull section's algorithms build on: the hull section runs when
+/// `--structures` names it.
+pub const HULL_STRUCTURE: &str = "winged-edge";
+
+/// A section by name (`--sections`); an unknown one lists the known.
+pub fn section(name: &str) -> Result<Section, String> {
+    Section::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Section::ALL.iter().map(|s| s.name()).collect();
+        format!("unknown section; known: {}", names.join(", "))
+    })
+}
+
+/// What a run measures.
+#[derive(Clone, Debug)]
+pub struct Selection {
+    /// The sections shown, in page order, each once.
+    pub sections: Vec<Section>,
+    /// What the size sweep measures on the generated meshes.
+    pub size_sweep: SizeSweep,
+    /// The real meshes are read (and repaired where refused): for their section or thumbnails.
+    pub real_meshes: bool,
+    /// The real meshes are measured.
+    pub measure_real: bool,
+    /// The generated meshes are made: for the size sweep, the element orders or thumbnails.
+    pub generated: bool,
+    /// The element-order section runs.
+    pub orderings: bool,
+    /// The libigl section runs.
+    pub libigl: bool,
+    /// The hull section runs.
+    pub hull: bool,
+}
+
+impl Selection {
+    /// The selection of `--sections` (`None`: every section) and `--structures` (`None`:
+    /// every structure, and libigl). Sections that `--structures` leaves without a subject are
+    /// dropped with a note in `notes`.
+    pub fn new(
+        requested: Option<&[Section]>,
+        structures: Option<&[String]>,
+        notes: &mut Vec<String>,
+    ) -> Self {
+        let mut sections: Vec<Section> = requested.unwrap_or(&Section::ALL).to_vec();
+        sections.sort_unstable();
+        sections.dedup();
+        let named = |n: &str| structures.is_none_or(|list| list.iter().any(|s| s == n));
+        for (section, subject) in [(Section::Libigl, LIBIGL), (Section::Hull, HULL_STRUCTURE)] {
+            if sections.contains(&section) && !named(subject) {
+                sections.retain(|&s| s != section);
+                notes.push(format!(
+                    "The {} section was not run: --structures does not name {subject}.",
+                    section.name()
+                ));
+            }
+        }
+        let shows = |s: Section| sections.contains(&s);
+        let size_sweep = sections::size_sweep(&sections);
+        Self {
+            size_sweep,
+            real_meshes: shows(Section::RealMeshes) || shows(Section::Meshes),
+            measure_real: shows(Section::RealMeshes),
+            generated: size_sweep != SizeSweep::None
+                || shows(Section::Orderings)
+                || shows(Section::Meshes),
+            orderings: shows(Section::Orderings),
+            libigl: shows(Section::Libigl),
+            hull: shows(Section::Hull),
+            sections,
+        }
+    }
+
+    /// Whether a mesh of `family` is measured.
+    pub fn measures(&self, family: &str) -> bool {
+        if family == "real" {
+            self.measure_real
+        } else {
+            self.size_sweep != SizeSweep::None
+        }
+    }
+
+    /// Whether a mesh of `family` is measured lightly (construction and the 1-ring sweep).
+    pub fn light(&self, family: &str) -> bool {
+        family == "real" || self.size_sweep == SizeSweep::Light
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_focused_run_measures_only_what_its_sections_show() {
+        let mut notes = Vec::new();
+        let all = Selection::new(None, None, &mut notes);
+        assert_eq!(all.sections, Section::ALL);
+        assert!(all.libigl && all.hull && all.orderings && all.measures("real"));
+        assert_eq!(all.size_sweep, SizeSweep::Full);
+        assert!(notes.is_empty());
+
+        let memory = Selection::new(Some(&[Section::Memory]), None, &mut notes);
+        assert_eq!(memory.size_sweep, SizeSweep::Light);
+        assert!(memory.light("torus") && !memory.measures("real") && !memory.real_meshes);
+        assert!(!memory.libigl && !memory.hull && !memory.orderings);
+
+        let real = Selection::new(Some(&[Section::RealMeshes]), None, &mut notes);
+        assert!(real.measures("real") && !real.measures("torus") && !real.generated);
+        let orders = Selection::new(Some(&[Section::Orderings]), None, &mut notes);
+        assert!(orders.generated && !orders.measures("torus"));
+    }
+
+    #[test]
+    fn structures_leave_out_the_libigl_and_hull_sections_they_do_not_name() {
+        let mut notes = Vec::new();
+        let list = ["che-l2".to_string()];
+        let focused = Selection::new(None, Some(&list), &mut notes);
+        assert!(!focused.libigl && !focused.hull);
+        assert!(!focused.sections.contains(&Section::Hull));
+        assert_eq!(notes.len(), 2, "{notes:?}");
+        let list = [HULL_STRUCTURE.to_string(), LIBIGL.to_string()];
+        let named = Selection::new(
+            Some(&[Section::Hull, Section::Libigl]),
+            Some(&list),
+            &mut notes,
+        );
+        assert!(named.libigl && named.hull);
+    }
+
+    #[test]
+    fn an_unknown_section_lists_the_known() {
+        let e = section("nope").unwrap_err();
+        assert!(e.contains("table-4-1") && e.contains("real-meshes"), "{e}");
+        assert_eq!(section("hull"), Ok(Section::Hull));
+    }
+}
