@@ -595,4 +595,67 @@ int topolab_om_workload(topolab_om_mesh *mesh, int workload, double *out) noexce
   });
 }
 
+int topolab_om_prepare_changing(topolab_om_mesh *mesh) noexcept {
+  return guard([&] {
+    if (!mesh->tri) return TOPOLAB_OM_UNKNOWN_CODE;
+    mesh->tri->request_vertex_status();
+    mesh->tri->request_edge_status();
+    mesh->tri->request_face_status();
+    return TOPOLAB_OM_OK;
+  });
+}
+
+// The changing workloads as the Surface_mesh benchmark's protocol runs them (pmp-library's
+// benchmarks/SurfaceMeshPerformance.h, with OpenMesh's names for the same calls).
+int topolab_om_changing(topolab_om_mesh *mesh, int workload) noexcept {
+  const int prepared = topolab_om_prepare_changing(mesh);
+  if (prepared != TOPOLAB_OM_OK) return prepared;
+  if (workload != 0 && workload != 1) return TOPOLAB_OM_UNKNOWN_CODE;
+  return guard([&] {
+    Tri &m = *mesh->tri;
+    const size_t nv = m.n_vertices(), ne = m.n_edges(), nf = m.n_faces();
+    m.reserve(nv + nf, ne + 3 * nf, 3 * nf);
+    if (workload == 0) {
+      // New positions of the old interior vertices (sqrt3's smoothing rule).
+      std::vector<Tri::Point> moved(nv);
+      for (size_t i = 0; i < nv; ++i) {
+        const VH v{int(i)};
+        moved[i] = m.point(v);
+        if (m.is_boundary(v)) continue;
+        Tri::Point p(0.0, 0.0, 0.0);
+        double n = 0.0;
+        for (VH w : m.vv_range(v)) {
+          p += m.point(w);
+          n += 1.0;
+        }
+        if (n == 0.0) continue;
+        const double alpha = (4.0 - 2.0 * std::cos(2.0 * M_PI / n)) / 9.0;
+        moved[i] = (1.0 - alpha) * m.point(v) + alpha / n * p;
+      }
+      for (size_t i = 0; i < nf; ++i) {
+        const FH f{int(i)};
+        Tri::Point c(0.0, 0.0, 0.0);
+        double k = 0.0;
+        for (VH v : m.fv_range(f)) {
+          c += m.point(v);
+          k += 1.0;
+        }
+        m.split(f, c / k);
+      }
+      for (size_t i = 0; i < nv; ++i)
+        if (!m.is_boundary(VH(int(i)))) m.set_point(VH(int(i)), moved[i]);
+      for (size_t i = 0; i < ne; ++i) {
+        const EH e{int(i)};
+        if (m.is_flip_ok(e)) m.flip(e);
+      }
+    } else {
+      for (size_t i = 0; i < nf; ++i) m.split(FH(int(i)), Tri::Point(0.0, 0.0, 0.0));
+      const size_t end = m.n_vertices();
+      for (size_t i = nv; i < end; ++i) m.collapse(m.halfedge_handle(VH(int(i))));
+      m.garbage_collection();
+    }
+    return TOPOLAB_OM_OK;
+  });
+}
+
 }  // extern "C"

@@ -109,6 +109,13 @@ int topolab_om_prepare_workload(topolab_om_mesh *mesh, int workload) TOPOLAB_OM_
 /* *out = the result of a Surface_mesh benchmark workload; see src/openmesh.rs. */
 int topolab_om_workload(topolab_om_mesh *mesh, int workload, double *out) TOPOLAB_OM_NOEXCEPT;
 
+/* Requests the status attributes the changing workloads delete with (a TriMesh only;
+ * TOPOLAB_OM_UNKNOWN_CODE for a PolyMesh). Outside what a caller times. */
+int topolab_om_prepare_changing(topolab_om_mesh *mesh) TOPOLAB_OM_NOEXCEPT;
+/* Runs a changing workload of the Surface_mesh benchmark (Sieger & Botsch) in place, as its
+ * protocol does: 0 = one step of sqrt3 subdivision, 1 = the collapse test. A TriMesh only. */
+int topolab_om_changing(topolab_om_mesh *mesh, int workload) TOPOLAB_OM_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif

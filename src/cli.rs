@@ -100,6 +100,21 @@ pub enum Command {
     /// The 3D convex hull of a point file or random points, by one of the algorithms of the
     /// lecture on 3D convex hulls.
     Hull(commands::hull::HullArgs),
+    /// Subdivide a mesh N times and write it: `sqrt3` (√3 through the editing operations,
+    /// 3 triangles per triangle and level), `midpoint` or `loop` (4 per level).
+    Subdivide {
+        /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
+        mesh: String,
+        /// `sqrt3`, `midpoint` or `loop`.
+        #[arg(long)]
+        scheme: String,
+        /// Number of levels.
+        #[arg(long, default_value_t = 1)]
+        levels: usize,
+        /// The output file (.obj or .off).
+        #[arg(long)]
+        out: PathBuf,
+    },
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -133,12 +148,21 @@ pub fn run(cli: Cli) -> u8 {
         Command::Repair(args) => return commands::repair::run(args),
         Command::Hull(args) => commands::hull::hull(&args),
         Command::Compare(args) => commands::compare::compare(&args),
+        Command::Subdivide {
+            mesh,
+            scheme,
+            levels,
+            out,
+        } => commands::subdivide::subdivide(&mesh, &scheme, levels, &out),
     };
     match result {
-        Ok(text) => {
-            print!("{text}");
-            0
-        }
+        Ok(text) => match crate::output::print(&text) {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("topolab: {}", e.message);
+                e.code
+            }
+        },
         Err(e) => {
             eprintln!("topolab: {}", e.message);
             e.code

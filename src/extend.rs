@@ -59,11 +59,8 @@ pub struct ReportCli {
 pub fn report_main<X: Structures>() -> ExitCode {
     let cli = ReportCli::parse();
     let command = std::env::args().collect::<Vec<_>>().join(" ");
-    match report_with::<X>(&cli.args, command) {
-        Ok(text) => {
-            print!("{text}");
-            ExitCode::SUCCESS
-        }
+    match report_with::<X>(&cli.args, command).and_then(|text| crate::output::print(&text)) {
+        Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("report: {}", e.message);
             ExitCode::from(e.code)

@@ -58,6 +58,7 @@
 use crate::foreign::{self, check_open_fans, operator_code, refusal, workload_code};
 use std::fmt::Write;
 use std::ptr::NonNull;
+use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{
     BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Input, MeshTopology, NativeKernels,
     Operator, PolygonSoup, Result, VertexId, Workload,
@@ -138,6 +139,8 @@ mod ffi {
         ) -> i32;
         pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
         pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
+        pub fn topolab_om_prepare_changing(mesh: *mut RawMesh) -> i32;
+        pub fn topolab_om_changing(mesh: *mut RawMesh, workload: i32) -> i32;
     }
 }
 
@@ -306,6 +309,43 @@ impl OpenMesh {
             ffi::topolab_om_workload(self.raw.as_ptr(), workload_code(workload), &mut out)
         };
         status("topolab_om_workload", code).map(|()| out)
+    }
+
+    /// Requests what the changing workloads need (OpenMesh's status attributes, which its
+    /// deletion marks live in): outside the timed call. A TriMesh only.
+    pub fn prepare_changing(&mut self) -> Result<()> {
+        if !self.trimesh {
+            return Err(Error::Unsupported(
+                "OpenMesh runs the changing workloads on triangle meshes only".into(),
+            ));
+        }
+        // SAFETY: `raw` is live and exclusively borrowed.
+        let code = unsafe { ffi::topolab_om_prepare_changing(self.raw.as_ptr()) };
+        status("topolab_om_prepare_changing", code)
+    }
+
+    /// Runs a changing workload of the Surface_mesh benchmark in place, in one C++ call, as
+    /// the protocol runs it (see `topolab_structures::algorithms::changing`); the counts are
+    /// read again afterwards. The shim requests the status attributes itself if
+    /// [`OpenMesh::prepare_changing`] did not.
+    pub fn native_changing(&mut self, workload: Changing) -> Result<()> {
+        if !self.trimesh {
+            return self.prepare_changing();
+        }
+        let code = match workload {
+            Changing::Sqrt3 => 0,
+            Changing::Collapse => 1,
+        };
+        // SAFETY: `raw` is live and exclusively borrowed; the shim checks the code.
+        let code = unsafe { ffi::topolab_om_changing(self.raw.as_ptr(), code) };
+        status("topolab_om_changing", code)?;
+        let mut summary = [0u32; 4];
+        // SAFETY: `raw` is live; `summary` has the 4 slots the shim fills.
+        status("topolab_om_summary", unsafe {
+            ffi::topolab_om_summary(self.raw.as_ptr(), summary.as_mut_ptr())
+        })?;
+        (self.vertices, self.edges, self.faces) = (summary[1], summary[2], summary[3]);
+        Ok(())
     }
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.

@@ -134,6 +134,22 @@ pub fn write_file(
     write_atomically(path, fill).map_err(|e| cannot(path, e))
 }
 
+/// Writes a command's text to standard output. A reader that stops reading (`topolab ... |
+/// head`) closes the pipe: that ends the output without an error, as for the other Unix
+/// tools, instead of the panic of `print!`. Any other failure to write is reported on stderr
+/// and turns the exit code into 2.
+pub fn print(text: &str) -> Result<(), Failure> {
+    use std::io::Write as _;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Failure {
+            message: format!("cannot write to standard output: {e}"),
+            code: 2,
+        }),
+        _ => Ok(()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -58,6 +58,12 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("out", vec!["--out", "@DIR/repaired.obj"]),
         ],
         "compare" => vec![("old", vec!["@FILE"]), ("new", vec!["@FILE"])],
+        "subdivide" => vec![
+            ("mesh", vec!["torus"]),
+            ("scheme", vec!["--scheme", "sqrt3"]),
+            ("levels", vec!["--levels", "1"]),
+            ("out", vec!["--out", "@DIR/sqrt3.obj"]),
+        ],
         _ => return None,
     })
 }
@@ -103,6 +109,26 @@ fn curated() -> Vec<Vec<&'static str>> {
             "1",
             "--out",
             "@DIR/x.obj",
+        ],
+        vec![
+            "subdivide",
+            "torus:1000",
+            "--scheme",
+            "sqrt3",
+            "--levels",
+            "30",
+            "--out",
+            "@DIR/x.off",
+        ],
+        vec![
+            "subdivide",
+            "torus:100000000",
+            "--scheme",
+            "sqrt3",
+            "--levels",
+            "3",
+            "--out",
+            "@DIR/x.off",
         ],
         // Past u32 after two levels; the input alone (17 GB) might fit: refused ungenerated.
         vec![

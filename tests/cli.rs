@@ -109,3 +109,24 @@ fn check_exits_0_on_a_clean_file_and_reports_its_topology() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_reader_that_stops_early_ends_the_output_without_a_panic() {
+    use std::io::Read as _;
+    use std::process::Stdio;
+    // Megabytes of containers: far more than a pipe holds, so the writes after the reader
+    // is gone fail with a broken pipe whenever the reader stops.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["explain", "index-half-edge", "--mesh", "torus:20000"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    // The read end is dropped here, as `head -c 16` would exit.
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

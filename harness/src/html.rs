@@ -75,6 +75,7 @@ pub fn render(r: &Results) -> String {
             hull(h, r);
             hull_analysis(h, r);
         }
+        Section::Changing => crate::changing::render(h, &r.changing),
         Section::Teaching => teaching(h, r),
         Section::Meshes => meshes(h, r),
     };
@@ -256,6 +257,9 @@ fn targets(h: &mut String, r: &Results) {
             2.0,
             sweep.and_then(|m| m.limit.as_ref()).map(limit_text),
         );
+    }
+    for (what, value, goal) in crate::changing::targets(&r.changing) {
+        row(what, value, goal, None);
     }
     h.push_str(
         "</table><p class=small>Construction: warm builds reuse the memory the build before them freed; cold builds fault in fresh pages (see Construction time). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>",

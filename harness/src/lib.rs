@@ -9,6 +9,7 @@
 
 pub mod bench;
 pub mod catalogue;
+pub mod changing;
 pub mod checksum;
 pub mod compare;
 pub mod fit;

@@ -37,6 +37,8 @@ pub struct Results {
     pub hull: Vec<crate::hull::bench::HullRow>,
     /// Fitted exponents of the hull rows against n, next to the lecture's bounds.
     pub hull_fits: Vec<crate::hull::bench::HullFit>,
+    /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
+    pub changing: Vec<crate::changing::ChangingRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Anything the reader should know (skipped baselines, missing data).

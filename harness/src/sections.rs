@@ -28,6 +28,9 @@ pub enum Section {
     Libigl,
     /// The 3D convex hull algorithms and Qhull.
     Hull,
+    /// The changing workloads of the Surface_mesh benchmark (√3 subdivision, the collapse
+    /// test) on the editable structures and OpenMesh.
+    Changing,
     /// What each structure stores for the CHE thesis chapter's Figure 4.10.
     Teaching,
     /// Thumbnails of the meshes.
@@ -48,7 +51,7 @@ pub enum SizeSweep {
 
 impl Section {
     /// Every section, in page order.
-    pub const ALL: [Section; 13] = [
+    pub const ALL: [Section; 14] = [
         Section::Targets,
         Section::Table41,
         Section::Plots,
@@ -60,6 +63,7 @@ impl Section {
         Section::RealMeshes,
         Section::Libigl,
         Section::Hull,
+        Section::Changing,
         Section::Teaching,
         Section::Meshes,
     ];
@@ -78,6 +82,7 @@ impl Section {
             Section::RealMeshes => "real-meshes",
             Section::Libigl => "libigl",
             Section::Hull => "hull",
+            Section::Changing => "changing",
             Section::Teaching => "teaching",
             Section::Meshes => "meshes",
         }
@@ -102,6 +107,7 @@ impl Section {
             Section::Orderings
             | Section::RealMeshes
             | Section::Hull
+            | Section::Changing
             | Section::Teaching
             | Section::Meshes => SizeSweep::None,
         }

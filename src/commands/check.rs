@@ -85,16 +85,18 @@ pub fn run(args: CheckArgs) -> u8 {
     };
     let report = checks::check(&raw, &options);
     let name = args.file.display().to_string();
-    if args.json {
+    let printed = if args.json {
         let mut v = serde_json::to_value(&report).expect("serialisable");
         v["file"] = name.clone().into();
         v["clean"] = report.is_clean().into();
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&v).expect("serialisable")
-        );
+        let json = serde_json::to_string_pretty(&v).expect("serialisable") + "\n";
+        crate::output::print(&json)
     } else {
-        print!("{}", text(&name, &report));
+        crate::output::print(&text(&name, &report))
+    };
+    if let Err(e) = printed {
+        eprintln!("topolab: {}", e.message);
+        return e.code;
     }
     if report.is_clean() {
         0

@@ -1,10 +1,38 @@
 //! `topolab list`: the structures, the operators and each structure's theoretical cost per
-//! operator, as a table or JSON.
+//! operator, and the editing operations of the structures that implement `MeshEdit` with
+//! their costs, as a table or JSON.
 
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::{Capabilities, MeshTopology, Operator};
+use topolab_structures::{
+    Capabilities, Deletion, EditOp, IndexHalfEdge, MeshEdit, MeshTopology, Operator,
+    PointerHalfEdge,
+};
+
+/// An editable structure's declared cost per editing operation.
+#[derive(serde::Serialize)]
+struct EditRow {
+    name: &'static str,
+    deletion: Deletion,
+    costs: Vec<(&'static str, &'static str)>,
+}
+
+fn edit_row<M: MeshEdit>() -> EditRow {
+    EditRow {
+        name: M::NAME,
+        deletion: M::DELETION,
+        costs: EditOp::ALL
+            .iter()
+            .map(|&op| (op.name(), M::edit_cost(op).notation()))
+            .collect(),
+    }
+}
+
+/// The structures that implement `MeshEdit`.
+fn edit_rows() -> Vec<EditRow> {
+    vec![edit_row::<IndexHalfEdge>(), edit_row::<PointerHalfEdge>()]
+}
 
 #[derive(serde::Serialize)]
 pub(crate) struct StructureRow {
@@ -41,7 +69,12 @@ pub fn list(json: bool) -> Result<String, Failure> {
         .collect();
     if json {
         let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
-        let v = serde_json::json!({ "structures": rows, "operators": ops, "absent": absent });
+        let v = serde_json::json!({
+            "structures": rows,
+            "operators": ops,
+            "editing": edit_rows(),
+            "absent": absent,
+        });
         return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
     }
     let mut out = String::new();
@@ -100,6 +133,23 @@ pub fn list(json: bool) -> Result<String, Failure> {
     }
     for (name, why) in registry::absent_baselines() {
         let _ = writeln!(out, "{name:<width$} not in this build: {why}");
+    }
+    let edits = edit_rows();
+    let _ = write!(
+        out,
+        "\nEditing operations (MeshEdit) and their cost\n{:<20}",
+        "operation"
+    );
+    for r in &edits {
+        let _ = write!(out, "{:>width$}", r.name);
+    }
+    out.push('\n');
+    for (i, op) in EditOp::ALL.iter().enumerate() {
+        let _ = write!(out, "{:<20}", op.name());
+        for r in &edits {
+            let _ = write!(out, "{:>width$}", r.costs[i].1);
+        }
+        out.push('\n');
     }
     let _ = writeln!(out, "\noperators:");
     for spec in &topolab_harness::catalogue::CATALOGUE {

@@ -12,5 +12,7 @@ pub mod list;
 pub mod refine;
 pub mod repair;
 pub mod report;
+pub mod report_changing;
 pub mod report_repair;
 pub mod report_sections;
+pub mod subdivide;

@@ -67,7 +67,10 @@ fn check_output(soup: &PolygonSoup) -> Report {
 pub fn run(args: RepairArgs) -> u8 {
     match repair_file(&args) {
         Ok((text, remaining)) => {
-            print!("{text}");
+            if let Err(e) = crate::output::print(&text) {
+                eprintln!("topolab: {}", e.message);
+                return e.code;
+            }
             if remaining == 0 {
                 return 0;
             }

@@ -211,6 +211,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         libigl: Vec::new(),
         hull: Vec::new(),
         hull_fits: Vec::new(),
+        changing: Vec::new(),
         teaching: Vec::new(),
         notes,
     };
@@ -310,6 +311,10 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     if selection.hull {
         results.hull = hull(quick, &mut results.notes)?;
         results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+    }
+    if selection.changing {
+        results.changing =
+            super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
     }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);

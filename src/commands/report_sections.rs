@@ -40,6 +40,8 @@ pub struct Selection {
     pub libigl: bool,
     /// The hull section runs.
     pub hull: bool,
+    /// The changing workloads run (on the generated tori).
+    pub changing: bool,
 }
 
 impl Selection {
@@ -72,10 +74,12 @@ impl Selection {
             measure_real: shows(Section::RealMeshes),
             generated: size_sweep != SizeSweep::None
                 || shows(Section::Orderings)
+                || shows(Section::Changing)
                 || shows(Section::Meshes),
             orderings: shows(Section::Orderings),
             libigl: shows(Section::Libigl),
             hull: shows(Section::Hull),
+            changing: shows(Section::Changing),
             sections,
         }
     }
@@ -117,6 +121,9 @@ mod tests {
         assert!(real.measures("real") && !real.measures("torus") && !real.generated);
         let orders = Selection::new(Some(&[Section::Orderings]), None, &mut notes);
         assert!(orders.generated && !orders.measures("torus"));
+        let changing = Selection::new(Some(&[Section::Changing]), None, &mut notes);
+        assert!(changing.changing && changing.generated && !changing.measures("torus"));
+        assert!(!memory.changing);
     }
 
     #[test]

@@ -64,6 +64,7 @@ pub use glam;
 
 pub use self::core::access::{Access, Container, Read, Unit};
 pub use self::core::attributes::{MeshAttributes, Plane};
+pub use self::core::edit::{Deletion, EditOp, MeshEdit, Refusal};
 pub use self::core::error::{Error, Format, Location, Result};
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use self::core::soup::{Connectivity, PolygonSoup};

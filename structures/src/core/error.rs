@@ -232,6 +232,16 @@ pub enum Error {
     /// A request outside what the structure or mesh offers (e.g. an unknown structure name).
     #[error("{0}")]
     Unsupported(String),
+    /// An edit ([`crate::MeshEdit`]) that cannot be done on this mesh; nothing was changed.
+    #[error("{structure} refuses {op}: {reason}")]
+    EditRefused {
+        /// The structure that refused.
+        structure: &'static str,
+        /// The operation.
+        op: crate::core::edit::EditOp,
+        /// Why.
+        reason: crate::core::edit::Refusal,
+    },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.
     #[error("{library} failed in {call}: {reason}")]
@@ -269,6 +279,7 @@ impl Error {
             Error::DegeneratePoints { .. } => "degenerate-points",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
+            Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
         }
     }

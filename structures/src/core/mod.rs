@@ -1,12 +1,13 @@
 //! What every part of the crate speaks: element ids ([`ids`]), the input every structure is
 //! built from ([`soup`]), the one trait every structure implements with its operators and
 //! declared costs ([`topology`]), the application workloads named across the lab ([`workload`]),
-//! the typed errors ([`error`]) and the geometric attributes
+//! the editing operations beside it ([`edit`]), the typed errors ([`error`]) and the geometric attributes
 //! computed through the trait ([`attributes`]), and the access model a structure may declare for
 //! each operator ([`access`]).
 
 pub mod access;
 pub mod attributes;
+pub mod edit;
 pub mod error;
 pub mod ids;
 pub mod soup;

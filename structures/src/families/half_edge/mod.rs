@@ -1,7 +1,8 @@
 //! What the two half-edge structures share: how they are built ([`HalfEdgeArrays`]), the
 //! few primitives each answers in its own way ([`HalfEdgeLinks`]: `next`, `twin`, the start
 //! vertex, the face, one half-edge per vertex and per face), and every operator, `validate`
-//! and `explain` written once on top of those primitives ([`HalfEdge`]).
+//! and `explain` written once on top of those primitives ([`HalfEdge`]), and the editing
+//! operations ([`crate::MeshEdit`]) written once over the writes of [`edit::HalfEdgeLinksMut`].
 //!
 //! The operators are generic and monomorphised, so the pointer structure really chases
 //! pointers and the index structure really reads arrays: the comparison of the two measures
@@ -51,6 +52,7 @@
 
 mod access;
 mod build;
+pub mod edit;
 pub mod index;
 pub mod pointer;
 mod topology;
@@ -145,6 +147,8 @@ pub trait HalfEdgeLinks: Sized {
 pub struct HalfEdge<L> {
     /// The storage that answers the primitives.
     pub(crate) links: L,
+    /// What edits deleted and `garbage_collection` has not yet removed.
+    pub(crate) marks: edit::Marks,
 }
 
 impl<L: HalfEdgeLinks> HalfEdge<L> {
@@ -200,7 +204,6 @@ impl<L: HalfEdgeLinks> HalfEdge<L> {
     }
 }
 
-#[cfg(test)]
 #[cfg(test)]
 mod tests {
     use crate::core::soup::PolygonSoup;

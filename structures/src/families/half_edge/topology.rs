@@ -40,6 +40,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         let arrays = HalfEdgeArrays::from_soup(soup)?;
         Ok(Self {
             links: L::from_arrays(arrays, &soup.positions),
+            marks: Default::default(),
         })
     }
 
@@ -191,11 +192,11 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
 
     fn validate(&self) -> Result<()> {
         self.links.validate_storage()?;
-        validate_links(&self.links)
+        validate_links(&self.links, &self.marks)
     }
 
     fn heap_bytes(&self) -> usize {
-        self.links.heap_bytes()
+        self.links.heap_bytes() + self.marks.heap_bytes()
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {

@@ -1,11 +1,14 @@
-//! `validate()` of both half-edge storages, through their primitives.
+//! `validate()` of both half-edge storages, through their primitives. Slots an edit deleted
+//! and `garbage_collection` has not yet removed ([`Marks`]) are skipped; no live element may
+//! point to one.
 
+use super::edit::Marks;
 use super::HalfEdgeLinks;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 
 /// Every invariant of half-edge connectivity, checked through the primitives by ids.
-pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
+pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L, marks: &Marks) -> Result<()> {
     let fail = |message: String| Err(Error::invariant(L::NAME, message));
     let (nh, nv, nf) = (l.num_half_edges(), l.num_vertices(), l.num_faces());
     if nh % 2 != 0 {
@@ -17,6 +20,9 @@ pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
     // `next` must be a permutation, so every face and boundary loop closes.
     let mut has_prev = vec![false; nh];
     for id in 0..nh as u32 {
+        if marks.edge(id >> 1) {
+            continue;
+        }
         let h = l.half_edge(id);
         if l.id(h) != id {
             return fail(format!("half-edge {id} reports id {}", l.id(h)));
@@ -34,6 +40,14 @@ pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
             return fail(format!("h{id} runs v{} -> v{}", a.0, b.0));
         }
         let n = l.next(h);
+        if marks.edge(l.id(n) >> 1) {
+            return fail(format!("h{id} is followed by a deleted half-edge"));
+        }
+        if marks.vertex(a.0) || l.face(h).is_some_and(|f| marks.face(f.0)) {
+            return fail(format!(
+                "h{id} starts at a deleted vertex or borders a deleted face"
+            ));
+        }
         if l.vertex(n) != b {
             return fail(format!(
                 "h{id} ends at v{}, but its next h{} starts at v{}",
@@ -72,6 +86,9 @@ pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
     }
     let mut in_face_loops = 0usize;
     for f in 0..nf {
+        if marks.face(f as u32) {
+            continue;
+        }
         let fid = FaceId::new(f);
         let start = l.face_half_edge(fid);
         let mut h = start;
@@ -101,6 +118,9 @@ pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
     }
     for (v, &count) in leaving.iter().enumerate() {
         let vid = VertexId::new(v);
+        if marks.vertex(v as u32) && (count != 0 || l.outgoing(vid).is_some()) {
+            return fail(format!("deleted v{v} still has half-edges"));
+        }
         let Some(start) = l.outgoing(vid) else {
             if count != 0 {
                 return fail(format!("v{v} has no half-edge but {count} leave it"));
@@ -109,6 +129,9 @@ pub(super) fn validate_links<L: HalfEdgeLinks>(l: &L) -> Result<()> {
         };
         let (mut h, mut steps, mut boundary) = (start, 0u32, false);
         loop {
+            if marks.edge(l.id(h) >> 1) {
+                return fail(format!("the rotation of v{v} reaches deleted h{}", l.id(h)));
+            }
             if l.vertex(h) != vid {
                 return fail(format!("the rotation of v{v} reaches h{}", l.id(h)));
             }

@@ -41,6 +41,7 @@
 use crate::core::error::Result;
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::topology::Cost;
+use crate::families::half_edge::edit::HalfEdgeLinksMut;
 use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
 use glam::DVec3;
 use std::fmt::Write;
@@ -200,6 +201,69 @@ impl HalfEdgeLinks for IndexLinks {
     }
     fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
         super::access::index(op)
+    }
+}
+
+impl HalfEdgeLinksMut for IndexLinks {
+    #[inline(always)]
+    fn set_next(&mut self, h: u32, n: u32) {
+        self.arrays.next[h as usize] = n;
+        self.prev[n as usize] = h;
+    }
+    #[inline(always)]
+    fn set_vertex(&mut self, h: u32, v: u32) {
+        self.arrays.vertex[h as usize] = v;
+    }
+    #[inline(always)]
+    fn set_face(&mut self, h: u32, f: u32) {
+        self.arrays.face[h as usize] = f;
+    }
+    #[inline(always)]
+    fn set_outgoing(&mut self, v: u32, h: u32) {
+        self.arrays.vertex_half_edge[v as usize] = h;
+    }
+    #[inline(always)]
+    fn set_face_half_edge(&mut self, f: u32, h: u32) {
+        self.arrays.face_half_edge[f as usize] = h;
+    }
+    #[inline(always)]
+    fn set_position(&mut self, v: u32, p: DVec3) {
+        self.positions[v as usize] = p;
+    }
+    #[inline(always)]
+    fn push_vertex(&mut self, p: DVec3) -> u32 {
+        self.positions.push(p);
+        self.arrays.vertex_half_edge.push(NONE);
+        self.positions.len() as u32 - 1
+    }
+    #[inline(always)]
+    fn push_edge(&mut self, a: u32, b: u32) -> u32 {
+        let h = self.arrays.vertex.len() as u32;
+        let a_ = &mut self.arrays;
+        a_.vertex.extend([a, b]);
+        // Linked by the caller before the operation returns.
+        a_.next.extend([h, h + 1]);
+        a_.face.extend([NONE, NONE]);
+        self.prev.extend([h, h + 1]);
+        h
+    }
+    #[inline(always)]
+    fn push_face(&mut self, h: u32) -> u32 {
+        self.arrays.face_half_edge.push(h);
+        self.arrays.face_half_edge.len() as u32 - 1
+    }
+    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+        self.positions.reserve(vertices);
+        self.arrays.vertex_half_edge.reserve(vertices);
+        for a in [
+            &mut self.arrays.vertex,
+            &mut self.arrays.next,
+            &mut self.arrays.face,
+            &mut self.prev,
+        ] {
+            a.reserve(2 * edges);
+        }
+        self.arrays.face_half_edge.reserve(faces);
     }
 }
 

@@ -3,8 +3,10 @@
 //! API over them.
 //!
 //! Soundness rests on three facts, all established here:
-//! 1. every record is allocated by [`Records::new`] with `Box::into_raw`, its links are written
-//!    once there (before any reference to a record exists), and it is never written again;
+//! 1. every record is allocated by [`Records::new`] or the `push_*` methods with
+//!    `Box::into_raw`, and its fields are written only there and by the `set_*` methods of the
+//!    editing operations, which take `&mut Records`: while they run, no reference to any record
+//!    exists (references are handed out only through `&Records`);
 //! 2. every non-null link points to a record owned by the same [`Records`] (the arrays it is
 //!    built from are validated index arrays), and records are freed only in `Drop`;
 //! 3. references to records are handed out only through `&Records`, so each one lives at most
@@ -73,8 +75,8 @@ thread_local! {
 // SAFETY: `Records` owns its records exclusively (like a `Box` per record), so moving it to
 // another thread moves that ownership; nothing else points into them.
 unsafe impl Send for Records {}
-// SAFETY: after `new` the records are never written (fact 1) and have no interior mutability,
-// so shared references from several threads only read.
+// SAFETY: records are written only through `&mut Records` (fact 1) and have no interior
+// mutability, so shared references from several threads only read.
 unsafe impl Sync for Records {}
 
 /// Allocates one record.
@@ -177,21 +179,21 @@ impl Records {
     /// The record of half-edge `h`.
     #[inline(always)]
     pub(super) fn edge(&self, h: u32) -> &HeEdge {
-        // SAFETY: a record of `self`, alive until `self` drops, never written after `new`.
+        // SAFETY: a record of `self`, alive until `self` drops, not written while `&self` lives.
         unsafe { &*self.edges[h as usize] }
     }
 
     /// The record of vertex `v`.
     #[inline(always)]
     pub(super) fn vert(&self, v: u32) -> &HeVert {
-        // SAFETY: a record of `self`, alive until `self` drops, never written after `new`.
+        // SAFETY: a record of `self`, alive until `self` drops, not written while `&self` lives.
         unsafe { &*self.verts[v as usize] }
     }
 
     /// The record of face `f`.
     #[inline(always)]
     pub(super) fn face(&self, f: u32) -> &HeFace {
-        // SAFETY: a record of `self`, alive until `self` drops, never written after `new`.
+        // SAFETY: a record of `self`, alive until `self` drops, not written while `&self` lives.
         unsafe { &*self.faces[f as usize] }
     }
 
@@ -211,7 +213,7 @@ impl Records {
             }
         }
         for (i, &record) in self.edges.iter().enumerate() {
-            // SAFETY: a record of `self` (from its own table), alive, never written after `new`.
+            // SAFETY: a record of `self` (from its own table), alive, not written while `&self` lives.
             let e = unsafe { &*record };
             if e.id != i as u32 {
                 return Err(format!("half-edge record {i} says it is h{}", e.id));
@@ -229,7 +231,7 @@ impl Records {
             }
         }
         for (i, &record) in self.verts.iter().enumerate() {
-            // SAFETY: a record of `self` (from its own table), alive, never written after `new`.
+            // SAFETY: a record of `self` (from its own table), alive, not written while `&self` lives.
             let v = unsafe { &*record };
             if v.id != i as u32 {
                 return Err(format!("vertex record {i} says it is v{}", v.id));
@@ -239,7 +241,7 @@ impl Records {
             }
         }
         for (i, &record) in self.faces.iter().enumerate() {
-            // SAFETY: a record of `self` (from its own table), alive, never written after `new`.
+            // SAFETY: a record of `self` (from its own table), alive, not written while `&self` lives.
             let f = unsafe { &*record };
             if f.id != i as u32 {
                 return Err(format!("face record {i} says it is f{}", f.id));
@@ -292,25 +294,25 @@ impl HeEdge {
     #[inline(always)]
     pub(super) fn pair(&self) -> &HeEdge {
         // SAFETY: never null, a record of the same `Records` (fact 2), which outlives `&self`
-        // (fact 3) and is not written after `new` (fact 1).
+        // (fact 3) and is not written while `&self` lives (fact 1).
         unsafe { &*self.pair }
     }
     /// `next`.
     #[inline(always)]
     pub(super) fn next(&self) -> &HeEdge {
-        // SAFETY: as for `pair`: never null, same owner, outlives `&self`, never written.
+        // SAFETY: as for `pair`: never null, same owner, outlives `&self`, not written while `&self` lives.
         unsafe { &*self.next }
     }
     /// `vert`.
     #[inline(always)]
     pub(super) fn vert(&self) -> &HeVert {
-        // SAFETY: as for `pair`: never null, same owner, outlives `&self`, never written.
+        // SAFETY: as for `pair`: never null, same owner, outlives `&self`, not written while `&self` lives.
         unsafe { &*self.vert }
     }
     /// `face`, `None` for a boundary half-edge.
     #[inline(always)]
     pub(super) fn face(&self) -> Option<&HeFace> {
-        // SAFETY: null or a record of the same owner, which outlives `&self`, never written.
+        // SAFETY: null or a record of the same owner, which outlives `&self`, not written while `&self` lives.
         unsafe { self.face.as_ref() }
     }
 }
@@ -329,7 +331,7 @@ impl HeVert {
     /// `edge`, `None` for an unused vertex.
     #[inline(always)]
     pub(super) fn edge(&self) -> Option<&HeEdge> {
-        // SAFETY: null or a record of the same owner, which outlives `&self`, never written.
+        // SAFETY: null or a record of the same owner, which outlives `&self`, not written while `&self` lives.
         unsafe { self.edge.as_ref() }
     }
 }
@@ -343,7 +345,7 @@ impl HeFace {
     /// `edge`.
     #[inline(always)]
     pub(super) fn edge(&self) -> &HeEdge {
-        // SAFETY: never null, a record of the same owner, which outlives `&self`, never written.
+        // SAFETY: never null, a record of the same owner, which outlives `&self`, not written while `&self` lives.
         unsafe { &*self.edge }
     }
 }
@@ -362,6 +364,101 @@ impl Drop for Records {
             // SAFETY: made by `boxed` in `new`, each table entry distinct, freed only here.
             unsafe { free(p) };
         }
+    }
+}
+
+/// Writes through `&mut Records` for the editing operations. Each takes ids of records of
+/// `self` (in range: the callers are the checked operations) and writes one field.
+impl Records {
+    /// `h.next = n`.
+    pub(super) fn set_next(&mut self, h: u32, n: u32) {
+        let target = self.edges[n as usize];
+        // SAFETY: `&mut self` is exclusive, so no reference to any record is alive (fact 1);
+        // the record belongs to `self`, and `target` is a record of `self` (fact 2).
+        unsafe { (*self.edges[h as usize]).next = target };
+    }
+    /// `h.vert = v`.
+    pub(super) fn set_vert(&mut self, h: u32, v: u32) {
+        let target = self.verts[v as usize];
+        // SAFETY: as in `set_next`.
+        unsafe { (*self.edges[h as usize]).vert = target };
+    }
+    /// `h.face = f` (null for [`NONE`]).
+    pub(super) fn set_face(&mut self, h: u32, f: u32) {
+        let target = link(&self.faces, f);
+        // SAFETY: as in `set_next`; null is allowed for `face`.
+        unsafe { (*self.edges[h as usize]).face = target };
+    }
+    /// `v.edge = h` (null for [`NONE`]).
+    pub(super) fn set_vert_edge(&mut self, v: u32, h: u32) {
+        let target = link(&self.edges, h);
+        // SAFETY: as in `set_next`; null is allowed for a vertex's `edge`.
+        unsafe { (*self.verts[v as usize]).edge = target };
+    }
+    /// `f.edge = h`.
+    pub(super) fn set_face_edge(&mut self, f: u32, h: u32) {
+        let target = self.edges[h as usize];
+        // SAFETY: as in `set_next`.
+        unsafe { (*self.faces[f as usize]).edge = target };
+    }
+    /// Moves vertex `v` to `p`.
+    pub(super) fn set_position(&mut self, v: u32, p: DVec3) {
+        let record = self.verts[v as usize];
+        // SAFETY: as in `set_next`.
+        unsafe {
+            (*record).x = p.x;
+            (*record).y = p.y;
+            (*record).z = p.z;
+        }
+    }
+    /// A new vertex record at `p` with no edge; its id.
+    pub(super) fn push_vert(&mut self, p: DVec3) -> u32 {
+        let id = self.verts.len() as u32;
+        self.verts.push(boxed(HeVert {
+            x: p.x,
+            y: p.y,
+            z: p.z,
+            edge: ptr::null(),
+            id,
+        }));
+        id
+    }
+    /// Two new half-edge records, `h` (returned) from `a` to `b` and `h + 1` back, each
+    /// other's `pair`, each its own `next` until the caller links them, with no face.
+    pub(super) fn push_edge_pair(&mut self, a: u32, b: u32) -> u32 {
+        let h = self.edges.len() as u32;
+        for (id, v) in [(h, a), (h + 1, b)] {
+            let vert = self.verts[v as usize];
+            self.edges.push(boxed(HeEdge {
+                vert,
+                pair: ptr::null(),
+                face: ptr::null(),
+                next: ptr::null(),
+                id,
+            }));
+        }
+        let (x, y) = (self.edges[h as usize], self.edges[h as usize + 1]);
+        // SAFETY: both records were just allocated by `self`; no reference to them exists.
+        unsafe {
+            (*x).pair = y;
+            (*y).pair = x;
+            (*x).next = x;
+            (*y).next = y;
+        }
+        h
+    }
+    /// A new face record whose edge is `h`; its id.
+    pub(super) fn push_face(&mut self, h: u32) -> u32 {
+        let id = self.faces.len() as u32;
+        let edge = self.edges[h as usize];
+        self.faces.push(boxed(HeFace { edge, id }));
+        id
+    }
+    /// Room in the id tables.
+    pub(super) fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+        self.verts.reserve(vertices);
+        self.edges.reserve(2 * edges);
+        self.faces.reserve(faces);
     }
 }
 

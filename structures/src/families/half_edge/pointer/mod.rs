@@ -14,7 +14,8 @@
 //! ([`crate::IndexHalfEdge`]) is the point of this structure: both answer every operator with the
 //! same code ([`crate::families::half_edge::HalfEdge`]), monomorphised for pointers here and for
 //! arrays there. All unsafe code of the crate is in the private `links` module: records are written
-//! only while they are built, never move, and are freed in `Drop`.
+//! only while they are built or edited (through `&mut`: no reference to a record is alive then),
+//! never move, and are freed in `Drop` (garbage collection after edits builds them anew).
 //!
 //! | record (one allocation each) | fields | bytes |
 //! |---|---|---|
@@ -57,6 +58,7 @@ mod links;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::topology::Cost;
+use crate::families::half_edge::edit::HalfEdgeLinksMut;
 use crate::families::half_edge::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
 use glam::DVec3;
 use links::{HeEdge, Records};
@@ -165,6 +167,39 @@ impl HalfEdgeLinks for PointerLinks {
     }
     fn access(op: crate::core::topology::Operator) -> Option<crate::core::access::Access> {
         super::access::pointer(op)
+    }
+}
+
+impl HalfEdgeLinksMut for PointerLinks {
+    fn set_next(&mut self, h: u32, n: u32) {
+        self.records.set_next(h, n);
+    }
+    fn set_vertex(&mut self, h: u32, v: u32) {
+        self.records.set_vert(h, v);
+    }
+    fn set_face(&mut self, h: u32, f: u32) {
+        self.records.set_face(h, f);
+    }
+    fn set_outgoing(&mut self, v: u32, h: u32) {
+        self.records.set_vert_edge(v, h);
+    }
+    fn set_face_half_edge(&mut self, f: u32, h: u32) {
+        self.records.set_face_edge(f, h);
+    }
+    fn set_position(&mut self, v: u32, p: DVec3) {
+        self.records.set_position(v, p);
+    }
+    fn push_vertex(&mut self, p: DVec3) -> u32 {
+        self.records.push_vert(p)
+    }
+    fn push_edge(&mut self, a: u32, b: u32) -> u32 {
+        self.records.push_edge_pair(a, b)
+    }
+    fn push_face(&mut self, h: u32) -> u32 {
+        self.records.push_face(h)
+    }
+    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+        self.records.reserve(vertices, edges, faces);
     }
 }
 

@@ -1,0 +1,262 @@
+//! [`MeshEdit`] for both half-edge storages, written once over [`HalfEdgeLinksMut`] as the
+//! queries are written once over [`HalfEdgeLinks`]: the Euler operations of pmp-library's
+//! `SurfaceMesh` and OpenMesh (`add_face`, `delete_face`, `flip`, `split`, `collapse` with
+//! `is_collapse_ok`, and OpenMesh's `vertex_split`), translated to the lab's convention that a
+//! half-edge stores the vertex it starts at (both libraries store the one it points to).
+//!
+//! Deletion marks ([`Deletion::Marked`], as both libraries do): a deleted vertex, edge or face
+//! keeps its slot, flagged in [`Marks`], until [`MeshEdit::garbage_collection`] builds the
+//! storage again from the survivors in their order (O(n)). `validate()` skips marked slots.
+//!
+//! ## Costs
+//!
+//! k is the size of the neighbourhood an operation touches (the valences of the vertices and
+//! the sizes of the faces around the edit). Finding the half-edge between two vertices
+//! (`find_halfedge`) rotates around one of them, O(k).
+//!
+//! | operation | how | cost |
+//! |---|---|---|
+//! | add vertex | append a record | O(1) |
+//! | add face | find each side's half-edge, link the new half-edges into the boundary loops | O(k) |
+//! | delete face | unlink the face's boundary edges, re-point its vertices at a boundary half-edge | O(k) |
+//! | delete vertex | delete each face around it | O(k) |
+//! | flip edge | relink two triangles; refuse if the new edge exists (a rotation) | O(k) |
+//! | split edge | one new vertex, up to three edges and two faces, relinked in place | O(1) with `prev`, O(k) without |
+//! | split face | a fan of k triangles around the new vertex | O(k) |
+//! | collapse edge | the link condition (each neighbour of one end against the other's ring, O(k²), declared O(k)), then re-point the removed vertex's half-edges | O(k) |
+//! | split vertex | move the half-edges of one side of the fan, add three edges and two triangles | O(k) |
+//! | garbage collection | rebuild the storage from the survivors | O(n) |
+
+mod euler;
+
+use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
+use crate::core::edit::{Deletion, EditOp, MeshEdit};
+use crate::core::error::Result;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::topology::Cost;
+use glam::DVec3;
+
+/// What a half-edge storage must offer to be edited: writes by id, and new records.
+///
+/// Every write leaves the storage in a state the next writes of the same operation repair;
+/// the operations ([`HalfEdge`]'s [`MeshEdit`]) leave it valid.
+pub trait HalfEdgeLinksMut: HalfEdgeLinks {
+    /// `next[h] = n` (and, where stored, `prev[n] = h`).
+    fn set_next(&mut self, h: u32, n: u32);
+    /// Half-edge `h` starts at vertex `v`.
+    fn set_vertex(&mut self, h: u32, v: u32);
+    /// Half-edge `h` borders face `f` (`u32::MAX`: a boundary half-edge).
+    fn set_face(&mut self, h: u32, f: u32);
+    /// Vertex `v`'s half-edge (`u32::MAX`: unused).
+    fn set_outgoing(&mut self, v: u32, h: u32);
+    /// Face `f`'s half-edge.
+    fn set_face_half_edge(&mut self, f: u32, h: u32);
+    /// Moves vertex `v`.
+    fn set_position(&mut self, v: u32, p: DVec3);
+    /// Appends an unused vertex at `p`; returns its id.
+    fn push_vertex(&mut self, p: DVec3) -> u32;
+    /// Appends an edge: half-edge `h` (returned, even) from `a` to `b` and `h + 1` from `b` to
+    /// `a`, with no face; their `next` links are set by the caller.
+    fn push_edge(&mut self, a: u32, b: u32) -> u32;
+    /// Appends a face whose half-edge is `h`; returns its id.
+    fn push_face(&mut self, h: u32) -> u32;
+    /// Reserves room for more vertices, edges and faces.
+    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize);
+}
+
+/// The deletion marks of an edited half-edge mesh, empty (no memory) until the first deletion.
+#[derive(Clone, Debug, Default)]
+pub struct Marks {
+    vertex: Vec<bool>,
+    edge: Vec<bool>,
+    face: Vec<bool>,
+    any: bool,
+}
+
+fn get(flags: &[bool], i: u32) -> bool {
+    flags.get(i as usize).copied().unwrap_or(false)
+}
+
+fn set(flags: &mut Vec<bool>, i: u32) {
+    if flags.len() <= i as usize {
+        flags.resize(i as usize + 1, false);
+    }
+    flags[i as usize] = true;
+}
+
+impl Marks {
+    /// Is vertex `v` deleted?
+    #[inline]
+    pub fn vertex(&self, v: u32) -> bool {
+        get(&self.vertex, v)
+    }
+    /// Is edge `e` deleted?
+    #[inline]
+    pub fn edge(&self, e: u32) -> bool {
+        get(&self.edge, e)
+    }
+    /// Is face `f` deleted?
+    #[inline]
+    pub fn face(&self, f: u32) -> bool {
+        get(&self.face, f)
+    }
+    /// Nothing is deleted.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        !self.any
+    }
+    fn mark_vertex(&mut self, v: u32) {
+        set(&mut self.vertex, v);
+        self.any = true;
+    }
+    fn mark_edge(&mut self, e: u32) {
+        set(&mut self.edge, e);
+        self.any = true;
+    }
+    fn mark_face(&mut self, f: u32) {
+        set(&mut self.face, f);
+        self.any = true;
+    }
+    /// Bytes of the flags.
+    pub(crate) fn heap_bytes(&self) -> usize {
+        self.vertex.capacity() + self.edge.capacity() + self.face.capacity()
+    }
+}
+
+/// The cost table of the module docs; `predecessor` is the storage's cost of `prev`.
+fn edit_cost(op: EditOp, predecessor: Cost) -> Cost {
+    match op {
+        EditOp::AddVertex => Cost::Constant,
+        EditOp::SplitEdge => predecessor,
+        EditOp::GarbageCollection => Cost::Linear,
+        EditOp::AddFace
+        | EditOp::DeleteFace
+        | EditOp::DeleteVertex
+        | EditOp::FlipEdge
+        | EditOp::SplitFace
+        | EditOp::CollapseEdge
+        | EditOp::SplitVertex => Cost::Local,
+    }
+}
+
+impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
+    const DELETION: Deletion = Deletion::Marked;
+
+    fn edit_cost(op: EditOp) -> Cost {
+        edit_cost(op, L::PREDECESSOR)
+    }
+    fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
+        self.room(1, 0, 0)?;
+        Ok(VertexId(self.links.push_vertex(p)))
+    }
+    fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
+        self.live_vertex(v.0, EditOp::AddVertex)?;
+        self.links.set_position(v.0, p);
+        Ok(())
+    }
+    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
+        self.add_face_checked(vertices).map(FaceId)
+    }
+    fn delete_face(&mut self, f: FaceId) -> Result<()> {
+        self.delete_face_checked(f.0)
+    }
+    fn delete_vertex(&mut self, v: VertexId) -> Result<()> {
+        self.delete_vertex_checked(v.0)
+    }
+    fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
+        self.flip_checked(e.0)
+    }
+    fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
+        self.split_edge_checked(e.0, p).map(VertexId)
+    }
+    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
+        self.split_face_checked(f.0, p).map(VertexId)
+    }
+    fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
+        self.collapse_checked(from.0, to.0)
+    }
+    fn split_vertex(
+        &mut self,
+        v: VertexId,
+        p: DVec3,
+        left: VertexId,
+        right: VertexId,
+    ) -> Result<VertexId> {
+        self.split_vertex_checked(v.0, p, left.0, right.0)
+            .map(VertexId)
+    }
+    fn is_deleted_vertex(&self, v: VertexId) -> bool {
+        self.marks.vertex(v.0)
+    }
+    fn is_deleted_face(&self, f: FaceId) -> bool {
+        self.marks.face(f.0)
+    }
+    fn garbage_collection(&mut self) {
+        if self.marks.is_empty() {
+            return;
+        }
+        let l = &self.links;
+        let m = &self.marks;
+        let renumber = |n: usize, deleted: &dyn Fn(u32) -> bool| -> Vec<u32> {
+            let mut next = 0u32;
+            (0..n as u32)
+                .map(|i| {
+                    if deleted(i) {
+                        NONE
+                    } else {
+                        next += 1;
+                        next - 1
+                    }
+                })
+                .collect()
+        };
+        let vmap = renumber(l.num_vertices(), &|v| m.vertex(v));
+        let emap = renumber(l.num_half_edges() / 2, &|e| m.edge(e));
+        let fmap = renumber(l.num_faces(), &|f| m.face(f));
+        let hmap = |h: u32| {
+            if h == NONE {
+                NONE
+            } else {
+                2 * emap[(h >> 1) as usize] + (h & 1)
+            }
+        };
+        let live_edges = emap.iter().filter(|&&e| e != NONE).count();
+        let mut arrays = HalfEdgeArrays {
+            vertex: Vec::with_capacity(2 * live_edges),
+            next: Vec::with_capacity(2 * live_edges),
+            face: Vec::with_capacity(2 * live_edges),
+            vertex_half_edge: Vec::new(),
+            face_half_edge: Vec::new(),
+        };
+        for h in 0..l.num_half_edges() as u32 {
+            if emap[(h >> 1) as usize] == NONE {
+                continue;
+            }
+            arrays.vertex.push(vmap[self.start_v(h) as usize]);
+            arrays.next.push(hmap(self.nx(h)));
+            let f = self.face_of(h);
+            arrays
+                .face
+                .push(if f == NONE { NONE } else { fmap[f as usize] });
+        }
+        let mut positions = Vec::with_capacity(vmap.len());
+        for v in 0..l.num_vertices() as u32 {
+            if vmap[v as usize] != NONE {
+                positions.push(l.position(VertexId(v)));
+                arrays.vertex_half_edge.push(hmap(self.out_of(v)));
+            }
+        }
+        for f in 0..l.num_faces() as u32 {
+            if fmap[f as usize] != NONE {
+                arrays
+                    .face_half_edge
+                    .push(hmap(l.id(l.face_half_edge(FaceId(f)))));
+            }
+        }
+        self.links = L::from_arrays(arrays, &positions);
+        self.marks = Marks::default();
+    }
+    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+        self.links.reserve(vertices, edges, faces);
+    }
+}

@@ -1,0 +1,647 @@
+//! The editing suite: random sequences of [`MeshEdit`] operations on a structure, each
+//! applied as well to a naive [`Model`] (a face list edited by hand), with every refusal
+//! checked against the model's own reason and, after every edit, `validate()`, the live faces
+//! compared with the model's, and, when nothing is marked deleted, every relation compared
+//! with the [`Oracle`](crate::testing::oracle::Oracle) rebuilt from the structure's face list
+//! ([`compare`]). The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
+//! structure in one line.
+
+use crate::algorithms::changing::to_soup;
+use crate::core::edit::MeshEdit;
+use crate::core::error::Error;
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::soup::PolygonSoup;
+use crate::testing::conformance::compare;
+use crate::testing::meshes::{self, RandomMeshParams};
+use glam::DVec3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+/// The naive model: positions and faces, `None` where deleted.
+#[derive(Clone, Debug, Default)]
+pub struct Model {
+    /// Per vertex, its position, `None` once deleted.
+    pub positions: Vec<Option<DVec3>>,
+    /// Per face, its corners, `None` once deleted.
+    pub faces: Vec<Option<Vec<u32>>>,
+}
+
+/// `f` rotated so that its smallest vertex comes first.
+pub fn canonical_face(f: &[u32]) -> Vec<u32> {
+    let i = (0..f.len()).min_by_key(|&i| f[i]).unwrap_or(0);
+    f[i..].iter().chain(&f[..i]).copied().collect()
+}
+
+impl Model {
+    /// The model of a soup.
+    pub fn of(soup: &PolygonSoup) -> Self {
+        Self {
+            positions: soup.positions.iter().map(|&p| Some(p)).collect(),
+            faces: soup.faces().map(|f| Some(f.to_vec())).collect(),
+        }
+    }
+
+    fn live_faces(&self) -> impl Iterator<Item = (usize, &Vec<u32>)> {
+        self.faces
+            .iter()
+            .enumerate()
+            .filter_map(|(i, f)| f.as_ref().map(|f| (i, f)))
+    }
+
+    /// The live faces, canonical and sorted.
+    pub fn face_set(&self) -> Vec<Vec<u32>> {
+        let mut out: Vec<Vec<u32>> = self.live_faces().map(|(_, f)| canonical_face(f)).collect();
+        out.sort();
+        out
+    }
+
+    /// The soup of the live faces, all vertex slots kept (a deleted vertex at the origin).
+    fn soup(&self, replace: Option<(usize, Option<Vec<u32>>)>, extra: &[Vec<u32>]) -> PolygonSoup {
+        let positions = self
+            .positions
+            .iter()
+            .map(|p| p.unwrap_or(DVec3::ZERO))
+            .collect();
+        let mut faces: Vec<Vec<u32>> = Vec::new();
+        for (i, f) in self.faces.iter().enumerate() {
+            let f = match &replace {
+                Some((j, g)) if *j == i => g.clone(),
+                _ => f.clone(),
+            };
+            faces.extend(f);
+        }
+        faces.extend(extra.iter().cloned());
+        PolygonSoup::from_polygons(positions, &faces)
+    }
+
+    /// Would this face list be an oriented manifold with one fan per vertex?
+    fn manifold(soup: &PolygonSoup) -> bool {
+        soup.connectivity()
+            .and_then(|c| c.check_vertex_fans(soup))
+            .is_ok()
+    }
+
+    fn live_vertex(&self, v: u32) -> bool {
+        self.positions.get(v as usize).is_some_and(|p| p.is_some())
+    }
+
+    /// The face holding the directed edge a → b, with the corner of a.
+    fn face_with(&self, a: u32, b: u32) -> Option<(usize, usize)> {
+        self.live_faces().find_map(|(i, f)| {
+            let k = f.len();
+            (0..k)
+                .find(|&c| f[c] == a && f[(c + 1) % k] == b)
+                .map(|c| (i, c))
+        })
+    }
+
+    fn neighbours(&self, v: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        for (_, f) in self.live_faces() {
+            let k = f.len();
+            for c in 0..k {
+                if f[c] == v {
+                    out.push(f[(c + 1) % k]);
+                    out.push(f[(c + k - 1) % k]);
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
+    fn is_boundary_edge(&self, a: u32, b: u32) -> bool {
+        self.face_with(a, b).is_none() || self.face_with(b, a).is_none()
+    }
+
+    fn is_boundary_vertex(&self, v: u32) -> bool {
+        self.neighbours(v)
+            .into_iter()
+            .any(|w| self.is_boundary_edge(v, w))
+    }
+
+    fn triangle(&self, f: usize) -> bool {
+        self.faces[f].as_ref().is_some_and(|f| f.len() == 3)
+    }
+
+    fn third(&self, f: usize, c: usize) -> u32 {
+        let face = self.faces[f].as_ref().expect("live");
+        face[(c + 2) % 3]
+    }
+
+    /// Removes deleted slots, keeping the order of the others.
+    pub fn collect(&mut self) {
+        let mut map = vec![u32::MAX; self.positions.len()];
+        let mut next = 0;
+        for (v, p) in self.positions.iter().enumerate() {
+            if p.is_some() {
+                map[v] = next;
+                next += 1;
+            }
+        }
+        self.positions.retain(|p| p.is_some());
+        self.faces.retain(|f| f.is_some());
+        for f in self.faces.iter_mut().flatten() {
+            for v in f.iter_mut() {
+                *v = map[*v as usize];
+            }
+        }
+    }
+}
+
+/// One random edit: what was asked, in the lab's ids.
+#[derive(Clone, Debug)]
+pub enum Edit {
+    /// Add a vertex.
+    AddVertex(DVec3),
+    /// Add a face on these vertices.
+    AddFace(Vec<u32>),
+    /// Delete the face left of the directed edge a → b.
+    DeleteFace(u32, u32),
+    /// Delete a face by an id out of range (must be refused).
+    DeleteMissingFace(u32),
+    /// Delete a vertex.
+    DeleteVertex(u32),
+    /// Flip the edge between two vertices.
+    Flip(u32, u32),
+    /// Split the edge between two vertices.
+    SplitEdge(u32, u32, DVec3),
+    /// Split the face left of the directed edge a → b.
+    SplitFace(u32, u32, DVec3),
+    /// Collapse the first vertex into the second.
+    Collapse(u32, u32),
+    /// Split a vertex (vertex, left, right).
+    SplitVertex(u32, u32, u32, DVec3),
+    /// Garbage collection.
+    Collect,
+}
+
+fn edge_between<M: MeshEdit>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
+    let mut found = None;
+    if (a as usize) < m.num_vertices() && !m.is_deleted_vertex(VertexId(a)) {
+        m.vertex_edges(VertexId(a), |e| {
+            let [x, y] = m.edge_vertices(e);
+            if (x.0, y.0) == (a, b) || (x.0, y.0) == (b, a) {
+                found = Some(e);
+            }
+        });
+    }
+    found
+}
+
+/// The face left of the directed edge a → b.
+fn face_left<M: MeshEdit>(m: &M, a: u32, b: u32) -> Option<FaceId> {
+    let e = edge_between(m, a, b)?;
+    let mut found = None;
+    m.edge_faces(e, |f| {
+        let mut face = Vec::new();
+        m.face_vertices(f, |v| face.push(v.0));
+        let k = face.len();
+        if (0..k).any(|c| face[c] == a && face[(c + 1) % k] == b) {
+            found = Some(f);
+        }
+    });
+    found
+}
+
+/// Draws an edit, mostly of elements that exist, sometimes of ones that do not.
+fn draw(rng: &mut ChaCha8Rng, model: &Model) -> Edit {
+    let nv = model.positions.len().max(1) as u32;
+    let nf = model.faces.len().max(1) as u32;
+    let live: Vec<u32> = (0..model.positions.len() as u32)
+        .filter(|&v| model.live_vertex(v))
+        .collect();
+    let pick_vertex = |rng: &mut ChaCha8Rng| {
+        if live.is_empty() || rng.random_bool(0.05) {
+            rng.random_range(0..nv + 2)
+        } else {
+            live[rng.random_range(0..live.len())]
+        }
+    };
+    // A neighbour of v, mostly.
+    let near = |rng: &mut ChaCha8Rng, v: u32| {
+        let n = model.neighbours(v);
+        if n.is_empty() || rng.random_bool(0.1) {
+            pick_vertex(rng)
+        } else {
+            n[rng.random_range(0..n.len())]
+        }
+    };
+    let p = DVec3::new(rng.random(), rng.random(), rng.random());
+    match rng.random_range(0..100) {
+        0..4 => Edit::AddVertex(p),
+        4..12 => {
+            // A triangle on a boundary edge and a third vertex, or anything.
+            let a = pick_vertex(rng);
+            let b = near(rng, a);
+            let c = if rng.random_bool(0.5) {
+                near(rng, b)
+            } else {
+                pick_vertex(rng)
+            };
+            if rng.random_bool(0.5) {
+                Edit::AddFace(vec![b, a, c])
+            } else {
+                Edit::AddFace(vec![a, b, c])
+            }
+        }
+        12..17 => {
+            let a = pick_vertex(rng);
+            Edit::DeleteFace(a, near(rng, a))
+        }
+        17..18 => Edit::DeleteMissingFace(nf + rng.random_range(0..3)),
+        18..22 => Edit::DeleteVertex(pick_vertex(rng)),
+        22..42 => {
+            let a = pick_vertex(rng);
+            Edit::Flip(a, near(rng, a))
+        }
+        42..54 => {
+            let a = pick_vertex(rng);
+            Edit::SplitEdge(a, near(rng, a), p)
+        }
+        54..64 => {
+            let a = pick_vertex(rng);
+            Edit::SplitFace(a, near(rng, a), p)
+        }
+        64..84 => {
+            let a = pick_vertex(rng);
+            Edit::Collapse(a, near(rng, a))
+        }
+        84..96 => {
+            let v = pick_vertex(rng);
+            let (l, r) = (near(rng, v), near(rng, v));
+            Edit::SplitVertex(v, l, r, p)
+        }
+        _ => Edit::Collect,
+    }
+}
+
+/// What the model says an edit must do: `Some(apply)` when it must succeed, `None` when it
+/// must be refused.
+fn expect(model: &Model, edit: &Edit) -> Option<Model> {
+    let mut next = model.clone();
+    let n = model.positions.len() as u32;
+    match edit {
+        Edit::AddVertex(p) => next.positions.push(Some(*p)),
+        Edit::AddFace(vs) => {
+            let distinct = (1..vs.len()).all(|i| !vs[..i].contains(&vs[i]));
+            if !distinct || !vs.iter().all(|&v| model.live_vertex(v)) {
+                return None;
+            }
+            if !Model::manifold(&model.soup(None, std::slice::from_ref(vs))) {
+                return None;
+            }
+            next.faces.push(Some(vs.clone()));
+        }
+        Edit::DeleteMissingFace(_) => return None,
+        Edit::DeleteFace(a, b) => {
+            let (f, _) = model.face_with(*a, *b)?;
+            if !Model::manifold(&model.soup(Some((f, None)), &[])) {
+                return None;
+            }
+            next.faces[f] = None;
+        }
+        Edit::DeleteVertex(v) => {
+            if !model.live_vertex(*v) {
+                return None;
+            }
+            for f in next.faces.iter_mut() {
+                if f.as_ref().is_some_and(|f| f.contains(v)) {
+                    *f = None;
+                }
+            }
+            if !Model::manifold(&next.soup(None, &[])) {
+                return None;
+            }
+            next.positions[*v as usize] = None;
+        }
+        Edit::Flip(a, b) => {
+            let (a, b) = (*a, *b);
+            if !model.live_vertex(a) || !model.live_vertex(b) {
+                return None;
+            }
+            let ((f1, c1), (f2, c2)) = (model.face_with(a, b)?, model.face_with(b, a)?);
+            if !model.triangle(f1) || !model.triangle(f2) {
+                return None;
+            }
+            let (x, y) = (model.third(f1, c1), model.third(f2, c2));
+            if x == y || model.neighbours(x).contains(&y) {
+                return None;
+            }
+            next.faces[f1] = Some(vec![a, y, x]);
+            next.faces[f2] = Some(vec![b, x, y]);
+        }
+        Edit::SplitEdge(a, b, p) => {
+            let (a, b) = (*a, *b);
+            if !model.live_vertex(a) || !model.live_vertex(b) {
+                return None;
+            }
+            let sides = [model.face_with(a, b), model.face_with(b, a)];
+            if sides.iter().all(Option::is_none) {
+                return None;
+            }
+            if sides.iter().flatten().any(|&(f, _)| !model.triangle(f)) {
+                return None;
+            }
+            if let [Some((f, c)), Some((g, d))] = sides {
+                if model.third(f, c) == model.third(g, d) {
+                    return None;
+                }
+            }
+            next.positions.push(Some(*p));
+            for (f, c) in sides.into_iter().flatten() {
+                let face = model.faces[f].clone().expect("live");
+                let (s, t, o) = (face[c], face[(c + 1) % 3], face[(c + 2) % 3]);
+                next.faces[f] = Some(vec![s, n, o]);
+                next.faces.push(Some(vec![n, t, o]));
+            }
+        }
+        Edit::SplitFace(a, b, p) => {
+            let (f, _) = model.face_with(*a, *b)?;
+            let face = model.faces[f].clone().expect("live");
+            next.positions.push(Some(*p));
+            let k = face.len();
+            next.faces[f] = Some(vec![face[0], face[1], n]);
+            for i in 1..k {
+                next.faces.push(Some(vec![face[i], face[(i + 1) % k], n]));
+            }
+        }
+        Edit::Collapse(v0, v1) => {
+            let (v0, v1) = (*v0, *v1);
+            if !model.live_vertex(v0) || !model.live_vertex(v1) {
+                return None;
+            }
+            if !model.neighbours(v0).contains(&v1) {
+                return None;
+            }
+            let around: Vec<usize> = model
+                .live_faces()
+                .filter(|(_, f)| f.contains(&v0))
+                .map(|(i, _)| i)
+                .collect();
+            if around.iter().any(|&f| !model.triangle(f)) {
+                return None;
+            }
+            // pmp's is_collapse_ok, naively.
+            let left = model.face_with(v0, v1).map(|(f, c)| model.third(f, c));
+            let right = model.face_with(v1, v0).map(|(f, c)| model.third(f, c));
+            for (side, a, b) in [(left, v1, v0), (right, v0, v1)] {
+                if let Some(x) = side {
+                    if model.is_boundary_edge(a, x) && model.is_boundary_edge(x, b) {
+                        return None;
+                    }
+                }
+            }
+            if left == right {
+                return None;
+            }
+            if let (Some(l), Some(r)) = (left, right) {
+                let valence = |v: u32| model.neighbours(v).len();
+                if model.neighbours(l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
+                    return None;
+                }
+            }
+            if model.is_boundary_vertex(v0)
+                && model.is_boundary_vertex(v1)
+                && !model.is_boundary_edge(v0, v1)
+            {
+                return None;
+            }
+            let ring1 = model.neighbours(v1);
+            if model
+                .neighbours(v0)
+                .into_iter()
+                .any(|w| w != v1 && Some(w) != left && Some(w) != right && ring1.contains(&w))
+            {
+                return None;
+            }
+            for f in around {
+                let face = next.faces[f].as_mut().expect("live");
+                if face.contains(&v1) {
+                    next.faces[f] = None;
+                } else {
+                    for v in face.iter_mut().filter(|v| **v == v0) {
+                        *v = v1;
+                    }
+                }
+            }
+            next.positions[v0 as usize] = None;
+        }
+        Edit::SplitVertex(v1, vl, vr, p) => {
+            let (v1, vl, vr) = (*v1, *vl, *vr);
+            if [v1, vl, vr].iter().any(|&v| !model.live_vertex(v)) || vl == vr {
+                return None;
+            }
+            let ring = model.neighbours(v1);
+            if !ring.contains(&vl) || !ring.contains(&vr) || vl == v1 || vr == v1 {
+                return None;
+            }
+            // Walk from the face with v1 → vl to the one with vr → v1 (the fan that moves).
+            let (mut f, _) = model.face_with(v1, vl)?;
+            let mut moved = Vec::new();
+            loop {
+                if moved.contains(&f) {
+                    return None;
+                }
+                moved.push(f);
+                let face = model.faces[f].as_ref().expect("live");
+                let k = face.len();
+                let c = face.iter().position(|&v| v == v1).expect("around v1");
+                let before = face[(c + k - 1) % k];
+                if before == vr {
+                    break;
+                }
+                f = model.face_with(v1, before)?.0;
+            }
+            next.positions.push(Some(*p));
+            for f in moved {
+                for v in next.faces[f].as_mut().expect("live").iter_mut() {
+                    if *v == v1 {
+                        *v = n;
+                    }
+                }
+            }
+            next.faces.push(Some(vec![n, v1, vl]));
+            next.faces.push(Some(vec![v1, n, vr]));
+        }
+        Edit::Collect => next.collect(),
+    }
+    Some(next)
+}
+
+/// Applies `edit` to the structure.
+fn apply<M: MeshEdit>(m: &mut M, edit: &Edit) -> Result<(), Error> {
+    let missing = || Error::EditRefused {
+        structure: M::NAME,
+        op: crate::EditOp::FlipEdge,
+        reason: crate::Refusal::NotNeighbours,
+    };
+    match edit {
+        Edit::AddVertex(p) => m.add_vertex(*p).map(drop),
+        Edit::AddFace(vs) => {
+            let vs: Vec<VertexId> = vs.iter().map(|&v| VertexId(v)).collect();
+            m.add_face(&vs).map(drop)
+        }
+        Edit::DeleteFace(a, b) => m.delete_face(face_left(m, *a, *b).ok_or_else(missing)?),
+        Edit::DeleteMissingFace(f) => m.delete_face(FaceId(*f)),
+        Edit::DeleteVertex(v) => m.delete_vertex(VertexId(*v)),
+        Edit::Flip(a, b) => m.flip_edge(edge_between(m, *a, *b).ok_or_else(missing)?),
+        Edit::SplitEdge(a, b, p) => m
+            .split_edge(edge_between(m, *a, *b).ok_or_else(missing)?, *p)
+            .map(drop),
+        Edit::SplitFace(a, b, p) => m
+            .split_face(face_left(m, *a, *b).ok_or_else(missing)?, *p)
+            .map(drop),
+        Edit::Collapse(a, b) => m.collapse_edge(VertexId(*a), VertexId(*b)),
+        Edit::SplitVertex(v, l, r, p) => m
+            .split_vertex(VertexId(*v), *p, VertexId(*l), VertexId(*r))
+            .map(drop),
+        Edit::Collect => {
+            m.garbage_collection();
+            Ok(())
+        }
+    }
+}
+
+/// The structure's live faces, canonical and sorted.
+fn face_set<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
+    let mut out = Vec::new();
+    for f in 0..m.num_faces() {
+        let f = FaceId::new(f);
+        if m.is_deleted_face(f) {
+            continue;
+        }
+        let mut face = Vec::new();
+        m.face_vertices(f, |v| face.push(v.0));
+        out.push(canonical_face(&face));
+    }
+    out.sort();
+    out
+}
+
+/// Checks the structure against the model after an edit.
+fn agree<M: MeshEdit>(m: &M, model: &Model) -> Result<(), String> {
+    m.validate()
+        .map_err(|e| format!("validate() failed: {e}"))?;
+    if m.num_vertices() != model.positions.len() {
+        return Err(format!(
+            "{} vertex slots, the model has {}",
+            m.num_vertices(),
+            model.positions.len()
+        ));
+    }
+    for (v, p) in model.positions.iter().enumerate() {
+        let vid = VertexId::new(v);
+        match p {
+            None if !m.is_deleted_vertex(vid) => return Err(format!("v{v} should be deleted")),
+            Some(_) if m.is_deleted_vertex(vid) => return Err(format!("v{v} is deleted")),
+            Some(p) if m.position(vid) != *p => return Err(format!("v{v} moved")),
+            _ => {}
+        }
+    }
+    let (got, want) = (face_set(m), model.face_set());
+    if got != want {
+        return Err(format!("faces {got:?}, the model has {want:?}"));
+    }
+    let clean =
+        model.positions.iter().all(Option::is_some) && model.faces.iter().all(Option::is_some);
+    if clean {
+        compare(m, &to_soup(m))?;
+    }
+    Ok(())
+}
+
+/// The starting mesh of a seed: a canonical mesh or a random one, whichever `M` builds.
+pub fn start_mesh(seed: u64) -> PolygonSoup {
+    let canonical = meshes::canonical();
+    let pick = (seed % (canonical.len() as u64 + 4)) as usize;
+    if pick < canonical.len() {
+        canonical[pick].soup.clone()
+    } else {
+        meshes::random_mesh(
+            seed,
+            RandomMeshParams {
+                triangles_only: !seed.is_multiple_of(3),
+                max_side: 5,
+                keep: 0.9,
+            },
+        )
+    }
+}
+
+/// Runs `steps` random edits of `seed` on `M`; `Err` describes the first disagreement.
+/// Returns how many edits succeeded and how many were refused.
+pub fn run<M: MeshEdit>(seed: u64, steps: usize) -> Result<(usize, usize), String> {
+    let soup = start_mesh(seed);
+    let Ok(mut m) = M::from_soup(&soup) else {
+        return Ok((0, 0));
+    };
+    let mut model = Model::of(&soup);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
+    let (mut done, mut refused) = (0, 0);
+    for step in 0..steps {
+        let edit = draw(&mut rng, &model);
+        let expected = expect(&model, &edit);
+        let got = apply(&mut m, &edit);
+        match (expected, got) {
+            (Some(next), Ok(())) => {
+                model = next;
+                done += 1;
+            }
+            (None, Err(e)) if e.kind() == "edit-refused" => refused += 1,
+            (Some(_), Err(e)) => {
+                return Err(format!(
+                    "step {step}: {edit:?} refused: {e}; the model allows it"
+                ))
+            }
+            (None, Err(e)) => return Err(format!("step {step}: {edit:?} failed with {e}")),
+            (None, Ok(())) => {
+                return Err(format!("step {step}: {edit:?} done; the model refuses it"))
+            }
+        }
+        agree(&m, &model).map_err(|msg| format!("after step {step} ({edit:?}): {msg}"))?;
+    }
+    m.garbage_collection();
+    model.collect();
+    agree(&m, &model).map_err(|msg| format!("after the final collection: {msg}"))?;
+    Ok((done, refused))
+}
+
+/// Generates the editing tests of one structure: seeded random sequences of edits
+/// ([`run`]), each checked against the model and the oracle, as a proptest.
+///
+/// ```ignore
+/// topolab_structures::edit_conformance!(index_half_edge, topolab_structures::IndexHalfEdge);
+/// ```
+#[macro_export]
+macro_rules! edit_conformance {
+    ($module:ident, $ty:ty) => {
+        mod $module {
+            #[allow(unused_imports)]
+            use super::*;
+
+            $crate::testing::proptest::proptest! {
+                #![proptest_config($crate::testing::proptest::prelude::ProptestConfig::with_cases(64))]
+                #[test]
+                fn random_edit_sequences(seed in $crate::testing::proptest::prelude::any::<u64>()) {
+                    if let Err(msg) = $crate::testing::editing::run::<$ty>(seed, 40) {
+                        panic!("{} on edit seed {seed}: {msg}", <$ty as $crate::MeshTopology>::NAME);
+                    }
+                }
+            }
+
+            #[test]
+            fn most_edits_succeed_and_some_are_refused() {
+                let (mut done, mut refused) = (0, 0);
+                for seed in 0..40 {
+                    let (d, r) = $crate::testing::editing::run::<$ty>(seed, 40)
+                        .unwrap_or_else(|msg| panic!("seed {seed}: {msg}"));
+                    done += d;
+                    refused += r;
+                }
+                assert!(done > 400 && refused > 100, "{done} edits done, {refused} refused");
+            }
+        }
+    };
+}

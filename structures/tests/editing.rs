@@ -1,0 +1,5 @@
+//! The editing suite ([`topolab_structures::testing::editing`]) on every structure that
+//! implements `MeshEdit`: one line each.
+
+topolab_structures::edit_conformance!(index_half_edge, topolab_structures::IndexHalfEdge);
+topolab_structures::edit_conformance!(pointer_half_edge, topolab_structures::PointerHalfEdge);
