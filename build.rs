@@ -1,32 +1,124 @@
-//! Build script of the `topolab` package: finds OpenMesh (the C++ baseline), compiles the
-//! C API shim in `openmesh/` with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our
-//! release code), links it with `libOpenMeshCore`, and sets `cfg(has_openmesh)`.
+//! Build script of the `topolab` package: finds the C++ baselines, compiles their C API shims
+//! with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our release code), links them,
+//! and sets a cfg per baseline:
 //!
-//! Without OpenMesh (or with `TOPOLAB_NO_OPENMESH=1`, to simulate that) the package builds
-//! without the baseline and says how to get it.
+//! | baseline | shim | links | cfg | off switch |
+//! |---|---|---|---|---|
+//! | OpenMesh | `openmesh/shim.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
+//! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` | `TOPOLAB_NO_CGAL=1` |
+//!
+//! A missing baseline (or one switched off, to simulate that) is left out with a warning that
+//! says how to get it; the package builds without it.
+//!
+//! The translation units compile in parallel, as many at once as cargo's job count: CGAL's
+//! are heavy (the hull's alone takes most of 20 s and 0.9 GB), and one at a time they would
+//! take the sum of all.
 
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 /// How a user gets OpenMesh; printed wherever it is missing.
-const HOW_TO_GET: &str = "install it with `apt-get install libopenmesh-dev` (Debian/Ubuntu) \
+const OPENMESH_HOW_TO_GET: &str = "install it with `apt-get install libopenmesh-dev` \
+(Debian/Ubuntu) or `bash .ci/install-deps`, then rebuild";
+/// How a user gets CGAL.
+const CGAL_HOW_TO_GET: &str = "install it with `apt-get install libcgal-dev` (Debian/Ubuntu) \
 or `bash .ci/install-deps`, then rebuild";
+
+/// The translation units of CGAL's shim, the slowest first (so the pool starts it first).
+const CGAL_UNITS: [&str; 4] = [
+    "cgal/hull.cpp",
+    "cgal/surface_mesh.cpp",
+    "cgal/polyhedron.cpp",
+    "cgal/shim.cpp",
+];
+
+/// One shim library: its compiler settings, sources, and what linking it needs.
+struct Shim {
+    /// The static library's name.
+    library: &'static str,
+    /// Compiler settings shared by its sources.
+    build: cc::Build,
+    sources: Vec<&'static str>,
+    /// Libraries to link (`cargo::rustc-link-lib=dylib=...`).
+    links: Vec<&'static str>,
+    /// The cfg it sets.
+    cfg: &'static str,
+}
 
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_openmesh)");
+    println!("cargo::rustc-check-cfg=cfg(has_cgal)");
     println!("cargo::rerun-if-changed=build.rs");
-    println!("cargo::rerun-if-changed=openmesh/shim.cpp");
-    println!("cargo::rerun-if-changed=openmesh/shim.h");
-    println!("cargo::rerun-if-env-changed=TOPOLAB_NO_OPENMESH");
-    if std::env::var_os("TOPOLAB_NO_OPENMESH").is_some_and(|v| !v.is_empty() && v != "0") {
+    println!("cargo::rerun-if-changed=openmesh");
+    println!("cargo::rerun-if-changed=cgal");
+    let mut shims = Vec::new();
+    if switched_off("TOPOLAB_NO_OPENMESH", "the OpenMesh baseline") {
+    } else if let Some(include_dirs) = find_openmesh() {
+        shims.push(openmesh_shim(&include_dirs));
+    } else {
+        println!("cargo::warning=OpenMesh not found, building without the OpenMesh baseline: {OPENMESH_HOW_TO_GET}");
+    }
+    if switched_off("TOPOLAB_NO_CGAL", "the CGAL baselines") {
+    } else if let Some(include_dir) = find_cgal() {
+        shims.push(cgal_shim(&include_dir));
+    } else {
         println!(
-            "cargo::warning=TOPOLAB_NO_OPENMESH is set: building without the OpenMesh baseline"
+            "cargo::warning=CGAL not found, building without the CGAL baselines: {CGAL_HOW_TO_GET}"
         );
-        return;
     }
-    match find_openmesh() {
-        Some(include_dirs) => compile_shim(&include_dirs),
-        None => println!("cargo::warning=OpenMesh not found, building without the OpenMesh baseline: {HOW_TO_GET}"),
+    let objects = compile_in_parallel(&shims);
+    for (shim, objects) in shims.iter().zip(objects) {
+        cc::Build::new()
+            .cpp(true)
+            .objects(objects)
+            .compile(shim.library);
+        for link in &shim.links {
+            println!("cargo::rustc-link-lib=dylib={link}");
+        }
+        println!("cargo::rustc-cfg={}", shim.cfg);
     }
+}
+
+/// `true` (with a warning) when `variable` is set to switch `what` off.
+fn switched_off(variable: &str, what: &str) -> bool {
+    println!("cargo::rerun-if-env-changed={variable}");
+    let off = std::env::var_os(variable).is_some_and(|v| !v.is_empty() && v != "0");
+    if off {
+        println!("cargo::warning={variable} is set: building without {what}");
+    }
+    off
+}
+
+/// Compiles every source of every shim, each in its own compiler process, at most cargo's job
+/// count at a time; returns the object files per shim, in `shims` order. Panics (failing the
+/// build with the compiler's message) when a source does not compile.
+fn compile_in_parallel(shims: &[Shim]) -> Vec<Vec<PathBuf>> {
+    let queue: Mutex<Vec<(usize, &'static str)>> = Mutex::new(
+        shims
+            .iter()
+            .enumerate()
+            .flat_map(|(i, s)| s.sources.iter().map(move |&f| (i, f)))
+            .rev()
+            .collect(),
+    );
+    let results: Mutex<Vec<Vec<PathBuf>>> = Mutex::new(vec![Vec::new(); shims.len()]);
+    let jobs = std::env::var("NUM_JOBS")
+        .ok()
+        .and_then(|n| n.parse::<usize>().ok())
+        .unwrap_or(1)
+        .max(1);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            scope.spawn(|| loop {
+                let Some((i, source)) = queue.lock().expect("queue").pop() else {
+                    return;
+                };
+                let objects = shims[i].build.clone().file(source).compile_intermediates();
+                results.lock().expect("results")[i].extend(objects);
+            });
+        }
+    });
+    results.into_inner().expect("results")
 }
 
 /// The include directories of OpenMesh when its headers and `libOpenMeshCore` are installed:
@@ -49,7 +141,7 @@ fn find_openmesh() -> Option<Vec<PathBuf>> {
         }
     }
     let system = Path::new("/usr/include");
-    println!("cargo::rerun-if-changed={}", system.join(header).display());
+    watch_for(&[system.to_path_buf()], header);
     let library = [
         "/usr/lib/x86_64-linux-gnu",
         "/usr/lib64",
@@ -65,11 +157,10 @@ fn find_openmesh() -> Option<Vec<PathBuf>> {
     Some(Vec::new())
 }
 
-fn compile_shim(include_dirs: &[PathBuf]) {
+fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
     let mut build = cc::Build::new();
     build
         .cpp(true)
-        .file("openmesh/shim.cpp")
         .include("openmesh")
         .includes(include_dirs)
         .std("c++17")
@@ -78,7 +169,61 @@ fn compile_shim(include_dirs: &[PathBuf]) {
         // One known warning inside OpenMesh's Property.hh, not in our code.
         .flag_if_supported("-Wno-maybe-uninitialized")
         .warnings(true);
-    build.compile("topolab_openmesh_shim");
-    println!("cargo::rustc-link-lib=dylib=OpenMeshCore");
-    println!("cargo::rustc-cfg=has_openmesh");
+    Shim {
+        library: "topolab_openmesh_shim",
+        build,
+        sources: vec!["openmesh/shim.cpp"],
+        links: vec!["OpenMeshCore"],
+        cfg: "has_openmesh",
+    }
+}
+
+/// The include directory holding `CGAL/Surface_mesh.h` (CGAL 5 is header-only; it has no
+/// pkg-config file): `CGAL_INCLUDE_DIR` if set, else the usual system directories. Its
+/// dependencies (Boost, GMP) come with Debian's libcgal-dev.
+fn find_cgal() -> Option<PathBuf> {
+    println!("cargo::rerun-if-env-changed=CGAL_INCLUDE_DIR");
+    let header = "CGAL/Surface_mesh.h";
+    let candidates: Vec<PathBuf> = match std::env::var_os("CGAL_INCLUDE_DIR") {
+        Some(dir) => vec![PathBuf::from(dir)],
+        None => vec!["/usr/include".into(), "/usr/local/include".into()],
+    };
+    watch_for(&candidates, header);
+    candidates.into_iter().find(|d| d.join(header).exists())
+}
+
+/// Has cargo rerun this script when `header` appears in (or changes in) one of `dirs`: the
+/// header itself where it exists, else each directory that exists (installing the library
+/// changes it). Never a path that does not exist: cargo would rerun the script, and recompile
+/// every shim, on every build.
+fn watch_for(dirs: &[PathBuf], header: &str) {
+    match dirs.iter().map(|d| d.join(header)).find(|h| h.exists()) {
+        Some(found) => println!("cargo::rerun-if-changed={}", found.display()),
+        None => {
+            for dir in dirs.iter().filter(|d| d.is_dir()) {
+                println!("cargo::rerun-if-changed={}", dir.display());
+            }
+        }
+    }
+}
+
+fn cgal_shim(include_dir: &Path) -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .cpp(true)
+        .include("cgal")
+        .include(include_dir)
+        .std("c++17")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .warnings(true);
+    Shim {
+        library: "topolab_cgal_shim",
+        build,
+        sources: CGAL_UNITS.to_vec(),
+        // The hull's Exact_predicates_inexact_constructions_kernel falls back to GMP's exact
+        // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
+        links: vec!["gmp"],
+        cfg: "has_cgal",
+    }
 }

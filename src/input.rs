@@ -158,10 +158,11 @@ pub fn mesh_or_tetrahedron(
     })
 }
 
-/// The failure for a structure name that is not in this build (OpenMesh says how to get it).
+/// The failure for a structure name that is not in this build (a C++ baseline left out says
+/// how to get it).
 pub fn unknown_structure(name: &str) -> Failure {
-    if name == registry::OPENMESH {
-        return Failure::usage(format!("{name}: {}", crate::OPENMESH_MISSING));
+    if let Some(why) = registry::missing_baseline(name) {
+        return Failure::usage(format!("{name}: {why}"));
     }
     Failure::usage(format!(
         "unknown structure {name:?}; known: {}",

@@ -1,13 +1,13 @@
 //! # topolab
 //!
 //! The lab's command-line tool and everything that ties the crates together: the registry of
-//! every structure (the ones of `topolab-structures` plus the OpenMesh baseline, when compiled
-//! in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
+//! every structure (the ones of `topolab-structures` plus the C++ baselines OpenMesh and CGAL,
+//! when compiled in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
 //! with the helpers of [`input`], [`limits`] and [`output`]); [`extend`] runs the report with
 //! structures of other crates added.
 #![deny(missing_docs)]
-// Only the OpenMesh FFI module and the allocator may use `unsafe` (each allows it for itself
-// alone).
+// Only the FFI modules of the C++ baselines and the allocator may use `unsafe` (each allows it
+// for itself alone).
 #![deny(unsafe_code)]
 
 pub mod cli;
@@ -24,6 +24,12 @@ pub mod alloc;
 /// a structure's heap (see [`alloc`]).
 #[global_allocator]
 pub static ALLOCATOR: alloc::CountingAllocator = alloc::CountingAllocator;
+#[cfg(has_cgal)]
+#[allow(unsafe_code)]
+pub mod cgal;
+#[cfg(any(has_openmesh, has_cgal))]
+#[allow(unsafe_code)]
+mod foreign;
 #[cfg(has_openmesh)]
 #[allow(unsafe_code)]
 pub mod openmesh;
@@ -37,3 +43,12 @@ TOPOLAB_NO_OPENMESH, and rebuild";
 
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
+
+/// What to do when the CGAL baselines are not compiled in (CGAL was missing at build time, or
+/// `TOPOLAB_NO_CGAL=1` was set).
+pub const CGAL_MISSING: &str = "the CGAL baselines (cgal-surface-mesh, cgal-polyhedron, \
+convex_hull_3) are not compiled in: install CGAL (`apt-get install libcgal-dev` on \
+Debian/Ubuntu, or `bash .ci/install-deps`), unset TOPOLAB_NO_CGAL, and rebuild";
+
+/// `true` when this build includes the CGAL baselines.
+pub const HAS_CGAL: bool = cfg!(has_cgal);

@@ -19,7 +19,7 @@
 //! bytes per corner of the structure being built (per point of the hull), as this build
 //! allocates them; fixed costs of the sample make it err on the large side for small
 //! requests, which are not checked at all (no larger than the sample). A structure that
-//! allocates outside Rust (the OpenMesh baseline, in C++) adds the heap it declares.
+//! allocates outside Rust (the C++ baselines, OpenMesh and CGAL) adds the heap it declares.
 //! Decimation, when it exists, goes through the same checks.
 
 use crate::input::Failure;
@@ -170,9 +170,10 @@ impl StructureVisitor for Declared<'_> {
 }
 
 /// The heap `structure` allocates on `soup` outside Rust, which the counting allocator does
-/// not see: the OpenMesh baseline's C++ heap, as it declares it; 0 for every other structure.
+/// not see: a C++ baseline's heap (OpenMesh's, CGAL's), as it declares it; 0 for every other
+/// structure.
 pub fn outside_rust(structure: &str, soup: &PolygonSoup) -> u64 {
-    if structure != registry::OPENMESH {
+    if !registry::CPP_BASELINES.contains(&structure) {
         return 0;
     }
     registry::visit(structure, Declared(soup)).unwrap_or(0)
@@ -185,7 +186,7 @@ impl StructureVisitor for TwoBuilds<'_> {
     type Output = u64;
     fn visit<M: MeshTopology>(self) -> u64 {
         let (a, b) = (M::from_soup(self.0), M::from_soup(self.0));
-        if M::NAME != registry::OPENMESH {
+        if !registry::CPP_BASELINES.contains(&M::NAME) {
             return 0;
         }
         [a, b].iter().flatten().map(|m| m.heap_bytes() as u64).sum()

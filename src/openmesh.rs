@@ -3,9 +3,10 @@
 //! [OpenMesh](https://www.graphics.rwth-aachen.de/software/openmesh/) is the halfedge library
 //! graphics engineers compare against. [`OpenMesh`] wraps a `TriMesh_ArrayKernelT` (triangle
 //! input) or `PolyMesh_ArrayKernelT` (polygon input) with double-precision points, built and
-//! queried through the C API of `openmesh/shim.h`. This module holds the `unsafe` code of the
-//! FFI (the lab's only other `unsafe` module is the pointer half-edge's `links`, where real
-//! pointers are the point); everything it exports is safe.
+//! queried through the C API of `openmesh/shim.h`. This module holds the `unsafe` calls of its
+//! FFI (the callbacks from C++ are in the `foreign` module it shares with the `cgal` module; the
+//! lab's only other `unsafe` module is the pointer half-edge's `links`, where real pointers
+//! are the point); everything it exports is safe.
 //!
 //! The C API is a wall: every function is `noexcept`, catches every C++ exception and returns
 //! a status code, which becomes [`Error::Foreign`] here (a failed build, sweep, sampled kernel
@@ -45,7 +46,7 @@
 //! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
 //! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
 //! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
-//! `workload_code`).
+//! `workload_code`, shared with the CGAL shim).
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
@@ -54,15 +55,13 @@
 //! [`Error::NonManifoldVertex`] (OpenMesh's `add_face` refuses it too, "complex vertex"), a
 //! case [`Capabilities::non_manifold_vertices`] cannot express.
 
-use std::any::Any;
-use std::ffi::c_void;
+use crate::foreign::{self, check_open_fans, operator_code, refusal, workload_code};
 use std::fmt::Write;
-use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::ptr::NonNull;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Connectivity, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
-    NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
+    BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Input, MeshTopology, NativeKernels,
+    Operator, PolygonSoup, Result, VertexId, Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -78,16 +77,10 @@ mod ffi {
         _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
     }
 
-    pub type Emit = unsafe extern "C" fn(context: *mut c_void, index: u32);
-    pub type EndCurve = unsafe extern "C" fn(context: *mut c_void);
+    use crate::foreign::{Emit, EndCurve};
 
-    // Every function returns a status (`OK` or a failure below) and writes its results
-    // through out-pointers; all are `noexcept` in C++ and catch every exception.
-    pub const OK: i32 = 0;
-    pub const REFUSED: i32 = 1;
-    pub const OUT_OF_MEMORY: i32 = 2;
-    pub const EXCEPTION: i32 = 3;
-    pub const UNKNOWN_CODE: i32 = 4;
+    // Every function returns a status (`crate::foreign::OK` or a failure) and writes its
+    // results through out-pointers; all are `noexcept` in C++ and catch every exception.
 
     extern "C" {
         pub fn topolab_om_build(
@@ -153,62 +146,12 @@ mod ffi {
 
 /// The lab's error for a failure status of shim function `call`.
 fn status(call: &'static str, code: i32) -> Result<()> {
-    let reason = match code {
-        ffi::OK => return Ok(()),
-        ffi::OUT_OF_MEMORY => "out of memory",
-        ffi::EXCEPTION => "a C++ exception",
-        ffi::UNKNOWN_CODE => "an operator or workload code the shim does not know",
-        ffi::REFUSED => "add_face refused a face",
-        _ => "an unknown status",
-    };
-    Err(Error::Foreign {
-        library: "OpenMesh",
-        call,
-        reason,
-    })
+    foreign::status("OpenMesh", call, code)
 }
 
-/// For the trait's infallible queries (they cannot return an error): the shim's reads of
-/// OpenMesh's arrays allocate nothing and throw nothing, so a failure here is a broken
-/// invariant of the shim, reported like Rust's own out-of-memory (which aborts).
+/// For the trait's infallible queries (see [`foreign::infallible`]).
 fn infallible(call: &'static str, code: i32) {
-    if let Err(e) = status(call, code) {
-        panic!("{e} (a query that cannot fail did)");
-    }
-}
-
-// Positions go to C++ as 3 doubles per vertex, without a copy.
-const _: () = assert!(std::mem::size_of::<glam::DVec3>() == 24);
-
-/// The shim's code of operator `op`: its "Operator codes" table in `openmesh/shim.h` (a test
-/// reads that table and checks this match against it).
-const fn operator_code(op: Operator) -> i32 {
-    match op {
-        Operator::R00 => 0,
-        Operator::R01 => 1,
-        Operator::R02 => 2,
-        Operator::R10 => 3,
-        Operator::R11 => 4,
-        Operator::R12 => 5,
-        Operator::R20 => 6,
-        Operator::R21 => 7,
-        Operator::R22 => 8,
-        Operator::BoundaryVertex => 9,
-        Operator::BoundaryEdge => 10,
-        Operator::BoundaryCurves => 11,
-        Operator::EdgeSuccessor => 12,
-        Operator::EdgePredecessor => 13,
-    }
-}
-
-/// The shim's code of workload `w`: its "Workload codes" table in `openmesh/shim.h`.
-const fn workload_code(w: Workload) -> i32 {
-    match w {
-        Workload::Circulators => 0,
-        Workload::Barycenter => 1,
-        Workload::Normals => 2,
-        Workload::Smoothing => 3,
-    }
+    foreign::infallible("OpenMesh", call, code)
 }
 
 /// An OpenMesh mesh (TriMesh for triangle input, PolyMesh otherwise); see the module docs.
@@ -241,54 +184,6 @@ impl std::fmt::Debug for OpenMesh {
     }
 }
 
-/// A Rust closure called from C++, with a panic caught and carried back across the FFI
-/// (unwinding through C++ frames is not allowed).
-struct Callback<F> {
-    f: F,
-    panic: Option<Box<dyn Any + Send>>,
-}
-
-impl<F> Callback<F> {
-    fn new(f: F) -> Self {
-        Self { f, panic: None }
-    }
-
-    fn run(&mut self, call: impl FnOnce(&mut F)) {
-        if self.panic.is_some() {
-            return;
-        }
-        if let Err(payload) = catch_unwind(AssertUnwindSafe(|| call(&mut self.f))) {
-            self.panic = Some(payload);
-        }
-    }
-
-    /// Re-raises a panic of the closure, now that C++ has returned.
-    fn finish(self) {
-        if let Some(payload) = self.panic {
-            resume_unwind(payload);
-        }
-    }
-}
-
-unsafe extern "C" fn emit_index<F: FnMut(u32)>(context: *mut c_void, index: u32) {
-    // SAFETY: `context` is the `&mut Callback<F>` that `OpenMesh::query` passed along with
-    // this very instantiation, alive and not otherwise borrowed for the C++ call.
-    let callback = unsafe { &mut *context.cast::<Callback<F>>() };
-    callback.run(|f| f(index));
-}
-
-unsafe extern "C" fn push_curve_edge(context: *mut c_void, index: u32) {
-    // SAFETY: `context` is the `&mut Callback<&mut BoundaryCurves>` of `boundary_curves`.
-    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
-    callback.run(|out| out.edges.push(EdgeId(index)));
-}
-
-unsafe extern "C" fn end_curve(context: *mut c_void) {
-    // SAFETY: as in `push_curve_edge`.
-    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
-    callback.run(|out| out.end_curve());
-}
-
 impl OpenMesh {
     /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
     /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
@@ -319,12 +214,12 @@ impl OpenMesh {
                 &mut failed_face,
             )
         };
-        if code == ffi::REFUSED {
-            return Err(refusal(soup, failed_face as usize));
+        if code == foreign::REFUSED {
+            return Err(refusal(soup, failed_face as usize, "OpenMesh's add_face"));
         }
         status("topolab_om_build", code)?;
         let Some(raw) = NonNull::new(raw) else {
-            return status("topolab_om_build", ffi::EXCEPTION).map(|_| unreachable!());
+            return status("topolab_om_build", foreign::EXCEPTION).map(|_| unreachable!());
         };
         // Owned from here on: dropped (freed) if the summary below fails.
         let mut mesh = Self {
@@ -455,24 +350,14 @@ impl OpenMesh {
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.
     fn query(&self, op: Operator, id: u32, f: impl FnMut(u32)) {
-        fn run<F: FnMut(u32)>(raw: *const ffi::RawMesh, op: Operator, id: u32, f: F) {
-            let mut callback = Callback::new(f);
+        let raw = self.raw.as_ptr();
+        let code = foreign::with_emit(f, |emit, context| {
             // SAFETY: `raw` is live; the caller checked `id` against the element count of
-            // `op`'s input; the context is `&mut callback`, matching `emit_index::<F>`, and
-            // outlives the call (C++ does not keep it).
-            let code = unsafe {
-                ffi::topolab_om_query(
-                    raw,
-                    operator_code(op),
-                    id,
-                    emit_index::<F>,
-                    (&mut callback as *mut Callback<F>).cast(),
-                )
-            };
-            callback.finish();
-            infallible("topolab_om_query", code);
-        }
-        run(self.raw.as_ptr(), op, id, f);
+            // `op`'s input; `emit` and `context` come from `with_emit`, which keeps the
+            // context alive for the call (C++ does not keep it).
+            unsafe { ffi::topolab_om_query(raw, operator_code(op), id, emit, context) }
+        });
+        infallible("topolab_om_query", code);
     }
 
     fn vertex(&self, v: VertexId) -> u32 {
@@ -516,7 +401,23 @@ impl OpenMesh {
         infallible("topolab_om_edge_neighbour", code);
         u32::try_from(answer).ok().map(EdgeId)
     }
+}
 
+impl foreign::HalfedgeRecords for OpenMesh {
+    fn counts(&self) -> [u32; 3] {
+        [self.vertices, self.edges, self.faces]
+    }
+    fn record_position(&self, v: u32) -> glam::DVec3 {
+        self.position(VertexId(v))
+    }
+    fn vertex_halfedge(&self, v: u32) -> u32 {
+        let mut h = u32::MAX;
+        // SAFETY: `raw` is live, `v` < vertices (callers iterate that range), `h` is a valid
+        // out-pointer.
+        let code = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
+        infallible("topolab_om_vertex_halfedge", code);
+        h
+    }
     /// The halfedge record `h` as OpenMesh stores it: (to vertex, next, prev, face).
     fn halfedge(&self, h: u32) -> [u32; 4] {
         let mut out = [0u32; 4];
@@ -525,55 +426,13 @@ impl OpenMesh {
         infallible("topolab_om_halfedge", code);
         out
     }
-}
-
-/// The lab's error for face `face` that OpenMesh's `add_face` refused ("complex edge" or
-/// "complex vertex"): the soup's own edge analysis names the problem the way every other
-/// structure does; failing that, the non-manifold vertex of that face.
-fn refusal(soup: &PolygonSoup, face: usize) -> Error {
-    let connectivity = match soup.connectivity() {
-        Ok(c) => c,
-        Err(e) => return e,
-    };
-    let fans = connectivity.vertex_fans(soup);
-    match soup.face(face).iter().find(|&&v| fans[v as usize] > 1) {
-        Some(&vertex) => Error::NonManifoldVertex {
-            vertex,
-            fans: fans[vertex as usize] as usize,
-        },
-        None => Error::Unsupported(format!(
-            "OpenMesh's add_face refused face {face} {:?} of a manifold soup",
-            soup.face(face)
-        )),
-    }
-}
-
-/// OpenMesh stores a vertex with several fans by linking the fans' boundary halfedges, so
-/// every fan must be open: a closed fan plus another one at the same vertex (two cones tip to
-/// tip, one closed) is refused by `add_face` ("complex vertex"). Refusing it here, before
-/// OpenMesh, makes the answer independent of the face order.
-fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
-    let fans = connectivity.vertex_fans(soup);
-    if fans.iter().all(|&n| n <= 1) {
-        return Ok(());
-    }
-    // Each open fan has two boundary edges at its vertex (one in, one out).
-    let mut boundary_sides = vec![0u32; soup.num_vertices()];
-    for (face, corners) in soup.faces().enumerate() {
-        let start = soup.face_start(face);
-        for (i, &v) in corners.iter().enumerate() {
-            if connectivity.twin_corner(start + i).is_none() {
-                boundary_sides[v as usize] += 1;
-                boundary_sides[corners[(i + 1) % corners.len()] as usize] += 1;
-            }
-        }
-    }
-    match (0..fans.len()).find(|&v| fans[v] > 1 && boundary_sides[v] < 2 * fans[v]) {
-        Some(v) => Err(Error::NonManifoldVertex {
-            vertex: v as u32,
-            fans: fans[v] as usize,
-        }),
-        None => Ok(()),
+    fn face_halfedge(&self, f: u32) -> u32 {
+        let mut h = u32::MAX;
+        // SAFETY: `raw` is live, `f` < faces (callers iterate that range), `h` is a valid
+        // out-pointer.
+        let code = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f, &mut h) };
+        infallible("topolab_om_face_halfedge", code);
+        h
     }
 }
 
@@ -682,19 +541,12 @@ impl MeshTopology for OpenMesh {
         out != 0
     }
     fn boundary_curves(&self, out: &mut BoundaryCurves) {
-        out.clear();
-        let mut callback = Callback::new(out);
-        // SAFETY: `raw` is live; the context is `&mut Callback<&mut BoundaryCurves>`, what
-        // `push_curve_edge` and `end_curve` expect, alive for the whole call.
-        let code = unsafe {
-            ffi::topolab_om_boundary_curves(
-                self.raw.as_ptr(),
-                push_curve_edge,
-                end_curve,
-                (&mut callback as *mut Callback<&mut BoundaryCurves>).cast(),
-            )
-        };
-        callback.finish();
+        let raw = self.raw.as_ptr();
+        let code = foreign::with_curves(out, |emit, end_curve, context| {
+            // SAFETY: `raw` is live; the callbacks and context come from `with_curves`, alive
+            // for the whole call.
+            unsafe { ffi::topolab_om_boundary_curves(raw, emit, end_curve, context) }
+        });
         // Its visited flags are the one allocation of a query in the shim: out of memory
         // there is reported like Rust's own.
         infallible("topolab_om_boundary_curves", code);
@@ -737,60 +589,10 @@ impl MeshTopology for OpenMesh {
         } else {
             "PolyMesh_ArrayKernelT"
         };
-        writeln!(
-            w,
+        let title = format!(
             "OpenMesh {kernel} (C++ halfedge structure): halfedge h's opposite is h ^ 1, its edge h / 2"
-        )?;
-        let show = |x: u32, prefix: &str| {
-            if x == u32::MAX {
-                "-".to_string()
-            } else {
-                format!("{prefix}{x}")
-            }
-        };
-        writeln!(
-            w,
-            "vertices: {} (position, outgoing halfedge)",
-            self.vertices
-        )?;
-        for v in 0..self.vertices {
-            let p = self.position(VertexId(v));
-            let mut h = u32::MAX;
-            // SAFETY: `raw` is live, `v` < vertices, `h` is a valid out-pointer.
-            let code = unsafe { ffi::topolab_om_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
-            infallible("topolab_om_vertex_halfedge", code);
-            writeln!(
-                w,
-                "  v{v}: ({:.3}, {:.3}, {:.3})  out {}",
-                p.x,
-                p.y,
-                p.z,
-                show(h, "h")
-            )?;
-        }
-        writeln!(
-            w,
-            "halfedges: {} (to vertex, next, prev, face)",
-            2 * self.edges
-        )?;
-        for h in 0..2 * self.edges {
-            let [to, next, prev, face] = self.halfedge(h);
-            writeln!(
-                w,
-                "  h{h} (edge e{}): to v{to}, next h{next}, prev h{prev}, face {}",
-                h / 2,
-                show(face, "f")
-            )?;
-        }
-        writeln!(w, "faces: {} (one halfedge)", self.faces)?;
-        for f in 0..self.faces {
-            let mut h = u32::MAX;
-            // SAFETY: `raw` is live, `f` < faces, `h` is a valid out-pointer.
-            let code = unsafe { ffi::topolab_om_face_halfedge(self.raw.as_ptr(), f, &mut h) };
-            infallible("topolab_om_face_halfedge", code);
-            writeln!(w, "  f{f}: h{h}")?;
-        }
-        Ok(())
+        );
+        foreign::explain_halfedges(w, self, &title, ("outgoing", "out"))
     }
 
     fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
@@ -821,42 +623,5 @@ impl NativeKernels<OpenMesh> for Kernels {
 
     fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Option<Result<f64>> {
         Some(mesh.native_workload(workload))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The (code, name) pairs of the table titled `title` in `openmesh/shim.h`'s header
-    /// comment: the indented lines after the title.
-    fn shim_table(title: &str) -> Vec<(i32, String)> {
-        let header = include_str!("../openmesh/shim.h");
-        let mut lines = header.lines().skip_while(|l| !l.contains(title)).skip(1);
-        let mut pairs = Vec::new();
-        while let Some(entries) = lines.next().and_then(|l| l.strip_prefix(" *   ")) {
-            let tokens: Vec<&str> = entries.split_whitespace().collect();
-            for pair in tokens.chunks(2) {
-                let code = pair[0].parse().expect("a code, then a name");
-                pairs.push((code, pair[1].to_string()));
-            }
-        }
-        pairs
-    }
-
-    #[test]
-    fn codes_are_the_tables_of_the_shim_header() {
-        let ops = shim_table("Operator codes");
-        assert_eq!(ops.len(), Operator::ALL.len(), "{ops:?}");
-        for (code, name) in &ops {
-            let op = Operator::from_name(name).expect("an operator name");
-            assert_eq!(operator_code(op), *code, "{name}");
-        }
-        let workloads = shim_table("Workload codes");
-        assert_eq!(workloads.len(), Workload::ALL.len(), "{workloads:?}");
-        for (code, name) in &workloads {
-            let w = Workload::from_name(name).expect("a workload name");
-            assert_eq!(workload_code(w), *code, "{name}");
-        }
     }
 }

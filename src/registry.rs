@@ -1,41 +1,115 @@
-//! Every structure of the lab by name: those of [`topolab_structures::registry`] plus the
-//! OpenMesh baseline ([`crate::openmesh::OpenMesh`], name `openmesh`) when it is compiled in.
-//! The CLI goes through this registry, so `topolab list` and `topolab info --structure
-//! openmesh` include it.
+//! Every structure of the lab by name: those of [`topolab_structures::registry`] plus the C++
+//! baselines when they are compiled in: OpenMesh ([`crate::openmesh::OpenMesh`], name
+//! `openmesh`) and CGAL's two halfedge structures ([`crate::cgal::SurfaceMesh`],
+//! `cgal-surface-mesh`; [`crate::cgal::Polyhedron`], `cgal-polyhedron`). The CLI and the
+//! report go through this registry, so `topolab list`, `topolab info --structure NAME` and
+//! every table of the report include them.
 
 use topolab_structures::registry as structures;
 pub use topolab_structures::registry::StructureVisitor;
 
 /// The name of the OpenMesh baseline (whether or not this build includes it).
 pub const OPENMESH: &str = "openmesh";
+/// The name of CGAL's `Surface_mesh` baseline (whether or not this build includes it).
+pub const CGAL_SURFACE_MESH: &str = "cgal-surface-mesh";
+/// The name of CGAL's `Polyhedron_3` baseline (whether or not this build includes it).
+pub const CGAL_POLYHEDRON: &str = "cgal-polyhedron";
 
-/// The structures this package adds to `topolab_structures`'s.
-const EXTRA: &[&str] = if cfg!(has_openmesh) { &[OPENMESH] } else { &[] };
+const OPENMESH_NAMES: &[&str] = if cfg!(has_openmesh) { &[OPENMESH] } else { &[] };
+const CGAL_NAMES: &[&str] = if cfg!(has_cgal) {
+    &[CGAL_SURFACE_MESH, CGAL_POLYHEDRON]
+} else {
+    &[]
+};
 
 /// Names of every structure, in report order: the crate's, then the baselines.
-pub const NAMES: &[&str] = &concat::<{ structures::NAMES.len() + EXTRA.len() }>();
+pub const NAMES: &[&str] = &concat::<
+    { structures::NAMES.len() + OPENMESH_NAMES.len() + CGAL_NAMES.len() },
+>([structures::NAMES, OPENMESH_NAMES, CGAL_NAMES]);
 
-const fn concat<const N: usize>() -> [&'static str; N] {
+const fn concat<const N: usize>(parts: [&[&'static str]; 3]) -> [&'static str; N] {
     let mut out = [""; N];
-    let mut i = 0;
-    while i < structures::NAMES.len() {
-        out[i] = structures::NAMES[i];
-        i += 1;
-    }
-    while i < N {
-        out[i] = EXTRA[i - structures::NAMES.len()];
-        i += 1;
+    let (mut i, mut part) = (0, 0);
+    while part < parts.len() {
+        let mut j = 0;
+        while j < parts[part].len() {
+            out[i] = parts[part][j];
+            i += 1;
+            j += 1;
+        }
+        part += 1;
     }
     out
 }
 
+/// The C++ baselines, whose heap the counting allocator does not see (they measure their own,
+/// by `mallinfo2`), whether or not this build includes them.
+pub const CPP_BASELINES: [&str; 3] = [OPENMESH, CGAL_SURFACE_MESH, CGAL_POLYHEDRON];
+
 /// Runs `visitor` with the structure called `name`; `None` if there is none in this build.
 pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
     #[cfg(has_openmesh)]
-    if name == <crate::openmesh::OpenMesh as topolab_structures::MeshTopology>::NAME {
+    if name == OPENMESH {
         return Some(visitor.visit::<crate::openmesh::OpenMesh>());
     }
+    #[cfg(has_cgal)]
+    if name == CGAL_SURFACE_MESH {
+        return Some(visitor.visit::<crate::cgal::SurfaceMesh>());
+    }
+    #[cfg(has_cgal)]
+    if name == CGAL_POLYHEDRON {
+        return Some(visitor.visit::<crate::cgal::Polyhedron>());
+    }
     structures::visit(name, visitor)
+}
+
+/// Why a baseline named `name` is not in this build (what to install), or `None` when `name`
+/// is not one of the baselines this build left out.
+pub fn missing_baseline(name: &str) -> Option<&'static str> {
+    if name == OPENMESH && !crate::HAS_OPENMESH {
+        Some(crate::OPENMESH_MISSING)
+    } else if (name == CGAL_SURFACE_MESH || name == CGAL_POLYHEDRON) && !crate::HAS_CGAL {
+        Some(crate::CGAL_MISSING)
+    } else {
+        None
+    }
+}
+
+/// The C++ baselines this build left out, each with why (what to install), in
+/// [`CPP_BASELINES`] order.
+pub fn absent_baselines() -> Vec<(&'static str, &'static str)> {
+    CPP_BASELINES
+        .into_iter()
+        .filter_map(|name| missing_baseline(name).map(|why| (name, why)))
+        .collect()
+}
+
+/// Adds to the report's `notes` which baselines this build left out and why, one note per
+/// reason (CGAL's two structures and its hull share one).
+pub fn note_absent(notes: &mut Vec<String>) {
+    let absent = absent_baselines();
+    let mut reasons: Vec<&str> = absent.iter().map(|&(_, why)| why).collect();
+    reasons.dedup();
+    for why in reasons {
+        let names: Vec<&str> = absent
+            .iter()
+            .filter(|&&(_, w)| w == why)
+            .map(|&(name, _)| name)
+            .collect();
+        notes.push(format!("No {} column: {why}.", names.join(" and ")));
+    }
+}
+
+/// Adds the hulls of the outside libraries compiled in (CGAL's `convex_hull_3`) to the
+/// report's hull benchmark `rows` (`cgal::hull::add_to_benchmark`); without
+/// them, nothing ([`note_absent`] says why).
+pub fn add_outside_hulls(
+    rows: &mut Vec<topolab_harness::hull::bench::HullRow>,
+) -> Result<(), String> {
+    #[cfg(has_cgal)]
+    crate::cgal::hull::add_to_benchmark(rows)?;
+    let _ = rows;
+    Ok(())
 }
 
 #[cfg(test)]
@@ -46,5 +120,55 @@ mod tests {
     fn names_extend_the_crate_registry() {
         assert_eq!(&NAMES[..structures::NAMES.len()], structures::NAMES);
         assert_eq!(NAMES.contains(&OPENMESH), crate::HAS_OPENMESH);
+        assert_eq!(NAMES.contains(&CGAL_SURFACE_MESH), crate::HAS_CGAL);
+        assert_eq!(NAMES.contains(&CGAL_POLYHEDRON), crate::HAS_CGAL);
+        // Each name once, and each visits the structure of that name.
+        for (i, name) in NAMES.iter().enumerate() {
+            assert!(!NAMES[..i].contains(name), "{name} twice");
+            assert_eq!(visit(name, Name), Some(*name));
+        }
+    }
+
+    #[test]
+    fn a_missing_baseline_says_what_to_install() {
+        for name in [OPENMESH, CGAL_SURFACE_MESH, CGAL_POLYHEDRON] {
+            match missing_baseline(name) {
+                Some(why) => {
+                    assert!(!NAMES.contains(&name), "{name} is registered");
+                    assert!(why.contains("apt-get install"), "{why}");
+                }
+                None => assert!(NAMES.contains(&name), "{name} is neither there nor missing"),
+            }
+        }
+        assert_eq!(missing_baseline("vertex-list"), None);
+        let absent = absent_baselines();
+        assert!(absent.iter().all(|(name, _)| !NAMES.contains(name)));
+        assert_eq!(
+            absent.len() + NAMES.len(),
+            structures::NAMES.len() + CPP_BASELINES.len()
+        );
+    }
+
+    #[test]
+    fn the_report_notes_each_missing_baseline_once_with_why() {
+        let mut notes = Vec::new();
+        note_absent(&mut notes);
+        let absent = absent_baselines();
+        for (name, why) in &absent {
+            let with: Vec<_> = notes.iter().filter(|n| n.contains(why)).collect();
+            assert_eq!(with.len(), 1, "{notes:?}");
+            assert!(with[0].contains(name), "{notes:?}");
+        }
+        if absent.is_empty() {
+            assert!(notes.is_empty(), "{notes:?}");
+        }
+    }
+
+    struct Name;
+    impl StructureVisitor for Name {
+        type Output = &'static str;
+        fn visit<M: topolab_structures::MeshTopology>(self) -> &'static str {
+            M::NAME
+        }
     }
 }

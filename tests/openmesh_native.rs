@@ -13,51 +13,18 @@ mod common;
 
 #[cfg(has_openmesh)]
 mod native {
-    use super::common::{checksum, close, query_count, sampled, uniform_vertex_normals_sum};
-    use glam::DVec3;
-    use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
-    use std::time::Duration;
+    use super::common::{
+        baseline_meshes as meshes, broken_soups, check_native_workloads, checksum,
+        closed_fan_soups, harness_times_native_loops, heap_alone as alone, heap_shared as shared,
+        query_count, sampled,
+    };
     use topolab::openmesh::OpenMesh;
-    use topolab_harness::kernels::{sample_queries, Kernel};
-    use topolab_harness::measure::{
-        cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-    };
-    use topolab_harness::results::Subject;
-    use topolab_structures::meshes::{self, RandomMeshParams};
-    use topolab_structures::{
-        Input, MeshTopology, Operator, PolygonSoup, VertexId, VertexList, Workload,
-    };
-
-    /// The heap measurement (glibc `mallinfo2`) counts every thread's allocations, so it runs
-    /// alone ([`alone`]); every other test of this file runs in parallel with the others
-    /// ([`shared`]), as OpenMesh must be usable from parallel threads.
-    static HEAP: RwLock<()> = RwLock::new(());
-    fn shared() -> RwLockReadGuard<'static, ()> {
-        HEAP.read().unwrap_or_else(|poisoned| poisoned.into_inner())
-    }
-    fn alone() -> RwLockWriteGuard<'static, ()> {
-        HEAP.write()
-            .unwrap_or_else(|poisoned| poisoned.into_inner())
-    }
+    use topolab_structures::meshes;
+    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
 
     /// A native answer with OpenMesh's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
         answer.expect("OpenMesh failed inside the shim")
-    }
-
-    /// A torus (closed), a triangle grid (boundary), a quad grid and mixed polygons (PolyMesh),
-    /// and a shuffled random mesh with holes and corner-touching cells.
-    fn meshes() -> Vec<(&'static str, PolygonSoup)> {
-        vec![
-            ("torus", meshes::torus(12, 7)),
-            ("grid", meshes::grid(6, 4, true)),
-            ("quad-grid", meshes::grid(5, 3, false)),
-            ("mixed-polygons", meshes::mixed_polygons()),
-            (
-                "random",
-                meshes::random_mesh(7, RandomMeshParams::default()),
-            ),
-        ]
     }
 
     #[test]
@@ -128,54 +95,11 @@ mod native {
         }
     }
 
-    /// A memory meter that measures nothing (the heap is measured alone, in its own test).
-    struct NoMeter;
-    impl MemoryMeter for NoMeter {
-        fn current(&self) -> usize {
-            0
-        }
-        fn peak(&self) -> usize {
-            0
-        }
-        fn reset_peak(&self) {}
-    }
-
-    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`: construction,
-    /// sweeps, vertex and face samples and workloads run natively, and their checksums are
-    /// the lab's.
+    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`.
     #[test]
     fn the_harness_times_openmeshs_own_loops() {
         let _shared = shared();
-        let soup = meshes::torus(6, 5);
-        let queries = sample_queries(&soup, 8, 3);
-        let case = MeshCase {
-            name: "torus",
-            family: "torus",
-            soup: &soup,
-            queries: &queries,
-        };
-        let plan = Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max: Duration::from_secs(10),
-            min_reps: 1,
-            max_reps: 2,
-            light: false,
-        };
-        let (mut out, mut est) = (Vec::new(), Estimator::default());
-        measure_structure::<OpenMesh>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        assert_eq!(out.len(), 1 + 13 * 2 + 1 + Workload::ALL.len());
-        for m in &out {
-            // The harness hands a baseline vertex and face samples only (measure::time_kernel).
-            let native = match (m.operator, m.kernel) {
-                (Subject::Query(op), Kernel::Sampled) => {
-                    matches!(op.input(), Input::Vertex | Input::Face)
-                }
-                _ => true,
-            };
-            assert_eq!(m.native, native, "{} {}", m.operator, m.kernel);
-        }
-        measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-        cross_check(&out, "torus").unwrap();
+        harness_times_native_loops::<OpenMesh>();
     }
 
     #[test]
@@ -195,56 +119,12 @@ mod native {
     #[test]
     fn workloads_compute_what_the_benchmark_says() {
         let _shared = shared();
-        for (name, soup) in meshes() {
-            let mut om = OpenMesh::from_soup(&soup).unwrap();
-            let reference = VertexList::from_soup(&soup).unwrap();
-            let circulators = ok(om.native_workload(Workload::Circulators));
-            assert_eq!(
-                circulators,
-                soup.num_corners() as f64,
-                "circulators on {name}"
-            );
-
-            let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
-            let barycenter = ok(om.native_workload(Workload::Barycenter));
-            assert!(
-                close(barycenter, mean.element_sum()),
-                "barycenter on {name}"
-            );
-
-            let expected = uniform_vertex_normals_sum(&soup);
-            ok(om.prepare_workload(Workload::Normals));
-            let normals = ok(om.native_workload(Workload::Normals));
-            assert!(
-                close(normals, expected),
-                "normals on {name}: {normals} vs {expected}"
-            );
-
-            let smoothed: Vec<DVec3> = (0..soup.num_vertices())
-                .map(|v| {
-                    let v = VertexId::new(v);
-                    let (mut sum, mut k) = (DVec3::ZERO, 0.0);
-                    reference.vertex_vertices(v, |w| {
-                        sum += soup.positions[w.index()];
-                        k += 1.0;
-                    });
-                    if reference.is_boundary_vertex(v) || k == 0.0 {
-                        soup.positions[v.index()]
-                    } else {
-                        sum / k
-                    }
-                })
-                .collect();
-            let expected: f64 = smoothed.iter().map(|p| p.element_sum()).sum();
-            let smoothing = ok(om.native_workload(Workload::Smoothing));
-            assert!(close(smoothing, expected), "smoothing on {name}");
-            // The step is computed into a buffer: the mesh keeps its positions, so a second
-            // run computes the same step.
-            for (v, p) in soup.positions.iter().enumerate() {
-                assert_eq!(om.position(VertexId::new(v)), *p, "smoothing moved v{v}");
-            }
-            assert_eq!(ok(om.native_workload(Workload::Smoothing)), smoothing);
-        }
+        check_native_workloads(
+            |soup| OpenMesh::from_soup(soup).unwrap(),
+            |om, w| ok(om.prepare_workload(w)),
+            |om, w| ok(om.native_workload(w)),
+            |om, v| om.position(VertexId::new(v)),
+        );
     }
 
     #[test]
@@ -261,20 +141,6 @@ mod native {
         );
     }
 
-    /// Three triangles on one edge, then two triangles traversing their shared edge the same way.
-    fn broken_soups() -> Vec<PolygonSoup> {
-        let positions = (0..5)
-            .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0))
-            .collect();
-        vec![
-            PolygonSoup::from_polygons(positions, &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]),
-            PolygonSoup::from_polygons(
-                (0..4).map(|i| DVec3::new(i as f64, 0.0, 1.0)).collect(),
-                &[[0u32, 1, 2], [0, 1, 3]],
-            ),
-        ]
-    }
-
     #[test]
     fn refusals_name_elements_like_the_lab() {
         let _shared = shared();
@@ -286,21 +152,6 @@ mod native {
             assert_eq!(checked, lab);
             assert_eq!(native, lab);
         }
-    }
-
-    /// A closed tetrahedron plus a triangle at its vertex 0, the triangle first or last.
-    fn closed_fan_soups() -> Vec<PolygonSoup> {
-        let tetrahedron = meshes::closed_tetrahedron();
-        let mut positions = tetrahedron.positions.clone();
-        positions.extend([DVec3::new(5.0, 5.0, 5.0), DVec3::new(6.0, 5.0, 5.0)]);
-        let faces: Vec<Vec<u32>> = tetrahedron.faces().map(|f| f.to_vec()).collect();
-        let triangle = vec![0u32, 4, 5];
-        let last: Vec<Vec<u32>> = faces.iter().cloned().chain([triangle.clone()]).collect();
-        let first: Vec<Vec<u32>> = [triangle].into_iter().chain(faces).collect();
-        vec![
-            PolygonSoup::from_polygons(positions.clone(), &last),
-            PolygonSoup::from_polygons(positions, &first),
-        ]
     }
 
     #[test]

@@ -29,6 +29,8 @@ pub fn when_to_pick(name: &str) -> Option<&'static str> {
         "che-l2" => "Triangle meshes with vertex stars: VH and EH make every relation O(1) or O(deg v) and give each edge an explicit entry for attributes (e.g. a simplification cost).",
         "che-l3" => "Level 2 plus CH, one half-edge per boundary curve: boundary curves walked in O(∂n1) instead of O(n2), for algorithms that follow the boundary (advancing fronts).",
         "openmesh" => "OpenMesh (C++), the baseline: a maintained half-edge library with its own attributes and I/O, measured through its own loops.",
+        "cgal-surface-mesh" => "CGAL's Surface_mesh (C++): the index half-edge of Sieger and Botsch with property maps, when the rest of the pipeline is CGAL's (processing, Euler operations).",
+        "cgal-polyhedron" => "CGAL's Polyhedron_3 (C++): the classical pointer half-edge in linked lists, for code written against it; more bytes per element than Surface_mesh.",
         _ => return None,
     })
 }
@@ -171,7 +173,9 @@ mod tests {
             let line = when_to_pick(name).unwrap_or_else(|| panic!("{name} has no line"));
             assert!(line.ends_with('.') && line.len() < 260, "{name}: {line}");
         }
-        assert!(when_to_pick("openmesh").is_some());
+        for baseline in ["openmesh", "cgal-surface-mesh", "cgal-polyhedron"] {
+            assert!(when_to_pick(baseline).is_some(), "{baseline}");
+        }
         assert_eq!(when_to_pick("sorted-edge-table"), None);
     }
 }

@@ -752,12 +752,20 @@ fn hull(h: &mut String, r: &Results) {
         return;
     }
     h.push_str("<h2>3D convex hull on the winged-edge (the lecture on 3D convex hulls)</h2><div class=read><b>How to read it.</b> The lecture's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull (SciPy's <code>ConvexHull</code>, C) in the same run. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Slow algorithms stop once one size takes over a second. The table compares the faces each algorithm created with the lecture's expected bound 6n − 20.</div><div class=plots>");
-    let algos = ["gift", "incremental", "randomized", "qhull"];
-    // The lecture's three algorithms build a winged-edge: that family's hue; Qhull is outside.
+    let algos = [
+        "gift",
+        "incremental",
+        "randomized",
+        "qhull",
+        "cgal-convex-hull-3",
+    ];
+    // The lecture's three algorithms build a winged-edge: that family's hue; Qhull and CGAL
+    // are outside.
     let styles = plot::styles(&[
         Family::EdgeLists,
         Family::EdgeLists,
         Family::EdgeLists,
+        Family::Outside,
         Family::Outside,
     ]);
     let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
@@ -808,6 +816,9 @@ fn hull(h: &mut String, r: &Results) {
         let _ = write!(h, "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.4}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", x.shape, x.n, x.algorithm, x.seconds, q.map(|q| format!("{:.1}", x.seconds / q)).unwrap_or_default(), x.hull_vertices, x.faces_created.map(|c| c.to_string()).unwrap_or_default(), x.faces_created.map(|c| format!("{:.3}", c as f64 / (6.0 * x.n as f64 - 20.0))).unwrap_or_default());
     }
     h.push_str("</table>");
+    if r.hull.iter().any(|x| x.algorithm == "cgal-convex-hull-3") {
+        h.push_str("<div class=read><code>cgal-convex-hull-3</code>: CGAL's <code>convex_hull_3</code> (C++ quickhull with exact predicates, into a <code>Surface_mesh</code>) on the same points in the same run, timed around the library call alone, as Qhull is; the report stops unless its hull has the randomized algorithm's vertex count.</div>");
+    }
 }
 
 /// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.

@@ -63,9 +63,18 @@ pub fn list(json: bool) -> Result<String, Failure> {
         .iter()
         .map(|n| registry::visit(n, Row).expect("registered"))
         .collect();
+    let absent: Vec<_> = registry::absent_baselines()
+        .into_iter()
+        .map(|(name, why)| serde_json::json!({ "name": name, "why": why }))
+        .collect();
     if json {
         let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
-        let v = serde_json::json!({ "structures": rows, "operators": ops, "editing": edit_rows() });
+        let v = serde_json::json!({
+            "structures": rows,
+            "operators": ops,
+            "editing": edit_rows(),
+            "absent": absent,
+        });
         return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
     }
     let mut out = String::new();
@@ -121,6 +130,9 @@ pub fn list(json: bool) -> Result<String, Failure> {
                 ""
             },
         );
+    }
+    for (name, why) in registry::absent_baselines() {
+        let _ = writeln!(out, "{name:<width$} not in this build: {why}");
     }
     let edits = edit_rows();
     let _ = write!(

@@ -226,6 +226,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         reads: Vec::new(),
         notes,
     };
+    crate::registry::note_absent(&mut results.notes);
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
@@ -418,6 +419,10 @@ fn hull(
             code: 1,
         })?);
     }
+    crate::registry::add_outside_hulls(&mut rows).map_err(|e| Failure {
+        message: format!("hull benchmark: {e}"),
+        code: 1,
+    })?;
     Ok(rows)
 }
 
@@ -462,12 +467,14 @@ fn real_meshes(notes: &mut Vec<String>) -> Vec<(String, PolygonSoup)> {
 }
 
 /// The structures whose vertex 1-ring is compared across element orderings.
-const ORDERING_STRUCTURES: [&str; 5] = [
+const ORDERING_STRUCTURES: [&str; 7] = [
     "index-half-edge",
     "che-l2",
     "pointer-half-edge",
     "winged-edge",
     "openmesh",
+    "cgal-surface-mesh",
+    "cgal-polyhedron",
 ];
 
 struct Sweep<'a> {

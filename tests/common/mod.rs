@@ -7,9 +7,18 @@
 pub mod run;
 
 use glam::DVec3;
+use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
+use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
+use topolab_harness::kernels::{sample_queries, Kernel};
+use topolab_harness::measure::{
+    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
+};
+use topolab_harness::results::Subject;
+use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
+    VertexList, Workload,
 };
 
 fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
@@ -134,4 +143,187 @@ pub fn close(a: f64, b: f64) -> bool {
 pub fn report_skip(what: &str, why: &str) {
     use std::io::Write;
     let _ = writeln!(std::io::stderr(), "SKIPPED {what}: {why}");
+}
+
+/// The heap measurement of the C++ baselines (glibc `mallinfo2`) counts every thread's
+/// allocations, so it runs alone ([`heap_alone`]); every other test of a baseline's test file
+/// runs in parallel with the others ([`heap_shared`]), as the baselines must be usable from
+/// parallel threads.
+static HEAP: RwLock<()> = RwLock::new(());
+
+/// A test that may run beside others (it measures no heap).
+pub fn heap_shared() -> RwLockReadGuard<'static, ()> {
+    HEAP.read().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// A test that measures a C++ baseline's heap: no other test of its file runs meanwhile.
+pub fn heap_alone() -> RwLockWriteGuard<'static, ()> {
+    HEAP.write()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// A memory meter that measures nothing (the heap is measured alone, in its own test).
+pub struct NoMeter;
+impl MemoryMeter for NoMeter {
+    fn current(&self) -> usize {
+        0
+    }
+    fn peak(&self) -> usize {
+        0
+    }
+    fn reset_peak(&self) {}
+}
+
+/// The meshes the baselines' native kernels are checked on: a torus (closed), a triangle grid
+/// (boundary), a quad grid and mixed polygons, and a shuffled random mesh with holes and
+/// corner-touching cells.
+pub fn baseline_meshes() -> Vec<(&'static str, PolygonSoup)> {
+    vec![
+        ("torus", meshes::torus(12, 7)),
+        ("grid", meshes::grid(6, 4, true)),
+        ("quad-grid", meshes::grid(5, 3, false)),
+        ("mixed-polygons", meshes::mixed_polygons()),
+        (
+            "random",
+            meshes::random_mesh(7, RandomMeshParams::default()),
+        ),
+    ]
+}
+
+/// Three triangles on one edge, then two triangles traversing their shared edge the same way:
+/// the halfedge libraries (OpenMesh, CGAL) refuse the last face of each.
+pub fn broken_soups() -> Vec<PolygonSoup> {
+    let positions = (0..5)
+        .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0))
+        .collect();
+    vec![
+        PolygonSoup::from_polygons(positions, &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]),
+        PolygonSoup::from_polygons(
+            (0..4).map(|i| DVec3::new(i as f64, 0.0, 1.0)).collect(),
+            &[[0u32, 1, 2], [0, 1, 3]],
+        ),
+    ]
+}
+
+/// A closed tetrahedron plus a triangle at its vertex 0, the triangle first or last.
+pub fn closed_fan_soups() -> Vec<PolygonSoup> {
+    let tetrahedron = meshes::closed_tetrahedron();
+    let mut positions = tetrahedron.positions.clone();
+    positions.extend([DVec3::new(5.0, 5.0, 5.0), DVec3::new(6.0, 5.0, 5.0)]);
+    let faces: Vec<Vec<u32>> = tetrahedron.faces().map(|f| f.to_vec()).collect();
+    let triangle = vec![0u32, 4, 5];
+    let last: Vec<Vec<u32>> = faces.iter().cloned().chain([triangle.clone()]).collect();
+    let first: Vec<Vec<u32>> = [triangle].into_iter().chain(faces).collect();
+    vec![
+        PolygonSoup::from_polygons(positions.clone(), &last),
+        PolygonSoup::from_polygons(positions, &first),
+    ]
+}
+
+/// The result of one step of the `smoothing` workload on `soup`, computed through `reference`
+/// (a lab structure): the sum of every vertex's new coordinates.
+pub fn smoothing_sum<M: MeshTopology>(soup: &PolygonSoup, reference: &M) -> f64 {
+    (0..soup.num_vertices())
+        .map(|v| {
+            let v = VertexId::new(v);
+            let (mut sum, mut k) = (DVec3::ZERO, 0.0);
+            reference.vertex_vertices(v, |w| {
+                sum += soup.positions[w.index()];
+                k += 1.0;
+            });
+            if reference.is_boundary_vertex(v) || k == 0.0 {
+                soup.positions[v.index()]
+            } else {
+                sum / k
+            }
+        })
+        .map(|p| p.element_sum())
+        .sum()
+}
+
+/// Checks that the harness reaches a baseline's own loops through `MeshTopology::native`:
+/// construction, sweeps, vertex and face samples and workloads run natively, and their
+/// checksums are the lab's.
+pub fn harness_times_native_loops<M: MeshTopology>() {
+    let soup = meshes::torus(6, 5);
+    let queries = sample_queries(&soup, 8, 3);
+    let case = MeshCase {
+        name: "torus",
+        family: "torus",
+        soup: &soup,
+        queries: &queries,
+    };
+    let plan = Plan {
+        cell_budget: Duration::from_millis(1),
+        cell_max: Duration::from_secs(10),
+        min_reps: 1,
+        max_reps: 2,
+        light: false,
+    };
+    let (mut out, mut est) = (Vec::new(), Estimator::default());
+    measure_structure::<M>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+    assert_eq!(
+        out.len(),
+        1 + 13 * 2 + 1 + Workload::ALL.len(),
+        "{}",
+        M::NAME
+    );
+    for m in &out {
+        // The harness hands a baseline vertex and face samples only (measure::time_kernel).
+        let native = match (m.operator, m.kernel) {
+            (Subject::Query(op), Kernel::Sampled) => {
+                matches!(op.input(), Input::Vertex | Input::Face)
+            }
+            _ => true,
+        };
+        assert_eq!(m.native, native, "{} {} {}", M::NAME, m.operator, m.kernel);
+    }
+    measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
+    cross_check(&out, "torus").unwrap();
+}
+
+/// Checks a baseline's native workloads on every mesh of [`baseline_meshes`] against what the
+/// benchmark says each computes: `build` builds the baseline, `run` runs a workload on it
+/// (after `prepare` for the normals, as the report does), `position` reads a position back.
+pub fn check_native_workloads<M>(
+    build: impl Fn(&PolygonSoup) -> M,
+    prepare: impl Fn(&mut M, Workload),
+    run: impl Fn(&mut M, Workload) -> f64,
+    position: impl Fn(&M, usize) -> DVec3,
+) {
+    for (name, soup) in baseline_meshes() {
+        let mut mesh = build(&soup);
+        let reference = VertexList::from_soup(&soup).unwrap();
+        let circulators = run(&mut mesh, Workload::Circulators);
+        assert_eq!(
+            circulators,
+            soup.num_corners() as f64,
+            "circulators on {name}"
+        );
+
+        let mean = soup.positions.iter().sum::<DVec3>() / soup.num_vertices() as f64;
+        let barycenter = run(&mut mesh, Workload::Barycenter);
+        assert!(
+            close(barycenter, mean.element_sum()),
+            "barycenter on {name}"
+        );
+
+        let expected = uniform_vertex_normals_sum(&soup);
+        prepare(&mut mesh, Workload::Normals);
+        let normals = run(&mut mesh, Workload::Normals);
+        assert!(
+            close(normals, expected),
+            "normals on {name}: {normals} vs {expected}"
+        );
+
+        let expected = smoothing_sum(&soup, &reference);
+        let smoothing = run(&mut mesh, Workload::Smoothing);
+        assert!(close(smoothing, expected), "smoothing on {name}");
+        // The step is computed into a buffer: the mesh keeps its positions, so a second run
+        // computes the same step.
+        for (v, p) in soup.positions.iter().enumerate() {
+            assert_eq!(position(&mesh, v), *p, "smoothing moved v{v} on {name}");
+        }
+        assert_eq!(run(&mut mesh, Workload::Smoothing), smoothing, "{name}");
+    }
 }

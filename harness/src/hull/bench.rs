@@ -14,14 +14,16 @@ use std::time::Instant;
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape, Work};
 use topolab_structures::Result;
 
-/// One timed hull.
-#[derive(Clone, Debug, serde::Serialize)]
+/// One timed hull. (`Default`, so that a row of an outside hull, such as CGAL's, names only
+/// what it has.)
+#[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct HullRow {
     /// `cube`, `ball` or `sphere`.
     pub shape: String,
     /// Number of points.
     pub n: usize,
-    /// `gift`, `incremental`, `randomized` or `qhull`.
+    /// `gift`, `incremental`, `randomized`, `qhull`, or an outside hull's name (CGAL's
+    /// `cgal-convex-hull-3`).
     pub algorithm: String,
     /// Best time of the repetitions, seconds.
     pub seconds: f64,

@@ -1,0 +1,72 @@
+// CGAL::Surface_mesh for the shim: built as its documentation builds one (reserve, add_vertex,
+// add_face), queried through kernels.h. Its own indices are the lab's ids: vertex i is the
+// i-th add_vertex, face j the j-th add_face, edge e has halfedges 2e and 2e + 1.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "kernels.h"
+
+namespace topolab_cgal {
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using VI = SurfaceMesh::Vertex_index;
+using HI = SurfaceMesh::Halfedge_index;
+using FI = SurfaceMesh::Face_index;
+
+struct SurfaceMeshAdapter {
+  using Graph = SurfaceMesh;
+  using Point = topolab_cgal::Point;
+  SurfaceMesh mesh;
+
+  const Graph &graph() const { return mesh; }
+  uint32_t vid(VI v) const { return uint32_t(v); }
+  uint32_t fid(FI f) const { return uint32_t(f); }
+  uint32_t hid(HI h) const { return uint32_t(h); }
+  VI vertex(uint32_t i) const { return VI(i); }
+  FI face(uint32_t i) const { return FI(i); }
+  HI halfedge_at(uint32_t h) const { return HI(h); }
+  uint32_t num_vertices() const { return uint32_t(mesh.number_of_vertices()); }
+  uint32_t num_edges() const { return uint32_t(mesh.number_of_edges()); }
+  uint32_t num_faces() const { return uint32_t(mesh.number_of_faces()); }
+  const Point &point(VI v) const { return mesh.point(v); }
+  // Surface_mesh keeps a border halfedge as the halfedge of a border vertex ("If v is a border
+  // vertex this will be a border halfedge"), so is_border(v, false) looks at that one halfedge
+  // only, O(1); it also calls an isolated vertex a border one, which the lab does not.
+  bool is_boundary_vertex(VI v) const {
+    return !mesh.is_isolated(v) && mesh.is_border(v, /*check_all_incident_halfedges=*/false);
+  }
+  bool cgal_is_valid() const { return mesh.is_valid(/*verbose=*/false); }
+};
+
+}  // namespace
+
+std::unique_ptr<Mesh> build_surface_mesh(const Input &in, uint32_t *failed_face) {
+  auto built = std::make_unique<CgalMesh<SurfaceMeshAdapter>>();
+  SurfaceMesh &m = built->adapter().mesh;
+  m.reserve(in.vertices, in.edges_hint, in.faces);
+  for (uint32_t i = 0; i < in.vertices; ++i)
+    m.add_vertex(Point(in.xyz[3 * i], in.xyz[3 * i + 1], in.xyz[3 * i + 2]));
+  std::vector<VI> corners;
+  for (uint32_t j = 0; j < in.faces; ++j) {
+    const uint32_t *begin = in.indices + in.offsets[j], *end = in.indices + in.offsets[j + 1];
+    FI f;
+    if (end - begin == 3) {
+      f = m.add_face(VI(begin[0]), VI(begin[1]), VI(begin[2]));
+    } else {
+      corners.clear();
+      for (const uint32_t *c = begin; c != end; ++c) corners.push_back(VI(*c));
+      f = m.add_face(corners);
+    }
+    if (f == SurfaceMesh::null_face()) {
+      *failed_face = j;
+      return nullptr;
+    }
+  }
+  return built;
+}
+
+}  // namespace topolab_cgal

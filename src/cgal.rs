@@ -1,0 +1,670 @@
+//! # CGAL (C++ baselines, through FFI): `Surface_mesh`, `Polyhedron_3`, `convex_hull_3`
+//!
+//! [CGAL](https://www.cgal.org) has a production implementation of each halfedge structure the
+//! lecture on polygon-mesh data structures teaches, and this module wraps both, built and
+//! queried through the C API of `cgal/shim.h` (Debian's `libcgal-dev`, CGAL 5.5, header-only):
+//!
+//! | structure | CGAL class | storage | the lab's counterpart |
+//! |---|---|---|---|
+//! | [`SurfaceMesh`] (`cgal-surface-mesh`) | `CGAL::Surface_mesh<Point_3>` | index arrays (the Surface_mesh of Sieger & Botsch, IMR 2011) | `index-half-edge` |
+//! | [`Polyhedron`] (`cgal-polyhedron`) | `CGAL::Polyhedron_3<K, Polyhedron_items_with_id_3>` | records in linked lists (`HalfedgeDS_list`), linked by pointers | `pointer-half-edge` |
+//!
+//! Both use `Simple_cartesian<double>` points (the lab's positions round-trip exactly) and
+//! answer every operator through CGAL's BGL circulators (`halfedges_around_target`,
+//! `vertices_around_target`, `faces_around_target`, `vertices_around_face`,
+//! `halfedges_around_face`, `faces_around_face`), the interface CGAL's own algorithms use on
+//! both classes: for a Polyhedron it steps `h->next()->opposite()` exactly like
+//! `Halfedge_around_vertex_circulator`. For timing, per-query FFI calls would measure the FFI,
+//! so whole sweeps, sampled kernels and workloads run as one C++ call each
+//! ([`Cgal::native_sweep`], [`Cgal::native_sampled`], [`Cgal::native_workload`]) and return
+//! the checksums of `topolab_harness::checksum`; [`MeshTopology::native`] hands them to the
+//! harness. Operators and workloads reach C++ as the codes of `cgal/shim.h`'s tables (the
+//! OpenMesh shim's, by the same typed match).
+//!
+//! Construction, the way CGAL's documentation builds each (and what the harness times, through
+//! [`MeshTopology::native`]):
+//! - `Surface_mesh`: `reserve`, then `add_vertex` per vertex and `add_face` per face
+//!   (`add_face` is `CGAL::Euler::add_face`: it copies and sorts the face's vertices to check
+//!   them, and finds each edge by circulating around its start vertex);
+//! - `Polyhedron_3`: `Polyhedron_incremental_builder_3` (`begin_surface` with the counts,
+//!   `add_vertex`, `add_facet`), not `polygon_soup_to_polygon_mesh`: the builder is the class's
+//!   own construction interface and flags a face it cannot add, while
+//!   `polygon_soup_to_polygon_mesh` ignores a refused face outside debug builds (its check is an
+//!   assertion). Ids come from `Polyhedron_items_with_id_3`, set after building.
+//!
+//! Ids: vertex i of the input is CGAL's vertex i and face j its face j (both keep insertion
+//! order); edge e is the edge with halfedges 2e and 2e + 1 (Surface_mesh's own numbering; for
+//! the Polyhedron, the ids the shim gives in list order).
+//!
+//! What each stores (64-bit, as `mallinfo2` measures it; Table 4.1 and the memory section of
+//! the report show the measured bytes):
+//!
+//! | | `Surface_mesh` | `Polyhedron_3` with ids |
+//! |---|---|---|
+//! | per vertex | point (24), incoming halfedge (4), removed flag (1 bit) | list links (16), point (24), halfedge (8), id (8) |
+//! | per halfedge | face, target vertex, next, prev (4 each) | list links (16), opposite, next, prev, vertex, face (8 each), id (8), allocated in pairs |
+//! | per edge / face | removed flag / halfedge (4), removed flag | — / list links (16), halfedge (8), id (8) |
+//! | tables | — | vertex, facet and edge handles by id (8 per entry), the way in from an id |
+//!
+//! Declared costs ([`MeshTopology::cost`], from CGAL's documentation; Table 4.1 of the report
+//! shows them beside the fitted exponents): every circulator step is O(1) (`next`, `prev` and
+//! `opposite` are stored or, in `Surface_mesh`, computed from the index; the reference of
+//! `Polyhedron_3::Halfedge`: successive assignments `h = h->next()->opposite()` cycle
+//! clockwise around the vertex and traverse all its halfedges), so relations are O(k); an
+//! edge's vertices and faces, successor and predecessor are O(1). The boundary-vertex test
+//! differs. `Surface_mesh`'s reference, section "Borders": for a vertex the test "means to look
+//! at all incident halfedges", but "if algorithms operating on a surface mesh maintain that the
+//! halfedge associated to a border vertex is a border halfedge, this is a constant time
+//! operation too", which `add_face` maintains (`halfedge(v)`: "If `v` is a border vertex this
+//! will be a border halfedge"), so `is_border(v, false)` reads one halfedge, O(1) (the
+//! conformance suite checks its answers, non-manifold vertices included). A `Polyhedron_3`
+//! vertex's halfedge is any halfedge pointing to it, so `CGAL::is_border(v, g)` circulates,
+//! O(k). Boundary curves: scan the halfedges for border ones and follow `next`, O(n).
+//!
+//! Access models ([`MeshTopology::access`], in `access`): `Surface_mesh`'s property arrays
+//! (`v:connectivity`, `h:connectivity`, `f:connectivity`) read like the index half-edge's;
+//! `Polyhedron_3`'s records are nodes of `In_place_list`s, each its own heap block.
+//!
+//! Non-manifold vertices: both classes link the boundary halfedges of a vertex's fans into one
+//! cycle (`Polyhedron_3`: "except for vertices where multiple holes join"), so circulators
+//! visit every fan; a vertex with a closed fan and another fan is refused with
+//! [`Error::NonManifoldVertex`] before CGAL sees it (CGAL refuses it too).
+//!
+//! The C API is a wall, as OpenMesh's: every function is `noexcept`, catches every C++
+//! exception and returns a status code, which becomes [`Error::Foreign`] here. Its one
+//! process-wide action, pinning CGAL's failure behaviour to exceptions (so that a failure
+//! CGAL reports reaches the wall instead of aborting), is done once per process, thread-safely
+//! (a function-local static); the builder writes nothing with `verbose` off. Meshes are
+//! independent, so threads may build and query meshes in parallel (`tests/cgal_threads.rs`,
+//! and `.ci/repeat-baseline-tests` in CI). The heap measurement (`mallinfo2`) is
+//! process-wide: exact only when no other thread allocates meanwhile.
+//!
+//! [`hull::convex_hull_3`] runs `CGAL::convex_hull_3` (quickhull,
+//! `Exact_predicates_inexact_constructions_kernel`) for the report's hull section.
+
+use crate::foreign::{self, check_open_fans, operator_code, refusal, workload_code};
+use glam::DVec3;
+use std::fmt::Write;
+use std::marker::PhantomData;
+use std::ptr::NonNull;
+use topolab_structures::{
+    Access, BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
+    NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
+};
+
+mod access;
+pub mod hull;
+
+/// The declarations of `cgal/shim.h`.
+mod ffi {
+    use std::ffi::c_void;
+
+    /// The C++ `topolab_cgal_mesh` (opaque).
+    #[repr(C)]
+    pub struct RawMesh {
+        _opaque: [u8; 0],
+        _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+    }
+
+    use crate::foreign::{Emit, EndCurve};
+
+    pub const SURFACE_MESH: i32 = 0;
+    pub const POLYHEDRON: i32 = 1;
+
+    // Every function returns a status (`crate::foreign::OK` or a failure) and writes its
+    // results through out-pointers; all are `noexcept` in C++ and catch every exception.
+    extern "C" {
+        pub fn topolab_cgal_build(
+            structure: i32,
+            xyz: *const f64,
+            vertices: u32,
+            indices: *const u32,
+            offsets: *const u32,
+            faces: u32,
+            edges_hint: u32,
+            out: *mut *mut RawMesh,
+            failed_face: *mut u32,
+        ) -> i32;
+        pub fn topolab_cgal_free(mesh: *mut RawMesh);
+        pub fn topolab_cgal_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
+        pub fn topolab_cgal_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
+        pub fn topolab_cgal_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
+        pub fn topolab_cgal_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
+        pub fn topolab_cgal_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
+        pub fn topolab_cgal_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
+        pub fn topolab_cgal_query(
+            mesh: *const RawMesh,
+            op: i32,
+            id: u32,
+            emit: Emit,
+            context: *mut c_void,
+        ) -> i32;
+        pub fn topolab_cgal_edge_neighbour(
+            mesh: *const RawMesh,
+            e: u32,
+            f: u32,
+            successor: i32,
+            out: *mut i64,
+        ) -> i32;
+        pub fn topolab_cgal_boundary_curves(
+            mesh: *const RawMesh,
+            emit: Emit,
+            end_curve: EndCurve,
+            context: *mut c_void,
+        ) -> i32;
+        pub fn topolab_cgal_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
+        pub fn topolab_cgal_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
+        pub fn topolab_cgal_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
+        pub fn topolab_cgal_validate(
+            mesh: *const RawMesh,
+            problem: *mut i32,
+            element: *mut u32,
+        ) -> i32;
+        pub fn topolab_cgal_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
+        pub fn topolab_cgal_sampled(
+            mesh: *const RawMesh,
+            op: i32,
+            ids: *const u32,
+            count: usize,
+            out: *mut u64,
+        ) -> i32;
+        pub fn topolab_cgal_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
+        pub fn topolab_cgal_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
+        pub fn topolab_cgal_convex_hull(
+            xyz: *const f64,
+            n: u32,
+            repeat: u32,
+            seconds: *mut f64,
+            out: *mut u32,
+            volume: *mut f64,
+        ) -> i32;
+    }
+}
+
+/// The library name in [`Error::Foreign`].
+const LIBRARY: &str = "CGAL";
+
+/// The lab's error for a failure status of shim function `call`.
+fn status(call: &'static str, code: i32) -> Result<()> {
+    foreign::status(LIBRARY, call, code)
+}
+
+/// For the trait's infallible queries (see [`foreign::infallible`]).
+fn infallible(call: &'static str, code: i32) {
+    foreign::infallible(LIBRARY, call, code)
+}
+
+/// Which CGAL class a [`Cgal`] holds: what differs between the two (see the module docs).
+pub trait CgalStructure {
+    /// The structure's name in the lab (CLI, JSON, report).
+    const NAME: &'static str;
+    /// The shim's structure code.
+    const CODE: i32;
+    /// What builds it, for refusals ("CGAL's Surface_mesh::add_face").
+    const BUILDER: &'static str;
+    /// The first line of `explain`.
+    const TITLE: &'static str;
+    /// The cost of the boundary-vertex test (the one operator whose cost differs).
+    const BOUNDARY_VERTEX: Cost;
+    /// What CGAL's loop of `op` reads ([`MeshTopology::access`]).
+    fn access(op: Operator) -> Option<Access>;
+}
+
+/// `CGAL::Surface_mesh`: index-based halfedges; see the module docs.
+#[derive(Debug)]
+pub enum SurfaceMeshClass {}
+
+impl CgalStructure for SurfaceMeshClass {
+    const NAME: &'static str = "cgal-surface-mesh";
+    const CODE: i32 = ffi::SURFACE_MESH;
+    const BUILDER: &'static str = "CGAL's Surface_mesh::add_face";
+    const TITLE: &'static str = "CGAL::Surface_mesh (C++, index-based halfedges in arrays): \
+halfedge h's opposite is h ^ 1, its edge h / 2; a border vertex keeps a border halfedge";
+    const BOUNDARY_VERTEX: Cost = Cost::Constant;
+    fn access(op: Operator) -> Option<Access> {
+        access::surface_mesh(op)
+    }
+}
+
+/// `CGAL::Polyhedron_3`: pointer-based halfedges in linked lists; see the module docs.
+#[derive(Debug)]
+pub enum PolyhedronClass {}
+
+impl CgalStructure for PolyhedronClass {
+    const NAME: &'static str = "cgal-polyhedron";
+    const CODE: i32 = ffi::POLYHEDRON;
+    const BUILDER: &'static str = "CGAL's Polyhedron_incremental_builder_3";
+    const TITLE: &'static str = "CGAL::Polyhedron_3 (C++, a list node per vertex, halfedge pair \
+and facet, linked by pointers), shown by the ids of Polyhedron_items_with_id_3: halfedge h's \
+opposite is h ^ 1, its edge h / 2";
+    const BOUNDARY_VERTEX: Cost = Cost::Local;
+    fn access(op: Operator) -> Option<Access> {
+        access::polyhedron(op)
+    }
+}
+
+/// `CGAL::Surface_mesh` as a lab structure (`cgal-surface-mesh`).
+pub type SurfaceMesh = Cgal<SurfaceMeshClass>;
+/// `CGAL::Polyhedron_3` as a lab structure (`cgal-polyhedron`).
+pub type Polyhedron = Cgal<PolyhedronClass>;
+
+/// A CGAL mesh of class `S`; see the module docs.
+pub struct Cgal<S: CgalStructure> {
+    /// The C++ mesh, owned (freed in `Drop`).
+    raw: NonNull<ffi::RawMesh>,
+    /// Number of vertices, edges and faces, kept here to check ids without an FFI call.
+    vertices: u32,
+    edges: u32,
+    faces: u32,
+    class: PhantomData<S>,
+}
+
+impl<S: CgalStructure> Drop for Cgal<S> {
+    fn drop(&mut self) {
+        // SAFETY: `raw` came from `topolab_cgal_build` and is freed exactly once, here.
+        unsafe { ffi::topolab_cgal_free(self.raw.as_ptr()) }
+    }
+}
+
+impl<S: CgalStructure> std::fmt::Debug for Cgal<S> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct(S::NAME)
+            .field("vertices", &self.vertices)
+            .field("edges", &self.edges)
+            .field("faces", &self.faces)
+            .finish()
+    }
+}
+
+impl<S: CgalStructure> Cgal<S> {
+    /// CGAL's own construction (see the module docs), in one C++ call; `edges_hint` goes to
+    /// the reservation.
+    ///
+    /// Only [`PolygonSoup::check`] runs first (so every index is in range). A face CGAL
+    /// refuses is reported with the lab's error for it (the edge analysis of
+    /// [`PolygonSoup::connectivity`] or the non-manifold vertex it touches).
+    /// [`MeshTopology::from_soup`] checks the soup fully first, like every structure.
+    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
+        soup.check()?;
+        let mut failed_face = u32::MAX;
+        let mut raw = std::ptr::null_mut();
+        // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
+        // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
+        // asserted in `foreign`); offsets has faces + 1 entries; both out-pointers are valid.
+        // The C++ side copies everything it keeps.
+        let code = unsafe {
+            ffi::topolab_cgal_build(
+                S::CODE,
+                soup.positions.as_ptr().cast::<f64>(),
+                soup.num_vertices() as u32,
+                soup.indices().as_ptr(),
+                soup.offsets().as_ptr(),
+                soup.num_faces() as u32,
+                edges_hint.min(u32::MAX as usize) as u32,
+                &mut raw,
+                &mut failed_face,
+            )
+        };
+        if code == foreign::REFUSED {
+            return Err(refusal(soup, failed_face as usize, S::BUILDER));
+        }
+        status("topolab_cgal_build", code)?;
+        let Some(raw) = NonNull::new(raw) else {
+            return status("topolab_cgal_build", foreign::EXCEPTION).map(|_| unreachable!());
+        };
+        // Owned from here on: dropped (freed) if the summary below fails.
+        let mut mesh = Self {
+            raw,
+            vertices: 0,
+            edges: 0,
+            faces: 0,
+            class: PhantomData,
+        };
+        let mut summary = [0u32; 3];
+        // SAFETY: `raw` is a live mesh just built; `summary` has the 3 slots the shim fills.
+        status("topolab_cgal_summary", unsafe {
+            ffi::topolab_cgal_summary(raw.as_ptr(), summary.as_mut_ptr())
+        })?;
+        [mesh.vertices, mesh.edges, mesh.faces] = summary;
+        Ok(mesh)
+    }
+
+    /// The checksum of operator `op` over every element, computed by one C++ loop with CGAL's
+    /// circulators; an error when CGAL failed inside the loop.
+    pub fn native_sweep(&self, op: Operator) -> Result<u64> {
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer; the shim checks the code.
+        let code =
+            unsafe { ffi::topolab_cgal_sweep(self.raw.as_ptr(), operator_code(op), &mut out) };
+        status("topolab_cgal_sweep", code).map(|()| out)
+    }
+
+    /// The checksum of operator `op` over the query elements `ids` only: vertex, edge or face
+    /// ids by [`Operator::input`], face ids for successor and predecessor (the shim asks them
+    /// about every edge of each face). `None` for `boundary-curves` (a whole-mesh operator) or
+    /// when an id is out of range; an error when CGAL failed inside the loop.
+    pub fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        let count = match op.input() {
+            Input::Vertex => self.vertices,
+            Input::Edge => self.edges,
+            Input::Face | Input::EdgeOfFace => self.faces,
+            Input::Mesh => return None,
+        };
+        if ids.iter().any(|&id| id >= count) {
+            return None;
+        }
+        let mut out = 0;
+        // SAFETY: `raw` is live, every id was just checked to be in range, `out` is valid.
+        let code = unsafe {
+            ffi::topolab_cgal_sampled(
+                self.raw.as_ptr(),
+                operator_code(op),
+                ids.as_ptr(),
+                ids.len(),
+                &mut out,
+            )
+        };
+        Some(status("topolab_cgal_sampled", code).map(|()| out))
+    }
+
+    /// Allocates what `workload` needs (the normal arrays for [`Workload::Normals`], the
+    /// buffer of [`Workload::Smoothing`]), so that a timed [`Cgal::native_workload`] computes
+    /// only; an error when the allocation failed.
+    pub fn prepare_workload(&mut self, workload: Workload) -> Result<()> {
+        // SAFETY: `raw` is live and exclusively borrowed.
+        let code = unsafe {
+            ffi::topolab_cgal_prepare_workload(self.raw.as_ptr(), workload_code(workload))
+        };
+        status("topolab_cgal_prepare_workload", code)
+    }
+
+    /// Runs a Surface_mesh benchmark workload (Sieger & Botsch) in one C++ call; an error when
+    /// CGAL failed inside it. The results go to arrays indexed by the lab's ids, kept across
+    /// runs. What each returns (as the OpenMesh baseline's):
+    ///
+    /// | workload | what | returns |
+    /// |---|---|---|
+    /// | `circulators` | for each vertex count its faces, for each face subtract its vertices | the incidences counted (NaN if the two counts disagree) |
+    /// | `barycenter` | the mean of all positions | the sum of its coordinates |
+    /// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
+    /// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
+    pub fn native_workload(&mut self, workload: Workload) -> Result<f64> {
+        let mut out = 0.0;
+        // SAFETY: `raw` is live and exclusively borrowed; `out` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_cgal_workload(self.raw.as_ptr(), workload_code(workload), &mut out)
+        };
+        status("topolab_cgal_workload", code).map(|()| out)
+    }
+
+    /// Calls `f` with every answer (an index) of relation `op` of element `id`.
+    fn query(&self, op: Operator, id: u32, f: impl FnMut(u32)) {
+        let raw = self.raw.as_ptr();
+        let code = foreign::with_emit(f, |emit, context| {
+            // SAFETY: `raw` is live; the caller checked `id` against the element count of
+            // `op`'s input; `emit` and `context` come from `with_emit`, which keeps the
+            // context alive for the call (C++ does not keep it).
+            unsafe { ffi::topolab_cgal_query(raw, operator_code(op), id, emit, context) }
+        });
+        infallible("topolab_cgal_query", code);
+    }
+
+    fn vertex(&self, v: VertexId) -> u32 {
+        assert!(
+            v.0 < self.vertices,
+            "{v:?} out of range ({} vertices)",
+            self.vertices
+        );
+        v.0
+    }
+    fn edge(&self, e: EdgeId) -> u32 {
+        assert!(
+            e.0 < self.edges,
+            "{e:?} out of range ({} edges)",
+            self.edges
+        );
+        e.0
+    }
+    fn face(&self, f: FaceId) -> u32 {
+        assert!(
+            f.0 < self.faces,
+            "{f:?} out of range ({} faces)",
+            self.faces
+        );
+        f.0
+    }
+
+    fn neighbour_in_face(&self, e: EdgeId, face: FaceId, successor: bool) -> Option<EdgeId> {
+        let (e, face) = (self.edge(e), self.face(face));
+        let mut answer = -1;
+        // SAFETY: `raw` is live, both ids were checked, `answer` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_cgal_edge_neighbour(
+                self.raw.as_ptr(),
+                e,
+                face,
+                successor as i32,
+                &mut answer,
+            )
+        };
+        infallible("topolab_cgal_edge_neighbour", code);
+        u32::try_from(answer).ok().map(EdgeId)
+    }
+}
+
+impl<S: CgalStructure> foreign::HalfedgeRecords for Cgal<S> {
+    fn counts(&self) -> [u32; 3] {
+        [self.vertices, self.edges, self.faces]
+    }
+    fn record_position(&self, v: u32) -> DVec3 {
+        self.position(VertexId(v))
+    }
+    fn vertex_halfedge(&self, v: u32) -> u32 {
+        let mut h = u32::MAX;
+        // SAFETY: `raw` is live, `v` < vertices (callers iterate that range), `h` is a valid
+        // out-pointer.
+        let code = unsafe { ffi::topolab_cgal_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
+        infallible("topolab_cgal_vertex_halfedge", code);
+        h
+    }
+    /// The halfedge record `h` as CGAL stores it: (target vertex, next, prev, face).
+    fn halfedge(&self, h: u32) -> [u32; 4] {
+        let mut out = [0u32; 4];
+        // SAFETY: `raw` is live, `h` < 2 × edges (callers iterate that range), `out` has 4 slots.
+        let code = unsafe { ffi::topolab_cgal_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
+        infallible("topolab_cgal_halfedge", code);
+        out
+    }
+    fn face_halfedge(&self, f: u32) -> u32 {
+        let mut h = u32::MAX;
+        // SAFETY: `raw` is live, `f` < faces (callers iterate that range), `h` is a valid
+        // out-pointer.
+        let code = unsafe { ffi::topolab_cgal_face_halfedge(self.raw.as_ptr(), f, &mut h) };
+        infallible("topolab_cgal_face_halfedge", code);
+        h
+    }
+}
+
+impl<S: CgalStructure> MeshTopology for Cgal<S> {
+    const NAME: &'static str = S::NAME;
+
+    fn capabilities() -> Capabilities {
+        Capabilities {
+            // With open fans only; see the module docs.
+            non_manifold_vertices: true,
+            ..Capabilities::POLYGONS
+        }
+    }
+
+    fn cost(op: Operator) -> Cost {
+        match op {
+            Operator::BoundaryVertex => S::BOUNDARY_VERTEX,
+            Operator::R10
+            | Operator::R12
+            | Operator::BoundaryEdge
+            | Operator::EdgeSuccessor
+            | Operator::EdgePredecessor => Cost::Constant,
+            Operator::R00
+            | Operator::R01
+            | Operator::R02
+            | Operator::R11
+            | Operator::R20
+            | Operator::R21
+            | Operator::R22 => Cost::Local,
+            Operator::BoundaryCurves => Cost::Linear,
+        }
+    }
+
+    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+        let connectivity = soup.connectivity()?;
+        check_open_fans(soup, &connectivity)?;
+        Self::build_native(soup, connectivity.num_edges())
+    }
+
+    fn num_vertices(&self) -> usize {
+        self.vertices as usize
+    }
+    fn num_edges(&self) -> usize {
+        self.edges as usize
+    }
+    fn num_faces(&self) -> usize {
+        self.faces as usize
+    }
+    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        (0..self.edges).for_each(|e| f(EdgeId(e)));
+    }
+    fn position(&self, v: VertexId) -> DVec3 {
+        let v = self.vertex(v);
+        let mut out = [0.0f64; 3];
+        // SAFETY: `raw` is live, `v` checked, `out` has 3 slots.
+        let code = unsafe { ffi::topolab_cgal_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
+        infallible("topolab_cgal_position", code);
+        DVec3::from_array(out)
+    }
+    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        self.query(Operator::R00, self.vertex(v), |w| f(VertexId(w)));
+    }
+    fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R01, self.vertex(v), |e| f(EdgeId(e)));
+    }
+    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R02, self.vertex(v), |g| f(FaceId(g)));
+    }
+    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
+        let e = self.edge(e);
+        let mut out = [0u32; 2];
+        // SAFETY: `raw` is live, `e` checked, `out` has 2 slots.
+        let code =
+            unsafe { ffi::topolab_cgal_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
+        infallible("topolab_cgal_edge_vertices", code);
+        out.map(VertexId)
+    }
+    fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R11, self.edge(e), |x| f(EdgeId(x)));
+    }
+    fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R12, self.edge(e), |g| f(FaceId(g)));
+    }
+    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
+        self.query(Operator::R20, self.face(face), |v| f(VertexId(v)));
+    }
+    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
+        self.query(Operator::R21, self.face(face), |e| f(EdgeId(e)));
+    }
+    fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
+        self.query(Operator::R22, self.face(face), |g| f(FaceId(g)));
+    }
+    fn is_boundary_vertex(&self, v: VertexId) -> bool {
+        let v = self.vertex(v);
+        let mut out = 0;
+        // SAFETY: `raw` is live, `v` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_cgal_is_boundary_vertex(self.raw.as_ptr(), v, &mut out) };
+        infallible("topolab_cgal_is_boundary_vertex", code);
+        out != 0
+    }
+    fn is_boundary_edge(&self, e: EdgeId) -> bool {
+        let e = self.edge(e);
+        let mut out = 0;
+        // SAFETY: `raw` is live, `e` checked, `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_cgal_is_boundary_edge(self.raw.as_ptr(), e, &mut out) };
+        infallible("topolab_cgal_is_boundary_edge", code);
+        out != 0
+    }
+    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+        let raw = self.raw.as_ptr();
+        let code = foreign::with_curves(out, |emit, end_curve, context| {
+            // SAFETY: `raw` is live; the callbacks and context come from `with_curves`, alive
+            // for the whole call.
+            unsafe { ffi::topolab_cgal_boundary_curves(raw, emit, end_curve, context) }
+        });
+        // Its visited flags are the one allocation of a query in the shim: out of memory
+        // there is reported like Rust's own.
+        infallible("topolab_cgal_boundary_curves", code);
+    }
+    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        self.neighbour_in_face(e, face, true)
+    }
+    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        self.neighbour_in_face(e, face, false)
+    }
+
+    fn validate(&self) -> Result<()> {
+        let (mut problem, mut element) = (0, 0u32);
+        // SAFETY: `raw` is live; `problem` and `element` are valid out-pointers.
+        status("topolab_cgal_validate", unsafe {
+            ffi::topolab_cgal_validate(self.raw.as_ptr(), &mut problem, &mut element)
+        })?;
+        let message = match problem {
+            0 => return Ok(()),
+            1 => format!("halfedge {element}: next/prev/opposite/face links disagree"),
+            2 => format!("vertex {element}: its halfedge does not point to it"),
+            3 => format!("face {element}: its halfedge belongs to another face"),
+            _ => "CGAL's own is_valid() fails".to_string(),
+        };
+        Err(Error::invariant(S::NAME, message))
+    }
+
+    /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
+    /// no other thread allocates during construction.
+    fn heap_bytes(&self) -> usize {
+        let mut out = 0;
+        // SAFETY: `raw` is live; `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_cgal_heap_bytes(self.raw.as_ptr(), &mut out) };
+        infallible("topolab_cgal_heap_bytes", code);
+        out as usize
+    }
+
+    fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
+        foreign::explain_halfedges(w, self, S::TITLE, ("incoming", "in"))
+    }
+
+    fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
+        Some(&Kernels)
+    }
+
+    fn access(op: Operator) -> Option<Access> {
+        S::access(op)
+    }
+}
+
+/// CGAL's own loops, as the harness times them ([`MeshTopology::native`]).
+struct Kernels;
+
+impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
+    fn construction(&self, soup: &PolygonSoup) -> Option<Result<Cgal<S>>> {
+        // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
+        Some(Cgal::build_native(soup, soup.num_corners() / 2))
+    }
+
+    fn sweep(&self, mesh: &Cgal<S>, op: Operator) -> Option<Result<u64>> {
+        Some(mesh.native_sweep(op))
+    }
+
+    fn sampled(&self, mesh: &Cgal<S>, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
+        mesh.native_sampled(op, ids)
+    }
+
+    fn workload(&self, mesh: &mut Cgal<S>, workload: Workload) -> Option<Result<f64>> {
+        Some(mesh.native_workload(workload))
+    }
+}

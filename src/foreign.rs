@@ -1,0 +1,326 @@
+//! What the wrappers of the C++ baselines share (the `openmesh` and `cgal` modules): the status
+//! codes of their shims as typed errors, the operator and workload codes of the shims' tables,
+//! Rust closures called back from C++ with their panics carried across, the lab's checks and
+//! errors for what a halfedge library refuses, and the `explain` text of halfedge records.
+//!
+//! Both shims number their statuses the same way (`openmesh/shim.h`, `cgal/shim.h`): 0 ok,
+//! 1 a refused face, 2 out of memory, 3 another C++ exception, 4 an unknown code; and their
+//! operators and workloads by the same tables (a test reads both headers).
+
+use glam::DVec3;
+use std::any::Any;
+use std::ffi::c_void;
+use std::fmt::Write;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use topolab_structures::{
+    BoundaryCurves, Connectivity, EdgeId, Error, Operator, PolygonSoup, Result, Workload,
+};
+
+// Positions go to C++ as 3 doubles per vertex, without a copy.
+const _: () = assert!(std::mem::size_of::<DVec3>() == 24);
+
+/// The status of a shim call that succeeded.
+pub(crate) const OK: i32 = 0;
+/// The library refused a face while building (the shim names it).
+pub(crate) const REFUSED: i32 = 1;
+/// `std::bad_alloc`.
+pub(crate) const OUT_OF_MEMORY: i32 = 2;
+/// Any other C++ exception.
+pub(crate) const EXCEPTION: i32 = 3;
+/// A structure, operator or workload code the shim does not know.
+pub(crate) const UNKNOWN_CODE: i32 = 4;
+
+/// A shim's callback for one answer (an index).
+pub(crate) type Emit = unsafe extern "C" fn(context: *mut c_void, index: u32);
+/// A shim's callback at the end of a boundary curve.
+pub(crate) type EndCurve = unsafe extern "C" fn(context: *mut c_void);
+
+/// The lab's error for status `code` of shim function `call` of `library`.
+pub(crate) fn status(library: &'static str, call: &'static str, code: i32) -> Result<()> {
+    let reason = match code {
+        OK => return Ok(()),
+        OUT_OF_MEMORY => "out of memory",
+        EXCEPTION => "a C++ exception",
+        UNKNOWN_CODE => "a structure, operator or workload code the shim does not know",
+        REFUSED => "it refused a face",
+        _ => "an unknown status",
+    };
+    Err(Error::Foreign {
+        library,
+        call,
+        reason,
+    })
+}
+
+/// For the trait's infallible queries (they cannot return an error): the shims' reads of a
+/// built mesh allocate nothing and throw nothing, so a failure here is a broken invariant of a
+/// shim, reported like Rust's own out-of-memory (which aborts).
+pub(crate) fn infallible(library: &'static str, call: &'static str, code: i32) {
+    if let Err(e) = status(library, call, code) {
+        panic!("{e} (a query that cannot fail did)");
+    }
+}
+
+/// The shims' code of operator `op`: the "Operator codes" table of `openmesh/shim.h` and
+/// `cgal/shim.h` (a test reads both tables and checks this match against them).
+pub(crate) const fn operator_code(op: Operator) -> i32 {
+    match op {
+        Operator::R00 => 0,
+        Operator::R01 => 1,
+        Operator::R02 => 2,
+        Operator::R10 => 3,
+        Operator::R11 => 4,
+        Operator::R12 => 5,
+        Operator::R20 => 6,
+        Operator::R21 => 7,
+        Operator::R22 => 8,
+        Operator::BoundaryVertex => 9,
+        Operator::BoundaryEdge => 10,
+        Operator::BoundaryCurves => 11,
+        Operator::EdgeSuccessor => 12,
+        Operator::EdgePredecessor => 13,
+    }
+}
+
+/// The shims' code of workload `w`: their "Workload codes" table.
+pub(crate) const fn workload_code(w: Workload) -> i32 {
+    match w {
+        Workload::Circulators => 0,
+        Workload::Barycenter => 1,
+        Workload::Normals => 2,
+        Workload::Smoothing => 3,
+    }
+}
+
+/// A Rust closure called from C++, with a panic caught and carried back across the FFI
+/// (unwinding through C++ frames is not allowed).
+struct Callback<F> {
+    f: F,
+    panic: Option<Box<dyn Any + Send>>,
+}
+
+impl<F> Callback<F> {
+    fn new(f: F) -> Self {
+        Self { f, panic: None }
+    }
+
+    fn run(&mut self, call: impl FnOnce(&mut F)) {
+        if self.panic.is_some() {
+            return;
+        }
+        if let Err(payload) = catch_unwind(AssertUnwindSafe(|| call(&mut self.f))) {
+            self.panic = Some(payload);
+        }
+    }
+
+    /// Re-raises a panic of the closure, now that C++ has returned.
+    fn finish(self) {
+        if let Some(payload) = self.panic {
+            resume_unwind(payload);
+        }
+    }
+}
+
+unsafe extern "C" fn emit_index<F: FnMut(u32)>(context: *mut c_void, index: u32) {
+    // SAFETY: `context` is the `&mut Callback<F>` that `with_emit` passed along with this very
+    // instantiation, alive and not otherwise borrowed for the C++ call.
+    let callback = unsafe { &mut *context.cast::<Callback<F>>() };
+    callback.run(|f| f(index));
+}
+
+unsafe extern "C" fn push_curve_edge(context: *mut c_void, index: u32) {
+    // SAFETY: `context` is the `&mut Callback<&mut BoundaryCurves>` of `with_curves`.
+    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
+    callback.run(|out| out.edges.push(EdgeId(index)));
+}
+
+unsafe extern "C" fn end_curve(context: *mut c_void) {
+    // SAFETY: as in `push_curve_edge`.
+    let callback = unsafe { &mut *context.cast::<Callback<&mut BoundaryCurves>>() };
+    callback.run(|out| out.end_curve());
+}
+
+/// Runs `call(emit, context)`, a shim function that calls `emit(context, index)` per answer,
+/// with `f` receiving the answers; returns the shim's status. A panic of `f` stops further
+/// calls of `f` and is re-raised once C++ has returned. `call` must pass both arguments on
+/// unchanged and must not keep them.
+pub(crate) fn with_emit<F: FnMut(u32)>(f: F, call: impl FnOnce(Emit, *mut c_void) -> i32) -> i32 {
+    let mut callback = Callback::new(f);
+    let code = call(emit_index::<F>, (&mut callback as *mut Callback<F>).cast());
+    callback.finish();
+    code
+}
+
+/// Like [`with_emit`] for a shim function that writes boundary curves: its edges one by one,
+/// then the end of each curve; `out` is cleared first.
+pub(crate) fn with_curves(
+    out: &mut BoundaryCurves,
+    call: impl FnOnce(Emit, EndCurve, *mut c_void) -> i32,
+) -> i32 {
+    out.clear();
+    let mut callback = Callback::new(out);
+    let code = call(
+        push_curve_edge,
+        end_curve,
+        (&mut callback as *mut Callback<&mut BoundaryCurves>).cast(),
+    );
+    callback.finish();
+    code
+}
+
+/// The lab's error for face `face` that a library refused while building (`what`, e.g.
+/// "OpenMesh's add_face"): the soup's own edge analysis names the problem the way every other
+/// structure does; failing that, the non-manifold vertex of that face.
+pub(crate) fn refusal(soup: &PolygonSoup, face: usize, what: &str) -> Error {
+    let connectivity = match soup.connectivity() {
+        Ok(c) => c,
+        Err(e) => return e,
+    };
+    let fans = connectivity.vertex_fans(soup);
+    match soup.face(face).iter().find(|&&v| fans[v as usize] > 1) {
+        Some(&vertex) => Error::NonManifoldVertex {
+            vertex,
+            fans: fans[vertex as usize] as usize,
+        },
+        None => Error::Unsupported(format!(
+            "{what} refused face {face} {:?} of a manifold soup",
+            soup.face(face)
+        )),
+    }
+}
+
+/// The halfedge libraries (OpenMesh, CGAL's Surface_mesh and Polyhedron_3) store a vertex
+/// with several fans by linking the fans' boundary halfedges, so every fan must be open: a
+/// closed fan plus another one at the same vertex (two cones tip to tip, one closed) is
+/// refused by their `add_face` ("complex vertex"). Refusing it here, before the library,
+/// makes the answer independent of the face order.
+pub(crate) fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
+    let fans = connectivity.vertex_fans(soup);
+    if fans.iter().all(|&n| n <= 1) {
+        return Ok(());
+    }
+    // Each open fan has two boundary edges at its vertex (one in, one out).
+    let mut boundary_sides = vec![0u32; soup.num_vertices()];
+    for (face, corners) in soup.faces().enumerate() {
+        let start = soup.face_start(face);
+        for (i, &v) in corners.iter().enumerate() {
+            if connectivity.twin_corner(start + i).is_none() {
+                boundary_sides[v as usize] += 1;
+                boundary_sides[corners[(i + 1) % corners.len()] as usize] += 1;
+            }
+        }
+    }
+    match (0..fans.len()).find(|&v| fans[v] > 1 && boundary_sides[v] < 2 * fans[v]) {
+        Some(v) => Err(Error::NonManifoldVertex {
+            vertex: v as u32,
+            fans: fans[v] as usize,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// A halfedge library's records, read one by one through its shim (for `explain`). Halfedge
+/// `h`'s opposite is `h ^ 1` and its edge `h / 2` in every library the lab wraps; `u32::MAX`
+/// stands for "none".
+pub(crate) trait HalfedgeRecords {
+    /// Numbers of vertices, edges and faces.
+    fn counts(&self) -> [u32; 3];
+    /// The position of vertex `v`.
+    fn record_position(&self, v: u32) -> DVec3;
+    /// The halfedge vertex `v` keeps.
+    fn vertex_halfedge(&self, v: u32) -> u32;
+    /// Halfedge `h`: (to vertex, next, prev, face).
+    fn halfedge(&self, h: u32) -> [u32; 4];
+    /// The halfedge face `f` keeps.
+    fn face_halfedge(&self, f: u32) -> u32;
+}
+
+/// Writes every record of `records` after the line `title`: vertices (position and the
+/// halfedge each keeps, `vertex_halfedge` saying which one: `("outgoing", "out")` or
+/// `("incoming", "in")`, long and short), halfedges, faces.
+pub(crate) fn explain_halfedges(
+    w: &mut dyn Write,
+    records: &impl HalfedgeRecords,
+    title: &str,
+    vertex_halfedge: (&str, &str),
+) -> std::fmt::Result {
+    let (long, short) = vertex_halfedge;
+    let [vertices, edges, faces] = records.counts();
+    let show = |x: u32, prefix: &str| {
+        if x == u32::MAX {
+            "-".to_string()
+        } else {
+            format!("{prefix}{x}")
+        }
+    };
+    writeln!(w, "{title}")?;
+    writeln!(w, "vertices: {vertices} (position, {long} halfedge)")?;
+    for v in 0..vertices {
+        let p = records.record_position(v);
+        let h = records.vertex_halfedge(v);
+        writeln!(
+            w,
+            "  v{v}: ({:.3}, {:.3}, {:.3})  {short} {}",
+            p.x,
+            p.y,
+            p.z,
+            show(h, "h")
+        )?;
+    }
+    writeln!(w, "halfedges: {} (to vertex, next, prev, face)", 2 * edges)?;
+    for h in 0..2 * edges {
+        let [to, next, prev, face] = records.halfedge(h);
+        writeln!(
+            w,
+            "  h{h} (edge e{}): to v{to}, next h{next}, prev h{prev}, face {}",
+            h / 2,
+            show(face, "f")
+        )?;
+    }
+    writeln!(w, "faces: {faces} (one halfedge)")?;
+    for f in 0..faces {
+        writeln!(w, "  f{f}: h{}", records.face_halfedge(f))?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The (code, name) pairs of the table titled `title` in the header comment of `header`:
+    /// the indented lines after the title.
+    fn shim_table(header: &str, title: &str) -> Vec<(i32, String)> {
+        let mut lines = header.lines().skip_while(|l| !l.contains(title)).skip(1);
+        let mut pairs = Vec::new();
+        while let Some(entries) = lines.next().and_then(|l| l.strip_prefix(" *   ")) {
+            let tokens: Vec<&str> = entries.split_whitespace().collect();
+            for pair in tokens.chunks(2) {
+                let code = pair[0].parse().expect("a code, then a name");
+                pairs.push((code, pair[1].to_string()));
+            }
+        }
+        pairs
+    }
+
+    #[test]
+    fn codes_are_the_tables_of_both_shim_headers() {
+        for header in [
+            include_str!("../openmesh/shim.h"),
+            include_str!("../cgal/shim.h"),
+        ] {
+            let ops = shim_table(header, "Operator codes");
+            assert_eq!(ops.len(), Operator::ALL.len(), "{ops:?}");
+            for (code, name) in &ops {
+                let op = Operator::from_name(name).expect("an operator name");
+                assert_eq!(operator_code(op), *code, "{name}");
+            }
+            let workloads = shim_table(header, "Workload codes");
+            assert_eq!(workloads.len(), Workload::ALL.len(), "{workloads:?}");
+            for (code, name) in &workloads {
+                let w = Workload::from_name(name).expect("a workload name");
+                assert_eq!(workload_code(w), *code, "{name}");
+            }
+        }
+    }
+}

@@ -1,0 +1,287 @@
+//! CGAL's native C++ sweeps and workloads give the lab's checksums for both structures, their
+//! construction reports problems the way the lab's structures do, and `convex_hull_3` builds
+//! the hull the lab's algorithms build.
+
+#[cfg(not(has_cgal))]
+#[test]
+fn skipped_cgal_not_compiled_in() {
+    common::report_skip("cgal native sweeps", topolab::CGAL_MISSING);
+    for name in [
+        topolab::registry::CGAL_SURFACE_MESH,
+        topolab::registry::CGAL_POLYHEDRON,
+    ] {
+        assert!(!topolab::registry::NAMES.contains(&name), "{name}");
+    }
+}
+
+mod common;
+
+#[cfg(has_cgal)]
+mod native {
+    use super::common::{
+        baseline_meshes, broken_soups, check_native_workloads, checksum, close, closed_fan_soups,
+        harness_times_native_loops, heap_alone, heap_shared, query_count, sampled,
+    };
+    use glam::DVec3;
+    use topolab::cgal::hull::convex_hull_3;
+    use topolab::cgal::{self, Cgal, CgalStructure, Polyhedron, SurfaceMesh};
+    use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
+    use topolab_structures::meshes;
+    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
+
+    /// A native answer with CGAL's own failures turned into a test failure.
+    fn ok<T>(answer: topolab_structures::Result<T>) -> T {
+        answer.expect("CGAL failed inside the shim")
+    }
+
+    fn native_sweeps_equal_the_checksums_of_the_lab<S: CgalStructure>() {
+        for (name, soup) in baseline_meshes() {
+            let mesh = Cgal::<S>::from_soup(&soup).unwrap();
+            let reference = VertexList::from_soup(&soup).unwrap();
+            for op in Operator::ALL {
+                let expected = checksum(&reference, op);
+                assert_eq!(
+                    ok(mesh.native_sweep(op)),
+                    expected,
+                    "{} {} on {name}",
+                    S::NAME,
+                    op.name()
+                );
+                // The per-query FFI path agrees too.
+                assert_eq!(
+                    checksum(&mesh, op),
+                    expected,
+                    "{} {} per query on {name}",
+                    S::NAME,
+                    op.name()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn surface_mesh_sweeps_equal_the_checksums_of_the_lab() {
+        let _shared = heap_shared();
+        native_sweeps_equal_the_checksums_of_the_lab::<cgal::SurfaceMeshClass>();
+    }
+
+    #[test]
+    fn polyhedron_sweeps_equal_the_checksums_of_the_lab() {
+        let _shared = heap_shared();
+        native_sweeps_equal_the_checksums_of_the_lab::<cgal::PolyhedronClass>();
+    }
+
+    #[test]
+    fn checksums_see_the_boundary() {
+        let _shared = heap_shared();
+        let grid = meshes::grid(6, 4, true);
+        let (sm, ph) = (
+            SurfaceMesh::from_soup(&grid).unwrap(),
+            Polyhedron::from_soup(&grid).unwrap(),
+        );
+        for op in [
+            Operator::BoundaryVertex,
+            Operator::BoundaryEdge,
+            Operator::BoundaryCurves,
+        ] {
+            assert_ne!(ok(sm.native_sweep(op)), 0, "{op:?} on a grid");
+            assert_ne!(ok(ph.native_sweep(op)), 0, "{op:?} on a grid");
+        }
+    }
+
+    fn sampled_kernels_sum_the_sampled_queries_only<S: CgalStructure>() {
+        for (name, soup) in baseline_meshes() {
+            let mesh = Cgal::<S>::from_soup(&soup).unwrap();
+            let reference = VertexList::from_soup(&soup).unwrap();
+            for op in Operator::ALL {
+                if op == Operator::BoundaryCurves {
+                    assert!(mesh.native_sampled(op, &[0]).is_none());
+                    continue;
+                }
+                let n = query_count(&reference, op) as u32;
+                // Repeated ids count twice, like repeated queries.
+                let ids = [n - 1, 0, n / 2, n / 2];
+                let native = mesh.native_sampled(op, &ids).map(ok);
+                assert_eq!(
+                    native,
+                    Some(sampled(&mesh, op, &ids)),
+                    "{} sampled {} on {name}",
+                    S::NAME,
+                    op.name()
+                );
+                // Vertex and face ids are the input's in every structure (edge ids are not).
+                if op.input() != Input::Edge {
+                    assert_eq!(
+                        native,
+                        Some(sampled(&reference, op, &ids)),
+                        "{} {} vs vertex-list",
+                        S::NAME,
+                        op.name()
+                    );
+                }
+                assert!(mesh.native_sampled(op, &[n]).is_none(), "id out of range");
+            }
+        }
+    }
+
+    #[test]
+    fn sampled_kernels_sum_the_sampled_queries_only_in_both() {
+        let _shared = heap_shared();
+        sampled_kernels_sum_the_sampled_queries_only::<cgal::SurfaceMeshClass>();
+        sampled_kernels_sum_the_sampled_queries_only::<cgal::PolyhedronClass>();
+    }
+
+    fn workloads_compute_what_the_benchmark_says<S: CgalStructure>() {
+        check_native_workloads(
+            |soup| Cgal::<S>::from_soup(soup).unwrap(),
+            |mesh, w| ok(mesh.prepare_workload(w)),
+            |mesh, w| ok(mesh.native_workload(w)),
+            |mesh, v| mesh.position(VertexId::new(v)),
+        );
+    }
+
+    #[test]
+    fn workloads_compute_what_the_benchmark_says_in_both() {
+        let _shared = heap_shared();
+        workloads_compute_what_the_benchmark_says::<cgal::SurfaceMeshClass>();
+        workloads_compute_what_the_benchmark_says::<cgal::PolyhedronClass>();
+    }
+
+    /// The harness reaches CGAL's own loops through `MeshTopology::native`.
+    #[test]
+    fn the_harness_times_cgals_own_loops_in_both() {
+        let _shared = heap_shared();
+        harness_times_native_loops::<SurfaceMesh>();
+        harness_times_native_loops::<Polyhedron>();
+    }
+
+    #[test]
+    fn heap_bytes_are_what_the_records_take() {
+        let _alone = heap_alone();
+        // A closed torus: V = F / 2, E = 3F / 2.
+        let soup = meshes::torus_with_triangles(60_000);
+        let per_face = |bytes: usize| bytes as f64 / soup.num_faces() as f64;
+        // Surface_mesh: 28 B per vertex, 32 per edge (two halfedges of 16), 4 per face, plus
+        // a removed-flag bit per element: about 66 B per triangle, as OpenMesh's arrays.
+        let sm = per_face(SurfaceMesh::from_soup(&soup).unwrap().heap_bytes());
+        // Polyhedron_3 with ids: nodes of 56 B per vertex, 128 per halfedge pair, 32 per
+        // facet, 8 B per table entry: 276 B per triangle before the allocator's overhead
+        // (16 B per node, rounded up): about 320.
+        let ph = per_face(Polyhedron::from_soup(&soup).unwrap().heap_bytes());
+        eprintln!("CGAL heap: Surface_mesh {sm:.1}, Polyhedron_3 {ph:.1} bytes per face");
+        assert!(
+            (60.0..100.0).contains(&sm),
+            "Surface_mesh: {sm} heap bytes per face"
+        );
+        assert!(
+            (276.0..360.0).contains(&ph),
+            "Polyhedron_3: {ph} heap bytes per face"
+        );
+    }
+
+    fn refusals_name_elements_like_the_lab<S: CgalStructure>() {
+        for soup in broken_soups() {
+            let lab = VertexList::from_soup(&soup).unwrap_err().to_string();
+            let checked = Cgal::<S>::from_soup(&soup).unwrap_err().to_string();
+            // CGAL refuses the face too; the error still names it the lab's way.
+            let native = Cgal::<S>::build_native(&soup, 8).unwrap_err().to_string();
+            assert_eq!(checked, lab, "{}", S::NAME);
+            assert_eq!(native, lab, "{}", S::NAME);
+        }
+    }
+
+    #[test]
+    fn refusals_name_elements_like_the_lab_in_both() {
+        let _shared = heap_shared();
+        refusals_name_elements_like_the_lab::<cgal::SurfaceMeshClass>();
+        refusals_name_elements_like_the_lab::<cgal::PolyhedronClass>();
+    }
+
+    fn a_closed_fan_is_refused_in_any_order<S: CgalStructure>() {
+        for soup in closed_fan_soups() {
+            let checked = Cgal::<S>::from_soup(&soup).unwrap_err();
+            assert_eq!(
+                checked.kind(),
+                "non-manifold-vertex",
+                "{}: {checked}",
+                S::NAME
+            );
+            // CGAL refuses it as well, named the same way.
+            let native = Cgal::<S>::build_native(&soup, 16).unwrap_err();
+            assert_eq!(native.to_string(), checked.to_string(), "{}", S::NAME);
+        }
+        // Open fans (the bowtie) are stored; the conformance suite checks the answers.
+        assert!(Cgal::<S>::from_soup(&meshes::bowtie()).is_ok());
+    }
+
+    #[test]
+    fn a_closed_fan_at_a_non_manifold_vertex_is_refused_in_any_order() {
+        let _shared = heap_shared();
+        a_closed_fan_is_refused_in_any_order::<cgal::SurfaceMeshClass>();
+        a_closed_fan_is_refused_in_any_order::<cgal::PolyhedronClass>();
+    }
+
+    #[test]
+    fn explain_shows_every_record() {
+        let _shared = heap_shared();
+        let soup = meshes::open_tetrahedron();
+        for (text, name) in [
+            (
+                explain(&SurfaceMesh::from_soup(&soup).unwrap()),
+                "Surface_mesh",
+            ),
+            (
+                explain(&Polyhedron::from_soup(&soup).unwrap()),
+                "Polyhedron_3",
+            ),
+        ] {
+            assert!(text.contains(name), "{text}");
+            // 4 vertices, 12 halfedges (3 of them border ones), 3 faces.
+            assert_eq!(text.matches("\n  v").count(), 4, "{text}");
+            assert_eq!(text.matches("\n  h").count(), 12, "{text}");
+            assert_eq!(text.matches("face -").count(), 3, "{text}");
+            assert_eq!(text.matches("\n  f").count(), 3, "{text}");
+        }
+    }
+
+    fn explain(m: &impl MeshTopology) -> String {
+        let mut text = String::new();
+        m.explain(&mut text).unwrap();
+        text
+    }
+
+    #[test]
+    fn convex_hull_3_builds_the_hull_the_lab_builds() {
+        let _shared = heap_shared();
+        for (shape, n) in [
+            (Shape::Ball, 3000),
+            (Shape::Sphere, 500),
+            (Shape::Cube, 2000),
+        ] {
+            let points = random_points(shape, n, 11);
+            let lab = convex_hull(&points, Algorithm::Randomized { seed: 3 }).unwrap();
+            let cgal = convex_hull_3(&points, 2).unwrap();
+            // Random points are in general position: the hull's triangulation is unique.
+            assert_eq!(cgal.vertices, lab.vertices().len(), "{shape:?}");
+            assert_eq!(cgal.faces, lab.mesh.num_faces(), "{shape:?}");
+            assert!(cgal.closed_triangles, "{shape:?}");
+            assert!(close(cgal.volume, lab.volume()), "{shape:?}");
+            assert!(cgal.seconds > 0.0 && cgal.seconds.is_finite());
+        }
+    }
+
+    #[test]
+    fn convex_hull_3_refuses_what_the_lab_refuses() {
+        let _shared = heap_shared();
+        let plane: Vec<DVec3> = (0..20)
+            .map(|i| DVec3::new(i as f64, (i * i % 7) as f64, 0.0))
+            .collect();
+        let mut nan = random_points(Shape::Ball, 10, 1);
+        nan[4].y = f64::NAN;
+        for points in [plane, nan, vec![DVec3::ONE; 3]] {
+            let lab = convex_hull(&points, Algorithm::Gift).unwrap_err();
+            let cgal = convex_hull_3(&points, 1).unwrap_err();
+            assert_eq!(cgal.to_string(), lab.to_string());
+        }
+    }
+}
