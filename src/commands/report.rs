@@ -40,7 +40,7 @@ pub struct ReportArgs {
     pub structures: Option<Vec<String>>,
     /// Sections of the page to measure and show, comma separated (default: all): chooser,
     /// targets, table-4-1, plots, sweeps, workloads, memory, construction, orderings,
-    /// real-meshes, real-at-scale, libigl, hull, teaching, meshes. Only what they are drawn
+    /// real-meshes, real-at-scale, libigl, hull, changing, teaching, meshes. Only what they are drawn
     /// from is measured.
     #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
     pub sections: Option<Vec<Section>>,

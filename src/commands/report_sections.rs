@@ -113,6 +113,25 @@ mod tests {
     use super::*;
 
     #[test]
+    fn the_help_of_sections_names_every_section() {
+        use clap::CommandFactory as _;
+        let cli = crate::cli::Cli::command();
+        let report = cli.find_subcommand("report").expect("report");
+        let arg = report
+            .get_arguments()
+            .find(|a| a.get_id() == "sections")
+            .expect("--sections");
+        let help = arg.get_help().expect("documented").to_string();
+        for s in Section::ALL {
+            assert!(
+                help.contains(s.name()),
+                "--sections help lacks {}",
+                s.name()
+            );
+        }
+    }
+
+    #[test]
     fn a_focused_run_measures_only_what_its_sections_show() {
         let mut notes = Vec::new();
         let all = Selection::new(None, None, &mut notes);
