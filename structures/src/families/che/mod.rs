@@ -116,6 +116,7 @@
 
 mod access;
 mod build;
+mod fan;
 mod level0;
 mod level1;
 mod level2;
@@ -387,60 +388,6 @@ pub fn fan_walk_algorithm_7(
         if h == start {
             return None;
         }
-    }
-}
-
-/// The spokes of the star of the vertex that `start` leaves (the edges from it to its
-/// neighbours), for the timed relations of levels 2 and 3 (see "Speed" in the module docs):
-/// calls `spoke(e, O[e])` once per spoke that has a half-edge `e` entering the vertex, and
-/// returns the boundary half-edge leaving the vertex (`start` itself), the one spoke without
-/// an entering half-edge, if the vertex is on the boundary.
-///
-/// `start` must be `VH[v]` (the boundary half-edge of a boundary vertex). Each spoke is
-/// reported by the half-edge that enters the vertex, so its far end is `V[e]` and its edge
-/// `min(e, O[e])`, read at the index the walk reads `O[e]` at; and each triangle of the star
-/// is the triangle of exactly one reported `e`. An interior star is walked from both ends at
-/// once, forward `h ← O[prev(h)]` (Algorithm 7's step) and backward `g ← next(O[g])`, until
-/// the two meet: two independent chains of dependent loads instead of one. A boundary star
-/// is walked forward only, as Algorithm 7 does ([`fan_walk_algorithm_7`] keeps its order
-/// for teaching); the spokes come in neither walk's cyclic order.
-#[inline(always)]
-pub fn fan_spokes(
-    o: &[i32],
-    start: HalfEdgeId,
-    mut spoke: impl FnMut(HalfEdgeId, i32),
-) -> Option<HalfEdgeId> {
-    let mut back = read!("O", o, start.index());
-    let mut h = start;
-    if back < 0 {
-        loop {
-            let e = prev(h);
-            let x = read!("O", o, e.index());
-            spoke(e, x);
-            if x < 0 {
-                return Some(start);
-            }
-            h = HalfEdgeId(x as u32);
-        }
-    }
-    // Forward: `h` leaves the vertex, `prev(h)` enters it. Backward: `g` leaves the vertex
-    // and `back = O[g]` enters it. Every spoke strictly between `h` and `g` is unreported.
-    let mut g = start;
-    loop {
-        let e = prev(h);
-        let x = read!("O", o, e.index());
-        spoke(e, x);
-        h = HalfEdgeId(x as u32);
-        if h == g {
-            return None;
-        }
-        let e = HalfEdgeId(back as u32);
-        spoke(e, g.0 as i32);
-        g = next(e);
-        if g == h {
-            return None;
-        }
-        back = read!("O", o, g.index());
     }
 }
 
