@@ -184,11 +184,29 @@ mod tests {
         // One triangle: half-edges 0, 1, 2 over vertices 0, 1, 2, all on the boundary.
         let v = [0, 1, 2];
         assert!(ranges_hold(&v, &[-1, -1, -1], &[0, 1, 2]));
-        assert!(ranges_hold(&v, &[-1, -3, -2], &[0, -1, 2]), "labels and unused");
-        assert!(!ranges_hold(&v, &[3, -1, -1], &[0, 1, 2]), "O[] past the end");
-        assert!(!ranges_hold(&v, &[-1, -1, -1], &[0, 1, 3]), "VH[] past the end");
-        assert!(!ranges_hold(&v[..2], &[-1, -1], &[0, 1]), "not whole triangles");
-        assert!(!ranges_hold(&v[..2], &[-1, -1, -1], &[0, 1]), "V[] shorter than O[]");
-        assert!(ranges_hold(&[], &[], &[-1]), "an empty mesh with an unused vertex");
+        assert!(
+            ranges_hold(&v, &[-1, -3, -2], &[0, -1, 2]),
+            "labels and unused"
+        );
+        assert!(
+            !ranges_hold(&v, &[3, -1, -1], &[0, 1, 2]),
+            "O[] past the end"
+        );
+        assert!(
+            !ranges_hold(&v, &[-1, -1, -1], &[0, 1, 3]),
+            "VH[] past the end"
+        );
+        assert!(
+            !ranges_hold(&v[..2], &[-1, -1], &[0, 1]),
+            "not whole triangles"
+        );
+        assert!(
+            !ranges_hold(&v[..2], &[-1, -1, -1], &[0, 1]),
+            "V[] shorter than O[]"
+        );
+        assert!(
+            ranges_hold(&[], &[], &[-1]),
+            "an empty mesh with an unused vertex"
+        );
     }
 }

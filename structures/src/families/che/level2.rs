@@ -4,9 +4,9 @@
 //! at once ([`Fan::spokes`]; see "Speed" in the [module docs](super)).
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
-use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::fan::{ranges_hold, Fan};
 use super::triangle;
+use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -216,7 +216,7 @@ impl CheLevel for CheL2 {
         self.l1.edge_of(he)
     }
 
-    /// The star walked from both ends ([`Fan::spokes`]); each neighbour is `V[e]` of the
+    /// The star walked from both ends (`Fan::spokes`); each neighbour is `V[e]` of the
     /// half-edge entering `v`.
     #[inline(always)]
     fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
@@ -226,7 +226,7 @@ impl CheLevel for CheL2 {
         }
     }
 
-    /// The star walked from both ends ([`Fan::spokes`]); each edge is `min(e, O[e])`.
+    /// The star walked from both ends (`Fan::spokes`); each edge is `min(e, O[e])`.
     #[inline(always)]
     fn spoke_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         let lone = self.fan().spokes(v, |e, o| {
@@ -237,7 +237,7 @@ impl CheLevel for CheL2 {
         }
     }
 
-    /// The star walked from both ends ([`Fan::spokes`]); each entering half-edge's triangle.
+    /// The star walked from both ends (`Fan::spokes`); each entering half-edge's triangle.
     #[inline(always)]
     fn star_triangles(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
         self.fan().spokes(v, |e, _| f(triangle(e)));
