@@ -152,25 +152,26 @@ impl<'a> Fan<'a> {
                 h = HalfEdgeId(x as u32);
             }
         }
-        // Forward: `h` leaves the vertex and `prev(h)` enters it. Backward: `g` leaves the
-        // vertex and `back = O[g]` enters it. The spokes strictly between `h` and `g` are
-        // not reported yet.
+        // `f` is the next spoke to report forward (entering the vertex, `prev` of a
+        // half-edge leaving it), `b` the next to report backward (`O[g]` of the half-edge
+        // `g` leaving the vertex); the spokes from `f` round to `b` are not reported yet.
+        let mut f = prev(start);
+        let mut b = HalfEdgeId(back as u32);
         let mut g = start;
         loop {
-            let e = prev(h);
-            let x = self.o(e);
-            spoke(e, x);
-            h = HalfEdgeId(x as u32);
-            if h == g {
+            let x = self.o(f);
+            spoke(f, x);
+            if f == b {
                 return None;
             }
-            let e = HalfEdgeId(back as u32);
-            spoke(e, g.0 as i32);
-            g = next(e);
-            if g == h {
+            spoke(b, g.0 as i32);
+            g = next(b);
+            f = prev(HalfEdgeId(x as u32));
+            if f == b {
                 return None;
             }
             back = self.o(g);
+            b = HalfEdgeId(back as u32);
         }
     }
 }
