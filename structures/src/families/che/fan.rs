@@ -17,10 +17,11 @@
 //! So the reads of `O[]` and `V[]` need no bounds check. Reads of `G[]` (positions) stay
 //! checked.
 //!
-//! Measured on the harness's R00 sweep of a 100k-triangle torus with callgrind: the bounds
-//! checks were 18 of che-l2's 133 instructions per vertex, and 14 of 165 in the smoothing
-//! workload. See "Speed" in the [module docs](super) for what this gained in time and for
-//! what the other structures were offered.
+//! Measured with callgrind on the harness's kernels over a 100k-triangle torus, dropping
+//! the bounds checks took che-l2's R00 sweep from 139 to 123 instructions per vertex and
+//! the smoothing workload from 183 to 148. See "Speed" in the [module docs](super) for the
+//! time this gained and for what the other structures were offered (the trait's fairness
+//! rule).
 
 #![allow(unsafe_code)]
 
