@@ -116,6 +116,7 @@
 
 mod access;
 mod build;
+mod edit;
 mod level0;
 mod level1;
 mod level2;
