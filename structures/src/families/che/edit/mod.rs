@@ -243,7 +243,10 @@ macro_rules! che_edit {
                     .map(VertexId)
             }
             fn is_deleted_vertex(&self, v: VertexId) -> bool {
-                self.deleted_marks().get(v.index()).copied().unwrap_or(false)
+                self.deleted_marks()
+                    .get(v.index())
+                    .copied()
+                    .unwrap_or(false)
             }
             fn is_deleted_face(&self, _f: FaceId) -> bool {
                 false // deleted triangles leave V[] at once (see the module docs)

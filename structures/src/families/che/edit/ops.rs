@@ -39,8 +39,7 @@ impl Parts<'_> {
 
     /// The half-edge from `a` to `b` by a scan of `V[]`.
     fn scan_half_edge(&self, a: u32, b: u32) -> Option<u32> {
-        (0..self.v.len() as u32)
-            .find(|&g| self.v[g as usize] == a && self.v[nx(g) as usize] == b)
+        (0..self.v.len() as u32).find(|&g| self.v[g as usize] == a && self.v[nx(g) as usize] == b)
     }
 
     /// Calls `f` with each half-edge leaving `x` until it returns `true`; returns whether it
@@ -250,7 +249,9 @@ impl Parts<'_> {
                 }
             }
             if let Some(ch) = self.ch.as_deref_mut() {
-                ch.iter_mut().filter(|h| moved(**h)).for_each(|h| *h = to(*h));
+                ch.iter_mut()
+                    .filter(|h| moved(**h))
+                    .for_each(|h| *h = to(*h));
             }
         }
         let n = 3 * last as usize;
@@ -446,7 +447,10 @@ impl Parts<'_> {
             if corners.contains(&to) {
                 removed.push(t);
             } else {
-                corners.iter_mut().filter(|x| **x == from).for_each(|x| *x = to);
+                corners
+                    .iter_mut()
+                    .filter(|x| **x == from)
+                    .for_each(|x| *x = to);
                 changed.push(t);
             }
         }
