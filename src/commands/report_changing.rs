@@ -30,10 +30,11 @@ pub const EDITABLE: [&str; 6] = [
 /// Tori larger than this (faces) are left out: the workloads triple the mesh.
 const MAX_FACES: usize = 4_000_000;
 
-/// The CHE levels run the workloads up to this size only: each of their edits scans `V[]`
-/// (level 1) or rebuilds `EH` (levels 2, 3), O(n), so a workload is O(n²) on them (see their
-/// editing module); level 0 scans for every opposite too and is left out.
-const CHE_MAX_FACES: usize = 20_000;
+/// The CHE levels run the workloads up to this size only (the 1k torus): each of their edits
+/// scans `V[]` (level 1) or rebuilds `EH` (levels 2, 3), O(n), so a workload is O(n²) on them
+/// (see their editing module): on the 4k torus a run already takes seconds, some 2000x the
+/// index half-edge's. Level 0 scans for every opposite too and is left out.
+const CHE_MAX_FACES: usize = 1_500;
 
 fn timed<M: MeshEdit>(
     soup: &PolygonSoup,
