@@ -73,8 +73,8 @@ pub enum Command {
         /// The vertex `--trace` asks about.
         #[arg(long)]
         vertex: Option<u32>,
-        /// The edge `--trace` asks about, numbered as the mesh's edges in order of first
-        /// appearance (the edge list's ids) on every structure.
+        /// The edge `--trace` or `--op` asks about, numbered as the mesh's edges in order of
+        /// first appearance (the edge list's ids) on every structure.
         #[arg(long)]
         edge: Option<u32>,
         /// The face `--trace` asks about.
@@ -83,6 +83,11 @@ pub enum Command {
         /// With `--trace`: more structures side by side, comma-separated.
         #[arg(long, value_delimiter = ',', requires = "trace")]
         structures: Vec<String>,
+        /// Do one edit of `--edge E` and print the records it writes, old -> new, and what it
+        /// reads (`collapse`: the edge's first vertex into its second); a refused edit exits
+        /// with code 1 and the reason. `explain che --op ...` edits the four CHE levels.
+        #[arg(long, value_enum, conflicts_with = "trace", requires = "edge")]
+        op: Option<commands::explain_edit::ExplainOp>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
     Report(commands::report::ReportArgs),
@@ -141,11 +146,19 @@ pub fn run(cli: Cli) -> u8 {
         Command::Explain {
             name,
             mesh,
+            edge,
+            op: Some(op),
+            ..
+        } => commands::explain_edit::run(&name, mesh.as_deref(), op, edge.unwrap_or_default()),
+        Command::Explain {
+            name,
+            mesh,
             trace,
             vertex,
             edge,
             face,
             structures,
+            op: None,
         } => commands::explain::run_traced(
             &name,
             mesh.as_deref(),

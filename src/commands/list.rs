@@ -31,7 +31,15 @@ fn edit_row<M: MeshEdit>() -> EditRow {
 
 /// The structures that implement `MeshEdit`.
 fn edit_rows() -> Vec<EditRow> {
-    vec![edit_row::<IndexHalfEdge>(), edit_row::<PointerHalfEdge>()]
+    use topolab_structures::{CheL0, CheL1, CheL2, CheL3};
+    vec![
+        edit_row::<IndexHalfEdge>(),
+        edit_row::<PointerHalfEdge>(),
+        edit_row::<CheL0>(),
+        edit_row::<CheL1>(),
+        edit_row::<CheL2>(),
+        edit_row::<CheL3>(),
+    ]
 }
 
 #[derive(serde::Serialize)]

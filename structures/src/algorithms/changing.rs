@@ -13,7 +13,7 @@
 
 use crate::core::edit::MeshEdit;
 use crate::core::error::{Error, Result};
-use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::ids::{FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
@@ -109,8 +109,19 @@ pub fn sqrt3_step<M: MeshEdit>(m: &mut M) -> Result<()> {
             m.set_position(v, p)?;
         }
     }
-    for e in 0..ne {
-        match m.flip_edge(EdgeId::new(e)) {
+    // The old edges are those between two old vertices (every new edge has a new end), found
+    // after the splits: a structure whose edge ids are half-edge ids of triangles (the CHE)
+    // moves an old edge to a new triangle when it splits a face, so ids taken before would
+    // name other edges. Flipping one old edge rewrites only its own two triangles.
+    let mut old = Vec::with_capacity(ne);
+    m.for_each_edge(|e| {
+        let [a, b] = m.edge_vertices(e);
+        if a.index() < nv && b.index() < nv {
+            old.push(e);
+        }
+    });
+    for e in old {
+        match m.flip_edge(e) {
             Ok(()) | Err(Error::EditRefused { .. }) => {}
             Err(e) => return Err(e),
         }
@@ -143,6 +154,7 @@ pub fn collapse_test<M: MeshEdit>(m: &mut M) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::ids::EdgeId;
     use crate::testing::editing::canonical_face;
     use crate::testing::meshes;
     use crate::{IndexHalfEdge, PointerHalfEdge};

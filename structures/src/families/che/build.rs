@@ -260,7 +260,7 @@ pub fn vertex_half_edges_algorithm_3(v: &[u32], o: &[i32], num_vertices: usize) 
 /// `true` when, for every vertex, the walk of its star from `VH[v]` reaches every half-edge
 /// leaving it: the walks together reach all `3·n2` half-edges exactly when every vertex is
 /// one fan (a second fan is never reached, since a walk stays in its fan).
-fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
+pub(crate) fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
     let mut reached = 0usize;
     for &start in vh.iter().filter(|&&h| h >= 0) {
         fan_walk_algorithm_7(o, HalfEdgeId(start as u32), |_| {}, |_| reached += 1);

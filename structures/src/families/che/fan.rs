@@ -1,11 +1,12 @@
 //! The timed vertex star of CHE levels 2 and 3. The crate's only unchecked array reads are
 //! here, so this module is the one place to audit for them.
 //!
-//! A level-2 mesh never changes its `V[]`, `O[]` and `VH[]` after it is built. Level 3 only
-//! writes negative curve labels into `O[]`. So whether every id these arrays hold is in range
-//! can be checked once, when the mesh is built ([`ranges_hold`]), instead of on every read.
-//! [`CheL2`](super::CheL2) checks this when it is built and again in `validate()`. It builds a
-//! [`Fan`] only over arrays that passed the check.
+//! A level-2 mesh's `V[]`, `O[]` and `VH[]` change only where they are rewritten whole:
+//! level 3 writing negative curve labels into `O[]`, and the edits (`MeshEdit`, in the
+//! module `edit`), which cost O(n) on these levels anyway. So whether every id these arrays
+//! hold is in range is checked when the mesh is built ([`ranges_hold`]) and again by each of
+//! those writers before it returns, instead of on every read. [`CheL2`](super::CheL2) also
+//! checks it in `validate()`. It builds a [`Fan`] only over arrays that passed the check.
 //!
 //! Inside the walk, every index is one of these:
 //! - `VH[v]`, read with a bounds check (`v` is the caller's);

@@ -15,9 +15,12 @@ use glam::DVec3;
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheL0 {
     /// `G[v]`: the coordinates of vertex v (the chapter's Geometry container).
-    g: Vec<DVec3>,
+    pub(super) g: Vec<DVec3>,
     /// `V[he]`: the start vertex of half-edge he; triangle t owns half-edges 3t, 3t+1, 3t+2.
-    v: Vec<u32>,
+    pub(super) v: Vec<u32>,
+    /// Vertices deleted by an edit, kept as slots until garbage collection ([`super::edit`]);
+    /// empty (no memory) until the first deletion.
+    pub(super) deleted: Vec<bool>,
 }
 
 /// Table 4.1's level-0 column, and the cost of the operators the table does not list.
@@ -63,7 +66,11 @@ impl LoneNeighbour {
 impl CheL0 {
     /// Level 0 of the containers `G[]` and `V[]`.
     pub(crate) fn from_parts(g: Vec<DVec3>, v: Vec<u32>) -> Self {
-        Self { g, v }
+        Self {
+            g,
+            v,
+            deleted: Vec::new(),
+        }
     }
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
@@ -132,7 +139,7 @@ impl CheL0 {
     }
 
     pub(crate) fn container_bytes(&self) -> usize {
-        vec_bytes(&self.g) + vec_bytes(&self.v)
+        vec_bytes(&self.g) + vec_bytes(&self.v) + vec_bytes(&self.deleted)
     }
 
     pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {

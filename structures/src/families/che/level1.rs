@@ -18,10 +18,10 @@ use glam::DVec3;
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheL1 {
     /// `G[]` and `V[]`.
-    l0: CheL0,
+    pub(super) l0: CheL0,
     /// `O[he]`: the opposite half-edge of he (same vertices, other direction), negative on the
     /// boundary (`-1` here; level 3 stores `-k` for boundary curve k).
-    o: Vec<i32>,
+    pub(super) o: Vec<i32>,
 }
 
 /// Table 4.1's level-1 column, and the cost of the operators the table does not list.

@@ -20,13 +20,13 @@ use glam::DVec3;
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheL2 {
     /// `G[]`, `V[]`, `O[]`.
-    l1: CheL1,
+    pub(super) l1: CheL1,
     /// `VH[v]`: a half-edge leaving v, the boundary one if v is on the boundary (so
     /// `O[VH[v]] < 0` tells boundary vertices); `-1` for a vertex no triangle uses.
-    vh: Vec<i32>,
+    pub(super) vh: Vec<i32>,
     /// `EH`: the edge map's keys in increasing order, each edge's smaller half-edge
     /// `min(he, O[he])`; edge `EH[i]`'s properties would live at rank i.
-    eh: Vec<u32>,
+    pub(super) eh: Vec<u32>,
 }
 
 /// Table 4.1's level-2 column (level 1 with the vertex star in O(deg v)), and the cost of the
@@ -123,8 +123,9 @@ impl CheL2 {
     #[inline(always)]
     #[allow(unsafe_code)]
     pub(crate) fn fan(&self) -> Fan<'_> {
-        // SAFETY: `ranges_hold` was true when `self` was built (`from_checked`), and only
-        // `relabel_opposites` writes to the arrays afterwards; it checks the ranges again.
+        // SAFETY: `ranges_hold` was true when `self` was built (`from_checked`); the only
+        // writers afterwards, `relabel_opposites` and the edits (`edit::Parts`), check the
+        // ranges again before they return.
         unsafe { Fan::new_unchecked(self.start_vertices(), self.l1.opposite(), &self.vh) }
     }
 

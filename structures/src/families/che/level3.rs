@@ -19,9 +19,9 @@ use glam::DVec3;
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheL3 {
     /// `G[]`, `V[]`, `O[]` (boundary half-edges labelled `-k`), `VH[]`, `EH`.
-    l2: CheL2,
+    pub(super) l2: CheL2,
     /// `CH[k - 1]`: a half-edge of boundary curve k (curves numbered from 1).
-    ch: Vec<u32>,
+    pub(super) ch: Vec<u32>,
 }
 
 /// Table 4.1's level-3 column (level 2), with boundary curves in O(∂n1).

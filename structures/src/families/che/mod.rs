@@ -151,6 +151,7 @@
 
 mod access;
 mod build;
+mod edit;
 mod fan;
 mod level0;
 mod level1;
