@@ -333,3 +333,33 @@ fn timings_at_one_million_triangles() {
         ns(t_r00, n0)
     );
 }
+
+/// The fast pairing refuses what the chapter's map would pair wrongly, whatever the order the
+/// half-edges arrive in: a third half-edge on a paired edge (before and after the pair
+/// closes), two half-edges in the same direction, a vertex out of range or repeated, and a
+/// `V[]` that is not whole triangles; and it pairs what Algorithm 1 pairs.
+#[test]
+fn pairing_by_buckets_refuses_bad_edges() {
+    for (v, n) in [
+        (vec![0u32, 1, 2, 1, 0, 3, 0, 1, 4], 5), // fin: the third comes after the pair
+        (vec![0, 1, 4, 0, 1, 2, 1, 0, 3], 5),    // the two in one direction come first
+        (vec![0, 1, 2, 0, 1, 3], 4),             // same direction
+        (vec![0, 1, 7], 3),                      // out of range
+        (vec![0, 1, 1], 3),                      // repeated vertex
+        (vec![0, 1, 2, 2], 3),                   // not whole triangles
+    ] {
+        assert_eq!(opposites_by_buckets(&v, n), None, "{v:?}");
+        assert_eq!(che::opposites_and_vertex_half_edges(&v, n), None, "{v:?}");
+    }
+    let soup = meshes::torus(9, 7);
+    let v = soup.indices();
+    assert_eq!(
+        opposites_by_buckets(v, soup.num_vertices()),
+        Some(opposites_algorithm_1(v))
+    );
+    let grid = meshes::grid(5, 4, true);
+    let v = grid.indices();
+    let o = opposites_by_buckets(v, grid.num_vertices()).unwrap();
+    assert_eq!(o, opposites_algorithm_1(v));
+    assert!(o.iter().any(|&h| h < 0), "a grid has a boundary");
+}

@@ -113,134 +113,75 @@ pub fn opposites_algorithm_1(v: &[u32]) -> Vec<i32> {
     o
 }
 
-/// The same `O[]` as [`opposites_algorithm_1`] without a map: a counting sort puts every
-/// half-edge in the bucket of its smaller vertex (two sequential passes over `V[]`), and the
-/// opposite half-edges are then neighbours in a bucket of a few entries, once sorted by
-/// their larger vertex.
+/// The same `O[]` as [`opposites_algorithm_1`] without a map: Algorithm 1's one pass over the
+/// half-edges, with the map replaced by a bucket per smaller vertex, kept as a linked list of
+/// the first half-edge of each edge met so far. A half-edge looks in its smaller vertex's
+/// bucket (a few entries) for an earlier half-edge with the same larger vertex: found, the two
+/// are opposite; not found, it joins the bucket. `O[]` is written in half-edge order (each
+/// entry once, its partner's overwritten when the partner arrives), so nothing is zeroed first.
 ///
-/// Returns `None` when a triangle names a vertex `>= num_vertices` or one vertex twice, or
-/// when three half-edges share an edge or two traverse it in the same direction (a
-/// non-manifold edge or inconsistent orientation).
+/// Returns `None` when `V[]` is not whole triangles or holds more half-edges or vertices than
+/// `i32` numbers (the chapter's `O[]` and `VH[]` are signed), when a triangle names a vertex
+/// `>= num_vertices` or one vertex twice, or when three half-edges share an edge or two
+/// traverse it in the same direction (a non-manifold edge or inconsistent orientation).
 pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
-    pair_by_buckets(v, num_vertices, |_, _, _| {})
+    const EMPTY: u32 = u32::MAX;
+    let limit = i32::MAX as usize;
+    if !v.len().is_multiple_of(3) || v.len() > limit || num_vertices > limit {
+        return None;
+    }
+    let n = num_vertices as u32;
+    // head[a]: the last half-edge that joined the bucket of a. node[he] of a half-edge in a
+    // bucket: its larger vertex, whether it leaves the larger vertex, and the half-edge that
+    // joined before it, as (larger << 33) | (leaves << 32) | link, so a step along the bucket
+    // is one load.
+    let mut head = vec![EMPTY; num_vertices];
+    let mut node: Vec<u64> = Vec::with_capacity(v.len());
+    let mut o: Vec<i32> = Vec::with_capacity(v.len());
+    for (t, corners) in v.chunks_exact(3).enumerate() {
+        let (a, b, c) = (corners[0], corners[1], corners[2]);
+        if a >= n || b >= n || c >= n || a == b || b == c || c == a {
+            return None;
+        }
+        for (i, (from, to)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
+            let he = (3 * t + i) as u32;
+            let (smaller, larger) = (from.min(to), from.max(to));
+            let leaves = (from > to) as u64;
+            let mut at = head[smaller as usize];
+            loop {
+                if at == EMPTY {
+                    // The first half-edge of its edge: on the boundary until its opposite comes.
+                    o.push(-1);
+                    node.push((larger as u64) << 33 | leaves << 32 | head[smaller as usize] as u64);
+                    head[smaller as usize] = he;
+                    break;
+                }
+                let found = node[at as usize];
+                if (found >> 33) as u32 == larger {
+                    if o[at as usize] >= 0 || (found >> 32) & 1 == leaves {
+                        return None; // a third half-edge, or both in the same direction
+                    }
+                    o[at as usize] = he as i32;
+                    o.push(at as i32);
+                    node.push(u64::MAX); // not in a bucket: its edge is found through `at`
+                    break;
+                }
+                at = found as u32;
+            }
+        }
+    }
+    Some(o)
 }
 
-/// [`opposites_by_buckets`] that also computes Algorithm 3's `VH[]` while it pairs, without a
-/// pass of its own: Algorithm 3's result does not depend on the order it meets the
-/// half-edges (the largest boundary half-edge leaving `v` if any, else the smallest one), so
-/// each half-edge offers itself as a key where boundary beats interior, then larger boundary
-/// and smaller interior half-edges win. The `VH[]` is identical to
-/// [`vertex_half_edges_algorithm_3`]'s.
+/// [`opposites_by_buckets`] and Algorithm 3's `VH[]` ([`vertex_half_edges_algorithm_3`]) from
+/// it: the largest boundary half-edge leaving each vertex, else the smallest one.
 pub fn opposites_and_vertex_half_edges(
     v: &[u32],
     num_vertices: usize,
 ) -> Option<(Vec<i32>, Vec<i32>)> {
-    const BOUNDARY: u32 = 1 << 31;
-    // Per vertex its best key so far; 0 (no key) for an unused vertex. Half-edges are below
-    // i32::MAX, so an interior key `BOUNDARY - 1 - he` is never 0.
-    let mut best = vec![0u32; num_vertices];
-    let o = pair_by_buckets(v, num_vertices, |he, start, boundary| {
-        let key = if boundary {
-            BOUNDARY | he
-        } else {
-            BOUNDARY - 1 - he
-        };
-        let slot = &mut best[start as usize];
-        *slot = (*slot).max(key);
-    })?;
-    let vh = best
-        .into_iter()
-        .map(|key| match key {
-            0 => -1,
-            k if k & BOUNDARY != 0 => (k & !BOUNDARY) as i32,
-            k => (BOUNDARY - 1 - k) as i32,
-        })
-        .collect();
+    let o = opposites_by_buckets(v, num_vertices)?;
+    let vh = vertex_half_edges_algorithm_3(v, &o, num_vertices);
     Some((o, vh))
-}
-
-/// The counting sort and pairing of [`opposites_by_buckets`]; calls `visit(he, V[he],
-/// is_boundary)` once per half-edge.
-#[inline(always)]
-fn pair_by_buckets(
-    v: &[u32],
-    num_vertices: usize,
-    mut visit: impl FnMut(u32, u32, bool),
-) -> Option<Vec<i32>> {
-    let n = num_vertices as u32;
-    // start[a + 2] counts the half-edges whose smaller vertex is a; after the prefix sums
-    // start[a + 1] is where bucket a begins, and after the scatter (which advances it) where
-    // it ends, so bucket a is start[a]..start[a + 1].
-    let mut start = vec![0u32; num_vertices + 2];
-    for t in v.chunks_exact(3) {
-        let (a, b, c) = (t[0], t[1], t[2]);
-        if a >= n || b >= n || c >= n || a == b || b == c || c == a {
-            return None;
-        }
-        start[a.min(b) as usize + 2] += 1;
-        start[b.min(c) as usize + 2] += 1;
-        start[c.min(a) as usize + 2] += 1;
-    }
-    for a in 2..start.len() {
-        start[a] += start[a - 1];
-    }
-    // Per smaller vertex, its half-edges keyed by their larger vertex, with a bit telling
-    // whether the half-edge leaves the larger vertex: (larger << 32) | (leaves << 31) | he.
-    const LEAVES_LARGER: u64 = 1 << 31;
-    let mut bucket = vec![0u64; v.len()];
-    for (t, corners) in v.chunks_exact(3).enumerate() {
-        for i in 0..3 {
-            let (a, b) = (corners[i], corners[(i + 1) % 3]);
-            let slot = &mut start[a.min(b) as usize + 1];
-            let leaves = if a > b { LEAVES_LARGER } else { 0 };
-            bucket[*slot as usize] = ((a.max(b) as u64) << 32) | leaves | (3 * t + i) as u64;
-            *slot += 1;
-        }
-    }
-    let half_edge = |key: u64| (key & (LEAVES_LARGER - 1)) as u32;
-    // Every half-edge is in exactly one bucket, so each O[he] is written below; zeroed memory
-    // comes from the allocator without a pass of its own.
-    let mut o = vec![0i32; v.len()];
-    for a in 0..num_vertices {
-        let keyed = &mut bucket[start[a] as usize..start[a + 1] as usize];
-        keyed.sort_unstable();
-        let mut i = 0;
-        while i < keyed.len() {
-            let larger = keyed[i] >> 32;
-            let same = keyed[i..]
-                .iter()
-                .take_while(|&&x| x >> 32 == larger)
-                .count();
-            let start_of = |key: u64| {
-                if key & LEAVES_LARGER != 0 {
-                    larger as u32
-                } else {
-                    a as u32
-                }
-            };
-            match same {
-                1 => {
-                    let h = half_edge(keyed[i]);
-                    o[h as usize] = -1;
-                    visit(h, start_of(keyed[i]), true);
-                }
-                2 => {
-                    let (k0, k1) = (keyed[i], keyed[i + 1]);
-                    if (k0 ^ k1) & LEAVES_LARGER == 0 {
-                        return None; // both traverse the edge in the same direction
-                    }
-                    let (h0, h1) = (half_edge(k0), half_edge(k1));
-                    o[h0 as usize] = h1 as i32;
-                    o[h1 as usize] = h0 as i32;
-                    visit(h0, start_of(k0), false);
-                    visit(h1, start_of(k1), false);
-                }
-                _ => return None,
-            }
-            i += same;
-        }
-    }
-    Some(o)
 }
 
 /// Algorithm 3 (§4.3): `VH[v]` is the boundary half-edge leaving `v` if there is one (so

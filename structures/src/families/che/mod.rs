@@ -71,8 +71,8 @@
 //! ## Construction
 //!
 //! [`opposites_algorithm_1`] is Algorithm 1 as written (a `HashMap` keyed by the sorted vertex
-//! pair); [`opposites_by_buckets`] builds the identical `O[]` without hashing, by a counting
-//! sort of the half-edges on their smaller vertex. `from_soup` uses the fast one and
+//! pair); [`opposites_by_buckets`] builds the identical `O[]` without hashing, in the same one
+//! pass with a small bucket per smaller vertex in place of the map. `from_soup` uses the fast one and
 //! `from_soup_chapter` the chapter's algorithms; a proptest checks they agree.
 //!
 //! Note on the pseudo-code: Algorithms 6 and 7 step `h ← next(O[h])`, which from the boundary
