@@ -222,6 +222,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull: Vec::new(),
         hull_fits: Vec::new(),
         changing: Vec::new(),
+        targets: Vec::new(),
         teaching: Vec::new(),
         reads: Vec::new(),
         notes,
@@ -336,6 +337,14 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     if selection.changing {
         results.changing =
             super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
+    }
+    if selection.sections.contains(&Section::Targets) {
+        results.targets = super::report_targets::measure::<X>(
+            &cases,
+            &names,
+            &results.measurements,
+            &mut results.notes,
+        )?;
     }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     if selection.sections.contains(&Section::Table41) {
