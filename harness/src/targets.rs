@@ -21,6 +21,7 @@
 use crate::changing::MeshChecksum;
 use crate::html::{esc, largest, limit_text, times_limit};
 use crate::kernels::{run, run_workload, Kernel, Queries, Workload, WorkloadBuffers};
+use crate::limit::Limit;
 use crate::measure::MemoryMeter;
 use crate::results::{Measurement, Results, Status, Subject};
 use crate::timing::median;
@@ -162,23 +163,15 @@ pub struct Group {
 /// The groups that measure every target whose structures `can` run its cell (in the report:
 /// the structure ran and the size sweep measured that cell, not skipped it as too long, such as
 /// the vertex 1-ring sweep of a CHE level without a vertex-to-corner map): each pair of
-/// structures once with all its cells; a structure held to its limit alone only when no pair
-/// already times its sweep.
+/// structures once with all its cells; a structure held to its limit with the probe's read
+/// ([`PROBE`]).
 pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
     let mut groups: Vec<Group> = Vec::new();
     for t in TARGETS.iter().filter(|t| can(t.structure, t.cell)) {
         let structures = match t.against {
             Against::Structure(b) if can(b, t.cell) => vec![t.structure, b],
             Against::Structure(_) => continue,
-            Against::Limit => {
-                let timed = groups
-                    .iter()
-                    .any(|g| g.structures.contains(&t.structure) && g.cells.contains(&t.cell));
-                if timed {
-                    continue;
-                }
-                vec![t.structure]
-            }
+            Against::Limit => vec![t.structure, PROBE],
         };
         match groups.iter_mut().find(|g| g.structures == structures) {
             Some(g) if !g.cells.contains(&t.cell) => g.cells.push(t.cell),
@@ -192,6 +185,10 @@ pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
     groups
 }
 
+/// The name of the probe's turn in the rounds of a target against its limit: a sequential read
+/// of the working set whose bandwidth sets the limit's bandwidth bound ([`Reader`]).
+pub const PROBE: &str = "probe";
+
 /// What one run answered, to compare with the other runs.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub enum Answer {
@@ -204,6 +201,8 @@ pub enum Answer {
     Counts([usize; 3]),
     /// A changed mesh.
     Mesh(MeshChecksum),
+    /// The probe's read, which answers nothing about the mesh: compared with nothing.
+    Probe,
 }
 
 impl Answer {
@@ -213,6 +212,7 @@ impl Answer {
             (Answer::Value(a), Answer::Value(b)) => {
                 (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
             }
+            (Answer::Probe, _) | (_, Answer::Probe) => true,
             _ => self == other,
         }
     }
@@ -328,18 +328,29 @@ impl Turns {
     }
 }
 
-/// The ratio a target measured in turns: per round, `structure`'s run over `against`'s (the
-/// limit's `ns`, the same every round, for a target against its limit).
-pub fn measured(turns: &[Turns], t: &Target, limit_ns: Option<f64>) -> Option<Spread> {
+/// The ratio a target measured in turns: per round, `structure`'s run over `against`'s. Against
+/// its limit (the size sweep's cell's, `limit`), over the limit of that round: its bandwidth
+/// bound at the bandwidth the probe's read measured in that round (ns per byte), its latency
+/// and checksum bounds as the run's probe measured them.
+pub fn measured(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Option<Spread> {
     let mut of_cell = turns.iter().filter(|x| x.cell == t.cell);
     match t.against {
         Against::Structure(b) => {
             of_cell.find_map(|x| Spread::of_ratios(x.runs(t.structure)?, x.runs(b)?))
         }
         Against::Limit => {
-            let limit = limit_ns?;
-            let runs = of_cell.find_map(|x| x.runs(t.structure))?;
-            Spread::of(runs.iter().map(|ns| ns / limit))
+            let l = limit?;
+            let (runs, read) =
+                of_cell.find_map(|x| Some((x.runs(t.structure)?, x.runs(PROBE)?)))?;
+            if runs.len() != read.len() {
+                return None;
+            }
+            let limit = |ns_per_byte: f64| {
+                (l.bytes_per_item * ns_per_byte)
+                    .max(l.latency_ns_per_item)
+                    .max(l.checksum_ns_per_item)
+            };
+            Spread::of(runs.iter().zip(read).map(|(ns, &b)| ns / limit(b)))
         }
     }
 }
@@ -488,24 +499,66 @@ pub fn pair<A: MeshTopology, B: MeshTopology>(
     Ok(out)
 }
 
-/// Times `A` alone on `cells` (a structure held to its limit that no pair times): rounds of
-/// one turn each.
-pub fn solo<A: MeshTopology>(
+/// Times `A` on `cells` taking turns with the probe's read of `read_bytes` (the working set of
+/// its limit's bandwidth bound): a structure held to its limit.
+pub fn with_probe<A: MeshTopology>(
     mesh: &str,
     soup: &PolygonSoup,
     cells: &[Cell],
+    read_bytes: usize,
     meter: &dyn MemoryMeter,
 ) -> Result<Vec<Turns>, String> {
     let mut a = Built::<A>::new(soup)?;
+    let reader = Reader::new(read_bytes);
+    let names = [A::NAME, PROBE];
     let mut out = Vec::new();
     for &cell in cells {
         let start = Instant::now();
-        let ns = take_turns(cell.warm_up(), cell.rounds(), &[A::NAME], |_| {
-            a.run(cell, meter)
+        let ns = take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
+            0 => a.run(cell, meter),
+            _ => Ok(reader.run(meter)),
         })?;
-        out.push(turns(cell, mesh, soup, &[A::NAME], ns, start));
+        out.push(turns(cell, mesh, soup, &names, ns, start));
     }
     Ok(out)
+}
+
+/// A sequential read of a working set, as the probe measures bandwidth ([`crate::probe`]):
+/// four independent sums over `u64` words, the set read over and over for at least 4 MiB.
+pub struct Reader {
+    data: Vec<u64>,
+    passes: usize,
+}
+
+impl Reader {
+    /// A reader of `bytes` (at least 32).
+    pub fn new(bytes: usize) -> Self {
+        let words = (bytes / 8).max(4);
+        Self {
+            data: (0..words as u64).collect(),
+            passes: ((4usize << 20) / (words * 8)).max(1),
+        }
+    }
+
+    /// One read, timed by a [`Stopwatch`] on `meter`: ns per byte.
+    pub fn run(&self, meter: &dyn MemoryMeter) -> Run {
+        let watch = Stopwatch::start(meter);
+        let mut s = [0u64; 4];
+        for _ in 0..self.passes {
+            for c in std::hint::black_box(&self.data).chunks_exact(4) {
+                s[0] = s[0].wrapping_add(c[0]);
+                s[1] = s[1].wrapping_add(c[1]);
+                s[2] = s[2].wrapping_add(c[2]);
+                s[3] = s[3].wrapping_add(c[3]);
+            }
+        }
+        std::hint::black_box(s);
+        let ns = watch.ns();
+        Run {
+            ns: ns / (self.passes * self.data.len() * 8) as f64,
+            answer: Answer::Probe,
+        }
+    }
 }
 
 /// The [`Turns`] of `cell`'s runs `ns`, timed since `start`.
@@ -594,7 +647,7 @@ pub fn render(h: &mut String, r: &Results) {
         .collect();
     let _ = write!(
         h,
-        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit, each round's sweep is divided by the cell's limit (see Sweeps and their limits). <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
+        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe's sequential read of the working set that sets the limit's bandwidth bound, and each round's sweep is divided by the limit at that round's bandwidth (the latency and checksum bounds are the run's probe's). <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
     );
     for t in TARGETS.iter().filter(|t| ran(t.structure)) {
         let against = match t.against {
@@ -615,7 +668,7 @@ pub fn render(h: &mut String, r: &Results) {
         };
         let limit =
             sequential(&r.measurements, mesh, t.structure, t.cell).and_then(|m| m.limit.as_ref());
-        let spread = measured(&turns, t, limit.map(|l| l.ns_per_item));
+        let spread = measured(&turns, t, limit);
         let (value, range, rounds, met) = match spread {
             Some(s) => (
                 format!("{:.2}×", s.median),
@@ -760,23 +813,24 @@ mod tests {
             find(&["che-l1", "openmesh"]).unwrap().cells,
             [Cell::Construction]
         );
-        // che-l2's sweep is timed in its pairs; che-l1's construction is not its sweep.
-        assert!(find(&["che-l2"]).is_none() && find(&["openmesh"]).is_none());
-        assert_eq!(find(&["che-l1"]).unwrap().cells, [Cell::R00Sweep]);
-        assert!(find(&["pointer-half-edge"]).is_some());
-        // Without OpenMesh, its pairs go, and che-l2's limit is still timed by its pair.
+        // Every structure held to its limit takes turns with the probe's read.
+        for s in ["che-l2", "openmesh", "che-l1", "pointer-half-edge"] {
+            assert_eq!(find(&[s, PROBE]).unwrap().cells, [Cell::R00Sweep], "{s}");
+        }
+        assert_eq!(all.len(), 4 + 7);
+        // Without OpenMesh, its pairs and its limit go.
         let without = plan(|s, _| s != "openmesh");
         assert!(without.iter().all(|g| !g.structures.contains(&"openmesh")));
-        assert!(without.iter().all(|g| g.structures != ["che-l2"]));
+        assert_eq!(without.len(), 1 + 6);
         // A cell the size sweep skipped is not run in turns either.
         let slow = plan(|s, c| !(s == "che-l1" && c == Cell::R00Sweep));
-        assert!(slow.iter().all(|g| g.structures != ["che-l1"]));
+        assert!(slow.iter().all(|g| g.structures != ["che-l1", PROBE]));
         assert!(slow.iter().any(|g| g.structures == ["che-l1", "openmesh"]));
         // A structure held only to its limit.
         assert_eq!(
             plan(|s, _| s == "che-l2"),
             [Group {
-                structures: vec!["che-l2"],
+                structures: vec!["che-l2", PROBE],
                 cells: vec![Cell::R00Sweep]
             }]
         );
@@ -806,16 +860,51 @@ mod tests {
         let s = measured(&turns, &target, None).unwrap();
         assert_eq!(s.rounds, ROUNDS);
         assert!(s.min <= s.median && s.median <= s.max);
-        let limit = Target {
+        // Against a limit: the sweep takes turns with the probe's read.
+        let target = Target {
             against: Against::Limit,
             ..pair_target(Cell::R00Sweep)
         };
-        assert_eq!(measured(&turns, &limit, None), None);
-        let vs_limit = measured(&turns, &limit, Some(1e9)).unwrap();
+        let turns = with_probe::<CheL2>("t", &soup, &[Cell::R00Sweep], 1 << 14, &Wall).unwrap();
+        assert_eq!(turns[0].structures, ["che-l2", PROBE]);
+        assert_eq!(measured(&turns, &target, None), None);
+        let read = turns[0].runs(PROBE).unwrap();
+        assert!(
+            read.iter().all(|&ns| ns > 0.0 && ns.is_finite()),
+            "{read:?}"
+        );
+        // A bandwidth bound: each round's sweep over its bytes at that round's read.
+        let mut l = limit_of(1000.0, 0.0, 0.0);
         let runs = turns[0].runs("che-l2").unwrap();
+        let mut expected: Vec<f64> = runs
+            .iter()
+            .zip(read)
+            .map(|(a, b)| a / (1000.0 * b))
+            .collect();
+        expected.sort_by(f64::total_cmp);
+        let got = measured(&turns, &target, Some(&l)).unwrap();
+        assert_eq!(got.median, median(&expected));
+        // A latency bound above every round's bandwidth bound: the same every round.
+        l.latency_ns_per_item = 1e12;
         let mut sorted = runs.to_vec();
         sorted.sort_by(f64::total_cmp);
-        assert_eq!(vs_limit.median, median(&sorted) / 1e9);
+        let got = measured(&turns, &target, Some(&l)).unwrap();
+        assert_eq!(got.median, median(&sorted) / 1e12);
+    }
+
+    fn limit_of(bytes: f64, latency: f64, checksum: f64) -> Limit {
+        Limit {
+            ns_per_item: 0.0,
+            bound: crate::limit::Bound::Bandwidth,
+            bytes_per_item: bytes,
+            bandwidth_ns_per_item: 0.0,
+            bandwidth_level: "L1".into(),
+            loads_per_item: 0.0,
+            latency_ns_per_item: latency,
+            latency_level: "L1".into(),
+            checksum_ns_per_item: checksum,
+            note: None,
+        }
     }
 
     fn pair_target(cell: Cell) -> Target {

@@ -338,19 +338,20 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.changing =
             super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
     }
-    if selection.sections.contains(&Section::Targets) {
-        results.targets = super::report_targets::measure::<X>(
-            &cases,
-            &names,
-            &results.measurements,
-            &mut results.notes,
-        )?;
-    }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     if selection.sections.contains(&Section::Table41) {
         results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
     }
     limit::annotate(&mut results);
+    if selection.sections.contains(&Section::Targets) {
+        results.targets = super::report_targets::measure::<X>(
+            &cases,
+            &names,
+            &results.measurements,
+            &results.probe,
+            &mut results.notes,
+        )?;
+    }
     let skipped = results
         .measurements
         .iter()

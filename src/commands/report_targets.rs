@@ -11,6 +11,7 @@ use crate::openmesh::OpenMesh;
 use std::marker::PhantomData;
 use std::time::Instant;
 use topolab_harness::changing::{mesh_checksum, MeshChecksum};
+use topolab_harness::probe::Probe;
 use topolab_harness::results::Measurement;
 use topolab_harness::targets::{self, take_turns, Answer, Cell, Run, Stopwatch, Turns};
 use topolab_structures::algorithms::changing::Changing;
@@ -22,9 +23,11 @@ struct Case<'a> {
     mesh: &'a str,
     soup: &'a PolygonSoup,
     cells: &'a [Cell],
+    /// The working set the probe's read takes turns with, for a structure held to its limit.
+    read_bytes: usize,
 }
 
-/// Visits a group's first structure, then its second (or times the first alone).
+/// Visits a group's first structure, then its second (or times the first with the probe).
 struct First<'a, X> {
     second: Option<&'a str>,
     case: &'a Case<'a>,
@@ -35,8 +38,12 @@ impl<X: Structures> StructureVisitor for First<'_, X> {
     type Output = Result<Vec<Turns>, String>;
     fn visit<A: MeshTopology>(self) -> Self::Output {
         let c = self.case;
-        let Some(b) = self.second else {
-            return targets::solo::<A>(c.mesh, c.soup, c.cells, &crate::ALLOCATOR);
+        let b = match self.second {
+            Some(targets::PROBE) | None => {
+                let meter = &crate::ALLOCATOR;
+                return targets::with_probe::<A>(c.mesh, c.soup, c.cells, c.read_bytes, meter);
+            }
+            Some(b) => b,
         };
         let second = Second::<A> {
             case: c,
@@ -99,13 +106,14 @@ fn timed<M: MeshTopology>(
 }
 
 /// Measures every target whose structures are among `names` on the largest torus of `cases`
-/// (name, family, soup), on the cells the size sweep measured there (`measurements`): nothing
-/// without a torus. A failed run or a checksum that differs
+/// (name, family, soup), on the cells the size sweep measured there (`measurements`, their
+/// limits annotated from `probe`): nothing without a torus. A failed run or a checksum that differs
 /// between runs fails the report.
 pub fn measure<X: Structures>(
     cases: &[(String, String, PolygonSoup)],
     names: &[String],
     measurements: &[Measurement],
+    probe: &Probe,
     notes: &mut Vec<String>,
 ) -> Result<Vec<Turns>, Failure> {
     let Some((mesh, _, soup)) = cases
@@ -123,6 +131,7 @@ pub fn measure<X: Structures>(
         names.iter().any(|n| n == s)
             && match cell {
                 Cell::Changing(_) => report_changing::EDITABLE.contains(&s),
+                _ if s == targets::PROBE => true,
                 _ => targets::sequential(measurements, mesh, s, cell).is_some(),
             }
     };
@@ -137,11 +146,31 @@ pub fn measure<X: Structures>(
             .cells
             .iter()
             .partition(|c| matches!(c, Cell::Changing(_)));
+        // The working set of the bandwidth bound of the limit of the group's sweep.
+        let read_bytes = (group.structures.get(1) == Some(&targets::PROBE))
+            .then(|| {
+                let m = targets::sequential(measurements, mesh, group.structures[0], built[0])?;
+                let level = &m.limit.as_ref()?.bandwidth_level;
+                probe
+                    .levels
+                    .iter()
+                    .find(|l| &l.name == level)
+                    .map(|l| l.bytes)
+            })
+            .flatten();
+        if group.structures.get(1) == Some(&targets::PROBE) && read_bytes.is_none() {
+            notes.push(format!(
+                "Targets: {} has no limit on {mesh}, so it is not held to one.",
+                group.structures[0]
+            ));
+            continue;
+        }
         if !built.is_empty() {
             let case = Case {
                 mesh,
                 soup,
                 cells: &built,
+                read_bytes: read_bytes.unwrap_or(0),
             };
             let first = First::<X> {
                 second: group.structures.get(1).copied(),
