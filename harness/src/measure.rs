@@ -78,11 +78,14 @@ pub struct Plan {
 /// even a query that scans the mesh keeps the probe short on the largest meshes.
 pub const PROBE_QUERIES: usize = 8;
 
-/// How a probe is timed: one warm-up, then as many runs as fit in a millisecond (at least one),
-/// so that a probe of constant-time queries is not just the clock's resolution.
+/// How a probe is timed: one warm-up, then at least five runs and as many more as fit in
+/// 50 ms (nine at most), so that a probe of constant-time queries is not just the clock's
+/// resolution and the median is not one run the scheduler stretched (a 10 ms time slice in a
+/// probe of 8 queries would make an O(k) sweep look quadratic and skip it). Only a warm-up
+/// longer than that, a probe of scanning queries on a large mesh, is run once more.
 const PROBE_BUDGET: Budget = Budget {
-    time: Duration::from_millis(1),
-    min_reps: 1,
+    time: Duration::from_millis(50),
+    min_reps: 5,
     max_reps: 9,
 };
 
@@ -638,11 +641,13 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        // The estimates come from medians of sampled runs: at least five of them, so that a
-        // run or two stretched by the scheduler (a 10 ms time slice on 16 queries would make
-        // an O(k) sweep look quadratic) cannot decide; the linear cells stay ~20x under the
-        // budget even on a loaded machine, the quadratic ones ~20x over it.
+        // The estimates come from medians of at least five runs (the probes' and the sampled
+        // cells', unless a warm-up alone outlasts the 50 ms budget), so that a run or two
+        // stretched by the scheduler cannot decide. The budget
+        // sits between what runs and what scans, in this unoptimized test build: 16 scanning
+        // queries take ~0.6 ms, the cheapest quadratic sweep (R00) ~0.4 s.
         let plan = Plan {
+            cell_budget: Duration::from_millis(50),
             min_reps: 5,
             max_reps: 9,
             ..short_plan(Duration::from_millis(20))

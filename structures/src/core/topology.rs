@@ -298,9 +298,16 @@ impl BoundaryCurves {
 ///   second chain measured no faster there (see
 ///   [`families::half_edge`](crate::families::half_edge)). Traces for teaching (the CHE's
 ///   `vertex_star`) keep their source's order.
-/// - **Bounds checks.** Safe code, so every index is checked; where a query reads several
-///   arrays at one index, their lengths are asserted equal once per query, so one check
-///   covers them (the CHE's `V[]` and `O[]`, the index half-edge's per-half-edge arrays).
+/// - **Bounds checks.** Every index is checked, with one exception: a structure that never
+///   changes its arrays after it is built may check once, when it is built, that every id
+///   they hold is in range, and then read without checks. The CHE levels 2 and 3 do this in
+///   their vertex star (one audited module, `families::che::fan`), and `validate()` checks
+///   the ranges again. The index half-edge and the winged-edge are edited in place
+///   (`MeshEdit`; `add_face` and `remove_face`), so a check made when they are built would
+///   not stay true. The index half-edge was measured with unchecked reads anyway, and they did
+///   not pay (see [`families::half_edge`](crate::families::half_edge)). Where a query reads
+///   several arrays at one index, their lengths are asserted equal once per query, so one
+///   check covers them (the index half-edge's per-half-edge arrays).
 /// - **Baselines** (OpenMesh) are used as their documented API is used, inside their own
 ///   loops ([`MeshTopology::native`]), and are not re-tuned.
 pub trait MeshTopology: Sized {

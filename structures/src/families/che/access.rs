@@ -139,7 +139,7 @@ fn boundary_walk_after_scan() -> Access {
 }
 
 /// Levels 2 and 3: the vertex star starts at `VH[v]` and is walked from both ends at once
-/// ([`fan_spokes`](super::fan_spokes)): each spoke's `O[e]` load is a step of one of two
+/// (`Fan::spokes`): each spoke's `O[e]` load is a step of one of two
 /// independent chains, so half a dependent load per answer; each neighbour is `V[e]` (R00),
 /// each edge `min(e, O[e])` (R01) and each triangle `e / 3` (R02) of the half-edge `e` the
 /// walk just read `O[e]` of.

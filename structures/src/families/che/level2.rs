@@ -1,11 +1,12 @@
 //! CHE level 2, the cells (§4.3): adds `VH[]`, one half-edge leaving each vertex (the boundary
 //! one for a boundary vertex, Algorithm 3), and the edge map `EH` (Algorithm 2). The vertex
 //! star starts at `VH[v]` (Algorithm 7): O(deg v). The timed relations walk it from both ends
-//! at once ([`fan_spokes`]; see "Speed" in the [module docs](super)).
+//! at once ([`Fan::spokes`]; see "Speed" in the [module docs](super)).
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
+use super::fan::{ranges_hold, Fan};
+use super::triangle;
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
-use super::{fan_spokes, next, triangle};
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -42,22 +43,44 @@ che_topology!(CheL2, "che-l2", level2_cost);
 
 impl CheL2 {
     /// Level 2 of checked containers, with `EH` built by `edge_map`.
-    pub(crate) fn from_checked(c: Checked, edge_map: fn(&[i32]) -> Vec<u32>) -> Self {
+    ///
+    /// Refuses containers whose ids are out of range ([`ranges_hold`]): the timed walk
+    /// ([`Fan`]) reads `V[]` and `O[]` without bounds checks on the strength of this check.
+    pub(crate) fn from_checked(
+        c: Checked,
+        edge_map: fn(&[i32]) -> Vec<u32>,
+        structure: &'static str,
+    ) -> Result<Self> {
         let (l1, vh) = CheL1::from_checked(c);
         let eh = edge_map(l1.opposite());
-        Self { l1, vh, eh }
+        let l2 = Self { l1, vh, eh };
+        l2.check_ranges(structure)?;
+        Ok(l2)
     }
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
-        build_fast(soup, <Self as MeshTopology>::NAME)
-            .map(|c| Self::from_checked(c, edge_map_by_scan))
+        let name = <Self as MeshTopology>::NAME;
+        build_fast(soup, name).and_then(|c| Self::from_checked(c, edge_map_by_scan, name))
     }
 
     /// Builds level 2 with the chapter's Algorithms 1, 2 and 3 (maps) instead of the fast
     /// construction of `from_soup`; the containers are identical.
     pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
-        build_chapter(soup, <Self as MeshTopology>::NAME)
-            .map(|c| Self::from_checked(c, edge_map_algorithm_2))
+        let name = <Self as MeshTopology>::NAME;
+        build_chapter(soup, name).and_then(|c| Self::from_checked(c, edge_map_algorithm_2, name))
+    }
+
+    /// Is every id of `V[]`, `O[]` and `VH[]` in range ([`ranges_hold`])? The timed walk
+    /// ([`Fan`]) relies on this.
+    fn check_ranges(&self, structure: &'static str) -> Result<()> {
+        if ranges_hold(self.start_vertices(), self.l1.opposite(), &self.vh) {
+            Ok(())
+        } else {
+            Err(Error::invariant(
+                structure,
+                "V[], O[] and VH[] are not one entry per half-edge with every id in range",
+            ))
+        }
     }
 
     /// `G[]`: the vertex positions.
@@ -82,28 +105,27 @@ impl CheL2 {
         &self.eh
     }
 
-    /// `O[]` to relabel with boundary curve numbers (level 3, Algorithm 4).
-    pub(crate) fn opposite_mut(&mut self) -> &mut [i32] {
-        self.l1.opposite_mut()
+    /// Lets `relabel` rewrite `O[]` (level 3 labels the boundary curves, Algorithm 4), then
+    /// checks the ranges again, so that no write can leave an id the timed walk ([`Fan`])
+    /// would read out of bounds.
+    pub(crate) fn relabel_opposites<R>(
+        &mut self,
+        structure: &'static str,
+        relabel: impl FnOnce(&mut [i32]) -> R,
+    ) -> Result<R> {
+        let r = relabel(self.l1.opposite_mut());
+        self.check_ranges(structure)?;
+        Ok(r)
     }
 
-    /// [`fan_spokes`] of the star of `v` from `VH[v]`; no spoke for an unused vertex.
-    ///
-    /// `V[]` and `O[]` are asserted to have one entry per half-edge each, so that the `V[e]`
-    /// a caller reads after the walk's `O[e]` needs no bounds check of its own.
+    /// The timed vertex star over `V[]`, `O[]` and `VH[]` ([`Fan`]). Besides the module
+    /// `fan`, the crate's only unsafe code for the CHE: the promise that the ranges hold.
     #[inline(always)]
-    fn spokes(&self, v: VertexId, spoke: impl FnMut(HalfEdgeId, i32)) -> Option<HalfEdgeId> {
-        let (vs, o) = (self.start_vertices(), self.l1.opposite());
-        assert_eq!(
-            vs.len(),
-            o.len(),
-            "V[] and O[] hold one entry per half-edge"
-        );
-        let he = read!("VH", self.vh, v.index());
-        if he < 0 {
-            return None;
-        }
-        fan_spokes(o, HalfEdgeId(he as u32), spoke)
+    #[allow(unsafe_code)]
+    pub(crate) fn fan(&self) -> Fan<'_> {
+        // SAFETY: `ranges_hold` was true when `self` was built (`from_checked`), and only
+        // `relabel_opposites` writes to the arrays afterwards; it checks the ranges again.
+        unsafe { Fan::new_unchecked(self.start_vertices(), self.l1.opposite(), &self.vh) }
     }
 
     fn check_containers(&self) -> Result<()> {
@@ -113,6 +135,7 @@ impl CheL2 {
     /// Levels 0–1 are valid, `VH[]` follows Algorithm 3's rule and `EH` holds every edge once.
     pub(crate) fn check_cells(&self, structure: &'static str) -> Result<()> {
         self.l1.check_opposites(structure)?;
+        self.check_ranges(structure)?;
         let (v, o) = (self.start_vertices(), self.l1.opposite());
         if self.vh.len() != self.geometry().len() {
             return Err(Error::invariant(structure, "VH[] and G[] differ in length"));
@@ -193,20 +216,20 @@ impl CheLevel for CheL2 {
         self.l1.edge_of(he)
     }
 
-    /// The star walked from both ends ([`fan_spokes`]); each neighbour is `V[e]` of the
+    /// The star walked from both ends (`Fan::spokes`); each neighbour is `V[e]` of the
     /// half-edge entering `v`.
     #[inline(always)]
     fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
-        let vs = self.start_vertices();
-        if let Some(b) = self.spokes(v, |e, _| f(VertexId(read!("V", vs, e.index())))) {
-            f(VertexId(read!("V", vs, next(b).index())));
+        let fan = self.fan();
+        if let Some(b) = fan.spokes(v, |e, _| f(fan.far_end(e))) {
+            f(fan.lone_far_end(b));
         }
     }
 
-    /// The star walked from both ends ([`fan_spokes`]); each edge is `min(e, O[e])`.
+    /// The star walked from both ends (`Fan::spokes`); each edge is `min(e, O[e])`.
     #[inline(always)]
     fn spoke_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
-        let lone = self.spokes(v, |e, o| {
+        let lone = self.fan().spokes(v, |e, o| {
             f(EdgeId(if o < 0 { e.0 } else { e.0.min(o as u32) }))
         });
         if let Some(b) = lone {
@@ -214,17 +237,16 @@ impl CheLevel for CheL2 {
         }
     }
 
-    /// The star walked from both ends ([`fan_spokes`]); each entering half-edge's triangle.
+    /// The star walked from both ends (`Fan::spokes`); each entering half-edge's triangle.
     #[inline(always)]
     fn star_triangles(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
-        self.spokes(v, |e, _| f(triangle(e)));
+        self.fan().spokes(v, |e, _| f(triangle(e)));
     }
 
     /// `O[VH[v]] < 0` (§4.3).
     #[inline(always)]
     fn vertex_on_boundary(&self, v: VertexId) -> bool {
-        let he = read!("VH", self.vh, v.index());
-        he >= 0 && read!("O", self.l1.opposite(), he as usize) < 0
+        self.fan().on_boundary(v)
     }
 
     fn each_edge(&self, mut f: impl FnMut(EdgeId)) {

@@ -35,21 +35,23 @@ fn level3_cost(op: Operator) -> Cost {
 che_topology!(CheL3, "che-l3", level3_cost);
 
 impl CheL3 {
-    fn from_level2(mut l2: CheL2) -> Self {
-        let ch = boundary_curves_algorithm_4(l2.opposite_mut());
-        Self { l2, ch }
+    fn from_level2(mut l2: CheL2) -> Result<Self> {
+        let ch = l2.relabel_opposites(Self::NAME, boundary_curves_algorithm_4)?;
+        Ok(Self { l2, ch })
     }
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
-        build_fast(soup, <Self as MeshTopology>::NAME)
-            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_by_scan)))
+        build_fast(soup, Self::NAME)
+            .and_then(|c| CheL2::from_checked(c, edge_map_by_scan, Self::NAME))
+            .and_then(Self::from_level2)
     }
 
     /// Builds level 3 with the chapter's Algorithms 1–4 (maps) instead of the fast
     /// construction of `from_soup`; the containers are identical.
     pub fn from_soup_chapter(soup: &PolygonSoup) -> Result<Self> {
-        build_chapter(soup, <Self as MeshTopology>::NAME)
-            .map(|c| Self::from_level2(CheL2::from_checked(c, edge_map_algorithm_2)))
+        build_chapter(soup, Self::NAME)
+            .and_then(|c| CheL2::from_checked(c, edge_map_algorithm_2, Self::NAME))
+            .and_then(Self::from_level2)
     }
 
     /// `G[]`: the vertex positions.

@@ -85,7 +85,7 @@
 //!
 //! R00, R01 and R02 answer sets, so levels 2 and 3 answer them by the fastest walk of the same
 //! star rather than in Algorithm 7's order; [`CheLevel::vertex_star`] (and with it
-//! `topolab explain che --trace`) keeps Algorithm 7 as the chapter writes it. Three things
+//! `topolab explain che --trace`) keeps Algorithm 7 as the chapter writes it. Four things
 //! made the walk slow, measured with instruction counts (callgrind; this machine has no
 //! hardware counters) on the harness's R00 sweep of a 100k-triangle torus:
 //!
@@ -98,24 +98,60 @@
 //!   harness called R00 out of line and the smoothing workload reached the boundary test
 //!   through the GOT. They are `#[inline]` now, as the fairness rule of
 //!   [`MeshTopology`](crate::MeshTopology) asks of every structure; with that, 182.
-//! - **One chain.** [`fan_spokes`] walks an interior star from both ends at once, forward
-//!   `h ← O[prev(h)]` and backward `g ← next(O[g])`, until the two meet: two independent
-//!   chains, each half as long. Each neighbour is read as `V[e]` of the half-edge `e` that
-//!   enters the vertex, at the index where the walk reads `O[e]`, instead of `V[next(h)]`
-//!   after it; `V[]` and `O[]` are asserted to be one length once per query, so that `V[e]`
-//!   needs no bounds check of its own: 139. A boundary star is walked forward only: its
-//!   `VH[v]` is one end, and the other is not stored.
+//! - **One chain.** The walk (`Fan::spokes`) covers an interior star from both ends at once,
+//!   forward `h ← O[prev(h)]` and backward `g ← next(O[g])`, until the two meet: two
+//!   independent chains, each half as long. Each neighbour is read as `V[e]` of the half-edge
+//!   `e` that enters the vertex, at the index where the walk reads `O[e]`, instead of
+//!   `V[next(h)]` after it: 139. A boundary star is walked forward only: its `VH[v]` is one
+//!   end, and the other is not stored.
+//! - **Bounds checks.** Levels 2 and 3 never change `V[]`, `O[]` and `VH[]` after they are
+//!   built, except that level 3 writes negative curve labels into `O[]`. So the walk reads
+//!   `V[]` and `O[]` without bounds checks. This is safe because every id the arrays hold is
+//!   checked to be in range once: when the mesh is built, after level 3's relabelling, and
+//!   in `validate()`. The unchecked reads are in one small module (`fan.rs`), which says why
+//!   each index is in range: 139 → 123 instructions per vertex, and 183 → 148 for the
+//!   smoothing workload. Smoothing also gained because the compiler now shares the
+//!   boundary test's `VH[v]` and `O[VH[v]]` reads with the walk that follows it. Each end
+//!   of the walk then tracked the next spoke it reports (a half-edge entering the vertex),
+//!   which needs one state variable fewer: 120, smoothing 147, but
+//!   no faster in the timings below (R00 1.47–1.50× → 1.49–1.52× the index half-edge).
+//!
+//! What is left is the chain, and it is the CHE's design: each step computes `prev` or
+//! `next` (a multiply, a compare and a select, about five instructions) before its load,
+//! where the half-edge's `twin` is `h ^ 1`. These variants were measured on that same sweep
+//! and not kept:
+//!
+//! | variant | instructions per vertex |
+//! |---|---|
+//! | one end only, with a boundary check first | fewer, 112, but 1.5–2× the time: one chain |
+//! | one end only, two steps unrolled | 112, same time as one end |
+//! | `prev` as arithmetic, `h - 1 + 3·[3 divides h]` | 118–126 |
+//! | `prev` as a select the compiler cannot turn into a branch | 115, no faster |
+//! | both candidate `O[]` entries of `prev` loaded, then one selected | 158–192 |
+//! | both ends, each tracking the half-edge that enters | 114, no faster |
 //!
 //! On the 1M-triangle torus, in one process with the structures taking turns on a shared
-//! machine (`cargo run --release --example fan_sweep`, medians of 5 runs of 9 rounds), R00
-//! went from 2.7× the index half-edge's time to 1.3× (from 1.4× OpenMesh's to 0.65×), and the
-//! smoothing workload from 2.4× to 1.3× (from 1.3× OpenMesh's to 0.56×); in the fastest
-//! rounds, 1.15× and 1.1× the index half-edge's. What is left is the chain: each step still
-//! computes `prev` or `next` (a multiply, a compare and a select) before its load, where the
-//! half-edge's `twin` is `h ^ 1`.
+//! machine (`cargo run --release --example fan_sweep`), the two-ended walk took R00 from 2.7×
+//! the index half-edge's time to 1.3×, and smoothing from 2.4× to 1.3×. The unchecked reads
+//! were timed on the 100k-triangle torus: `fan_sweep 100000 torus 201`, before and after, two
+//! runs each, taking turns, at load 16–17 on 2 cores. Load that high made the 1M-triangle
+//! ratios swing from 1.2× to 2.3× within one binary.
+//!
+//! | che-l2 ÷ | R00, median | R00, fastest | smoothing, median | smoothing, fastest |
+//! |---|---|---|---|---|
+//! | index half-edge, before | 1.69, 1.54 | 1.54, 1.54 | 1.22, 1.20 | 1.14, 1.20 |
+//! | index half-edge, after | 1.43, 1.46 | 1.42, 1.44 | 1.11, 1.09 | 1.08, 1.06 |
+//! | OpenMesh, before | 0.74, 0.75 | 0.76, 0.75 | 0.53, 0.55 | 0.51, 0.54 |
+//! | OpenMesh, after | 0.69, 0.70 | 0.72, 0.72 | 0.51, 0.52 | 0.49, 0.50 |
+//!
+//! (These "after" rows were measured at 123 instructions, before the last change.)
+//! R00 stays about 1.4× the index half-edge's time at this size, and the instruction
+//! counts show why: 120 against 91 per vertex. About 30 of the difference is `prev` and
+//! `next` at each of a vertex's six steps.
 
 mod access;
 mod build;
+mod fan;
 mod level0;
 mod level1;
 mod level2;
@@ -387,60 +423,6 @@ pub fn fan_walk_algorithm_7(
         if h == start {
             return None;
         }
-    }
-}
-
-/// The spokes of the star of the vertex that `start` leaves (the edges from it to its
-/// neighbours), for the timed relations of levels 2 and 3 (see "Speed" in the module docs):
-/// calls `spoke(e, O[e])` once per spoke that has a half-edge `e` entering the vertex, and
-/// returns the boundary half-edge leaving the vertex (`start` itself), the one spoke without
-/// an entering half-edge, if the vertex is on the boundary.
-///
-/// `start` must be `VH[v]` (the boundary half-edge of a boundary vertex). Each spoke is
-/// reported by the half-edge that enters the vertex, so its far end is `V[e]` and its edge
-/// `min(e, O[e])`, read at the index the walk reads `O[e]` at; and each triangle of the star
-/// is the triangle of exactly one reported `e`. An interior star is walked from both ends at
-/// once, forward `h ← O[prev(h)]` (Algorithm 7's step) and backward `g ← next(O[g])`, until
-/// the two meet: two independent chains of dependent loads instead of one. A boundary star
-/// is walked forward only, as Algorithm 7 does ([`fan_walk_algorithm_7`] keeps its order
-/// for teaching); the spokes come in neither walk's cyclic order.
-#[inline(always)]
-pub fn fan_spokes(
-    o: &[i32],
-    start: HalfEdgeId,
-    mut spoke: impl FnMut(HalfEdgeId, i32),
-) -> Option<HalfEdgeId> {
-    let mut back = read!("O", o, start.index());
-    let mut h = start;
-    if back < 0 {
-        loop {
-            let e = prev(h);
-            let x = read!("O", o, e.index());
-            spoke(e, x);
-            if x < 0 {
-                return Some(start);
-            }
-            h = HalfEdgeId(x as u32);
-        }
-    }
-    // Forward: `h` leaves the vertex, `prev(h)` enters it. Backward: `g` leaves the vertex
-    // and `back = O[g]` enters it. Every spoke strictly between `h` and `g` is unreported.
-    let mut g = start;
-    loop {
-        let e = prev(h);
-        let x = read!("O", o, e.index());
-        spoke(e, x);
-        h = HalfEdgeId(x as u32);
-        if h == g {
-            return None;
-        }
-        let e = HalfEdgeId(back as u32);
-        spoke(e, g.0 as i32);
-        g = next(e);
-        if g == h {
-            return None;
-        }
-        back = read!("O", o, g.index());
     }
 }
 

@@ -49,6 +49,23 @@
 //!   smoothing 2.51 → 2.52×). Without a stored `prev`, each backward step walks the face
 //!   (`next` twice) before its `pair`, and the time goes to cache misses on records spread
 //!   over the heap rather than to one chain's latency.
+//!
+//! The CHE's vertex star reads its arrays without bounds checks, because its ranges are
+//! checked once when it is built (the fairness rule's "Bounds checks"). The same was offered
+//! to the index half-edge. A copy of its rotation over its `vertex`, `next` and `face` arrays,
+//! with unchecked reads, was timed against the same copy with checked reads. Both were
+//! measured on the harness's R00 sweep and smoothing workload of a 100k-triangle torus, in
+//! one process taking turns, fastest and median of 201 rounds, in two runs at load 17:
+//!
+//! - R00: 91 → 78 instructions per vertex, but the same time (5.87 → 5.91 and 5.84 →
+//!   5.84 ns fastest, 6.40 → 6.38 and 6.64 → 6.59 median). The walk is one chain of
+//!   `next` loads, not bound by its instructions.
+//! - Smoothing: 128 → 114 instructions per vertex, 2–6% faster (10.07 → 9.88 and
+//!   8.19 → 7.72 ns fastest, 11.42 → 10.97 and 12.40 → 12.11 median).
+//!
+//! It is not kept. Both storages are edited in place (`MeshEdit`), so a range checked when
+//! the mesh is built would not stay true. Keeping it true would mean checking every link
+//! that an edit writes.
 
 mod access;
 mod build;
