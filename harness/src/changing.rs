@@ -121,8 +121,9 @@ pub fn cross_check(rows: &[ChangingRow]) -> Result<(), String> {
     Ok(())
 }
 
-/// The ratio of `structure`'s time to OpenMesh's on the largest mesh of `workload`.
-fn ratio_to_openmesh(rows: &[ChangingRow], workload: Changing, structure: &str) -> Option<f64> {
+/// The ratio of `structure`'s time to `base`'s on the largest mesh of `workload`, from the
+/// rows of the section (the structures timed one after another).
+pub fn ratio(rows: &[ChangingRow], workload: Changing, structure: &str, base: &str) -> Option<f64> {
     let faces = rows
         .iter()
         .filter(|r| r.workload == workload)
@@ -133,27 +134,7 @@ fn ratio_to_openmesh(rows: &[ChangingRow], workload: Changing, structure: &str) 
             .find(|r| r.workload == workload && r.faces == faces && r.structure == s)
             .map(|r| r.seconds)
     };
-    Some(get(structure)? / get("openmesh")?)
-}
-
-/// The Targets rows: (what, measured ratio, goal).
-pub fn targets(rows: &[ChangingRow]) -> Vec<(String, Option<f64>, f64)> {
-    if rows.is_empty() {
-        return Vec::new();
-    }
-    Changing::ALL
-        .into_iter()
-        .map(|w| {
-            (
-                format!(
-                    "index-half-edge {} / OpenMesh's (largest torus of the changing workloads)",
-                    w.name()
-                ),
-                ratio_to_openmesh(rows, w, "index-half-edge"),
-                0.7,
-            )
-        })
-        .collect()
+    Some(get(structure)? / get(base)?)
 }
 
 /// The report section.

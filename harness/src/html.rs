@@ -69,7 +69,7 @@ pub fn render(r: &Results) -> String {
     machine_section(&mut h, r);
     let draw = |s: Section, h: &mut String| match s {
         Section::Chooser => {}
-        Section::Targets => targets(h, r),
+        Section::Targets => crate::targets::render(h, r),
         Section::Table41 => {
             table_4_1(h, r, &names);
             crate::reads::section::table(h, r);
@@ -184,109 +184,6 @@ fn family_of(op: Operator) -> &'static str {
         Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
         _ => "torus",
     }
-}
-
-/// The structures of the half-edge family whose vertex 1-ring sweep the Targets table holds to
-/// its limit: the two half-edge storages, the CHE levels and OpenMesh.
-const HALF_EDGE_FAMILY: [&str; 7] = [
-    "index-half-edge",
-    "pointer-half-edge",
-    "che-l0",
-    "che-l1",
-    "che-l2",
-    "che-l3",
-    "openmesh",
-];
-
-/// The project's performance targets, checked on the largest torus of this run: ratios of two
-/// structures measured in the same run, and sweeps against their limits.
-fn targets(h: &mut String, r: &Results) {
-    let Some((mesh, tri)) = largest(r, "torus") else {
-        return;
-    };
-    let get = |s: &str, op: Subject, kernel: Kernel| {
-        r.measurements.iter().find(|m| {
-            m.mesh == mesh
-                && m.structure == s
-                && m.operator == op
-                && m.kernel == kernel
-                && m.status == Status::Measured
-        })
-    };
-    let construction = |s| get(s, Subject::Construction, Kernel::Construction);
-    let r00_sweep = |s| get(s, Subject::Query(Operator::R00), Kernel::Sweep);
-    let smoothing = |s| get(s, Subject::Workload(Workload::Smoothing), Kernel::Workload);
-    let ran = |s: &str| r.structures.iter().any(|x| x.name == s);
-    let _ = write!(h, "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><table><tr><th class=l>target</th><th>measured</th><th>goal</th><th>met</th></tr>");
-    let mut row = |what: String, value: Option<f64>, goal: f64, why: Option<String>| {
-        let (v, met) = match value {
-            Some(v) => (format!("{v:.2}×"), if v <= goal { "yes" } else { "no" }),
-            None => ("not measured".into(), "–"),
-        };
-        let class = match met {
-            "yes" => "ok",
-            "no" => "bad",
-            _ => "skip",
-        };
-        let why = match why.filter(|_| met == "no") {
-            Some(w) => format!("<br><span class=small>{}</span>", esc(&w)),
-            None => String::new(),
-        };
-        let _ = write!(h, "<tr><td class=l>{what}{why}</td><td>{v}</td><td>≤ {goal}×</td><td class={class}>{met}</td></tr>");
-    };
-    let ratio =
-        |a: Option<&Measurement>, b: Option<&Measurement>| Some(a?.ns_per_item? / b?.ns_per_item?);
-    let cold_ratio = |a: Option<&Measurement>, b: Option<&Measurement>| {
-        Some(a?.cold_ns_per_item? / b?.cold_ns_per_item?)
-    };
-    if ran("che-l1") && ran("openmesh") {
-        let (che, om) = (construction("che-l1"), construction("openmesh"));
-        let cold = cold_ratio(che, om)
-            .map(|x| format!(" (cold builds: {x:.2}×)"))
-            .unwrap_or_default();
-        row(
-            format!("che-l1 construction / OpenMesh's add_face build, warm builds{cold}"),
-            ratio(che, om),
-            0.1,
-            None,
-        );
-    }
-    let pairs = [
-        ("che-l2", "index-half-edge", 1.2),
-        ("che-l2", "openmesh", 0.6),
-        ("index-half-edge", "openmesh", 0.5),
-    ];
-    for (s, base, goal) in pairs.into_iter().filter(|p| ran(p.0) && ran(p.1)) {
-        row(
-            format!("{s} vertex 1-ring sweep (r00) / {base}'s"),
-            ratio(r00_sweep(s), r00_sweep(base)),
-            goal,
-            None,
-        );
-        if s == "che-l2" {
-            row(
-                format!("{s} smoothing / {base}'s"),
-                ratio(smoothing(s), smoothing(base)),
-                goal,
-                None,
-            );
-        }
-    }
-    for s in HALF_EDGE_FAMILY.into_iter().filter(|s| ran(s)) {
-        let sweep = r00_sweep(s);
-        row(
-            format!("{s} r00 sweep / its limit"),
-            sweep.and_then(times_limit),
-            2.0,
-            sweep.and_then(|m| m.limit.as_ref()).map(limit_text),
-        );
-    }
-    for (what, value, goal) in crate::changing::targets(&r.changing) {
-        row(what, value, goal, None);
-    }
-    h.push_str(
-        "</table><p class=small>Construction: warm builds reuse the memory the build before them freed; cold builds fault in fresh pages (see Construction time). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>",
-    );
 }
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
@@ -414,7 +311,7 @@ fn plots(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("</div>");
 }
 
-fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usize)> {
+pub(crate) fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usize)> {
     r.meshes
         .iter()
         .filter(|m| m.family == family)
@@ -423,12 +320,12 @@ fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usize)> {
 }
 
 /// A measured cell's time as a multiple of its limit.
-fn times_limit(m: &Measurement) -> Option<f64> {
+pub(crate) fn times_limit(m: &Measurement) -> Option<f64> {
     Some(m.ns_per_item? / m.limit.as_ref()?.ns_per_item)
 }
 
 /// How a limit was set, for a cell's tooltip and a target's reason.
-fn limit_text(l: &Limit) -> String {
+pub(crate) fn limit_text(l: &Limit) -> String {
     let bound = match l.bound {
         Bound::Latency => "latency",
         Bound::Bandwidth => "bandwidth",

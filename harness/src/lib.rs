@@ -28,5 +28,6 @@ pub mod results;
 pub mod scale;
 pub mod sections;
 pub mod svg;
+pub mod targets;
 pub mod thumbnail;
 pub mod timing;

@@ -39,6 +39,9 @@ pub struct Results {
     pub hull_fits: Vec<crate::hull::bench::HullFit>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
+    /// The Targets table's rounds: the structures of each target taking turns
+    /// ([`crate::targets`]).
+    pub targets: Vec<crate::targets::Turns>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Reads per query of every operator on every structure against mesh size, counted

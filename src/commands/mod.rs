@@ -19,4 +19,5 @@ pub mod report_reads;
 pub mod report_repair;
 pub mod report_scale;
 pub mod report_sections;
+pub mod report_targets;
 pub mod subdivide;

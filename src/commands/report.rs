@@ -222,6 +222,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull: Vec::new(),
         hull_fits: Vec::new(),
         changing: Vec::new(),
+        targets: Vec::new(),
         teaching: Vec::new(),
         reads: Vec::new(),
         notes,
@@ -342,6 +343,15 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
     }
     limit::annotate(&mut results);
+    if selection.sections.contains(&Section::Targets) {
+        results.targets = super::report_targets::measure::<X>(
+            &cases,
+            &names,
+            &results.measurements,
+            &results.probe,
+            &mut results.notes,
+        )?;
+    }
     let skipped = results
         .measurements
         .iter()

@@ -1,0 +1,918 @@
+//! The Targets table: the project's performance targets, each a ratio measured with the two
+//! sides taking turns.
+//!
+//! The size sweep times structures one after another, so on a shared machine a change of load
+//! between two structures shows up in their ratio (a focused report once showed che-l2 /
+//! index-half-edge at 3.09 on the vertex 1-ring sweep while che-l2's own runs ranged from
+//! 10.6 to 27.1 ns). Here each target's two structures are built once on the largest torus
+//! of the run and then run A, B, A, B, … for [`ROUNDS`] rounds, after one warm-up round; every
+//! round gives one ratio, the table shows their median and their spread (the smallest and the
+//! largest), and a load change hits both sides of a round alike. A target against a limit
+//! (the vertex 1-ring sweep of the half-edge family against its access model, see
+//! [`crate::limit`]) divides each round of the sweep by the cell's limit.
+//!
+//! The runs are the size sweep's own: the harness kernels ([`crate::kernels::run`],
+//! [`crate::kernels::run_workload`]), a baseline's native loops where it has them
+//! ([`topolab_structures::NativeKernels`]). Every run is timed in the measuring thread's CPU
+//! time ([`Stopwatch`]), as the size sweep times construction: time slices given to other
+//! processes do not count. Every run's answer must agree with the first run's; a disagreement
+//! fails the report.
+
+use crate::changing::MeshChecksum;
+use crate::html::{esc, largest, limit_text, times_limit};
+use crate::kernels::{run, run_workload, Kernel, Queries, Workload, WorkloadBuffers};
+use crate::limit::Limit;
+use crate::measure::MemoryMeter;
+use crate::results::{Measurement, Results, Status, Subject};
+use crate::timing::median;
+use std::fmt::Write;
+use std::time::Instant;
+use topolab_structures::algorithms::changing::Changing;
+use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup, VertexId};
+
+/// Timed rounds of every target, after one warm-up round.
+pub const ROUNDS: usize = 7;
+
+/// Timed rounds of the changing workloads: each run is a fresh build and a whole workload
+/// (about 1.5 s a round for the collapse test on a 1M-triangle torus), so fewer, to keep the
+/// report within its time; no warm-up round, since every run starts from a fresh build.
+pub const CHANGING_ROUNDS: usize = 3;
+
+/// What a target times.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Cell {
+    /// The vertex 1-ring sweep (R00 over every vertex), per vertex.
+    R00Sweep,
+    /// The smoothing workload, per vertex.
+    Smoothing,
+    /// Construction from the polygon soup, warm builds (reusing the memory the build before
+    /// freed), per face.
+    Construction,
+    /// A changing workload from a fresh build (the build not timed), per face of the input.
+    Changing(Changing),
+}
+
+impl Cell {
+    /// The rounds a cell is timed: [`ROUNDS`], or [`CHANGING_ROUNDS`].
+    pub fn rounds(self) -> usize {
+        match self {
+            Cell::Changing(_) => CHANGING_ROUNDS,
+            _ => ROUNDS,
+        }
+    }
+
+    /// Untimed rounds before them: one, but for the changing workloads.
+    pub fn warm_up(self) -> usize {
+        match self {
+            Cell::Changing(_) => 0,
+            _ => 1,
+        }
+    }
+
+    /// The words the Targets table names it with.
+    fn text(self) -> String {
+        match self {
+            Cell::R00Sweep => "vertex 1-ring sweep (r00)".into(),
+            Cell::Smoothing => "smoothing".into(),
+            Cell::Construction => "construction (warm builds)".into(),
+            Cell::Changing(w) => w.name().into(),
+        }
+    }
+}
+
+/// What a target's structure is held against.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Against {
+    /// Another structure, in the same rounds.
+    Structure(&'static str),
+    /// The cell's limit ([`crate::limit`]).
+    Limit,
+}
+
+/// One performance target: `structure`'s `cell` at most `goal` times `against`'s.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Target {
+    /// What is timed.
+    pub cell: Cell,
+    /// The structure held to the goal.
+    pub structure: &'static str,
+    /// What it is compared with.
+    pub against: Against,
+    /// The largest ratio that meets the target.
+    pub goal: f64,
+}
+
+const fn versus(cell: Cell, structure: &'static str, against: &'static str, goal: f64) -> Target {
+    Target {
+        cell,
+        structure,
+        against: Against::Structure(against),
+        goal,
+    }
+}
+
+const fn limit(structure: &'static str) -> Target {
+    Target {
+        cell: Cell::R00Sweep,
+        structure,
+        against: Against::Limit,
+        goal: 2.0,
+    }
+}
+
+/// The targets of issue 15 (and the changing workloads'), in the table's order.
+pub const TARGETS: [Target; 15] = [
+    versus(Cell::Construction, "che-l1", "openmesh", 0.1),
+    versus(Cell::R00Sweep, "che-l2", "index-half-edge", 1.2),
+    versus(Cell::Smoothing, "che-l2", "index-half-edge", 1.2),
+    versus(Cell::R00Sweep, "che-l2", "openmesh", 0.6),
+    versus(Cell::Smoothing, "che-l2", "openmesh", 0.6),
+    versus(Cell::R00Sweep, "index-half-edge", "openmesh", 0.5),
+    // The half-edge family: the two half-edge storages, the CHE levels and OpenMesh.
+    limit("index-half-edge"),
+    limit("pointer-half-edge"),
+    limit("che-l0"),
+    limit("che-l1"),
+    limit("che-l2"),
+    limit("che-l3"),
+    limit("openmesh"),
+    versus(
+        Cell::Changing(Changing::Sqrt3),
+        "index-half-edge",
+        "openmesh",
+        0.7,
+    ),
+    versus(
+        Cell::Changing(Changing::Collapse),
+        "index-half-edge",
+        "openmesh",
+        0.7,
+    ),
+];
+
+/// One group of structures that take turns on some cells.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Group {
+    /// The structures, in the order of their turns (one or two).
+    pub structures: Vec<&'static str>,
+    /// The cells they are timed on, one after another.
+    pub cells: Vec<Cell>,
+}
+
+/// The groups that measure every target whose structures `can` run its cell (in the report:
+/// the structure ran and the size sweep measured that cell, not skipped it as too long, such as
+/// the vertex 1-ring sweep of a CHE level without a vertex-to-corner map): each pair of
+/// structures once with all its cells; a structure held to its limit with the probe's read
+/// ([`PROBE`]).
+pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
+    let mut groups: Vec<Group> = Vec::new();
+    for t in TARGETS.iter().filter(|t| can(t.structure, t.cell)) {
+        let structures = match t.against {
+            Against::Structure(b) if can(b, t.cell) => vec![t.structure, b],
+            Against::Structure(_) => continue,
+            Against::Limit => vec![t.structure, PROBE],
+        };
+        match groups.iter_mut().find(|g| g.structures == structures) {
+            Some(g) if !g.cells.contains(&t.cell) => g.cells.push(t.cell),
+            Some(_) => {}
+            None => groups.push(Group {
+                structures,
+                cells: vec![t.cell],
+            }),
+        }
+    }
+    groups
+}
+
+/// The name of the probe's turn in the rounds of a target against its limit: a sequential read
+/// of the working set whose bandwidth sets the limit's bandwidth bound ([`Reader`]).
+pub const PROBE: &str = "probe";
+
+/// What one run answered, to compare with the other runs.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub enum Answer {
+    /// A sweep's checksum: equal, bit for bit.
+    Sum(u64),
+    /// A workload's float checksum: equal within a relative 1e-6 (each structure sums in its
+    /// own order).
+    Value(f64),
+    /// A built mesh's vertices, edges and faces.
+    Counts([usize; 3]),
+    /// A changed mesh.
+    Mesh(MeshChecksum),
+    /// The probe's read, which answers nothing about the mesh: compared with nothing.
+    Probe,
+}
+
+impl Answer {
+    /// Whether two runs gave the same answer.
+    pub fn agrees(&self, other: &Answer) -> bool {
+        match (self, other) {
+            (Answer::Value(a), Answer::Value(b)) => {
+                (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
+            }
+            (Answer::Probe, _) | (_, Answer::Probe) => true,
+            _ => self == other,
+        }
+    }
+}
+
+/// One timed run.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Run {
+    /// Nanoseconds per item.
+    pub ns: f64,
+    /// What it answered.
+    pub answer: Answer,
+}
+
+/// Runs `names.len()` contenders in turns: `warm_up` untimed rounds, then `rounds` timed ones,
+/// each contender once per round in the order of `names` (`run(i)` runs contender `i` once).
+/// Returns the ns of every timed run, by contender then round. Fails when a run fails or
+/// answers differently from the first run (of any round, warm-up included), naming both.
+pub fn take_turns(
+    warm_up: usize,
+    rounds: usize,
+    names: &[&str],
+    mut run: impl FnMut(usize) -> Result<Run, String>,
+) -> Result<Vec<Vec<f64>>, String> {
+    let mut ns = vec![Vec::with_capacity(rounds); names.len()];
+    let mut first: Option<(&str, Answer)> = None;
+    for round in 0..warm_up + rounds {
+        for (i, &name) in names.iter().enumerate() {
+            let got = run(i).map_err(|e| format!("{name}, round {}: {e}", round + 1))?;
+            match first {
+                None => first = Some((name, got.answer)),
+                Some((who, answer)) if !answer.agrees(&got.answer) => {
+                    return Err(format!(
+                        "checksum mismatch in round {}: {name} answered {:?}, {who} answered {answer:?}",
+                        round + 1,
+                        got.answer
+                    ))
+                }
+                Some(_) => {}
+            }
+            if round >= warm_up {
+                ns[i].push(got.ns);
+            }
+        }
+    }
+    Ok(ns)
+}
+
+/// The median of per-round values and their spread.
+#[derive(Copy, Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Spread {
+    /// The median.
+    pub median: f64,
+    /// The smallest.
+    pub min: f64,
+    /// The largest.
+    pub max: f64,
+    /// How many values.
+    pub rounds: usize,
+}
+
+impl Spread {
+    /// The spread of `values`; `None` when there is none or one is not a positive finite
+    /// number (a run that took no time, or a limit of zero, makes no ratio).
+    pub fn of(values: impl IntoIterator<Item = f64>) -> Option<Spread> {
+        let mut v: Vec<f64> = values.into_iter().collect();
+        if v.is_empty() || v.iter().any(|x| !x.is_finite() || *x <= 0.0) {
+            return None;
+        }
+        v.sort_by(f64::total_cmp);
+        Some(Spread {
+            median: median(&v),
+            min: v[0],
+            max: v[v.len() - 1],
+            rounds: v.len(),
+        })
+    }
+
+    /// The per-round ratios `a[i] / b[i]` of two contenders' runs in the same rounds; `None`
+    /// when their rounds do not match or a ratio cannot be made ([`Spread::of`]).
+    pub fn of_ratios(a: &[f64], b: &[f64]) -> Option<Spread> {
+        if a.len() != b.len() {
+            return None;
+        }
+        Spread::of(a.iter().zip(b).map(|(x, y)| x / y))
+    }
+}
+
+/// The rounds of one cell: the structures that took turns and each one's runs.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Turns {
+    /// What was timed.
+    pub cell: Cell,
+    /// On which mesh.
+    pub mesh: String,
+    /// Items per run (vertices or faces).
+    pub items: usize,
+    /// The structures, in the order of their turns.
+    pub structures: Vec<String>,
+    /// Nanoseconds per item of every timed run, by structure (as `structures`) then round.
+    pub ns_per_item: Vec<Vec<f64>>,
+    /// Untimed warm-up rounds before them.
+    pub warm_up: usize,
+    /// Wall time of all the rounds, warm-up included, seconds.
+    pub seconds: f64,
+}
+
+impl Turns {
+    /// The runs of `structure`, if it took turns.
+    pub fn runs(&self, structure: &str) -> Option<&[f64]> {
+        let i = self.structures.iter().position(|s| s == structure)?;
+        self.ns_per_item.get(i).map(Vec::as_slice)
+    }
+}
+
+/// The ratio a target measured in turns: per round, `structure`'s run over `against`'s. Against
+/// its limit (the size sweep's cell's, `limit`), over the limit of that round: its bandwidth
+/// bound at the bandwidth the probe's read measured in that round (ns per byte), its latency
+/// and checksum bounds as the run's probe measured them.
+pub fn measured(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Option<Spread> {
+    let mut of_cell = turns.iter().filter(|x| x.cell == t.cell);
+    match t.against {
+        Against::Structure(b) => {
+            of_cell.find_map(|x| Spread::of_ratios(x.runs(t.structure)?, x.runs(b)?))
+        }
+        Against::Limit => {
+            let l = limit?;
+            let (runs, read) =
+                of_cell.find_map(|x| Some((x.runs(t.structure)?, x.runs(PROBE)?)))?;
+            if runs.len() != read.len() {
+                return None;
+            }
+            let limit = |ns_per_byte: f64| {
+                (l.bytes_per_item * ns_per_byte)
+                    .max(l.latency_ns_per_item)
+                    .max(l.checksum_ns_per_item)
+            };
+            Spread::of(runs.iter().zip(read).map(|(ns, &b)| ns / limit(b)))
+        }
+    }
+}
+
+/// Times one run in the measuring thread's CPU time when the meter knows it
+/// ([`MemoryMeter::thread_cpu_ns`]), else by the wall clock. On a machine with more runnable
+/// processes than cores, a run of a few milliseconds is preempted for whole time slices, which
+/// the wall clock counts and the thread's CPU time does not: the rounds of a target then
+/// differ by what the structures did, not by when the scheduler took the core away.
+pub struct Stopwatch<'a> {
+    meter: &'a dyn MemoryMeter,
+    cpu: Option<u64>,
+    wall: Instant,
+}
+
+impl<'a> Stopwatch<'a> {
+    /// Starts timing.
+    pub fn start(meter: &'a dyn MemoryMeter) -> Self {
+        Self {
+            meter,
+            cpu: meter.thread_cpu_ns(),
+            wall: Instant::now(),
+        }
+    }
+
+    /// Nanoseconds since the start.
+    pub fn ns(&self) -> f64 {
+        match (self.cpu, self.meter.thread_cpu_ns()) {
+            (Some(a), Some(b)) => b.saturating_sub(a) as f64,
+            _ => self.wall.elapsed().as_nanos() as f64,
+        }
+    }
+}
+
+/// A structure built once, with what its timed runs need.
+pub struct Built<M> {
+    m: M,
+    q: Queries,
+    curves: BoundaryCurves,
+    buf: WorkloadBuffers,
+}
+
+impl<M: MeshTopology> Built<M> {
+    /// Builds `M` from `soup`.
+    pub fn new(soup: &PolygonSoup) -> Result<Self, String> {
+        let m = M::from_soup(soup).map_err(|e| format!("cannot build {}: {e}", M::NAME))?;
+        // Every vertex, the sweep's queries of R00 as `Queries::all` has them; without the
+        // edges and (edge, face) pairs, which its hash map of edges makes costly to build on
+        // a large mesh and no cell of a target reads.
+        let q = Queries {
+            vertices: (0..m.num_vertices()).map(VertexId::new).collect(),
+            ..Queries::default()
+        };
+        Ok(Self {
+            m,
+            q,
+            curves: BoundaryCurves::default(),
+            buf: WorkloadBuffers::default(),
+        })
+    }
+
+    /// One run of a sweep or of smoothing, natively for a baseline with its own loop, as the
+    /// size sweep runs it, timed by a [`Stopwatch`] on `meter`.
+    pub fn run(&mut self, cell: Cell, meter: &dyn MemoryMeter) -> Result<Run, String> {
+        let native = M::native();
+        let watch = Stopwatch::start(meter);
+        let (items, answer) = match cell {
+            Cell::R00Sweep => {
+                let op = Operator::R00;
+                let sum = match native.and_then(|k| k.sweep(&self.m, op)) {
+                    Some(sum) => sum.map_err(|e| format!("native kernel failed: {e}"))?,
+                    None => run(&self.m, op, &self.q, &mut self.curves),
+                };
+                (self.q.count(op), Answer::Sum(sum))
+            }
+            Cell::Smoothing => {
+                let w = Workload::Smoothing;
+                let value = match native.and_then(|k| k.workload(&mut self.m, w)) {
+                    Some(v) => v.map_err(|e| format!("native kernel failed: {e}"))?,
+                    None => run_workload(&self.m, w, &mut self.buf),
+                };
+                (w.items(&self.m), Answer::Value(value))
+            }
+            Cell::Construction | Cell::Changing(_) => {
+                return Err(format!("{cell:?} is not run on a built structure"))
+            }
+        };
+        let ns = watch.ns();
+        Ok(Run {
+            ns: std::hint::black_box(ns) / items.max(1) as f64,
+            answer,
+        })
+    }
+}
+
+/// One build of `M` from `soup`, as the size sweep times construction: the baseline's own
+/// construction when it has one, timed by a [`Stopwatch`] on `meter`.
+pub fn build<M: MeshTopology>(soup: &PolygonSoup, meter: &dyn MemoryMeter) -> Result<Run, String> {
+    let native = M::native();
+    let watch = Stopwatch::start(meter);
+    let built = match native.and_then(|k| k.construction(soup)) {
+        Some(built) => built.map_err(|e| format!("native kernel failed: {e}"))?,
+        None => M::from_soup(soup).map_err(|e| format!("cannot build {}: {e}", M::NAME))?,
+    };
+    let m = std::hint::black_box(built);
+    let ns = watch.ns();
+    let answer = Answer::Counts([m.num_vertices(), m.num_edges(), m.num_faces()]);
+    drop(m);
+    Ok(Run {
+        ns: ns / soup.num_faces().max(1) as f64,
+        answer,
+    })
+}
+
+/// Times `A` and `B` on `mesh` taking turns on each of `cells` (sweeps, smoothing,
+/// construction; not the changing workloads, which need editing): both are built once first,
+/// when a cell needs them built.
+pub fn pair<A: MeshTopology, B: MeshTopology>(
+    mesh: &str,
+    soup: &PolygonSoup,
+    cells: &[Cell],
+    meter: &dyn MemoryMeter,
+) -> Result<Vec<Turns>, String> {
+    let names = [A::NAME, B::NAME];
+    let mut built = None;
+    let mut out = Vec::new();
+    for &cell in cells {
+        let start = Instant::now();
+        let ns = if cell == Cell::Construction {
+            take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
+                0 => build::<A>(soup, meter),
+                _ => build::<B>(soup, meter),
+            })?
+        } else {
+            if built.is_none() {
+                built = Some((Built::<A>::new(soup)?, Built::<B>::new(soup)?));
+            }
+            let (a, b) = built.as_mut().expect("built above");
+            take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
+                0 => a.run(cell, meter),
+                _ => b.run(cell, meter),
+            })?
+        };
+        out.push(turns(cell, mesh, soup, &names, ns, start));
+    }
+    Ok(out)
+}
+
+/// Times `A` on `cells` taking turns with the probe's read of `read_bytes` (the working set of
+/// its limit's bandwidth bound): a structure held to its limit.
+pub fn with_probe<A: MeshTopology>(
+    mesh: &str,
+    soup: &PolygonSoup,
+    cells: &[Cell],
+    read_bytes: usize,
+    meter: &dyn MemoryMeter,
+) -> Result<Vec<Turns>, String> {
+    let mut a = Built::<A>::new(soup)?;
+    let reader = Reader::new(read_bytes);
+    let names = [A::NAME, PROBE];
+    let mut out = Vec::new();
+    for &cell in cells {
+        let start = Instant::now();
+        let ns = take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
+            0 => a.run(cell, meter),
+            _ => Ok(reader.run(meter)),
+        })?;
+        out.push(turns(cell, mesh, soup, &names, ns, start));
+    }
+    Ok(out)
+}
+
+/// A sequential read of a working set, as the probe measures bandwidth ([`crate::probe`]):
+/// four independent sums over `u64` words, the set read over and over for at least 4 MiB.
+pub struct Reader {
+    data: Vec<u64>,
+    passes: usize,
+}
+
+impl Reader {
+    /// A reader of `bytes` (at least 32).
+    pub fn new(bytes: usize) -> Self {
+        let words = (bytes / 8).max(4);
+        Self {
+            data: (0..words as u64).collect(),
+            passes: ((4usize << 20) / (words * 8)).max(1),
+        }
+    }
+
+    /// One read, timed by a [`Stopwatch`] on `meter`: ns per byte.
+    pub fn run(&self, meter: &dyn MemoryMeter) -> Run {
+        let watch = Stopwatch::start(meter);
+        let mut s = [0u64; 4];
+        for _ in 0..self.passes {
+            for c in std::hint::black_box(&self.data).chunks_exact(4) {
+                s[0] = s[0].wrapping_add(c[0]);
+                s[1] = s[1].wrapping_add(c[1]);
+                s[2] = s[2].wrapping_add(c[2]);
+                s[3] = s[3].wrapping_add(c[3]);
+            }
+        }
+        std::hint::black_box(s);
+        let ns = watch.ns();
+        Run {
+            ns: ns / (self.passes * self.data.len() * 8) as f64,
+            answer: Answer::Probe,
+        }
+    }
+}
+
+/// The [`Turns`] of `cell`'s runs `ns`, timed since `start`.
+pub fn turns(
+    cell: Cell,
+    mesh: &str,
+    soup: &PolygonSoup,
+    names: &[&str],
+    ns: Vec<Vec<f64>>,
+    start: Instant,
+) -> Turns {
+    let items = match cell {
+        Cell::R00Sweep | Cell::Smoothing => soup.num_vertices(),
+        Cell::Construction | Cell::Changing(_) => soup.num_faces(),
+    };
+    Turns {
+        cell,
+        mesh: mesh.into(),
+        items,
+        structures: names.iter().map(|s| s.to_string()).collect(),
+        ns_per_item: ns,
+        warm_up: cell.warm_up(),
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// The subject and kernel of the size sweep's cell that times what `cell` times; `None` for
+/// the changing workloads, which have their own rows.
+fn sequential_subject(cell: Cell) -> Option<(Subject, Kernel)> {
+    match cell {
+        Cell::R00Sweep => Some((Subject::Query(Operator::R00), Kernel::Sweep)),
+        Cell::Smoothing => Some((Subject::Workload(Workload::Smoothing), Kernel::Workload)),
+        Cell::Construction => Some((Subject::Construction, Kernel::Construction)),
+        Cell::Changing(_) => None,
+    }
+}
+
+/// The cell of the size sweep that times what a target's cell times (construction: its warm
+/// builds), if it was measured; `None` for the changing workloads, which have their own rows.
+pub fn sequential<'a>(
+    measurements: &'a [Measurement],
+    mesh: &str,
+    s: &str,
+    cell: Cell,
+) -> Option<&'a Measurement> {
+    let (subject, kernel) = sequential_subject(cell)?;
+    measurements.iter().find(|m| {
+        m.mesh == mesh
+            && m.structure == s
+            && m.operator == subject
+            && m.kernel == kernel
+            && m.status == Status::Measured
+    })
+}
+
+/// The ratio of a target in the sequential cells (the structures timed one after another):
+/// shown beside the one measured in turns, to see what taking turns changed.
+fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f64> {
+    if let Cell::Changing(w) = t.cell {
+        let Against::Structure(b) = t.against else {
+            return None;
+        };
+        return crate::changing::ratio(&r.changing, w, t.structure, b);
+    }
+    let a = sequential(&r.measurements, mesh, t.structure, t.cell)?;
+    match t.against {
+        Against::Structure(b) => {
+            Some(a.ns_per_item? / sequential(&r.measurements, mesh, b, t.cell)?.ns_per_item?)
+        }
+        Against::Limit => times_limit(a),
+    }
+}
+
+/// The Targets section: every target measured in turns, on the largest torus of the run.
+pub fn render(h: &mut String, r: &Results) {
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let ran = |s: &str| r.structures.iter().any(|x| x.name == s);
+    // Measured on the largest torus of the cases, which is this one.
+    let turns: Vec<Turns> = r
+        .targets
+        .iter()
+        .filter(|t| t.mesh == mesh)
+        .cloned()
+        .collect();
+    let _ = write!(
+        h,
+        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe's sequential read of the working set that sets the limit's bandwidth bound, and each round's sweep is divided by the limit at that round's bandwidth (the latency and checksum bounds are the run's probe's). <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
+    );
+    for t in TARGETS.iter().filter(|t| ran(t.structure)) {
+        let against = match t.against {
+            Against::Structure(b) if !ran(b) => continue,
+            Against::Structure(b) => format!("{b}'s"),
+            Against::Limit => "its limit".into(),
+        };
+        let cold = match (t.cell, t.against) {
+            (Cell::Construction, Against::Structure(b)) => {
+                let cold =
+                    |s| sequential(&r.measurements, mesh, s, Cell::Construction)?.cold_ns_per_item;
+                cold(t.structure)
+                    .zip(cold(b))
+                    .map(|(a, b)| format!("; cold builds, one after another: {:.2}×", a / b))
+                    .unwrap_or_default()
+            }
+            _ => String::new(),
+        };
+        let limit =
+            sequential(&r.measurements, mesh, t.structure, t.cell).and_then(|m| m.limit.as_ref());
+        let spread = measured(&turns, t, limit);
+        let (value, range, rounds, met) = match spread {
+            Some(s) => (
+                format!("{:.2}×", s.median),
+                format!("{:.2}–{:.2}", s.min, s.max),
+                s.rounds.to_string(),
+                if s.median <= t.goal { "yes" } else { "no" },
+            ),
+            None => ("not measured".into(), "–".into(), "–".into(), "–"),
+        };
+        let class = match met {
+            "yes" => "ok",
+            "no" => "bad",
+            _ => "skip",
+        };
+        let skipped = || {
+            r.measurements.iter().any(|m| {
+                m.mesh == mesh
+                    && m.structure == t.structure
+                    && m.status == Status::Skipped
+                    && sequential_subject(t.cell) == Some((m.operator, m.kernel))
+            })
+        };
+        let why = match (t.against, limit) {
+            (Against::Limit, Some(l)) if met == "no" => esc(&limit_text(l)),
+            _ if spread.is_none() && skipped() => {
+                "not timed in turns: the size sweep skipped this cell as too long".into()
+            }
+            _ => String::new(),
+        };
+        let why = if why.is_empty() {
+            why
+        } else {
+            format!("<br><span class=small>{why}</span>")
+        };
+        let seq = one_after_another(r, mesh, t)
+            .map(|x| format!("{x:.2}×"))
+            .unwrap_or_else(|| "–".into());
+        let _ = write!(
+            h,
+            "<tr><td class=l>{} {} / {against}{cold}{why}</td><td>{value}</td><td>{range}</td><td>{rounds}</td><td>{seq}</td><td>≤ {}×</td><td class={class}>{met}</td></tr>",
+            t.structure,
+            t.cell.text(),
+            t.goal
+        );
+    }
+    let seconds: f64 = turns.iter().map(|t| t.seconds).sum();
+    let _ = write!(
+        h,
+        "</table><p class=small>The rounds of this table took {seconds:.1} s. Warm builds reuse the memory the build before them freed (see Construction time for cold builds and page faults). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>"
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::{meshes, CheL2, IndexHalfEdge};
+
+    fn sum(ns: f64, s: u64) -> Result<Run, String> {
+        Ok(Run {
+            ns,
+            answer: Answer::Sum(s),
+        })
+    }
+
+    #[test]
+    fn the_median_of_the_round_ratios_and_their_spread() {
+        // Round 2 is disturbed: both sides slow, their ratio stays.
+        let a = [10.0, 40.0, 12.0, 11.0, 30.0];
+        let b = [5.0, 20.0, 4.0, 5.5, 10.0];
+        let s = Spread::of_ratios(&a, &b).unwrap();
+        assert_eq!(
+            s,
+            Spread {
+                median: 2.0,
+                min: 2.0,
+                max: 3.0,
+                rounds: 5
+            }
+        );
+        let even = Spread::of([1.0, 4.0, 2.0, 3.0]).unwrap();
+        assert_eq!((even.median, even.min, even.max), (2.5, 1.0, 4.0));
+        // Rounds that do not match, nothing, or a zero time make no ratio.
+        assert_eq!(Spread::of_ratios(&a, &b[..4]), None);
+        assert_eq!(Spread::of([]), None);
+        assert_eq!(Spread::of_ratios(&[1.0], &[0.0]), None);
+    }
+
+    #[test]
+    fn turns_alternate_and_a_different_checksum_fails_loudly() {
+        let mut order = Vec::new();
+        let ns = take_turns(1, 3, &["a", "b"], |i| {
+            order.push(i);
+            sum(10.0 * (order.len()) as f64, 7)
+        })
+        .unwrap();
+        assert_eq!(order, [0, 1, 0, 1, 0, 1, 0, 1]);
+        // The warm-up round is not kept.
+        assert_eq!(ns, vec![vec![30.0, 50.0, 70.0], vec![40.0, 60.0, 80.0]]);
+        // b answers differently in its third run.
+        let mut runs = 0;
+        let err = take_turns(0, 3, &["a", "b"], |i| {
+            runs += 1;
+            sum(1.0, if i == 1 && runs == 6 { 8 } else { 7 })
+        })
+        .unwrap_err();
+        assert!(
+            err.contains("checksum mismatch in round 3") && err.contains("b answered Sum(8)"),
+            "{err}"
+        );
+        // A failed run names its contender and round.
+        let err = take_turns(0, 2, &["a", "b"], |i| {
+            if i == 0 {
+                sum(1.0, 7)
+            } else {
+                Err("native kernel failed".into())
+            }
+        })
+        .unwrap_err();
+        assert_eq!(err, "b, round 1: native kernel failed");
+        // Floats agree within a relative 1e-6, not beyond.
+        assert!(Answer::Value(1e6).agrees(&Answer::Value(1e6 + 0.5)));
+        assert!(!Answer::Value(1e6).agrees(&Answer::Value(1e6 + 2.0)));
+    }
+
+    #[test]
+    fn the_plan_times_each_pair_once_and_a_limit_alone_only_when_untimed() {
+        let all = plan(|_, _| true);
+        let find = |s: &[&str]| all.iter().find(|g| g.structures == s);
+        assert_eq!(
+            find(&["che-l2", "index-half-edge"]).unwrap().cells,
+            [Cell::R00Sweep, Cell::Smoothing]
+        );
+        assert_eq!(
+            find(&["index-half-edge", "openmesh"]).unwrap().cells,
+            [
+                Cell::R00Sweep,
+                Cell::Changing(Changing::Sqrt3),
+                Cell::Changing(Changing::Collapse)
+            ]
+        );
+        assert_eq!(
+            find(&["che-l1", "openmesh"]).unwrap().cells,
+            [Cell::Construction]
+        );
+        // Every structure held to its limit takes turns with the probe's read.
+        for s in ["che-l2", "openmesh", "che-l1", "pointer-half-edge"] {
+            assert_eq!(find(&[s, PROBE]).unwrap().cells, [Cell::R00Sweep], "{s}");
+        }
+        assert_eq!(all.len(), 4 + 7);
+        // Without OpenMesh, its pairs and its limit go.
+        let without = plan(|s, _| s != "openmesh");
+        assert!(without.iter().all(|g| !g.structures.contains(&"openmesh")));
+        assert_eq!(without.len(), 1 + 6);
+        // A cell the size sweep skipped is not run in turns either.
+        let slow = plan(|s, c| !(s == "che-l1" && c == Cell::R00Sweep));
+        assert!(slow.iter().all(|g| g.structures != ["che-l1", PROBE]));
+        assert!(slow.iter().any(|g| g.structures == ["che-l1", "openmesh"]));
+        // A structure held only to its limit.
+        assert_eq!(
+            plan(|s, _| s == "che-l2"),
+            [Group {
+                structures: vec!["che-l2", PROBE],
+                cells: vec![Cell::R00Sweep]
+            }]
+        );
+    }
+
+    #[test]
+    fn two_structures_take_turns_with_equal_checksums() {
+        let soup = meshes::torus(12, 9);
+        struct Wall;
+        impl MemoryMeter for Wall {
+            fn current(&self) -> usize {
+                0
+            }
+            fn peak(&self) -> usize {
+                0
+            }
+            fn reset_peak(&self) {}
+        }
+        let cells = [Cell::R00Sweep, Cell::Smoothing, Cell::Construction];
+        let turns = pair::<CheL2, IndexHalfEdge>("t", &soup, &cells, &Wall).unwrap();
+        assert_eq!(turns.len(), 3);
+        for t in &turns {
+            assert_eq!(t.structures, ["che-l2", "index-half-edge"]);
+            assert!(t.ns_per_item.iter().all(|r| r.len() == ROUNDS));
+        }
+        let target = pair_target(Cell::Smoothing);
+        let s = measured(&turns, &target, None).unwrap();
+        assert_eq!(s.rounds, ROUNDS);
+        assert!(s.min <= s.median && s.median <= s.max);
+        // Against a limit: the sweep takes turns with the probe's read.
+        let target = Target {
+            against: Against::Limit,
+            ..pair_target(Cell::R00Sweep)
+        };
+        let turns = with_probe::<CheL2>("t", &soup, &[Cell::R00Sweep], 1 << 14, &Wall).unwrap();
+        assert_eq!(turns[0].structures, ["che-l2", PROBE]);
+        assert_eq!(measured(&turns, &target, None), None);
+        let read = turns[0].runs(PROBE).unwrap();
+        assert!(
+            read.iter().all(|&ns| ns > 0.0 && ns.is_finite()),
+            "{read:?}"
+        );
+        // A bandwidth bound: each round's sweep over its bytes at that round's read.
+        let mut l = limit_of(1000.0, 0.0, 0.0);
+        let runs = turns[0].runs("che-l2").unwrap();
+        let mut expected: Vec<f64> = runs
+            .iter()
+            .zip(read)
+            .map(|(a, b)| a / (1000.0 * b))
+            .collect();
+        expected.sort_by(f64::total_cmp);
+        let got = measured(&turns, &target, Some(&l)).unwrap();
+        assert_eq!(got.median, median(&expected));
+        // A latency bound above every round's bandwidth bound: the same every round.
+        l.latency_ns_per_item = 1e12;
+        let mut sorted = runs.to_vec();
+        sorted.sort_by(f64::total_cmp);
+        let got = measured(&turns, &target, Some(&l)).unwrap();
+        assert_eq!(got.median, median(&sorted) / 1e12);
+    }
+
+    fn limit_of(bytes: f64, latency: f64, checksum: f64) -> Limit {
+        Limit {
+            ns_per_item: 0.0,
+            bound: crate::limit::Bound::Bandwidth,
+            bytes_per_item: bytes,
+            bandwidth_ns_per_item: 0.0,
+            bandwidth_level: "L1".into(),
+            loads_per_item: 0.0,
+            latency_ns_per_item: latency,
+            latency_level: "L1".into(),
+            checksum_ns_per_item: checksum,
+            note: None,
+        }
+    }
+
+    fn pair_target(cell: Cell) -> Target {
+        Target {
+            cell,
+            structure: "che-l2",
+            against: Against::Structure("index-half-edge"),
+            goal: 1.2,
+        }
+    }
+}
