@@ -32,6 +32,11 @@ const CGAL_UNITS: [&str; 4] = [
     "cgal/shim.cpp",
 ];
 
+// --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
+/// OpenMesh's `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
+const OPENMESH_EDIT_UNITS: &[&str] = &["openmesh/edit.cpp"];
+// --- end of issue 18's block ---
+
 /// One shim library: its compiler settings, sources, and what linking it needs.
 struct Shim {
     /// The static library's name.
@@ -172,7 +177,7 @@ fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
     Shim {
         library: "topolab_openmesh_shim",
         build,
-        sources: vec!["openmesh/shim.cpp"],
+        sources: [&["openmesh/shim.cpp"][..], OPENMESH_EDIT_UNITS].concat(),
         links: vec!["OpenMeshCore"],
         cfg: "has_openmesh",
     }
