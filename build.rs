@@ -35,6 +35,8 @@ const CGAL_UNITS: [&str; 4] = [
 // --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
 /// OpenMesh's `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
 const OPENMESH_EDIT_UNITS: &[&str] = &["openmesh/edit.cpp"];
+/// CGAL's changing workloads and editing operations (behind `cgal/edit.h`), one unit per class.
+const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
 // --- end of issue 18's block ---
 
 /// One shim library: its compiler settings, sources, and what linking it needs.
@@ -225,7 +227,7 @@ fn cgal_shim(include_dir: &Path) -> Shim {
     Shim {
         library: "topolab_cgal_shim",
         build,
-        sources: CGAL_UNITS.to_vec(),
+        sources: [&CGAL_UNITS[..], CGAL_EDIT_UNITS].concat(),
         // The hull's Exact_predicates_inexact_constructions_kernel falls back to GMP's exact
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],

@@ -40,6 +40,8 @@ struct SurfaceMeshAdapter {
     return !mesh.is_isolated(v) && mesh.is_border(v, /*check_all_incident_halfedges=*/false);
   }
   bool cgal_is_valid() const { return mesh.is_valid(/*verbose=*/false); }
+  // Surface_mesh's indices are the ids, changed or not.
+  void renumber() {}
 };
 
 }  // namespace

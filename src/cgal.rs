@@ -93,6 +93,8 @@ use topolab_structures::{
 };
 
 mod access;
+/// The changing workloads through CGAL's Euler operations (`cgal/edit.h`).
+mod changing;
 pub mod hull;
 
 /// The declarations of `cgal/shim.h`.

@@ -15,8 +15,15 @@ use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
     <OpenMesh as MeshTopology>::from_soup;
 
-/// The structures that run the changing workloads: the lab's editable ones and OpenMesh.
-pub const EDITABLE: [&str; 3] = ["index-half-edge", "pointer-half-edge", "openmesh"];
+/// The structures that run the changing workloads: the lab's editable ones, OpenMesh and
+/// CGAL's two (the baselines natively).
+pub const EDITABLE: [&str; 5] = [
+    "index-half-edge",
+    "pointer-half-edge",
+    "openmesh",
+    "cgal-surface-mesh",
+    "cgal-polyhedron",
+];
 
 /// Tori larger than this (faces) are left out: the workloads triple the mesh.
 const MAX_FACES: usize = 4_000_000;
@@ -43,6 +50,21 @@ fn timed_openmesh(
             Ok(m)
         },
         |m| m.native_changing(w),
+        mesh_checksum,
+    )
+}
+
+/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction.
+#[cfg(has_cgal)]
+fn timed_cgal<S: crate::cgal::CgalStructure>(
+    soup: &PolygonSoup,
+    runs: usize,
+    work: impl FnMut(&mut crate::cgal::Cgal<S>) -> topolab_structures::Result<()>,
+) -> Result<(f64, MeshChecksum), String> {
+    time(
+        runs,
+        || crate::cgal::Cgal::<S>::build_native(soup, soup.num_corners() / 2),
+        work,
         mesh_checksum,
     )
 }
@@ -81,6 +103,18 @@ pub fn measure(
                 let got = match s {
                     "index-half-edge" => timed::<IndexHalfEdge>(soup, w, runs),
                     "pointer-half-edge" => timed::<PointerHalfEdge>(soup, w, runs),
+                    #[cfg(has_cgal)]
+                    "cgal-surface-mesh" => {
+                        timed_cgal::<crate::cgal::SurfaceMeshClass>(soup, runs, |m| {
+                            m.native_changing(w)
+                        })
+                    }
+                    #[cfg(has_cgal)]
+                    "cgal-polyhedron" => {
+                        timed_cgal::<crate::cgal::PolyhedronClass>(soup, runs, |m| {
+                            m.native_changing(w)
+                        })
+                    }
                     #[cfg(has_openmesh)]
                     _ => timed_openmesh(soup, w, runs),
                     #[cfg(not(has_openmesh))]
