@@ -10,6 +10,9 @@ topolab_structures::edit_conformance!(
     not_implemented_on_polygons
 );
 
+#[cfg(has_cgal)]
+topolab_structures::edit_conformance!(cgal_surface_mesh, topolab::cgal::SurfaceMesh);
+
 #[cfg(not(any(has_openmesh, has_cgal)))]
 mod common;
 
