@@ -12,6 +12,7 @@ use topolab_structures::MeshTopology;
 use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
 
 // OpenMesh is built through MeshTopology::from_soup.
+#[cfg(has_openmesh)]
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
     <OpenMesh as MeshTopology>::from_soup;
 
