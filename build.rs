@@ -32,6 +32,13 @@ const CGAL_UNITS: [&str; 4] = [
     "cgal/shim.cpp",
 ];
 
+// --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
+/// OpenMesh's `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
+const OPENMESH_EDIT_UNITS: &[&str] = &["openmesh/edit.cpp"];
+/// CGAL's changing workloads and editing operations (behind `cgal/edit.h`), one unit per class.
+const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
+// --- end of issue 18's block ---
+
 /// One shim library: its compiler settings, sources, and what linking it needs.
 struct Shim {
     /// The static library's name.
@@ -172,7 +179,7 @@ fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
     Shim {
         library: "topolab_openmesh_shim",
         build,
-        sources: vec!["openmesh/shim.cpp"],
+        sources: [&["openmesh/shim.cpp"][..], OPENMESH_EDIT_UNITS].concat(),
         links: vec!["OpenMeshCore"],
         cfg: "has_openmesh",
     }
@@ -220,7 +227,7 @@ fn cgal_shim(include_dir: &Path) -> Shim {
     Shim {
         library: "topolab_cgal_shim",
         build,
-        sources: CGAL_UNITS.to_vec(),
+        sources: [&CGAL_UNITS[..], CGAL_EDIT_UNITS].concat(),
         // The hull's Exact_predicates_inexact_constructions_kernel falls back to GMP's exact
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],

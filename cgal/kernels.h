@@ -50,6 +50,9 @@ template <class Adapter> class CgalMesh final : public Mesh {
   // Surface_mesh's property maps point into it).
   Adapter &adapter() { return a_; }
 
+  void *native() override { return &a_.mesh; }
+  void renumber() override { a_.renumber(); }
+
   void summary(uint32_t *out) const override {
     out[0] = a_.num_vertices();
     out[1] = a_.num_edges();

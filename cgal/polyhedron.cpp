@@ -64,7 +64,32 @@ struct PolyhedronAdapter {
       if (v->halfedge() == HH()) return true;
     return mesh.is_valid(/*verbose=*/false, /*level=*/0);
   }
+  // The ids and tables from the lists' order (after building, and after a change).
+  void renumber();
 };
+
+void PolyhedronAdapter::renumber() {
+  vertices.clear();
+  facets.clear();
+  edges.clear();
+  vertices.reserve(mesh.size_of_vertices());
+  for (auto v = mesh.vertices_begin(); v != mesh.vertices_end(); ++v) {
+    v->id() = vertices.size();
+    vertices.push_back(v);
+  }
+  facets.reserve(mesh.size_of_facets());
+  for (auto f = mesh.facets_begin(); f != mesh.facets_end(); ++f) {
+    f->id() = facets.size();
+    facets.push_back(f);
+  }
+  // Edge_iterator visits one halfedge of each pair.
+  edges.reserve(mesh.size_of_halfedges() / 2);
+  for (auto e = mesh.edges_begin(); e != mesh.edges_end(); ++e) {
+    e->id() = 2 * edges.size();
+    e->opposite()->id() = 2 * edges.size() + 1;
+    edges.push_back(e);
+  }
+}
 
 // The incremental builder, run by Polyhedron_3::delegate on the halfedge data structure.
 class Builder : public CGAL::Modifier_base<HDS> {
@@ -103,23 +128,7 @@ std::unique_ptr<Mesh> build_polyhedron(const Input &in, uint32_t *failed_face) {
   Builder builder(in, failed_face);
   a.mesh.delegate(builder);
   if (builder.refused()) return nullptr;
-  a.vertices.reserve(a.mesh.size_of_vertices());
-  for (auto v = a.mesh.vertices_begin(); v != a.mesh.vertices_end(); ++v) {
-    v->id() = a.vertices.size();
-    a.vertices.push_back(v);
-  }
-  a.facets.reserve(a.mesh.size_of_facets());
-  for (auto f = a.mesh.facets_begin(); f != a.mesh.facets_end(); ++f) {
-    f->id() = a.facets.size();
-    a.facets.push_back(f);
-  }
-  // Edge_iterator visits one halfedge of each pair.
-  a.edges.reserve(a.mesh.size_of_halfedges() / 2);
-  for (auto e = a.mesh.edges_begin(); e != a.mesh.edges_end(); ++e) {
-    e->id() = 2 * a.edges.size();
-    e->opposite()->id() = 2 * a.edges.size() + 1;
-    a.edges.push_back(e);
-  }
+  a.renumber();
   return built;
 }
 

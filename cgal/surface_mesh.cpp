@@ -29,9 +29,12 @@ struct SurfaceMeshAdapter {
   VI vertex(uint32_t i) const { return VI(i); }
   FI face(uint32_t i) const { return FI(i); }
   HI halfedge_at(uint32_t h) const { return HI(h); }
-  uint32_t num_vertices() const { return uint32_t(mesh.number_of_vertices()); }
-  uint32_t num_edges() const { return uint32_t(mesh.number_of_edges()); }
-  uint32_t num_faces() const { return uint32_t(mesh.number_of_faces()); }
+  // Slots, removed ones included: an edit's removed elements keep their ids until the garbage
+  // is collected (edit_surface_mesh.cpp); the same as number_of_vertices() and so on until an
+  // edit removes one.
+  uint32_t num_vertices() const { return uint32_t(mesh.num_vertices()); }
+  uint32_t num_edges() const { return uint32_t(mesh.num_edges()); }
+  uint32_t num_faces() const { return uint32_t(mesh.num_faces()); }
   const Point &point(VI v) const { return mesh.point(v); }
   // Surface_mesh keeps a border halfedge as the halfedge of a border vertex ("If v is a border
   // vertex this will be a border halfedge"), so is_border(v, false) looks at that one halfedge
@@ -40,6 +43,8 @@ struct SurfaceMeshAdapter {
     return !mesh.is_isolated(v) && mesh.is_border(v, /*check_all_incident_halfedges=*/false);
   }
   bool cgal_is_valid() const { return mesh.is_valid(/*verbose=*/false); }
+  // Surface_mesh's indices are the ids, changed or not.
+  void renumber() {}
 };
 
 }  // namespace

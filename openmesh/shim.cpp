@@ -2,11 +2,7 @@
 // recommends (ranges over elements, circulator ranges, handles; no property lookups in loops),
 // so that a sweep measures OpenMesh, not the FFI.
 
-#include "shim.h"
-
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
+#include "mesh.h"
 
 #include <malloc.h>
 
@@ -19,17 +15,8 @@
 
 namespace {
 
-// Double-precision points and normals, so positions round-trip exactly (the lab's are f64).
-struct Traits : OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
-};
-using Tri = OpenMesh::TriMesh_ArrayKernelT<Traits>;
-using Poly = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
-using VH = OpenMesh::VertexHandle;
-using HH = OpenMesh::HalfedgeHandle;
-using EH = OpenMesh::EdgeHandle;
-using FH = OpenMesh::FaceHandle;
+// The mesh types, the set-up and the guard (mesh.h).
+using namespace topolab_om;
 
 // Operator codes: topolab's Operator::ALL order (shim.h).
 enum Op {
@@ -295,57 +282,7 @@ bool fill(M &m, const double *xyz, uint32_t vertices, const uint32_t *indices,
 
 }  // namespace
 
-struct topolab_om_mesh {
-  std::unique_ptr<Tri> tri;    // set for triangle input
-  std::unique_ptr<Poly> poly;  // set for polygon input
-  uint64_t heap_bytes = 0;     // mallinfo2 growth while building
-  bool normals_requested = false;
-};
-
 namespace {
-template <class F> auto with_mesh(const topolab_om_mesh *mesh, F &&f) {
-  return mesh->tri ? f(*mesh->tri) : f(*mesh->poly);
-}
-template <class F> auto with_mesh_mut(topolab_om_mesh *mesh, F &&f) {
-  return mesh->tri ? f(*mesh->tri) : f(*mesh->poly);
-}
-
-// The shim's one process-wide action, done once whichever thread gets here first.
-//
-// OpenMesh 9's omerr() connects its stream to std::cerr on first use behind a plain static
-// flag, inserting into an unlocked std::vector: two threads building their first mesh at the
-// same time both connected and corrupted it (a SIGSEGV in 1 test run of 5). A function-local
-// static is initialised exactly once, thread-safely (C++11); if the initialiser throws, the
-// exception reaches the caller's guard and the next call tries again.
-//
-// Silencing omerr is process-wide too: add_face's refusals ("complex edge", "complex
-// vertex") become typed errors on the Rust side instead of stderr lines. The lab is the only
-// user of OpenMesh in its process. disable() alone still lets every `omerr() << ...` of
-// OpenMesh format into the one shared std::ostream (its width, its buffer) from whichever
-// thread refuses a face, which helgrind reports as races; with badbit set, each such write
-// stops at the stream's sentry and writes nothing but the same state bits.
-void setup_once() {
-  static const bool done = [] {
-    omerr().disable();
-    omerr().setstate(std::ios::badbit | std::ios::failbit);
-    return true;
-  }();
-  (void)done;
-}
-
-// Runs `body` with every exception caught: the C API's wall (no exception may cross
-// `extern "C"` into Rust, which would abort). Returns TOPOLAB_OM_OK or the failure.
-template <class F> int guard(F &&body) noexcept {
-  try {
-    setup_once();
-    return body();
-  } catch (const std::bad_alloc &) {
-    return TOPOLAB_OM_OUT_OF_MEMORY;
-  } catch (...) {
-    return TOPOLAB_OM_EXCEPTION;
-  }
-}
-
 bool known_op(int op) { return op >= 0 && op < OP_COUNT; }
 }  // namespace
 

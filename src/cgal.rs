@@ -93,6 +93,10 @@ use topolab_structures::{
 };
 
 mod access;
+/// The changing workloads through CGAL's Euler operations (`cgal/edit.h`).
+mod changing;
+/// `MeshEdit` for the `Surface_mesh` through CGAL's Euler operations (`cgal/edit.h`).
+mod edit;
 pub mod hull;
 
 /// The declarations of `cgal/shim.h`.

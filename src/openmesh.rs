@@ -66,6 +66,8 @@ use topolab_structures::{
 
 /// The declarations of `openmesh/shim.h`.
 mod access;
+/// `MeshEdit` through OpenMesh's own operations (`openmesh/edit.h`).
+mod edit;
 
 mod ffi {
     use std::ffi::c_void;

@@ -14,14 +14,18 @@ use topolab_structures::{
 };
 
 // OpenMesh is built through MeshTopology::from_soup.
+#[cfg(has_openmesh)]
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
     <OpenMesh as MeshTopology>::from_soup;
 
-/// The structures that run the changing workloads: the lab's editable ones and OpenMesh.
-pub const EDITABLE: [&str; 6] = [
+/// The structures that run the changing workloads: the lab's editable ones, OpenMesh and
+/// CGAL's two (the baselines natively).
+pub const EDITABLE: [&str; 8] = [
     "index-half-edge",
     "pointer-half-edge",
     "openmesh",
+    "cgal-surface-mesh",
+    "cgal-polyhedron",
     "che-l1",
     "che-l2",
     "che-l3",
@@ -58,6 +62,21 @@ fn timed_openmesh(
             Ok(m)
         },
         |m| m.native_changing(w),
+        mesh_checksum,
+    )
+}
+
+/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction.
+#[cfg(has_cgal)]
+fn timed_cgal<S: crate::cgal::CgalStructure>(
+    soup: &PolygonSoup,
+    runs: usize,
+    work: impl FnMut(&mut crate::cgal::Cgal<S>) -> topolab_structures::Result<()>,
+) -> Result<(f64, MeshChecksum), String> {
+    time(
+        runs,
+        || crate::cgal::Cgal::<S>::build_native(soup, soup.num_corners() / 2),
+        work,
         mesh_checksum,
     )
 }
@@ -106,6 +125,18 @@ pub fn measure(
                     "che-l1" => timed::<CheL1>(soup, w, runs),
                     "che-l2" => timed::<CheL2>(soup, w, runs),
                     "che-l3" => timed::<CheL3>(soup, w, runs),
+                    #[cfg(has_cgal)]
+                    "cgal-surface-mesh" => {
+                        timed_cgal::<crate::cgal::SurfaceMeshClass>(soup, runs, |m| {
+                            m.native_changing(w)
+                        })
+                    }
+                    #[cfg(has_cgal)]
+                    "cgal-polyhedron" => {
+                        timed_cgal::<crate::cgal::PolyhedronClass>(soup, runs, |m| {
+                            m.native_changing(w)
+                        })
+                    }
                     #[cfg(has_openmesh)]
                     _ => timed_openmesh(soup, w, runs),
                     #[cfg(not(has_openmesh))]
