@@ -88,6 +88,7 @@ pub fn render(r: &Results) -> String {
             hull_analysis(h, r);
         }
         Section::Changing => crate::changing::render(h, &r.changing),
+        Section::Decimate => crate::decimate::render(h, &r.decimate),
         Section::Teaching => {
             teaching(h, r);
             crate::reads::section::teaching(h);
@@ -281,7 +282,10 @@ fn targets(h: &mut String, r: &Results) {
             sweep.and_then(|m| m.limit.as_ref()).map(limit_text),
         );
     }
-    for (what, value, goal) in crate::changing::targets(&r.changing) {
+    for (what, value, goal) in crate::changing::targets(&r.changing)
+        .into_iter()
+        .chain(crate::decimate::targets(&r.decimate))
+    {
         row(what, value, goal, None);
     }
     h.push_str(

@@ -39,6 +39,8 @@ pub struct Results {
     pub hull_fits: Vec<crate::hull::bench::HullFit>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
+    /// Decimation by quadric error (the lab's, OpenMesh's, CGAL's) and the reconstruction.
+    pub decimate: Vec<crate::decimate::DecimateRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Reads per query of every operator on every structure against mesh size, counted

@@ -21,6 +21,12 @@
 //!   own refusal (the link condition and the tetrahedron test of `is_collapse_ok`, the same
 //!   tests), and a refused vertex goes back on the heap with its next-best neighbour (the
 //!   order `(error, to)`), which is the candidate OpenMesh would have heaped.
+//! - **Geometry**: a collapse that would flip a surviving face around `from` (its normal's dot
+//!   product with the old one not positive) or leave it without area is skipped like a
+//!   refused one: OpenMesh's `ModNormalFlippingT` at its default 90°, the module OpenMesh users
+//!   add beside `ModQuadricT` (the report's OpenMesh baseline runs `ModQuadricT` alone, so this
+//!   test is work the lab does and OpenMesh does not). Without it, flat regions decimate into
+//!   zero-area triangles.
 //! - **After a collapse** (`postprocess_collapse`): `Q_to += Q_from`, and every former
 //!   neighbour of `from` is heaped again.
 //! - **Stop** (`decimate_to_faces`): when the live face count is at most the target or no
@@ -276,6 +282,41 @@ fn wings<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> Option<(u32, u
     Some((left?, right?))
 }
 
+/// Would moving `from` onto `to` keep every face around `from` that survives the collapse
+/// (those without `to`) facing the same side, and not degenerate? OpenMesh's
+/// `ModNormalFlippingT` test at its default maximal deviation of 90° (the new normal's dot
+/// product with the old one must stay positive), which also refuses a face that would lose
+/// its area: the collapses quadric error alone allows on flat regions would otherwise leave
+/// zero-area triangles, which `topolab check` reports.
+fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
+    let p_to = m.position(to);
+    let mut ok = true;
+    m.vertex_faces(from, |f| {
+        if !ok {
+            return;
+        }
+        let mut c = [VertexId(u32::MAX); 3];
+        let mut k = 0;
+        m.face_vertices(f, |v| {
+            if k < 3 {
+                c[k] = v;
+            }
+            k += 1;
+        });
+        if k != 3 || c.contains(&to) {
+            return;
+        }
+        let p = c.map(|v| m.position(v));
+        let q = c.map(|v| if v == from { p_to } else { m.position(v) });
+        let before = (p[1] - p[0]).cross(p[2] - p[0]);
+        let after = (q[1] - q[0]).cross(q[2] - q[0]);
+        if before.dot(after) <= 0.0 || after.length() <= 1e-6 * before.length() {
+            ok = false;
+        }
+    });
+    ok
+}
+
 /// Decimates `m` by quadric error until at most `target_faces` live faces remain or no legal
 /// collapse is left (see the module docs for the algorithm). Deleted elements stay marked
 /// (call [`MeshEdit::garbage_collection`] to compact them; [`reconstruct`] needs them
@@ -312,6 +353,10 @@ pub fn decimate<M: MeshEdit>(m: &mut M, target_faces: usize) -> Result<Decimatio
             d.heap_vertex(m, v, Some((d.priority[v as usize], to.0)));
             continue;
         };
+        if !keeps_faces(m, from, to) {
+            d.heap_vertex(m, v, Some((d.priority[v as usize], to.0)));
+            continue;
+        }
         support.clear();
         m.vertex_vertices(from, |w| support.push(w.0));
         let position = m.position(from);
