@@ -78,7 +78,9 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
     let dir = std::env::temp_dir().join(format!("topolab-decimate-bad-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("out.off");
-    let cases: [(&str, Vec<&str>, Vec<&str>, i32, &str); 7] = [
+    // mesh, target, more arguments, exit code, what the message says.
+    type Case<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, i32, &'a str);
+    let cases: [Case; 7] = [
         ("quad-grid", vec!["--faces", "4"], vec![], 1, "corners"),
         ("bowtie", vec!["--faces", "1"], vec![], 1, "cannot decimate"),
         ("torus", vec!["--faces", "13"], vec![], 1, "at least 14"),

@@ -4,11 +4,13 @@
 //! timed and checked), and by OpenMesh's and CGAL's decimaters natively, every result's error
 //! measured the same way.
 //!
-//! Cost: OpenMesh's Decimater is the slowest of the three (its `is_collapse_ok` looks up a
-//! property by name on every candidate; about 50 µs per face on the reference machine, four
-//! times that under load), so the sizes stop at 64k faces (16k with `--quick`) and the
-//! baselines run once per mesh, the lab's structures twice (one run gives the result, the
-//! other the reconstruction).
+//! Cost: OpenMesh's Decimater is the slowest of the three (Debian's OpenMesh 9 spends its time
+//! in `is_collapse_ok`, string compares and allocations, on every candidate of every
+//! `heap_vertex`: 175 µs per face of the 64k torus on the 2-core machine under a load of
+//! 13–17), so the sizes stop at 64k faces (16k with `--quick`) and the baselines run once per
+//! mesh, the lab's structures twice (one run gives the result, the other the reconstruction).
+//! `topolab report --sections decimate --meshes torus --sizes 16384,65536` took 75–120 s
+//! under that load; the full report's tori (1k to 64k) add about as much.
 
 use crate::input::Failure;
 use crate::native_decimate::NativeDecimater;
@@ -144,7 +146,7 @@ pub fn measure(
     }
     if !skipped.is_empty() && !rows.is_empty() {
         notes.push(format!(
-            "The decimation section skipped {} (above {cap} faces: OpenMesh's Decimater takes about 50 µs per face).",
+            "The decimation section skipped {} (above {cap} faces: OpenMesh's Decimater takes about 0.2 ms per face on the loaded 2-core machine).",
             skipped.join(", ")
         ));
     }

@@ -228,7 +228,8 @@ impl Decimater {
                 let err = qv.add(&self.quadric[w.index()]).eval(m.position(w));
                 // Round-off on flat regions: OpenMesh skips negative errors, they count as 0.
                 let key = (err.max(0.0) as f32, w.0);
-                if !(key.0 < f32::MAX) {
+                // An error past f32 (or NaN) is no candidate, as in OpenMesh (prio < FLT_MAX).
+                if key.0.is_nan() || key.0 >= f32::MAX {
                     return;
                 }
                 if after.is_some_and(|a| key <= a) {
@@ -420,11 +421,9 @@ pub fn minimum_faces<M: MeshTopology>(m: &M) -> usize {
         used[a.index()] = true;
         used[m.edge_vertices(e)[1].index()] = true;
     });
-    for v in 0..n {
-        if used[v] {
-            let r = find(&mut parent, v as u32) as usize;
-            count[r][0] += 1;
-        }
+    for (v, _) in used.iter().enumerate().filter(|(_, &u)| u) {
+        let r = find(&mut parent, v as u32) as usize;
+        count[r][0] += 1;
     }
     for f in 0..m.num_faces() {
         let mut first = None;
