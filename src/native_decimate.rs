@@ -3,7 +3,7 @@
 //! `Surface_mesh_simplification::edge_collapse` with the Garland–Heckbert plane policies on a
 //! `Surface_mesh`), for the report's decimation section: the mesh goes in as arrays, the
 //! decimated mesh comes back as arrays with the time of the decimation alone (measured in
-//! C++, around the library's calls). The status codes are the shims' ([`crate::foreign`]).
+//! C++, around the library's calls). The status codes are the shims' (`openmesh/shim.h`, `cgal/shim.h`).
 
 use topolab_structures::{Error, PolygonSoup, Result};
 
