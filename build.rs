@@ -4,8 +4,8 @@
 //!
 //! | baseline | shim | links | cfg | off switch |
 //! |---|---|---|---|---|
-//! | OpenMesh | `openmesh/shim.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
-//! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` | `TOPOLAB_NO_CGAL=1` |
+//! | OpenMesh | `openmesh/shim.cpp`, `openmesh/decimate.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
+//! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
 //!
 //! A missing baseline (or one switched off, to simulate that) is left out with a warning that
 //! says how to get it; the package builds without it.
@@ -55,6 +55,7 @@ struct Shim {
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_openmesh)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal)");
+    println!("cargo::rustc-check-cfg=cfg(has_cgal_decimate)");
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
@@ -132,7 +133,7 @@ fn compile_in_parallel(shims: &[Shim]) -> Vec<Vec<PathBuf>> {
 /// from pkg-config (which also tells cargo where to link), else from the Debian layout.
 fn find_openmesh() -> Option<Vec<PathBuf>> {
     let header = "OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh";
-    // Only OpenMeshCore is needed (pkg-config would also link OpenMeshTools).
+    // The libraries to link are openmesh_shim's (pkg-config's list is not used).
     if let Ok(lib) = pkg_config::Config::new()
         .cargo_metadata(false)
         .env_metadata(true)
@@ -179,8 +180,13 @@ fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
     Shim {
         library: "topolab_openmesh_shim",
         build,
-        sources: [&["openmesh/shim.cpp"][..], OPENMESH_EDIT_UNITS].concat(),
-        links: vec!["OpenMeshCore"],
+        sources: [
+            &["openmesh/shim.cpp", "openmesh/decimate.cpp"][..],
+            OPENMESH_EDIT_UNITS,
+        ]
+        .concat(),
+        // OpenMeshTools: the Decimater's observer (openmesh/decimate.cpp).
+        links: vec!["OpenMeshCore", "OpenMeshTools"],
         cfg: "has_openmesh",
     }
 }
@@ -224,10 +230,24 @@ fn cgal_shim(include_dir: &Path) -> Shim {
         .opt_level(3)
         .define("NDEBUG", None)
         .warnings(true);
+    let mut sources = CGAL_UNITS.to_vec();
+    // The Garland-Heckbert policies of cgal/decimate.cpp need Eigen (libeigen3-dev): without
+    // it the CGAL decimater is left out and the report says so.
+    let eigen = Path::new("/usr/include/eigen3");
+    watch_for(&[PathBuf::from("/usr/include")], "eigen3/Eigen/Core");
+    if eigen.join("Eigen/Core").exists() {
+        build
+            .flag("-isystem")
+            .flag(eigen.to_str().unwrap_or("/usr/include/eigen3"));
+        sources.insert(0, "cgal/decimate.cpp");
+        println!("cargo::rustc-cfg=has_cgal_decimate");
+    } else {
+        println!("cargo::warning=Eigen not found, building without CGAL's decimater: apt-get install libeigen3-dev");
+    }
     Shim {
         library: "topolab_cgal_shim",
         build,
-        sources: [&CGAL_UNITS[..], CGAL_EDIT_UNITS].concat(),
+        sources: [&sources[..], CGAL_EDIT_UNITS].concat(),
         // The hull's Exact_predicates_inexact_constructions_kernel falls back to GMP's exact
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],

@@ -140,6 +140,16 @@ int topolab_cgal_workload(topolab_cgal_mesh *mesh, int workload,
 int topolab_cgal_convex_hull(const double *xyz, uint32_t n, uint32_t repeat, double *seconds,
                              uint32_t *out, double *volume) TOPOLAB_CGAL_NOEXCEPT;
 
+/* cgal/decimate.cpp (built when Eigen is found): builds a Surface_mesh of `faces` triangles,
+ * simplifies it with edge_collapse and the Garland-Heckbert plane policies down to the edges
+ * of `target` faces, *seconds the time of edge_collapse(), and writes the compacted result:
+ * out_xyz (room for 3 * vertices doubles), out_triangles (room for 3 * faces), their counts.
+ * TOPOLAB_CGAL_REFUSED when add_face refuses a triangle. */
+int topolab_cgal_decimate(const double *xyz, uint32_t vertices, const uint32_t *triangles,
+                          uint32_t faces, uint32_t target, double *out_xyz,
+                          uint32_t *out_vertices, uint32_t *out_triangles, uint32_t *out_faces,
+                          double *seconds) TOPOLAB_CGAL_NOEXCEPT;
+
 #ifdef __cplusplus
 }
 #endif

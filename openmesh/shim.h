@@ -115,6 +115,15 @@ int topolab_om_prepare_changing(topolab_om_mesh *mesh) TOPOLAB_OM_NOEXCEPT;
 /* Runs a changing workload of the Surface_mesh benchmark (Sieger & Botsch) in place, as its
  * protocol does: 0 = one step of sqrt3 subdivision, 1 = the collapse test. A TriMesh only. */
 int topolab_om_changing(topolab_om_mesh *mesh, int workload) TOPOLAB_OM_NOEXCEPT;
+/* openmesh/decimate.cpp: builds a TriMesh of `faces` triangles, decimates it with
+ * DecimaterT + ModQuadricT to `target` faces (decimate_to_faces), *seconds the time of
+ * initialize() and decimate_to_faces(), and writes the compacted result: out_xyz (room for
+ * 3 * vertices doubles), out_triangles (room for 3 * faces), their counts. TOPOLAB_OM_REFUSED
+ * when add_face refuses a triangle. */
+int topolab_om_decimate(const double *xyz, uint32_t vertices, const uint32_t *triangles,
+                        uint32_t faces, uint32_t target, double *out_xyz,
+                        uint32_t *out_vertices, uint32_t *out_triangles, uint32_t *out_faces,
+                        double *seconds) TOPOLAB_OM_NOEXCEPT;
 
 #ifdef __cplusplus
 }

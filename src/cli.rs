@@ -131,6 +131,9 @@ pub enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Decimate a triangle mesh by quadric error (as OpenMesh's Decimater with ModQuadric) to
+    /// `--faces N` or `--ratio R` of its faces and write it.
+    Decimate(commands::decimate::DecimateArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -189,6 +192,7 @@ pub fn run(cli: Cli) -> u8 {
             levels,
             out,
         } => commands::subdivide::subdivide(&mesh, &scheme, levels, &out),
+        Command::Decimate(args) => commands::decimate::run(&args),
     };
     match result {
         Ok(text) => match crate::output::print(&text) {

@@ -15,6 +15,8 @@ pub mod commands;
 pub mod extend;
 pub mod input;
 pub mod limits;
+#[allow(unsafe_code)]
+pub mod native_decimate;
 pub mod output;
 
 #[allow(unsafe_code)]

@@ -64,6 +64,11 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("levels", vec!["--levels", "1"]),
             ("out", vec!["--out", "@DIR/sqrt3.obj"]),
         ],
+        "decimate" => vec![
+            ("mesh", vec!["torus"]),
+            ("faces", vec!["--faces", "20"]),
+            ("out", vec!["--out", "@DIR/decimated.obj"]),
+        ],
         _ => return None,
     })
 }
@@ -127,6 +132,22 @@ fn curated() -> Vec<Vec<&'static str>> {
             "sqrt3",
             "--levels",
             "3",
+            "--out",
+            "@DIR/x.off",
+        ],
+        vec![
+            "decimate",
+            "torus:1073741824",
+            "--ratio",
+            "0.1",
+            "--out",
+            "@DIR/x.off",
+        ],
+        vec![
+            "decimate",
+            "torus:100000000",
+            "--faces",
+            "10",
             "--out",
             "@DIR/x.off",
         ],

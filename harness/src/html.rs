@@ -88,6 +88,7 @@ pub fn render(r: &Results) -> String {
             hull_analysis(h, r);
         }
         Section::Changing => crate::changing::render(h, &r.changing),
+        Section::Decimate => crate::decimate::render(h, &r.decimate),
         Section::Teaching => {
             teaching(h, r);
             crate::reads::section::teaching(h);

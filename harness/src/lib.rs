@@ -13,6 +13,7 @@ pub mod changing;
 pub mod checksum;
 pub mod chooser;
 pub mod compare;
+pub mod decimate;
 pub mod fit;
 pub mod html;
 pub mod hull;

@@ -42,6 +42,8 @@ pub struct Results {
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
     pub targets: Vec<crate::targets::Turns>,
+    /// Decimation by quadric error (the lab's, OpenMesh's, CGAL's) and the reconstruction.
+    pub decimate: Vec<crate::decimate::DecimateRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Reads per query of every operator on every structure against mesh size, counted

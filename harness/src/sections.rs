@@ -36,6 +36,9 @@ pub enum Section {
     /// The changing workloads of the Surface_mesh benchmark (√3 subdivision, the collapse
     /// test) on the editable structures and OpenMesh.
     Changing,
+    /// Decimation by quadric error against OpenMesh's and CGAL's decimaters, and the
+    /// reconstruction by vertex splits.
+    Decimate,
     /// What each structure stores for the CHE thesis chapter's Figure 4.10.
     Teaching,
     /// Thumbnails of the meshes.
@@ -56,7 +59,7 @@ pub enum SizeSweep {
 
 impl Section {
     /// Every section, in page order.
-    pub const ALL: [Section; 16] = [
+    pub const ALL: [Section; 17] = [
         Section::Chooser,
         Section::Targets,
         Section::Table41,
@@ -71,6 +74,7 @@ impl Section {
         Section::Libigl,
         Section::Hull,
         Section::Changing,
+        Section::Decimate,
         Section::Teaching,
         Section::Meshes,
     ];
@@ -92,6 +96,7 @@ impl Section {
             Section::Libigl => "libigl",
             Section::Hull => "hull",
             Section::Changing => "changing",
+            Section::Decimate => "decimate",
             Section::Teaching => "teaching",
             Section::Meshes => "meshes",
         }
@@ -120,6 +125,7 @@ impl Section {
             | Section::RealAtScale
             | Section::Hull
             | Section::Changing
+            | Section::Decimate
             | Section::Teaching
             | Section::Meshes => SizeSweep::None,
         }

@@ -714,6 +714,24 @@ pub fn render(h: &mut String, r: &Results) {
             t.goal
         );
     }
+    // Decimation is timed in its own section, the decimaters taking turns on each mesh there:
+    // its row shows that section's median ratio.
+    for (what, value, goal) in crate::decimate::targets(&r.decimate) {
+        let (value, met) = match value {
+            Some(v) => (format!("{v:.2}×"), if v <= goal { "yes" } else { "no" }),
+            None => ("not measured".into(), "–"),
+        };
+        let class = match met {
+            "yes" => "ok",
+            "no" => "bad",
+            _ => "skip",
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}<br><span class=small>timed in turns in the Decimation section</span></td><td>{value}</td><td>–</td><td>–</td><td>–</td><td>≤ {goal}×</td><td class={class}>{met}</td></tr>",
+            esc(&what)
+        );
+    }
     let seconds: f64 = turns.iter().map(|t| t.seconds).sum();
     let _ = write!(
         h,

@@ -4,6 +4,7 @@
 
 pub mod check;
 pub mod compare;
+pub mod decimate;
 pub mod explain;
 pub mod explain_che;
 pub mod explain_edit;
@@ -15,6 +16,7 @@ pub mod refine;
 pub mod repair;
 pub mod report;
 pub mod report_changing;
+pub mod report_decimate;
 pub mod report_reads;
 pub mod report_repair;
 pub mod report_scale;

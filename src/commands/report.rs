@@ -40,7 +40,7 @@ pub struct ReportArgs {
     pub structures: Option<Vec<String>>,
     /// Sections of the page to measure and show, comma separated (default: all): chooser,
     /// targets, table-4-1, plots, sweeps, workloads, memory, construction, orderings,
-    /// real-meshes, real-at-scale, libigl, hull, changing, teaching, meshes. Only what they are drawn
+    /// real-meshes, real-at-scale, libigl, hull, changing, decimate, teaching, meshes. Only what they are drawn
     /// from is measured.
     #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
     pub sections: Option<Vec<Section>>,
@@ -223,6 +223,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         hull_fits: Vec::new(),
         changing: Vec::new(),
         targets: Vec::new(),
+        decimate: Vec::new(),
         teaching: Vec::new(),
         reads: Vec::new(),
         notes,
@@ -337,6 +338,10 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     if selection.changing {
         results.changing =
             super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
+    }
+    if selection.decimate {
+        results.decimate =
+            super::report_decimate::measure(&cases, &names, quick, &mut results.notes)?;
     }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     if selection.sections.contains(&Section::Table41) {

@@ -45,6 +45,8 @@ pub struct Selection {
     pub hull: bool,
     /// The changing workloads run (on the generated tori).
     pub changing: bool,
+    /// The decimation section runs (on the generated tori).
+    pub decimate: bool,
 }
 
 impl Selection {
@@ -78,12 +80,14 @@ impl Selection {
             generated: size_sweep != SizeSweep::None
                 || shows(Section::Orderings)
                 || shows(Section::Changing)
+                || shows(Section::Decimate)
                 || shows(Section::Meshes),
             refined: shows(Section::RealAtScale) || shows(Section::Orderings),
             orderings: shows(Section::Orderings),
             libigl: shows(Section::Libigl),
             hull: shows(Section::Hull),
             changing: shows(Section::Changing),
+            decimate: shows(Section::Decimate),
             sections,
         }
     }
@@ -158,6 +162,9 @@ mod tests {
         let changing = Selection::new(Some(&[Section::Changing]), None, &mut notes);
         assert!(changing.changing && changing.generated && !changing.measures("torus"));
         assert!(!memory.changing);
+        let decimate = Selection::new(Some(&[Section::Decimate]), None, &mut notes);
+        assert!(decimate.decimate && decimate.generated && !decimate.measures("torus"));
+        assert!(!memory.decimate && !changing.decimate);
     }
 
     #[test]
