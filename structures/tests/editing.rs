@@ -3,3 +3,4 @@
 
 topolab_structures::edit_conformance!(index_half_edge, topolab_structures::IndexHalfEdge);
 topolab_structures::edit_conformance!(pointer_half_edge, topolab_structures::PointerHalfEdge);
+topolab_structures::edit_conformance!(winged_edge, topolab_structures::WingedEdge);

@@ -145,7 +145,7 @@ mod tests {
     use super::*;
     use crate::testing::editing::canonical_face;
     use crate::testing::meshes;
-    use crate::{IndexHalfEdge, PointerHalfEdge};
+    use crate::{IndexHalfEdge, PointerHalfEdge, WingedEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {
         let soup = to_soup(m);
@@ -191,5 +191,6 @@ mod tests {
     fn the_collapse_test_restores_the_mesh_and_sqrt3_flips_every_interior_edge() {
         both::<IndexHalfEdge>();
         both::<PointerHalfEdge>();
+        both::<WingedEdge>();
     }
 }
