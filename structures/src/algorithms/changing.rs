@@ -69,7 +69,17 @@ impl Changing {
 
 /// One step of √3 subdivision (see the module docs). Polygons are split into fans as the
 /// protocol does; the CLI refuses them before (√3 is a triangle scheme).
+///
+/// Refused with [`Error::Unsupported`], before any change, on a structure whose edge ids do
+/// not survive the face splits ([`MeshEdit::STABLE_EDGE_IDS`]): the flips would hit other
+/// edges than the old ones.
 pub fn sqrt3_step<M: MeshEdit>(m: &mut M) -> Result<()> {
+    if !M::STABLE_EDGE_IDS {
+        return Err(Error::Unsupported(format!(
+            "{}: √3 subdivision flips the old edges by id, and this structure's edge ids change when faces are split",
+            M::NAME
+        )));
+    }
     let (nv, ne, nf) = (m.num_vertices(), m.num_edges(), m.num_faces());
     m.reserve(nf, 3 * nf, 2 * nf);
     // New positions of the old interior vertices.
@@ -145,7 +155,7 @@ mod tests {
     use super::*;
     use crate::testing::editing::canonical_face;
     use crate::testing::meshes;
-    use crate::{IndexHalfEdge, PointerHalfEdge, WingedEdge};
+    use crate::{EdgeList, IndexHalfEdge, PointerHalfEdge, VertexList, WingedEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {
         let soup = to_soup(m);
@@ -169,6 +179,12 @@ mod tests {
 
             let mut m = M::from_soup(&soup).expect("manifold");
             let (nv, ne, nf) = (m.num_vertices(), m.num_edges(), m.num_faces());
+            if !M::STABLE_EDGE_IDS {
+                let err = sqrt3_step(&mut m).expect_err("refused without stable edge ids");
+                assert_eq!(err.kind(), "unsupported", "{err}");
+                assert_eq!(m.num_faces(), nf, "nothing changed");
+                continue;
+            }
             sqrt3_step(&mut m).expect("√3 runs");
             m.validate().expect("valid");
             assert_eq!(m.num_faces(), 3 * nf);
@@ -192,5 +208,7 @@ mod tests {
         both::<IndexHalfEdge>();
         both::<PointerHalfEdge>();
         both::<WingedEdge>();
+        both::<EdgeList>();
+        both::<VertexList>();
     }
 }

@@ -186,6 +186,12 @@ pub trait MeshEdit: MeshTopology {
     /// How the structure deletes.
     const DELETION: Deletion;
 
+    /// Does an edge keep its id through edits that keep the edge (a split of a face beside
+    /// it, a flip elsewhere)? The changing workloads' √3 step flips the old edges by id after
+    /// splitting every face, which needs it. `false` where edge ids are derived from the
+    /// faces (the vertex list names an edge by a corner).
+    const STABLE_EDGE_IDS: bool = true;
+
     /// The cost of `op` in this structure, in the notation of the queries' costs (meaningful
     /// where [`MeshEdit::supports`] says yes).
     fn edit_cost(op: EditOp) -> Cost;

@@ -36,6 +36,8 @@ pub trait FaceRewrite: MeshTopology {
     fn push_vertex(&mut self, p: DVec3) -> Result<VertexId>;
     /// Moves vertex `v` (a live vertex).
     fn write_position(&mut self, v: VertexId, p: DVec3);
+    /// Is `e` an edge id of the current mesh?
+    fn is_edge(&self, e: EdgeId) -> bool;
     /// Is vertex `v` marked deleted?
     fn vertex_deleted(&self, v: VertexId) -> bool;
     /// Marks vertex `v` (which has no faces left) deleted.
@@ -229,7 +231,7 @@ pub fn delete_vertex<M: FaceRewrite>(m: &mut M, v: VertexId) -> Result<()> {
 /// [`MeshEdit::flip_edge`] over [`FaceRewrite`].
 pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
     let op = EditOp::FlipEdge;
-    if e.index() >= m.num_edges() {
+    if !m.is_edge(e) {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     let [a, b] = m.edge_vertices(e);
@@ -250,7 +252,7 @@ pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
 /// [`MeshEdit::split_edge`] over [`FaceRewrite`].
 pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<VertexId> {
     let op = EditOp::SplitEdge;
-    if e.index() >= m.num_edges() {
+    if !m.is_edge(e) {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     let [a, b] = m.edge_vertices(e);
@@ -449,12 +451,52 @@ pub fn set_position<M: FaceRewrite>(m: &mut M, v: VertexId, p: DVec3) -> Result<
     Ok(())
 }
 
+/// Face runs packed in one array with offsets (face f is `items[offsets[f]..offsets[f + 1]]`):
+/// the storage of the vertex list's corners and the edge list's polygons.
+pub(crate) mod packed {
+    /// Writes face `f`'s run: in place when the length is the same (O(k)), else by shifting
+    /// everything after it (O(n)).
+    pub(crate) fn set<T: Copy>(items: &mut Vec<T>, offsets: &mut [u32], f: usize, run: &[T]) {
+        let (start, end) = (offsets[f] as usize, offsets[f + 1] as usize);
+        if end - start == run.len() {
+            items[start..end].copy_from_slice(run);
+            return;
+        }
+        items.splice(start..end, run.iter().copied());
+        let shift = run.len() as i64 - (end - start) as i64;
+        for o in &mut offsets[f + 1..] {
+            *o = (*o as i64 + shift) as u32;
+        }
+    }
+
+    /// Appends a face's run; returns its face index.
+    pub(crate) fn push<T: Copy>(items: &mut Vec<T>, offsets: &mut Vec<u32>, run: &[T]) -> usize {
+        items.extend_from_slice(run);
+        offsets.push(items.len() as u32);
+        offsets.len() - 2
+    }
+
+    /// Removes face `f`'s run: the last face's run moves into it (O(k) for equal lengths).
+    pub(crate) fn remove<T: Copy>(items: &mut Vec<T>, offsets: &mut Vec<u32>, f: usize) {
+        let last = offsets.len() - 2;
+        if f != last {
+            let run: Vec<T> = items[offsets[last] as usize..offsets[last + 1] as usize].to_vec();
+            set(items, offsets, f, &run);
+        }
+        let start = offsets[last] as usize;
+        items.truncate(start);
+        offsets.pop();
+    }
+}
+
 /// Implements [`MeshEdit`] for a [`FaceRewrite`] structure with the operations of this
-/// module; `$cost` is its `edit_cost` and `$supports` its `supports`.
+/// module; `$cost` is its `edit_cost`, `$supports` its `supports` and the optional last
+/// argument its `STABLE_EDGE_IDS`.
 macro_rules! mesh_edit_by_rewrite {
-    ($ty:ty, $cost:expr, $supports:expr) => {
+    ($ty:ty, $cost:expr, $supports:expr $(, $stable:expr)?) => {
         impl $crate::core::edit::MeshEdit for $ty {
             const DELETION: $crate::core::edit::Deletion = $crate::core::edit::Deletion::LastMoves;
+            $(const STABLE_EDGE_IDS: bool = $stable;)?
             fn edit_cost(op: $crate::core::edit::EditOp) -> $crate::core::topology::Cost {
                 ($cost)(op)
             }

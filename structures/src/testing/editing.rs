@@ -574,6 +574,11 @@ pub fn start_mesh(seed: u64) -> PolygonSoup {
 /// Returns how many edits succeeded and how many were refused.
 pub fn run<M: MeshEdit>(seed: u64, steps: usize) -> Result<(usize, usize), String> {
     let soup = start_mesh(seed);
+    // Editing is defined on oriented manifolds; the structures that store non-manifold
+    // vertices (vertex list, edge list) would start from a mesh the model refuses whole.
+    if !Model::manifold(&soup) {
+        return Ok((0, 0));
+    }
     let Ok(mut m) = M::from_soup(&soup) else {
         return Ok((0, 0));
     };

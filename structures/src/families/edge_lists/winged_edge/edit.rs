@@ -218,6 +218,10 @@ impl FaceRewrite for WingedEdge {
         self.positions[v.index()] = p;
     }
 
+    fn is_edge(&self, e: EdgeId) -> bool {
+        self.edges.get(e.index()).is_some_and(EdgeRecord::is_live)
+    }
+
     fn vertex_deleted(&self, v: VertexId) -> bool {
         self.deleted.get(v.index()).copied().unwrap_or(false)
     }
