@@ -11,3 +11,4 @@ pub mod ordering;
 pub mod refine;
 pub mod repair;
 pub mod summary;
+pub mod weld;
