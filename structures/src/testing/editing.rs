@@ -639,6 +639,52 @@ pub fn run<M: MeshEdit>(seed: u64, steps: usize) -> Result<(usize, usize), Strin
     Ok((done, refused))
 }
 
+/// Generates the editing tests of every structure the registry marks `[editable]`: the
+/// callback of [`for_each_structure!`](crate::for_each_structure), so that the capability
+/// in the registry is the enrolment.
+///
+/// ```ignore
+/// topolab_structures::for_each_structure!(topolab_structures::editing_suite);
+/// ```
+#[macro_export]
+macro_rules! editing_suite {
+    (@one $module:ident, $ty:ty $(,)?) => {};
+    (@one $module:ident, $ty:ty, editable) => {
+        $crate::edit_conformance!($module, $ty);
+    };
+    ($($module:ident => $ty:ty $([$($capability:ident),*])?),* $(,)?) => {
+        $( $crate::editing_suite!(@one $module, $ty, $($($capability),*)?); )*
+
+        #[test]
+        fn the_registry_says_which_structures_are_editable() {
+            let tested: Vec<&str> = [$($crate::editing_suite!(@name $ty, $($($capability),*)?)),*]
+                .into_iter()
+                .flatten()
+                .collect();
+            assert_eq!(tested, $crate::registry::editable_names());
+            // And run-time choice by name reaches exactly those, each as itself.
+            struct Name;
+            impl $crate::registry::EditVisitor for Name {
+                type Output = &'static str;
+                fn visit<M: $crate::MeshEdit>(self) -> &'static str {
+                    M::NAME
+                }
+            }
+            for name in $crate::registry::NAMES {
+                let got = $crate::registry::visit_editable(name, Name);
+                assert_eq!(got, tested.contains(name).then_some(*name), "{name}");
+            }
+            assert!(tested.len() >= 5, "{tested:?}");
+        }
+    };
+    (@name $ty:ty $(,)?) => {
+        None
+    };
+    (@name $ty:ty, editable) => {
+        Some(<$ty as $crate::MeshTopology>::NAME)
+    };
+}
+
 /// Generates the editing tests of one structure: seeded random sequences of edits
 /// ([`run`]), each checked against the model and the oracle, as a proptest.
 ///
