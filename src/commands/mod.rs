@@ -6,6 +6,7 @@ pub mod check;
 pub mod compare;
 pub mod explain;
 pub mod explain_che;
+pub mod explain_edit;
 pub mod explain_trace;
 pub mod hull;
 pub mod info;

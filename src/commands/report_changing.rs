@@ -1,22 +1,104 @@
 //! The changing workloads of `topolab report` (√3 subdivision and the collapse test of the
 //! Surface_mesh benchmark; see `topolab_harness::changing`): every editable structure among
-//! those asked for, and OpenMesh natively, on the closed tori of the run.
+//! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh
+//! natively, on the closed tori of the run.
+//!
+//! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
+//! O(k·n), declared by `MeshEdit::edit_cost`) would run each workload in quadratic time: it is
+//! skipped, with a note giving the estimate, where that estimate exceeds [`MAX_SECONDS`]; so is
+//! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`).
 
 use crate::input::Failure;
+use crate::registry::{self, EditVisitor};
 #[cfg(has_openmesh)]
 use crate::openmesh::OpenMesh;
-use topolab_harness::changing::{cross_check, mesh_checksum, time, ChangingRow, MeshChecksum};
+use topolab_harness::changing::{
+    cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum,
+};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(has_openmesh)]
 use topolab_structures::MeshTopology;
-use topolab_structures::{IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup};
+use topolab_structures::{Cost, MeshEdit, PolygonSoup};
 
 // OpenMesh is built through MeshTopology::from_soup.
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
     <OpenMesh as MeshTopology>::from_soup;
 
-/// The structures that run the changing workloads: the lab's editable ones and OpenMesh.
-pub const EDITABLE: [&str; 3] = ["index-half-edge", "pointer-half-edge", "openmesh"];
+/// A structure's workload is skipped where its declared costs predict more than this.
+pub const MAX_SECONDS: f64 = 120.0;
+
+/// The time the estimate assumes per element a scan reads (a streaming read of a few bytes,
+/// optimistic, so that nothing is skipped that would have fitted).
+const SECONDS_PER_ELEMENT: f64 = 1e-9;
+
+/// The elements one operation of cost `c` reads on a mesh of `n` elements (valence k ≈ 6).
+fn elements(c: Cost, n: f64) -> f64 {
+    match c {
+        Cost::Constant | Cost::Log | Cost::Local | Cost::Boundary => 6.0,
+        Cost::Linear => n,
+        Cost::LocalTimesLinear => 6.0 * n,
+        Cost::Quadratic => n * n,
+    }
+}
+
+/// Why `M` does not run `w` on a mesh of `faces` faces, if it does not.
+fn skip<M: MeshEdit>(w: Changing, faces: usize) -> Option<String> {
+    if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
+        return Some(
+            "its edge ids change when faces are split, and √3 flips the old edges by id".into(),
+        );
+    }
+    // The mesh grows to about three times its faces (corners, edges): n ≈ 3 faces.
+    let n = 3.0 * faces as f64;
+    let seconds: f64 = w
+        .operations()
+        .iter()
+        .map(|&(op, per_face)| {
+            per_face * faces as f64 * elements(M::edit_cost(op), n) * SECONDS_PER_ELEMENT
+        })
+        .sum();
+    (seconds > MAX_SECONDS).then(|| {
+        format!(
+            "its declared costs ({}) predict about {} s at ≥ 1 ns per element read, above {MAX_SECONDS} s",
+            declared::<M>(w),
+            format_seconds(seconds)
+        )
+    })
+}
+
+fn format_seconds(s: f64) -> String {
+    if s >= 1e4 {
+        format!("{s:.1e}")
+    } else {
+        format!("{s:.0}")
+    }
+}
+
+/// One workload timed on one editable structure, or why not.
+struct Timed<'a> {
+    soup: &'a PolygonSoup,
+    workload: Changing,
+    runs: usize,
+}
+
+/// The outcome of [`Timed`]: the median time and the result, or the reason for the skip.
+enum Outcome {
+    Ran(Result<((f64, MeshChecksum), String), String>),
+    Skipped(String),
+}
+
+impl EditVisitor for Timed<'_> {
+    type Output = Outcome;
+    fn visit<M: MeshEdit>(self) -> Outcome {
+        match skip::<M>(self.workload, self.soup.num_faces()) {
+            Some(why) => Outcome::Skipped(why),
+            None => Outcome::Ran(
+                timed::<M>(self.soup, self.workload, self.runs)
+                    .map(|t| (t, declared::<M>(self.workload))),
+            ),
+        }
+    }
+}
 
 /// Tori larger than this (faces) are left out: the workloads triple the mesh.
 const MAX_FACES: usize = 4_000_000;
@@ -56,9 +138,10 @@ pub fn measure(
     notes: &mut Vec<String>,
 ) -> Result<Vec<ChangingRow>, Failure> {
     let mut rows = Vec::new();
-    let editing: Vec<&str> = EDITABLE
-        .into_iter()
-        .filter(|s| names.iter().any(|n| n == s))
+    let editing: Vec<&str> = names
+        .iter()
+        .map(String::as_str)
+        .filter(|s| registry::is_editable(s))
         .collect();
     for (mesh, family, soup) in cases {
         if family != "torus" || editing.is_empty() {
@@ -78,15 +161,23 @@ pub fn measure(
         for w in Changing::ALL {
             for &s in &editing {
                 eprintln!("topolab report: {} on {mesh}: {s}", w.name());
-                let got = match s {
-                    "index-half-edge" => timed::<IndexHalfEdge>(soup, w, runs),
-                    "pointer-half-edge" => timed::<PointerHalfEdge>(soup, w, runs),
-                    #[cfg(has_openmesh)]
-                    _ => timed_openmesh(soup, w, runs),
-                    #[cfg(not(has_openmesh))]
-                    _ => unreachable!("openmesh is not registered without OpenMesh"),
+                let timed = Timed {
+                    soup,
+                    workload: w,
+                    runs,
                 };
-                let (seconds, result) = got.map_err(|e| Failure {
+                let got = match registry::visit_editable(s, timed) {
+                    Some(Outcome::Ran(got)) => got,
+                    Some(Outcome::Skipped(why)) => {
+                        notes.push(format!("{} on {mesh} skipped {s}: {why}.", w.name()));
+                        continue;
+                    }
+                    #[cfg(has_openmesh)]
+                    None => timed_openmesh(soup, w, runs).map(|t| (t, String::new())),
+                    #[cfg(not(has_openmesh))]
+                    None => unreachable!("{s} is editable natively only with OpenMesh"),
+                };
+                let ((seconds, result), declared) = got.map_err(|e| Failure {
                     message: format!("{} on {mesh} failed on {s}: {e}", w.name()),
                     code: 1,
                 })?;
@@ -99,6 +190,7 @@ pub fn measure(
                     runs,
                     ns_per_face: seconds * 1e9 / soup.num_faces().max(1) as f64,
                     result,
+                    declared,
                 });
             }
         }
@@ -108,4 +200,27 @@ pub fn measure(
         })?;
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::{EdgeList, IndexHalfEdge, VertexList, WingedEdge};
+
+    #[test]
+    fn scanning_structures_are_skipped_with_an_estimate_where_it_would_take_too_long() {
+        for w in Changing::ALL {
+            for faces in [1_000, 1_000_000] {
+                assert_eq!(skip::<IndexHalfEdge>(w, faces), None);
+                assert_eq!(skip::<WingedEdge>(w, faces), None);
+            }
+            assert_eq!(skip::<EdgeList>(w, 1_000), None, "{w:?}");
+            let why = skip::<EdgeList>(w, 1_000_000).expect("quadratic at 1M");
+            assert!(why.contains("predict about") && why.contains("O(n)"), "{why}");
+        }
+        assert_eq!(skip::<VertexList>(Changing::Collapse, 1_000), None);
+        assert!(skip::<VertexList>(Changing::Collapse, 1_000_000).is_some());
+        let why = skip::<VertexList>(Changing::Sqrt3, 1_000).expect("no stable edge ids");
+        assert!(why.contains("edge ids"), "{why}");
+    }
 }

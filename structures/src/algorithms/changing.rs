@@ -11,7 +11,7 @@
 //!
 //! New vertex of face `f` (in both): vertex `n0 + f`, as in every library that appends.
 
-use crate::core::edit::MeshEdit;
+use crate::core::edit::{EditOp, MeshEdit};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
@@ -55,6 +55,19 @@ impl Changing {
         match self {
             Changing::Sqrt3 => "sqrt3",
             Changing::Collapse => "collapse-test",
+        }
+    }
+
+    /// The editing operations the workload does, with how many per face of the mesh it
+    /// starts from (what its declared costs are made of).
+    pub const fn operations(self) -> &'static [(EditOp, f64)] {
+        match self {
+            Changing::Sqrt3 => &[(EditOp::SplitFace, 1.0), (EditOp::FlipEdge, 1.5)],
+            Changing::Collapse => &[
+                (EditOp::SplitFace, 1.0),
+                (EditOp::CollapseEdge, 1.0),
+                (EditOp::GarbageCollection, 0.0),
+            ],
         }
     }
 
@@ -200,6 +213,27 @@ mod tests {
                 kept, boundary,
                 "only the old boundary edges keep their ends"
             );
+        }
+    }
+
+    /// The face list after `w` on `soup`.
+    fn after<M: MeshEdit>(soup: &PolygonSoup, w: Changing) -> Vec<Vec<u32>> {
+        let mut m = M::from_soup(soup).expect("manifold");
+        w.run(&mut m).expect("runs");
+        faces(&m)
+    }
+
+    #[test]
+    fn every_editable_structure_changes_a_mesh_into_the_same_faces() {
+        for soup in [meshes::torus(6, 5), meshes::grid(4, 3, true)] {
+            for w in Changing::ALL {
+                let want = after::<IndexHalfEdge>(&soup, w);
+                assert_eq!(after::<WingedEdge>(&soup, w), want, "winged-edge {w:?}");
+                assert_eq!(after::<EdgeList>(&soup, w), want, "edge-list {w:?}");
+                if w == Changing::Collapse {
+                    assert_eq!(after::<VertexList>(&soup, w), want, "vertex-list {w:?}");
+                }
+            }
         }
     }
 
