@@ -114,6 +114,39 @@ fn neighbours<M: MeshTopology>(m: &M, v: VertexId) -> Vec<VertexId> {
     out
 }
 
+/// The faces of edge `e` = {a, b}, each with its corners and the corner where it leaves the
+/// end it runs from: `[the face running a → b, the one running b → a]`. The structure's own
+/// edge → faces query (O(1) in the edge lists), not a search around a vertex.
+#[allow(clippy::type_complexity)]
+fn sides_of<M: MeshTopology>(
+    m: &M,
+    e: EdgeId,
+    a: VertexId,
+    b: VertexId,
+) -> [Option<(FaceId, Vec<VertexId>, usize)>; 2] {
+    let mut out = [None, None];
+    m.edge_faces(e, |f| {
+        let c = corners(m, f);
+        let k = c.len();
+        for i in 0..k {
+            let (x, y) = (c[i], c[(i + 1) % k]);
+            if (x, y) == (a, b) {
+                out[0] = Some((f, c.clone(), i));
+            } else if (x, y) == (b, a) {
+                out[1] = Some((f, c.clone(), i));
+            }
+        }
+    });
+    out
+}
+
+/// Do `a` and `b` share a face side? One rotation around `a`, no allocation.
+fn adjacent<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
+    let mut found = false;
+    m.vertex_vertices(a, |w| found |= w == b);
+    found
+}
+
 fn is_boundary_edge<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
     face_with(m, a, b).is_none() || face_with(m, b, a).is_none()
 }
@@ -235,14 +268,14 @@ pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     let [a, b] = m.edge_vertices(e);
-    let (Some((f1, c1, i1)), Some((f2, c2, i2))) = (face_with(m, a, b), face_with(m, b, a)) else {
+    let [Some((f1, c1, i1)), Some((f2, c2, i2))] = sides_of(m, e, a, b) else {
         return Err(refuse::<M>(op, Refusal::BoundaryEdge));
     };
     if c1.len() != 3 || c2.len() != 3 {
         return Err(refuse::<M>(op, Refusal::NotTriangles));
     }
     let (x, y) = (c1[(i1 + 2) % 3], c2[(i2 + 2) % 3]);
-    if x == y || neighbours(m, x).contains(&y) {
+    if x == y || adjacent(m, x, y) {
         return Err(refuse::<M>(op, Refusal::EdgeExists));
     }
     m.rewrite(&[f1, f2], &[vec![a, y, x], vec![b, x, y]]);
@@ -256,10 +289,8 @@ pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<Vert
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     let [a, b] = m.edge_vertices(e);
-    let sides: Vec<(FaceId, Vec<VertexId>, usize)> = [face_with(m, a, b), face_with(m, b, a)]
-        .into_iter()
-        .flatten()
-        .collect();
+    let sides: Vec<(FaceId, Vec<VertexId>, usize)> =
+        sides_of(m, e, a, b).into_iter().flatten().collect();
     if sides.is_empty() {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
