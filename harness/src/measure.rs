@@ -638,7 +638,15 @@ mod tests {
             soup: &soup,
             queries: &q,
         };
-        let plan = short_plan(Duration::from_millis(20));
+        // The estimates come from medians of sampled runs: at least five of them, so that a
+        // run or two stretched by the scheduler (a 10 ms time slice on 16 queries would make
+        // an O(k) sweep look quadratic) cannot decide; the linear cells stay ~20x under the
+        // budget even on a loaded machine, the quadratic ones ~20x over it.
+        let plan = Plan {
+            min_reps: 5,
+            max_reps: 9,
+            ..short_plan(Duration::from_millis(20))
+        };
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();

@@ -67,6 +67,22 @@ pub fn thumbnail(soup: &PolygonSoup, size: f64) -> String {
     crate::thumbnail::thumbnail(soup, size)
 }
 
+/// Where vertex `v` of Figure 4.10 sits in its unfolded drawing around `center`: apex 3 in the
+/// middle, vertices 0, 1, 2 on a circle of `radius` counter-clockwise from the top. Shared by
+/// every drawing of the figure (the teaching sections' read-by-read pictures too), so they all
+/// show the same layout.
+pub fn figure_4_10_position(center: (f64, f64), radius: f64, v: u32) -> (f64, f64) {
+    if v == 3 {
+        center
+    } else {
+        let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * v as f64 / 3.0;
+        (center.0 + radius * a.cos(), center.1 - radius * a.sin())
+    }
+}
+
+/// The fill of triangle t (mod 3) in every drawing of Figure 4.10.
+pub const FIGURE_4_10_FILLS: [&str; 3] = ["#dbe9f6", "#fde2c8", "#d8f0d2"];
+
 /// The CHE thesis chapter's Figure 4.10, unfolded: the open tetrahedron (apex 3 in the middle,
 /// triangle t = (t, t+1 mod 3, 3)) with vertex numbers and the half-edge numbers 3t + i, each
 /// drawn inside its triangle next to the edge it starts.
@@ -75,21 +91,14 @@ pub fn figure_4_10() -> String {
     let (w, h) = (420.0, 380.0);
     let c = (w / 2.0, h / 2.0 + 20.0);
     let r = 160.0;
-    let pos = |v: u32| -> (f64, f64) {
-        if v == 3 {
-            c
-        } else {
-            let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * v as f64 / 3.0;
-            (c.0 + r * a.cos(), c.1 - r * a.sin())
-        }
-    };
+    let pos = |v: u32| figure_4_10_position(c, r, v);
     let mut s = format!(
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif"><text x="{}" y="20" font-size="15" text-anchor="middle">Figure 4.10: the open tetrahedron, unfolded</text>"#,
         w / 2.0
     );
     for (t, f) in soup.faces().enumerate() {
         let p: Vec<(f64, f64)> = f.iter().map(|&v| pos(v)).collect();
-        let fill = ["#dbe9f6", "#fde2c8", "#d8f0d2"][t];
+        let fill = FIGURE_4_10_FILLS[t % 3];
         let _ = write!(
             s,
             r##"<polygon points="{:.1},{:.1} {:.1},{:.1} {:.1},{:.1}" fill="{fill}" stroke="#333" stroke-width="1.5"/>"##,

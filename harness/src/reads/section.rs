@@ -196,14 +196,7 @@ fn drawing(
     let (w, hgt) = (300.0, 280.0);
     let c = (w / 2.0, hgt / 2.0 + 10.0);
     let r = 115.0;
-    let pos = |v: u32| -> (f64, f64) {
-        if v == 3 {
-            c
-        } else {
-            let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * v as f64 / 3.0;
-            (c.0 + r * a.cos(), c.1 - r * a.sin())
-        }
-    };
+    let pos = |v: u32| crate::svg::figure_4_10_position(c, r, v);
     let faces: Vec<Vec<u32>> = soup.faces().map(|f| f.to_vec()).collect();
     let centroid = |t: usize| {
         let p: Vec<(f64, f64)> = faces[t].iter().map(|&v| pos(v)).collect();
@@ -227,7 +220,7 @@ fn drawing(
                 format!("{:.1},{:.1}", p.0, p.1)
             })
             .collect();
-        let fill = ["#dbe9f6", "#fde2c8", "#d8f0d2"][t % 3];
+        let fill = crate::svg::FIGURE_4_10_FILLS[t % 3];
         let _ = write!(
             s,
             r##"<polygon points="{}" fill="{fill}" stroke="#333"/>"##,
