@@ -9,9 +9,9 @@
 //! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`).
 
 use crate::input::Failure;
-use crate::registry::{self, EditVisitor};
 #[cfg(has_openmesh)]
 use crate::openmesh::OpenMesh;
+use crate::registry::{self, EditVisitor};
 use topolab_harness::changing::{
     cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum,
 };
@@ -216,7 +216,10 @@ mod tests {
             }
             assert_eq!(skip::<EdgeList>(w, 1_000), None, "{w:?}");
             let why = skip::<EdgeList>(w, 1_000_000).expect("quadratic at 1M");
-            assert!(why.contains("predict about") && why.contains("O(n)"), "{why}");
+            assert!(
+                why.contains("predict about") && why.contains("O(n)"),
+                "{why}"
+            );
         }
         assert_eq!(skip::<VertexList>(Changing::Collapse, 1_000), None);
         assert!(skip::<VertexList>(Changing::Collapse, 1_000_000).is_some());

@@ -52,7 +52,9 @@ fn faces_of<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
 fn boundary_sides(faces: &[Vec<u32>]) -> Vec<(u32, u32)> {
     let sides = |f: &Vec<u32>| {
         let k = f.len();
-        (0..k).map(move |i| (f[i], f[(i + 1) % k])).collect::<Vec<_>>()
+        (0..k)
+            .map(move |i| (f[i], f[(i + 1) % k]))
+            .collect::<Vec<_>>()
     };
     let all: HashSet<(u32, u32)> = faces.iter().flat_map(sides).collect();
     faces
@@ -80,7 +82,11 @@ impl Nearby {
         if self.cell > 0.0 {
             (p / self.cell).floor().as_i64vec3().to_array()
         } else {
-            [p.x.to_bits() as i64, p.y.to_bits() as i64, p.z.to_bits() as i64]
+            [
+                p.x.to_bits() as i64,
+                p.y.to_bits() as i64,
+                p.z.to_bits() as i64,
+            ]
         }
     }
     fn insert(&mut self, p: DVec3, id: u32) {

@@ -368,8 +368,7 @@ pub fn collapse_edge<M: FaceRewrite>(m: &mut M, from: VertexId, to: VertexId) ->
             return no(Refusal::LinkCondition);
         }
     }
-    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to)
-    {
+    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {
         return no(Refusal::LinkCondition);
     }
     let ring1 = neighbours(m, to);

@@ -43,7 +43,8 @@ fn first_half(soup: &PolygonSoup) -> Vec<bool> {
             if count * 2 >= n {
                 return inside;
             }
-            let shares = !inside[g] && faces[g].iter().filter(|v| faces[f].contains(v)).count() >= 2;
+            let shares =
+                !inside[g] && faces[g].iter().filter(|v| faces[f].contains(v)).count() >= 2;
             if shares {
                 inside[g] = true;
                 count += 1;

@@ -230,7 +230,12 @@ impl FaceRewrite for EdgeList {
                 run.push(e);
             }
             if i < old.len() {
-                packed::set(&mut self.face_edges, &mut self.face_offsets, face.index(), &run);
+                packed::set(
+                    &mut self.face_edges,
+                    &mut self.face_offsets,
+                    face.index(),
+                    &run,
+                );
             } else {
                 packed::push(&mut self.face_edges, &mut self.face_offsets, &run);
             }

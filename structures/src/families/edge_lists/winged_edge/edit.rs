@@ -313,7 +313,10 @@ impl FaceRewrite for WingedEdge {
         let at = |r: &EdgeRecord, v: VertexId| r.is_live() && (r.v1 == v || r.v2 == v);
         for v in corners {
             let handle = self.av[v.index()];
-            if handle.valid().is_some_and(|h| at(&self.edges[h.index()], v)) {
+            if handle
+                .valid()
+                .is_some_and(|h| at(&self.edges[h.index()], v))
+            {
                 continue;
             }
             self.av[v.index()] = cycle
@@ -390,7 +393,10 @@ mod tests {
         let [a, b] = m.edge_vertices(e);
         m.flip_edge(e).expect("an interior edge of a torus flips");
         let [c, d] = m.edge_vertices(e);
-        assert!([c, d] != [a, b] && [c, d] != [b, a], "e7 joins other vertices now");
+        assert!(
+            [c, d] != [a, b] && [c, d] != [b, a],
+            "e7 joins other vertices now"
+        );
         let faces = m.num_faces();
         let n = m.split_face(FaceId(3), glam::DVec3::ZERO).expect("splits");
         let mut around = Vec::new();
