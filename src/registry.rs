@@ -6,7 +6,7 @@
 //! every table of the report include them.
 
 use topolab_structures::registry as structures;
-pub use topolab_structures::registry::StructureVisitor;
+pub use topolab_structures::registry::{EditVisitor, StructureVisitor};
 
 /// The name of the OpenMesh baseline (whether or not this build includes it).
 pub const OPENMESH: &str = "openmesh";
@@ -61,6 +61,31 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
         return Some(visitor.visit::<crate::cgal::Polyhedron>());
     }
     structures::visit(name, visitor)
+}
+
+/// Runs `visitor` with the editable structure (one that implements `MeshEdit`) called
+/// `name`: the crate's structures marked `[editable]` in its registry list, then the
+/// baselines that implement `MeshEdit` (a baseline that does is one line here,
+/// `#[cfg(has_x)] if name == X { return Some(visitor.visit::<X>()); }`). `None` if there is
+/// none of that name in this build or it does not edit.
+pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    structures::visit_editable(name, visitor)
+}
+
+/// The baselines that run the changing workloads natively, the whole workload in C++ through
+/// their own Euler operations (OpenMesh's, CGAL's), when compiled in.
+pub const NATIVE_CHANGING: &[&str] =
+    &concat::<{ OPENMESH_NAMES.len() + CGAL_NAMES.len() }>([OPENMESH_NAMES, CGAL_NAMES, &[]]);
+
+/// Does the structure called `name` change meshes: through `MeshEdit`
+/// ([`visit_editable`]) or natively ([`NATIVE_CHANGING`])?
+pub fn is_editable(name: &str) -> bool {
+    struct Probe;
+    impl EditVisitor for Probe {
+        type Output = ();
+        fn visit<M: topolab_structures::MeshEdit>(self) {}
+    }
+    visit_editable(name, Probe).is_some() || NATIVE_CHANGING.contains(&name)
 }
 
 /// Why a baseline named `name` is not in this build (what to install), or `None` when `name`
@@ -127,6 +152,25 @@ mod tests {
             assert!(!NAMES[..i].contains(name), "{name} twice");
             assert_eq!(visit(name, Name), Some(*name));
         }
+    }
+
+    #[test]
+    fn editability_comes_from_the_registry_capability() {
+        for name in [
+            "index-half-edge",
+            "winged-edge",
+            "edge-list",
+            "vertex-list",
+            "che-l2",
+        ] {
+            assert!(is_editable(name), "{name}");
+        }
+        for name in ["regular-grid", "explicit", "no-such-structure"] {
+            assert!(!is_editable(name), "{name}");
+        }
+        assert_eq!(is_editable(OPENMESH), crate::HAS_OPENMESH);
+        assert_eq!(is_editable(CGAL_SURFACE_MESH), crate::HAS_CGAL);
+        assert_eq!(is_editable(CGAL_POLYHEDRON), crate::HAS_CGAL);
     }
 
     #[test]

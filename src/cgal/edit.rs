@@ -217,8 +217,11 @@ impl MeshEdit for Cgal<SurfaceMeshClass> {
     fn edit_cost(op: EditOp) -> Cost {
         match op {
             EditOp::AddVertex | EditOp::SplitEdge => Cost::Constant,
-            EditOp::GarbageCollection => Cost::Linear,
+            // Welding meshes is the trait's rebuild from the welded face list.
+            EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
+            // Vertex welding is not implemented (refused, as for the lab's half-edges).
             EditOp::AddFace
+            | EditOp::WeldVertices
             | EditOp::DeleteFace
             | EditOp::DeleteVertex
             | EditOp::FlipEdge

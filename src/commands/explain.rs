@@ -83,6 +83,7 @@ fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
     })?;
     registry::visit(name, ExplainVisit(&soup, format!("{name} for {label}\n\n")))
         .ok_or_else(|| unknown_structure(name))?
+        .map(|text| text + &super::explain_costs::edit_costs(name))
         .map_err(|e| Failure {
             message: format!("{name} cannot store {label}: {e}"),
             code: 1,

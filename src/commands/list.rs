@@ -5,41 +5,48 @@
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::{
-    Capabilities, Deletion, EditOp, IndexHalfEdge, MeshEdit, MeshTopology, Operator,
-    PointerHalfEdge,
-};
+use topolab_structures::{Capabilities, Deletion, EditOp, MeshEdit, MeshTopology, Operator};
 
 /// An editable structure's declared cost per editing operation.
 #[derive(serde::Serialize)]
-struct EditRow {
-    name: &'static str,
-    deletion: Deletion,
-    costs: Vec<(&'static str, &'static str)>,
+pub(crate) struct EditRow {
+    pub(crate) name: &'static str,
+    pub(crate) deletion: Deletion,
+    pub(crate) costs: Vec<(&'static str, &'static str)>,
 }
 
-fn edit_row<M: MeshEdit>() -> EditRow {
-    EditRow {
-        name: M::NAME,
-        deletion: M::DELETION,
-        costs: EditOp::ALL
-            .iter()
-            .map(|&op| (op.name(), M::edit_cost(op).notation()))
-            .collect(),
+/// What an operation the structure does not implement shows instead of a cost.
+pub(crate) const UNSUPPORTED: &str = "—";
+
+/// An editable structure's row ([`edit_rows`], `explain`'s table).
+pub(crate) struct EditRowOf;
+impl registry::EditVisitor for EditRowOf {
+    type Output = EditRow;
+    fn visit<M: MeshEdit>(self) -> EditRow {
+        EditRow {
+            name: M::NAME,
+            deletion: M::DELETION,
+            costs: EditOp::ALL
+                .iter()
+                .map(|&op| {
+                    let cost = if M::supports(op) {
+                        M::edit_cost(op).notation()
+                    } else {
+                        UNSUPPORTED
+                    };
+                    (op.name(), cost)
+                })
+                .collect(),
+        }
     }
 }
 
-/// The structures that implement `MeshEdit`.
+/// The structures that implement `MeshEdit`, in registry order.
 fn edit_rows() -> Vec<EditRow> {
-    use topolab_structures::{CheL0, CheL1, CheL2, CheL3};
-    vec![
-        edit_row::<IndexHalfEdge>(),
-        edit_row::<PointerHalfEdge>(),
-        edit_row::<CheL0>(),
-        edit_row::<CheL1>(),
-        edit_row::<CheL2>(),
-        edit_row::<CheL3>(),
-    ]
+    registry::NAMES
+        .iter()
+        .filter_map(|n| registry::visit_editable(n, EditRowOf))
+        .collect()
 }
 
 #[derive(serde::Serialize)]

@@ -7,6 +7,7 @@ pub mod compare;
 pub mod decimate;
 pub mod explain;
 pub mod explain_che;
+pub mod explain_costs;
 pub mod explain_edit;
 pub mod explain_trace;
 pub mod hull;

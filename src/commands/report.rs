@@ -79,7 +79,7 @@ impl StructureVisitor for Describe {
         let info = StructureInfo {
             name: M::NAME.into(),
             family: M::FAMILY,
-            editable: super::report_changing::EDITABLE.contains(&M::NAME),
+            editable: crate::registry::is_editable(M::NAME),
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()

@@ -1,44 +1,135 @@
 //! The changing workloads of `topolab report` (√3 subdivision and the collapse test of the
 //! Surface_mesh benchmark; see `topolab_harness::changing`): every editable structure among
-//! those asked for, and OpenMesh natively, on the closed tori of the run.
+//! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
+//! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
+//! on the closed tori of the run.
+//!
+//! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
+//! O(k·n), declared by `MeshEdit::edit_cost`) would run each workload in quadratic time: it is
+//! skipped, with a note giving the estimate, where that estimate exceeds [`MAX_SECONDS`]; so is
+//! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`).
+//! A structure whose workload edits cost O(n) each runs only on tori of at most
+//! [`LINEAR_EDIT_MAX_FACES`] faces: the estimate assumes 1 ns per element read, and the CHE
+//! levels' O(n) edits (an `EH` rebuild, a relabelling) cost far more per element.
 
 use crate::input::Failure;
 #[cfg(has_openmesh)]
 use crate::openmesh::OpenMesh;
-use topolab_harness::changing::{cross_check, mesh_checksum, time, ChangingRow, MeshChecksum};
+use crate::registry::{self, EditVisitor};
+use topolab_harness::changing::{
+    cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum,
+};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(has_openmesh)]
 use topolab_structures::MeshTopology;
-use topolab_structures::{
-    CheL1, CheL2, CheL3, IndexHalfEdge, MeshEdit, PointerHalfEdge, PolygonSoup,
-};
+use topolab_structures::{Cost, MeshEdit, PolygonSoup};
 
 // OpenMesh is built through MeshTopology::from_soup.
 #[cfg(has_openmesh)]
 const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
     <OpenMesh as MeshTopology>::from_soup;
 
-/// The structures that run the changing workloads: the lab's editable ones, OpenMesh and
-/// CGAL's two (the baselines natively).
-pub const EDITABLE: [&str; 8] = [
-    "index-half-edge",
-    "pointer-half-edge",
-    "openmesh",
-    "cgal-surface-mesh",
-    "cgal-polyhedron",
-    "che-l1",
-    "che-l2",
-    "che-l3",
-];
+/// A structure's workload is skipped where its declared costs predict more than this
+/// (a tenth of it in a quick run).
+pub const MAX_SECONDS: f64 = 20.0;
+
+/// The time the estimate assumes per element a scan reads (a streaming read of a few bytes,
+/// optimistic, so that nothing is skipped that would have fitted).
+const SECONDS_PER_ELEMENT: f64 = 1e-9;
+
+/// The elements one operation of cost `c` reads on a mesh of `n` elements (valence k ≈ 6).
+fn elements(c: Cost, n: f64) -> f64 {
+    match c {
+        Cost::Constant | Cost::Log | Cost::Local | Cost::Boundary => 6.0,
+        Cost::Linear => n,
+        Cost::LocalTimesLinear => 6.0 * n,
+        Cost::Quadratic => n * n,
+    }
+}
+
+/// Tori larger than this (faces) are left out for a structure whose workload edits are
+/// declared O(n) or costlier: the CHE levels' edits rebuild `EH` or relabel curves (see their
+/// editing module), and on the 4k torus a run already takes seconds, some 2000x the index
+/// half-edge's.
+pub const LINEAR_EDIT_MAX_FACES: usize = 1_500;
+
+/// Why `M` does not run `w` on a mesh of `faces` faces, if it does not.
+fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<String> {
+    let max = if quick {
+        MAX_SECONDS / 10.0
+    } else {
+        MAX_SECONDS
+    };
+    if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
+        return Some(
+            "its edge ids change when faces are split, and √3 flips the old edges by id".into(),
+        );
+    }
+    // The mesh grows to about three times its faces (corners, edges): n ≈ 3 faces.
+    let n = 3.0 * faces as f64;
+    let seconds: f64 = w
+        .operations()
+        .iter()
+        .map(|&(op, per_face)| {
+            per_face * faces as f64 * elements(M::edit_cost(op), n) * SECONDS_PER_ELEMENT
+        })
+        .sum();
+    if seconds > max {
+        return Some(format!(
+            "its declared costs ({}) predict about {} s at ≥ 1 ns per element read, above {max} s",
+            declared::<M>(w),
+            format_seconds(seconds)
+        ));
+    }
+    let linear = w
+        .operations()
+        .iter()
+        .any(|&(op, per_face)| per_face > 0.0 && elements(M::edit_cost(op), n) >= n);
+    (linear && faces > LINEAR_EDIT_MAX_FACES).then(|| {
+        format!(
+            "its declared costs ({}) are O(n) per edit: run up to {LINEAR_EDIT_MAX_FACES} faces",
+            declared::<M>(w)
+        )
+    })
+}
+
+fn format_seconds(s: f64) -> String {
+    if s >= 1e4 {
+        format!("{s:.1e}")
+    } else {
+        format!("{s:.0}")
+    }
+}
+
+/// One workload timed on one editable structure, or why not.
+struct Timed<'a> {
+    soup: &'a PolygonSoup,
+    workload: Changing,
+    runs: usize,
+    quick: bool,
+}
+
+/// The outcome of [`Timed`]: the median time and the result, or the reason for the skip.
+enum Outcome {
+    Ran(Result<((f64, MeshChecksum), String), String>),
+    Skipped(String),
+}
+
+impl EditVisitor for Timed<'_> {
+    type Output = Outcome;
+    fn visit<M: MeshEdit>(self) -> Outcome {
+        match skip::<M>(self.workload, self.soup.num_faces(), self.quick) {
+            Some(why) => Outcome::Skipped(why),
+            None => Outcome::Ran(
+                timed::<M>(self.soup, self.workload, self.runs)
+                    .map(|t| (t, declared::<M>(self.workload))),
+            ),
+        }
+    }
+}
 
 /// Tori larger than this (faces) are left out: the workloads triple the mesh.
 const MAX_FACES: usize = 4_000_000;
-
-/// The CHE levels run the workloads up to this size only (the 1k torus): each of their edits
-/// scans `V[]` (level 1) or rebuilds `EH` (levels 2, 3), O(n), so a workload is O(n²) on them
-/// (see their editing module): on the 4k torus a run already takes seconds, some 2000x the
-/// index half-edge's. Level 0 scans for every opposite too and is left out.
-const CHE_MAX_FACES: usize = 1_500;
 
 fn timed<M: MeshEdit>(
     soup: &PolygonSoup,
@@ -81,6 +172,30 @@ fn timed_cgal<S: crate::cgal::CgalStructure>(
     )
 }
 
+/// A baseline's native run of `w` (the whole workload in C++).
+fn timed_native(
+    name: &str,
+    soup: &PolygonSoup,
+    w: Changing,
+    runs: usize,
+) -> Result<(f64, MeshChecksum), String> {
+    match name {
+        #[cfg(has_cgal)]
+        registry::CGAL_SURFACE_MESH => {
+            timed_cgal::<crate::cgal::SurfaceMeshClass>(soup, runs, |m| m.native_changing(w))
+        }
+        #[cfg(has_cgal)]
+        registry::CGAL_POLYHEDRON => {
+            timed_cgal::<crate::cgal::PolyhedronClass>(soup, runs, |m| m.native_changing(w))
+        }
+        #[cfg(has_openmesh)]
+        registry::OPENMESH => timed_openmesh(soup, w, runs),
+        _ => Err(format!(
+            "{name} has no native changing workloads in this build"
+        )),
+    }
+}
+
 /// Runs both workloads on every torus of `cases` (name, family, soup) for each structure of
 /// `names` that can edit; a disagreement between structures is an error.
 pub fn measure(
@@ -90,9 +205,10 @@ pub fn measure(
     notes: &mut Vec<String>,
 ) -> Result<Vec<ChangingRow>, Failure> {
     let mut rows = Vec::new();
-    let editing: Vec<&str> = EDITABLE
-        .into_iter()
-        .filter(|s| names.iter().any(|n| n == s))
+    let editing: Vec<&str> = names
+        .iter()
+        .map(String::as_str)
+        .filter(|s| registry::is_editable(s))
         .collect();
     for (mesh, family, soup) in cases {
         if family != "torus" || editing.is_empty() {
@@ -111,38 +227,28 @@ pub fn measure(
         };
         for w in Changing::ALL {
             for &s in &editing {
-                if s.starts_with("che-") && soup.num_faces() > CHE_MAX_FACES {
-                    let note = format!("the changing workloads skipped {mesh} on the CHE levels: above {CHE_MAX_FACES} faces, their O(n) edits make a workload O(n²)");
-                    if !notes.contains(&note) {
-                        notes.push(note);
-                    }
-                    continue;
-                }
                 eprintln!("topolab report: {} on {mesh}: {s}", w.name());
-                let got = match s {
-                    "index-half-edge" => timed::<IndexHalfEdge>(soup, w, runs),
-                    "pointer-half-edge" => timed::<PointerHalfEdge>(soup, w, runs),
-                    "che-l1" => timed::<CheL1>(soup, w, runs),
-                    "che-l2" => timed::<CheL2>(soup, w, runs),
-                    "che-l3" => timed::<CheL3>(soup, w, runs),
-                    #[cfg(has_cgal)]
-                    "cgal-surface-mesh" => {
-                        timed_cgal::<crate::cgal::SurfaceMeshClass>(soup, runs, |m| {
-                            m.native_changing(w)
-                        })
-                    }
-                    #[cfg(has_cgal)]
-                    "cgal-polyhedron" => {
-                        timed_cgal::<crate::cgal::PolyhedronClass>(soup, runs, |m| {
-                            m.native_changing(w)
-                        })
-                    }
-                    #[cfg(has_openmesh)]
-                    _ => timed_openmesh(soup, w, runs),
-                    #[cfg(not(has_openmesh))]
-                    _ => unreachable!("openmesh is not registered without OpenMesh"),
+                let timed = Timed {
+                    soup,
+                    workload: w,
+                    runs,
+                    quick,
                 };
-                let (seconds, result) = got.map_err(|e| Failure {
+                // The baselines run natively even where they implement MeshEdit: the
+                // protocol's whole loop in C++, not one FFI call per edit.
+                let got = if registry::NATIVE_CHANGING.contains(&s) {
+                    timed_native(s, soup, w, runs).map(|t| (t, String::new()))
+                } else {
+                    match registry::visit_editable(s, timed) {
+                        Some(Outcome::Ran(got)) => got,
+                        Some(Outcome::Skipped(why)) => {
+                            notes.push(format!("{} on {mesh} skipped {s}: {why}.", w.name()));
+                            continue;
+                        }
+                        None => Err(format!("{s} does not edit")),
+                    }
+                };
+                let ((seconds, result), declared) = got.map_err(|e| Failure {
                     message: format!("{} on {mesh} failed on {s}: {e}", w.name()),
                     code: 1,
                 })?;
@@ -155,6 +261,7 @@ pub fn measure(
                     runs,
                     ns_per_face: seconds * 1e9 / soup.num_faces().max(1) as f64,
                     result,
+                    declared,
                 });
             }
         }
@@ -164,4 +271,32 @@ pub fn measure(
         })?;
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::{EdgeList, IndexHalfEdge, VertexList, WingedEdge};
+
+    #[test]
+    fn scanning_structures_are_skipped_with_an_estimate_where_it_would_take_too_long() {
+        for w in Changing::ALL {
+            for faces in [1_000, 1_000_000] {
+                assert_eq!(skip::<IndexHalfEdge>(w, faces, false), None);
+                assert_eq!(skip::<WingedEdge>(w, faces, false), None);
+            }
+            assert_eq!(skip::<EdgeList>(w, 1_000, false), None, "{w:?}");
+            let why = skip::<EdgeList>(w, 1_000_000, false).expect("quadratic at 1M");
+            assert!(
+                why.contains("predict about") && why.contains("O(n)"),
+                "{why}"
+            );
+        }
+        assert_eq!(skip::<VertexList>(Changing::Collapse, 1_000, false), None);
+        assert!(skip::<VertexList>(Changing::Collapse, 1_000_000, false).is_some());
+        // The report test's quick 64k torus: skipped, not minutes of scans.
+        assert!(skip::<VertexList>(Changing::Collapse, 64_000, true).is_some());
+        let why = skip::<VertexList>(Changing::Sqrt3, 1_000, false).expect("no stable edge ids");
+        assert!(why.contains("edge ids"), "{why}");
+    }
 }

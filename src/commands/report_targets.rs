@@ -3,7 +3,6 @@
 //! the changing workloads from fresh builds in turns (OpenMesh natively, as the changing
 //! section runs it), every run in the measuring thread's CPU time.
 
-use super::report_changing;
 use crate::extend::Lab;
 use crate::input::Failure;
 #[cfg(has_openmesh)]
@@ -130,7 +129,7 @@ pub fn measure<X: Structures>(
     let can = |s: &str, cell: Cell| {
         names.iter().any(|n| n == s)
             && match cell {
-                Cell::Changing(_) => report_changing::EDITABLE.contains(&s),
+                Cell::Changing(_) => crate::registry::is_editable(s),
                 _ if s == targets::PROBE => true,
                 _ => targets::sequential(measurements, mesh, s, cell).is_some(),
             }

@@ -22,6 +22,7 @@
 //! [`StructureVisitor`] and calls [`visit`]; the visitor's generic method is monomorphised for
 //! each structure, so nothing goes through `dyn`.
 
+use crate::core::edit::MeshEdit;
 use crate::core::topology::MeshTopology;
 
 /// Code generic over a structure, run for a structure named at run time.
@@ -34,33 +35,79 @@ pub trait StructureVisitor {
 
 /// Calls `$callback!` with every structure of this crate, in report order: one line
 /// `module_name => Type` per structure (`module_name` names the structure's tests, such as
-/// its conformance module). This is the registry: add a structure here and the CLI, the
-/// report, the benches and the conformance suite have it.
+/// its conformance module), followed by its capabilities in brackets: `[editable]` for a
+/// structure that implements [`MeshEdit`] (the CLI's and the report's changing workloads, the
+/// editing suite). This is the registry: add a structure here and the CLI, the report, the
+/// benches, the conformance suite and, with `[editable]`, the editing suite have it.
+/// A callback matches each line as `$module:ident => $ty:ty $([$($capability:ident),*])?`.
 #[macro_export]
 macro_rules! for_each_structure {
     ($($callback:ident)::+) => {
         $($callback)::+! {
             explicit => $crate::families::corner_lists::explicit::ExplicitStorage,
-            vertex_list => $crate::families::corner_lists::vertex_list::VertexList,
-            edge_list => $crate::families::edge_lists::edge_list::EdgeList,
-            winged_edge => $crate::families::edge_lists::winged_edge::WingedEdge,
-            pointer_half_edge => $crate::families::half_edge::pointer::PointerHalfEdge,
-            index_half_edge => $crate::families::half_edge::index::IndexHalfEdge,
+            vertex_list => $crate::families::corner_lists::vertex_list::VertexList [editable],
+            edge_list => $crate::families::edge_lists::edge_list::EdgeList [editable],
+            winged_edge => $crate::families::edge_lists::winged_edge::WingedEdge [editable],
+            pointer_half_edge => $crate::families::half_edge::pointer::PointerHalfEdge [editable],
+            index_half_edge => $crate::families::half_edge::index::IndexHalfEdge [editable],
             regular_grid => $crate::families::regular_grid::RegularGrid,
             height_field => $crate::families::regular_grid::HeightField,
-            che_l0 => $crate::families::che::CheL0,
-            che_l1 => $crate::families::che::CheL1,
-            che_l2 => $crate::families::che::CheL2,
-            che_l3 => $crate::families::che::CheL3,
+            che_l0 => $crate::families::che::CheL0 [editable],
+            che_l1 => $crate::families::che::CheL1 [editable],
+            che_l2 => $crate::families::che::CheL2 [editable],
+            che_l3 => $crate::families::che::CheL3 [editable],
         }
     };
 }
 
-/// [`NAMES`] and [`visit`] from the list of [`for_each_structure!`](crate::for_each_structure).
+/// Code generic over an editable structure, run for a structure named at run time.
+pub trait EditVisitor {
+    /// What the visit returns.
+    type Output;
+    /// Runs with the structure `M`.
+    fn visit<M: MeshEdit>(self) -> Self::Output;
+}
+
+/// One line's `[editable]` capability: the visit of an editable structure, `None` otherwise.
+macro_rules! visit_if {
+    ($visitor:ident, $ty:ty $(,)?) => {
+        None
+    };
+    ($visitor:ident, $ty:ty, editable) => {
+        Some($visitor.visit::<$ty>())
+    };
+}
+
+/// One line's capabilities: is `editable` among them?
+macro_rules! is_editable {
+    () => {
+        false
+    };
+    (editable) => {
+        true
+    };
+}
+
+/// [`NAMES`], [`visit`], [`editable_names`] and [`visit_editable`] from the list of
+/// [`for_each_structure!`](crate::for_each_structure).
 macro_rules! registry {
-    ($($module:ident => $ty:ty),* $(,)?) => {
+    ($($module:ident => $ty:ty $([$($capability:ident),*])?),* $(,)?) => {
         /// Names of every structure of this crate, in report order.
         pub const NAMES: &[&str] = &[$(<$ty as MeshTopology>::NAME),*];
+
+        /// Per structure of [`NAMES`], whether it is editable (`[editable]` in the list).
+        const EDITABLE_FLAGS: &[bool] = &[$(is_editable!($($($capability),*)?)),*];
+
+        /// Runs `visitor` with the editable structure called `name`; `None` if there is none
+        /// of that name or it is not editable.
+        pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+            $(
+                if name == <$ty as MeshTopology>::NAME {
+                    return visit_if!(visitor, $ty, $($($capability),*)?);
+                }
+            )*
+            None
+        }
 
         /// Runs `visitor` with the structure called `name`; `None` if there is none.
         pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
@@ -75,6 +122,17 @@ macro_rules! registry {
 }
 
 crate::for_each_structure!(registry);
+
+/// The names of the editable structures of this crate (`[editable]` in the list), in
+/// [`NAMES`] order.
+pub fn editable_names() -> Vec<&'static str> {
+    NAMES
+        .iter()
+        .zip(EDITABLE_FLAGS)
+        .filter(|(_, &e)| e)
+        .map(|(&n, _)| n)
+        .collect()
+}
 
 /// A list of structures, given as a type, that code choosing a structure by name at run time
 /// can run with: this crate's registry ([`Registered`]), one structure (every

@@ -30,7 +30,7 @@ const NOT_QUERIES: &[&str] = &[
 
 /// `(module, type path)` of every registered structure, as the registry writes them.
 macro_rules! registered {
-    ($($module:ident => $ty:ty),* $(,)?) => {
+    ($($module:ident => $ty:ty $([$($capability:ident),*])?),* $(,)?) => {
         &[$((stringify!($module), stringify!($ty))),*]
     };
 }

@@ -11,7 +11,7 @@
 //!
 //! New vertex of face `f` (in both): vertex `n0 + f`, as in every library that appends.
 
-use crate::core::edit::MeshEdit;
+use crate::core::edit::{EditOp, MeshEdit};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
@@ -58,6 +58,19 @@ impl Changing {
         }
     }
 
+    /// The editing operations the workload does, with how many per face of the mesh it
+    /// starts from (what its declared costs are made of).
+    pub const fn operations(self) -> &'static [(EditOp, f64)] {
+        match self {
+            Changing::Sqrt3 => &[(EditOp::SplitFace, 1.0), (EditOp::FlipEdge, 1.5)],
+            Changing::Collapse => &[
+                (EditOp::SplitFace, 1.0),
+                (EditOp::CollapseEdge, 1.0),
+                (EditOp::GarbageCollection, 0.0),
+            ],
+        }
+    }
+
     /// Runs the workload on `m`.
     pub fn run<M: MeshEdit>(self, m: &mut M) -> Result<()> {
         match self {
@@ -69,7 +82,17 @@ impl Changing {
 
 /// One step of √3 subdivision (see the module docs). Polygons are split into fans as the
 /// protocol does; the CLI refuses them before (√3 is a triangle scheme).
+///
+/// Refused with [`Error::Unsupported`], before any change, on a structure whose edge ids do
+/// not survive the face splits ([`MeshEdit::STABLE_EDGE_IDS`]): the flips would hit other
+/// edges than the old ones.
 pub fn sqrt3_step<M: MeshEdit>(m: &mut M) -> Result<()> {
+    if !M::STABLE_EDGE_IDS {
+        return Err(Error::Unsupported(format!(
+            "{}: √3 subdivision flips the old edges by id, and this structure's edge ids change when faces are split",
+            M::NAME
+        )));
+    }
     let (nv, ne, nf) = (m.num_vertices(), m.num_edges(), m.num_faces());
     m.reserve(nf, 3 * nf, 2 * nf);
     // New positions of the old interior vertices.
@@ -157,7 +180,7 @@ mod tests {
     use crate::core::ids::EdgeId;
     use crate::testing::editing::canonical_face;
     use crate::testing::meshes;
-    use crate::{IndexHalfEdge, PointerHalfEdge};
+    use crate::{EdgeList, IndexHalfEdge, PointerHalfEdge, VertexList, WingedEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {
         let soup = to_soup(m);
@@ -181,6 +204,12 @@ mod tests {
 
             let mut m = M::from_soup(&soup).expect("manifold");
             let (nv, ne, nf) = (m.num_vertices(), m.num_edges(), m.num_faces());
+            if !M::STABLE_EDGE_IDS {
+                let err = sqrt3_step(&mut m).expect_err("refused without stable edge ids");
+                assert_eq!(err.kind(), "unsupported", "{err}");
+                assert_eq!(m.num_faces(), nf, "nothing changed");
+                continue;
+            }
             sqrt3_step(&mut m).expect("√3 runs");
             m.validate().expect("valid");
             assert_eq!(m.num_faces(), 3 * nf);
@@ -199,9 +228,33 @@ mod tests {
         }
     }
 
+    /// The face list after `w` on `soup`.
+    fn after<M: MeshEdit>(soup: &PolygonSoup, w: Changing) -> Vec<Vec<u32>> {
+        let mut m = M::from_soup(soup).expect("manifold");
+        w.run(&mut m).expect("runs");
+        faces(&m)
+    }
+
+    #[test]
+    fn every_editable_structure_changes_a_mesh_into_the_same_faces() {
+        for soup in [meshes::torus(6, 5), meshes::grid(4, 3, true)] {
+            for w in Changing::ALL {
+                let want = after::<IndexHalfEdge>(&soup, w);
+                assert_eq!(after::<WingedEdge>(&soup, w), want, "winged-edge {w:?}");
+                assert_eq!(after::<EdgeList>(&soup, w), want, "edge-list {w:?}");
+                if w == Changing::Collapse {
+                    assert_eq!(after::<VertexList>(&soup, w), want, "vertex-list {w:?}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_collapse_test_restores_the_mesh_and_sqrt3_flips_every_interior_edge() {
         both::<IndexHalfEdge>();
         both::<PointerHalfEdge>();
+        both::<WingedEdge>();
+        both::<EdgeList>();
+        both::<VertexList>();
     }
 }

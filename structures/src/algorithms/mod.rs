@@ -13,3 +13,4 @@ pub mod ordering;
 pub mod refine;
 pub mod repair;
 pub mod summary;
+pub mod weld;

@@ -53,11 +53,16 @@ pub enum EditOp {
     SplitVertex,
     /// Compact the slots of deleted elements.
     GarbageCollection,
+    /// Merge two vertices into one ([`MeshEdit::weld_vertices`]).
+    WeldVertices,
+    /// Append a mesh and weld it along matching boundary curves
+    /// ([`weld_meshes`](crate::algorithms::weld::weld_meshes)): a rebuild, O(n) everywhere.
+    WeldMeshes,
 }
 
 impl EditOp {
     /// Every operation, in the order above.
-    pub const ALL: [EditOp; 10] = [
+    pub const ALL: [EditOp; 12] = [
         EditOp::AddVertex,
         EditOp::AddFace,
         EditOp::DeleteFace,
@@ -68,6 +73,8 @@ impl EditOp {
         EditOp::CollapseEdge,
         EditOp::SplitVertex,
         EditOp::GarbageCollection,
+        EditOp::WeldVertices,
+        EditOp::WeldMeshes,
     ];
 
     /// The kebab-case name.
@@ -83,6 +90,8 @@ impl EditOp {
             EditOp::CollapseEdge => "collapse-edge",
             EditOp::SplitVertex => "split-vertex",
             EditOp::GarbageCollection => "garbage-collection",
+            EditOp::WeldVertices => "weld-vertices",
+            EditOp::WeldMeshes => "weld-meshes",
         }
     }
 }
@@ -117,6 +126,11 @@ pub enum Refusal {
     /// through an interior edge or close a boundary triangle: the result would not be a
     /// manifold.
     LinkCondition,
+    /// Boundary curves to weld run the same way where they meet: the result would not be
+    /// oriented.
+    Orientation,
+    /// No boundary vertex of one mesh coincides with one of the other (within the tolerance).
+    NothingToWeld,
     /// A case this structure does not implement yet (named in its docs).
     NotImplemented,
 }
@@ -136,6 +150,10 @@ impl Refusal {
             Refusal::LinkCondition => {
                 "the link condition fails: the result would not be a manifold"
             }
+            Refusal::Orientation => {
+                "the boundary curves run the same way where they meet: the result would not be oriented"
+            }
+            Refusal::NothingToWeld => "no boundary vertices coincide within the tolerance",
             Refusal::NotImplemented => "this case is not implemented by this structure",
         }
     }
@@ -156,6 +174,11 @@ pub enum Deletion {
     Marked,
     /// Deleted elements leave at once; `garbage_collection` has nothing to do.
     Removed,
+    /// Deleted faces (and stored edges) leave at once, the last one moving into the freed
+    /// slot (O(k) to re-point it); deleted vertices keep their slots, marked, until
+    /// [`MeshEdit::garbage_collection`] (the structures edited through
+    /// [`FaceRewrite`](crate::core::rewrite::FaceRewrite)).
+    LastMoves,
 }
 
 /// The editing operations; see the module docs for what every edit promises.
@@ -163,8 +186,21 @@ pub trait MeshEdit: MeshTopology {
     /// How the structure deletes.
     const DELETION: Deletion;
 
-    /// The cost of `op` in this structure, in the notation of the queries' costs.
+    /// Does an edge keep its id through edits that keep the edge (a split of a face beside
+    /// it, a flip elsewhere)? The changing workloads' √3 step flips the old edges by id after
+    /// splitting every face, which needs it. `false` where edge ids are derived from the
+    /// faces (the vertex list names an edge by a corner).
+    const STABLE_EDGE_IDS: bool = true;
+
+    /// The cost of `op` in this structure, in the notation of the queries' costs (meaningful
+    /// where [`MeshEdit::supports`] says yes).
     fn edit_cost(op: EditOp) -> Cost;
+
+    /// Does the structure implement `op`? An operation it does not refuses every call with
+    /// [`Refusal::NotImplemented`].
+    fn supports(op: EditOp) -> bool {
+        op != EditOp::WeldVertices
+    }
 
     /// Adds an unused vertex at `p`.
     fn add_vertex(&mut self, p: DVec3) -> Result<VertexId>;
@@ -198,6 +234,18 @@ pub trait MeshEdit: MeshTopology {
         left: VertexId,
         right: VertexId,
     ) -> Result<VertexId>;
+    /// Merges vertex `b` into vertex `a`: every face around `b` then has `a` instead, and `b`
+    /// is deleted. Refused, nothing changed, when a face has both, or when the result would
+    /// not be an oriented manifold (an edge with three faces, or `a`'s faces in several fans:
+    /// the boundaries of `a` and `b` must meet along an edge, or one of them have no faces).
+    fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
+        let _ = (a, b);
+        Err(crate::Error::EditRefused {
+            structure: Self::NAME,
+            op: EditOp::WeldVertices,
+            reason: Refusal::NotImplemented,
+        })
+    }
     /// Is vertex `v` deleted (and not yet collected)?
     fn is_deleted_vertex(&self, v: VertexId) -> bool;
     /// Is face `f` deleted (and not yet collected)?

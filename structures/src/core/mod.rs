@@ -12,6 +12,7 @@ pub mod error;
 pub mod family;
 pub mod ids;
 pub mod reads;
+pub mod rewrite;
 pub mod soup;
 pub mod topology;
 pub mod workload;

@@ -379,7 +379,7 @@ pub fn check_enrolment(tested: &[&str], registered: &[&str]) -> Result<(), Strin
 /// ```
 #[macro_export]
 macro_rules! conformance {
-    ($($module:ident => $ty:ty),+ $(,)?) => {
+    ($($module:ident => $ty:ty $([$($capability:ident),*])?),+ $(,)?) => {
         $( $crate::conformance!($module, $ty); )+
 
         #[test]

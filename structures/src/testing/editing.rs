@@ -173,6 +173,8 @@ pub enum Edit {
     Collapse(u32, u32),
     /// Split a vertex (vertex, left, right).
     SplitVertex(u32, u32, u32, DVec3),
+    /// Weld the second vertex into the first.
+    Weld(u32, u32),
     /// Garbage collection.
     Collect,
 }
@@ -268,18 +270,23 @@ fn draw(rng: &mut ChaCha8Rng, model: &Model) -> Edit {
             let a = pick_vertex(rng);
             Edit::Collapse(a, near(rng, a))
         }
-        84..96 => {
+        84..94 => {
             let v = pick_vertex(rng);
             let (l, r) = (near(rng, v), near(rng, v));
             Edit::SplitVertex(v, l, r, p)
+        }
+        94..98 => {
+            // Two neighbours of one vertex: on a boundary, welding them zips it by an edge.
+            let x = pick_vertex(rng);
+            Edit::Weld(near(rng, x), near(rng, x))
         }
         _ => Edit::Collect,
     }
 }
 
 /// What the model says an edit must do: `Some(apply)` when it must succeed, `None` when it
-/// must be refused.
-fn expect(model: &Model, edit: &Edit) -> Option<Model> {
+/// must be refused; `weld` says whether the structure implements welding.
+fn expect(model: &Model, edit: &Edit, weld: bool) -> Option<Model> {
     let mut next = model.clone();
     let n = model.positions.len() as u32;
     match edit {
@@ -465,6 +472,24 @@ fn expect(model: &Model, edit: &Edit) -> Option<Model> {
             next.faces.push(Some(vec![n, v1, vl]));
             next.faces.push(Some(vec![v1, n, vr]));
         }
+        Edit::Weld(a, b) => {
+            let (a, b) = (*a, *b);
+            if !weld || a == b || !model.live_vertex(a) || !model.live_vertex(b) {
+                return None;
+            }
+            for f in next.faces.iter_mut().flatten() {
+                if f.contains(&a) && f.contains(&b) {
+                    return None;
+                }
+                for v in f.iter_mut().filter(|v| **v == b) {
+                    *v = a;
+                }
+            }
+            if !Model::manifold(&next.soup(None, &[])) {
+                return None;
+            }
+            next.positions[b as usize] = None;
+        }
         Edit::Collect => next.collect(),
     }
     Some(next)
@@ -497,6 +522,7 @@ fn apply<M: MeshEdit>(m: &mut M, edit: &Edit) -> Result<(), Error> {
         Edit::SplitVertex(v, l, r, p) => m
             .split_vertex(VertexId(*v), *p, VertexId(*l), VertexId(*r))
             .map(drop),
+        Edit::Weld(a, b) => m.weld_vertices(VertexId(*a), VertexId(*b)),
         Edit::Collect => {
             m.garbage_collection();
             Ok(())
@@ -601,7 +627,7 @@ pub fn run_with<M: MeshEdit>(
     let (mut done, mut refused) = (0, 0);
     for step in 0..steps {
         let edit = draw(&mut rng, &model);
-        let expected = expect(&model, &edit);
+        let expected = expect(&model, &edit, M::supports(crate::EditOp::WeldVertices));
         let got = apply(&mut m, &edit);
         match (expected, got) {
             (Some(next), Ok(())) => {
@@ -634,6 +660,52 @@ pub fn run_with<M: MeshEdit>(
     Ok((done, refused))
 }
 
+/// Generates the editing tests of every structure the registry marks `[editable]`: the
+/// callback of [`for_each_structure!`](crate::for_each_structure), so that the capability
+/// in the registry is the enrolment.
+///
+/// ```ignore
+/// topolab_structures::for_each_structure!(topolab_structures::editing_suite);
+/// ```
+#[macro_export]
+macro_rules! editing_suite {
+    (@one $module:ident, $ty:ty $(,)?) => {};
+    (@one $module:ident, $ty:ty, editable) => {
+        $crate::edit_conformance!($module, $ty);
+    };
+    ($($module:ident => $ty:ty $([$($capability:ident),*])?),* $(,)?) => {
+        $( $crate::editing_suite!(@one $module, $ty, $($($capability),*)?); )*
+
+        #[test]
+        fn the_registry_says_which_structures_are_editable() {
+            let tested: Vec<&str> = [$($crate::editing_suite!(@name $ty, $($($capability),*)?)),*]
+                .into_iter()
+                .flatten()
+                .collect();
+            assert_eq!(tested, $crate::registry::editable_names());
+            // And run-time choice by name reaches exactly those, each as itself.
+            struct Name;
+            impl $crate::registry::EditVisitor for Name {
+                type Output = &'static str;
+                fn visit<M: $crate::MeshEdit>(self) -> &'static str {
+                    M::NAME
+                }
+            }
+            for name in $crate::registry::NAMES {
+                let got = $crate::registry::visit_editable(name, Name);
+                assert_eq!(got, tested.contains(name).then_some(*name), "{name}");
+            }
+            assert!(tested.len() >= 5, "{tested:?}");
+        }
+    };
+    (@name $ty:ty $(,)?) => {
+        None
+    };
+    (@name $ty:ty, editable) => {
+        Some(<$ty as $crate::MeshTopology>::NAME)
+    };
+}
+
 /// Generates the editing tests of one structure: seeded random sequences of edits
 /// ([`run`]), each checked against the model and the oracle, as a proptest. A third argument,
 /// `not_implemented_on_polygons`, runs [`run_with`] instead (a library's polygon kernel that
@@ -658,6 +730,13 @@ macro_rules! edit_conformance {
                         panic!("{} on edit seed {seed}: {msg}", <$ty as $crate::MeshTopology>::NAME);
                     }
                 }
+            }
+
+            #[test]
+            fn halves_weld_back_into_the_original_and_bad_welds_are_refused() {
+                let cut = $crate::testing::weld::weld_halves::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert!(cut >= 3, "only {cut} meshes cut and welded");
             }
 
             #[test]

@@ -1,14 +1,15 @@
 //! What the structures are checked against and tested on: the naive [`oracle`] built from the
 //! face list, the shared [`conformance`](mod@conformance) suite that compares every operator
-//! with it, the [`editing`] suite of random edit sequences against a naive model, the
-//! [`decimating`] suite (decimation, then reconstruction by vertex splits), and the canonical
-//! and generated [`meshes`].
+//! with it, the [`editing`] suite of random edit sequences against a naive model with its
+//! [`weld`] tests, the [`decimating`] suite (decimation, then reconstruction by vertex
+//! splits), and the canonical and generated [`meshes`].
 
 pub mod conformance;
 pub mod decimating;
 pub mod editing;
 pub mod meshes;
 pub mod oracle;
+pub mod weld;
 
 /// The property-testing crate the [`conformance!`](macro@crate::conformance) macro expands to,
 /// re-exported so that a crate outside the lab running the suite needs no `proptest`

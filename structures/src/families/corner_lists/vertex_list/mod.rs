@@ -23,9 +23,14 @@
 //! | boundary vertex | one scan: more distinct edges than faces | O(n) |
 //! | boundary curves | a twin scan per corner | O(n²) |
 //!
+//! Editing ([`MeshEdit`](crate::MeshEdit)): every operation, each at the cost of the scans it
+//! needs (the table in `edit.rs`).
+//!
 //! Non-manifold vertices (several fans) are stored and answered correctly: nothing here
 //! assumes a vertex has one fan. Non-manifold edges and inconsistent orientation are refused
 //! like everywhere in the lab (the relations and boundary curves would not be defined).
+
+mod edit;
 
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -43,6 +48,9 @@ pub struct VertexList {
     positions: Vec<DVec3>,
     /// The faces' corners as vertex indices, with face offsets.
     corners: Corners<u32>,
+    /// `deleted[v]`: vertex v was deleted by an edit ([`crate::MeshEdit`]) and keeps its slot
+    /// until `garbage_collection`; empty until the first deletion.
+    deleted: Vec<bool>,
 }
 
 struct Indices;
@@ -89,6 +97,7 @@ impl MeshTopology for VertexList {
                 keys: soup.indices().to_vec(),
                 offsets: soup.offsets().to_vec(),
             },
+            deleted: Vec::new(),
         })
     }
 
@@ -199,7 +208,9 @@ impl MeshTopology for VertexList {
         Ok(())
     }
     fn heap_bytes(&self) -> usize {
-        self.positions.capacity() * std::mem::size_of::<DVec3>() + self.corners.heap_bytes()
+        self.positions.capacity() * std::mem::size_of::<DVec3>()
+            + self.corners.heap_bytes()
+            + self.deleted.capacity()
     }
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
         writeln!(

@@ -43,10 +43,15 @@
 //! | face (k-gon) | neighbour faces | R22 | the other polygon of each edge | O(k) |
 //! | mesh | boundary curves | boundary curves | scan for right = `N`, then rotate around vertices | O(n) |
 //!
+//! Editing ([`MeshEdit`](crate::MeshEdit)): every operation, each at the cost of the scans it
+//! needs (the table in `edit.rs`).
+//!
 //! Non-manifold vertices (several fans) are stored and answered correctly: the vertex queries
 //! scan the edges and never assume one fan, and the boundary walk stays within a fan.
 //! Non-manifold edges and inconsistent orientation are refused (an edge has room for two
 //! polygons, one on each side).
+
+mod edit;
 
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -76,6 +81,9 @@ pub struct EdgeList {
     face_edges: Vec<EdgeId>,
     /// Start of each polygon in `face_edges`, plus one final entry.
     face_offsets: Vec<u32>,
+    /// `deleted[v]`: vertex v was deleted by an edit ([`crate::MeshEdit`]) and keeps its slot
+    /// until `garbage_collection`; empty until the first deletion.
+    deleted: Vec<bool>,
 }
 
 impl EdgeList {
@@ -199,6 +207,7 @@ impl MeshTopology for EdgeList {
             edge_right,
             face_edges: conn.corner_edge.iter().map(|&e| EdgeId(e)).collect(),
             face_offsets: soup.offsets().to_vec(),
+            deleted: Vec::new(),
         })
     }
 
@@ -397,6 +406,7 @@ impl MeshTopology for EdgeList {
             + (self.edge_left.capacity() + self.edge_right.capacity()) * 4
             + self.face_edges.capacity() * 4
             + self.face_offsets.capacity() * 4
+            + self.deleted.capacity()
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {

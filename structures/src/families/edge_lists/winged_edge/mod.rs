@@ -108,6 +108,12 @@
 //! stays, the edge is turned around (v1 ↔ v2, cw fields moved to ccw) so its remaining face is on
 //! its left again. Vertices are never removed; one without edges has `av = none`.
 //!
+//! ## Editing ([`MeshEdit`](crate::MeshEdit))
+//!
+//! Every editing operation through one rewrite of the faces it changes (see `edit.rs` for the
+//! costs, derived from the polygon-mesh lecture's table); faces and edges leave at once, the
+//! last moving into the freed slot; deleted vertices are marked until `garbage_collection`.
+//!
 //! ## Cone stitching (the incremental hull algorithms' step)
 //!
 //! [`WingedEdge::replace_by_cone`] removes a disk of faces and adds the cone from a new vertex
@@ -120,6 +126,7 @@
 //! the next calls (a hull's slots stay near its live size); regions that are not one disk
 //! bounded by one simple cycle are refused before anything changes.
 
+mod edit;
 mod editing;
 mod records;
 mod stitching;
@@ -155,6 +162,9 @@ pub struct WingedEdge {
     index: Option<IncrementalIndex>,
     /// What [`WingedEdge::replace_by_cone`] keeps between calls (marks, free slots).
     stitching: stitching::Stitching,
+    /// `deleted[v]`: vertex v was deleted by an edit ([`crate::MeshEdit`]) and keeps its slot
+    /// until `garbage_collection`; empty until the first deletion.
+    deleted: Vec<bool>,
 }
 
 impl WingedEdge {

@@ -150,6 +150,7 @@ impl MeshTopology for WingedEdge {
             + self.edges.capacity() * std::mem::size_of::<EdgeRecord>()
             + index
             + self.stitching.heap_bytes()
+            + self.deleted.capacity()
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {
@@ -275,6 +276,7 @@ impl WingedEdge {
             edges,
             index: None,
             stitching: Default::default(),
+            deleted: Vec::new(),
         })
     }
 }

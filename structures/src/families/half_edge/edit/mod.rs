@@ -26,6 +26,8 @@
 //! | collapse edge | the link condition (each neighbour of one end against the other's ring, O(k²), declared O(k)), then re-point the removed vertex's half-edges | O(k) |
 //! | split vertex | move the half-edges of one side of the fan, add three edges and two triangles | O(k) |
 //! | garbage collection | rebuild the storage from the survivors | O(n) |
+//! | weld vertices | not implemented: refused with `Refusal::NotImplemented` (merging two boundary fans means merging their boundary edges too) | — |
+//! | weld meshes | [`weld_meshes`](crate::algorithms::weld::weld_meshes): a rebuild from the welded face list | O(n) |
 
 mod euler;
 
@@ -128,8 +130,9 @@ fn edit_cost(op: EditOp, predecessor: Cost) -> Cost {
     match op {
         EditOp::AddVertex => Cost::Constant,
         EditOp::SplitEdge => predecessor,
-        EditOp::GarbageCollection => Cost::Linear,
+        EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
         EditOp::AddFace
+        | EditOp::WeldVertices
         | EditOp::DeleteFace
         | EditOp::DeleteVertex
         | EditOp::FlipEdge

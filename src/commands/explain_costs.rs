@@ -1,0 +1,47 @@
+//! The editing part of `topolab explain NAME`: for a structure that implements `MeshEdit`,
+//! how it deletes and the declared cost of each editing operation, beside the records the
+//! rest of `explain` prints (the same costs as `topolab list`).
+
+use super::list::EditRowOf;
+use crate::registry;
+use std::fmt::Write as _;
+use topolab_structures::Deletion;
+
+/// The lines `explain` appends for the structure called `name`.
+pub fn edit_costs(name: &str) -> String {
+    let mut out = String::new();
+    let Some(row) = registry::visit_editable(name, EditRowOf) else {
+        let _ = writeln!(out, "\nediting: {name} does not implement MeshEdit");
+        return out;
+    };
+    let deletion = match row.deletion {
+        Deletion::Marked => "deleted elements stay, marked, until garbage collection",
+        Deletion::Removed => "deleted elements leave at once",
+        Deletion::LastMoves => {
+            "deleted faces and edges leave at once, the last one taking the slot; deleted vertices stay, marked, until garbage collection"
+        }
+    };
+    let _ = writeln!(out, "\nediting (MeshEdit): {deletion}");
+    for (op, cost) in &row.costs {
+        let _ = writeln!(out, "  {op:<20}{cost}");
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn explain_shows_the_declared_edit_costs_of_editable_structures_only() {
+        let winged = edit_costs("winged-edge");
+        assert!(winged.contains("flip-edge           O(k)"), "{winged}");
+        assert!(winged.contains("weld-vertices       O(k)"), "{winged}");
+        let list = edit_costs("vertex-list");
+        assert!(list.contains("collapse-edge       O(k·n)"), "{list}");
+        let half = edit_costs("index-half-edge");
+        assert!(half.contains("weld-vertices       —"), "{half}");
+        assert!(edit_costs("che-l2").contains("flip-edge           O(n)"));
+        assert!(edit_costs("regular-grid").contains("does not implement MeshEdit"));
+    }
+}

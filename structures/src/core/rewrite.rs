@@ -1,0 +1,590 @@
+//! The editing operations of [`MeshEdit`] written once over one primitive, [`FaceRewrite`]:
+//! replace a few faces by a few others. That is how the lecture on polygon-mesh data
+//! structures describes editing for the structures whose records are faces and edges rather
+//! than half-edges (the winged-edge, the edge list, the vertex list): an operation reads the
+//! neighbourhood it changes through the structure's own queries, checks that the result is an
+//! oriented manifold, and rewrites the faces of that neighbourhood. Each operation costs what
+//! its queries cost in that structure plus the rewrite: O(k) where the queries are local (the
+//! winged-edge), O(n) where a neighbour is found by a scan (the vertex list).
+//!
+//! Every operation checks first and refuses with [`Error::EditRefused`] before its first
+//! write, so a refused edit changes nothing. The checks are those of the half-edge libraries
+//! (pmp-library's `is_collapse_ok` for a collapse, no existing edge for a flip), and the
+//! manifold check of a rewrite is local: only the vertices of the faces removed or added can
+//! change their fans, so for each the faces around it after the rewrite must meet every
+//! directed edge at most once (no edge with three faces, none run twice the same way) and form
+//! one fan.
+//!
+//! Deletion: faces (and the edges a structure stores) leave at once, the last one moving into
+//! the freed slot ([`Deletion::LastMoves`]); a deleted vertex keeps its slot, marked, until
+//! [`MeshEdit::garbage_collection`], because vertex ids are what callers (and the changing
+//! workloads) hold across edits.
+
+use crate::core::edit::{EditOp, Refusal};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::topology::MeshTopology;
+use glam::DVec3;
+
+#[allow(unused_imports)]
+use crate::core::edit::{Deletion, MeshEdit};
+
+/// The primitive under the operations of this module: what a structure without half-edges
+/// offers to be edited.
+pub trait FaceRewrite: MeshTopology {
+    /// Appends an unused vertex at `p`; refused with [`Error::TooLarge`] when ids run out.
+    fn push_vertex(&mut self, p: DVec3) -> Result<VertexId>;
+    /// Moves vertex `v` (a live vertex).
+    fn write_position(&mut self, v: VertexId, p: DVec3);
+    /// Is `e` an edge id of the current mesh?
+    fn is_edge(&self, e: EdgeId) -> bool;
+    /// Is vertex `v` marked deleted?
+    fn vertex_deleted(&self, v: VertexId) -> bool;
+    /// Marks vertex `v` (which has no faces left) deleted.
+    fn mark_vertex_deleted(&mut self, v: VertexId);
+    /// Replaces the faces `old` by the faces `new` (corners counter-clockwise), which the
+    /// caller has checked make an oriented manifold. The first new faces take the ids of the
+    /// old ones in order, the others are appended; old ids left over are freed, the last face
+    /// moving into each. An edge the structure stores keeps its id while some face still has
+    /// it (an edge that leaves and one that comes in the same rewrite may share a slot).
+    fn rewrite(&mut self, old: &[FaceId], new: &[Vec<VertexId>]);
+    /// Removes the marked vertices, keeping the order of the others, and renumbers the faces'
+    /// corners.
+    fn collect_vertices(&mut self);
+    /// Reserves room for more vertices, edges and faces.
+    fn reserve_room(&mut self, vertices: usize, edges: usize, faces: usize);
+}
+
+fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
+    Error::EditRefused {
+        structure: M::NAME,
+        op,
+        reason,
+    }
+}
+
+fn live<M: FaceRewrite>(m: &M, v: VertexId) -> bool {
+    v.index() < m.num_vertices() && !m.vertex_deleted(v)
+}
+
+fn corners<M: MeshTopology>(m: &M, f: FaceId) -> Vec<VertexId> {
+    let mut out = Vec::with_capacity(4);
+    m.face_vertices(f, |v| out.push(v));
+    out
+}
+
+fn faces_at<M: MeshTopology>(m: &M, v: VertexId) -> Vec<FaceId> {
+    let mut out = Vec::with_capacity(8);
+    m.vertex_faces(v, |f| out.push(f));
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The face that runs a → b, with its corners and the corner of a.
+fn face_with<M: MeshTopology>(
+    m: &M,
+    a: VertexId,
+    b: VertexId,
+) -> Option<(FaceId, Vec<VertexId>, usize)> {
+    faces_at(m, a).into_iter().find_map(|f| {
+        let c = corners(m, f);
+        let k = c.len();
+        (0..k)
+            .find(|&i| c[i] == a && c[(i + 1) % k] == b)
+            .map(|i| (f, c, i))
+    })
+}
+
+/// The vertices that share a face side with v, sorted.
+fn neighbours<M: MeshTopology>(m: &M, v: VertexId) -> Vec<VertexId> {
+    let mut out = Vec::new();
+    for f in faces_at(m, v) {
+        let c = corners(m, f);
+        let k = c.len();
+        for i in 0..k {
+            if c[i] == v {
+                out.push(c[(i + 1) % k]);
+                out.push(c[(i + k - 1) % k]);
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The faces of edge `e` = {a, b}, each with its corners and the corner where it leaves the
+/// end it runs from: `[the face running a → b, the one running b → a]`. The structure's own
+/// edge → faces query (O(1) in the edge lists), not a search around a vertex.
+#[allow(clippy::type_complexity)]
+fn sides_of<M: MeshTopology>(
+    m: &M,
+    e: EdgeId,
+    a: VertexId,
+    b: VertexId,
+) -> [Option<(FaceId, Vec<VertexId>, usize)>; 2] {
+    let mut out = [None, None];
+    m.edge_faces(e, |f| {
+        let c = corners(m, f);
+        let k = c.len();
+        for i in 0..k {
+            let (x, y) = (c[i], c[(i + 1) % k]);
+            if (x, y) == (a, b) {
+                out[0] = Some((f, c.clone(), i));
+            } else if (x, y) == (b, a) {
+                out[1] = Some((f, c.clone(), i));
+            }
+        }
+    });
+    out
+}
+
+/// Do `a` and `b` share a face side? One rotation around `a`, no allocation.
+fn adjacent<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
+    let mut found = false;
+    m.vertex_vertices(a, |w| found |= w == b);
+    found
+}
+
+fn is_boundary_edge<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
+    face_with(m, a, b).is_none() || face_with(m, b, a).is_none()
+}
+
+fn is_boundary_vertex<M: MeshTopology>(m: &M, v: VertexId) -> bool {
+    neighbours(m, v)
+        .into_iter()
+        .any(|w| is_boundary_edge(m, v, w))
+}
+
+/// Would the faces around each vertex of `check` make one fan, every directed edge once,
+/// after `old` is replaced by `new`? (See the module docs.)
+fn check_result<M: MeshTopology>(
+    m: &M,
+    old: &[FaceId],
+    new: &[Vec<VertexId>],
+    check: &[VertexId],
+) -> std::result::Result<(), Refusal> {
+    let mut seen: Vec<VertexId> = Vec::with_capacity(check.len());
+    for &v in check {
+        if seen.contains(&v) {
+            continue;
+        }
+        seen.push(v);
+        let mut around: Vec<Vec<VertexId>> = faces_at(m, v)
+            .into_iter()
+            .filter(|f| !old.contains(f))
+            .map(|f| corners(m, f))
+            .collect();
+        around.extend(new.iter().filter(|f| f.contains(&v)).cloned());
+        // Per face, the corner after v (out) and before v (in).
+        let sides: Vec<(VertexId, VertexId)> = around
+            .iter()
+            .map(|c| {
+                let k = c.len();
+                let i = c.iter().position(|&x| x == v).expect("v is a corner");
+                (c[(i + 1) % k], c[(i + k - 1) % k])
+            })
+            .collect();
+        for (i, &(out, inn)) in sides.iter().enumerate() {
+            if sides[..i].iter().any(|&(o, n)| o == out || n == inn) {
+                return Err(Refusal::NonManifoldEdge);
+            }
+        }
+        // One fan: faces linked where one's out is the other's in; union by relabelling.
+        let mut fan: Vec<usize> = (0..sides.len()).collect();
+        for i in 0..sides.len() {
+            for j in 0..sides.len() {
+                if sides[i].0 == sides[j].1 && fan[i] != fan[j] {
+                    let (from, to) = (fan[j], fan[i]);
+                    for x in fan.iter_mut().filter(|x| **x == from) {
+                        *x = to;
+                    }
+                }
+            }
+        }
+        if fan.iter().any(|&x| x != fan[0]) {
+            return Err(Refusal::NonManifoldVertex);
+        }
+    }
+    Ok(())
+}
+
+fn all_corners(m: &impl MeshTopology, faces: &[FaceId], new: &[Vec<VertexId>]) -> Vec<VertexId> {
+    let mut out: Vec<VertexId> = faces.iter().flat_map(|&f| corners(m, f)).collect();
+    out.extend(new.iter().flatten().copied());
+    out
+}
+
+/// [`MeshEdit::add_face`] over [`FaceRewrite`].
+pub fn add_face<M: FaceRewrite>(m: &mut M, vertices: &[VertexId]) -> Result<FaceId> {
+    let op = EditOp::AddFace;
+    let distinct = (1..vertices.len()).all(|i| !vertices[..i].contains(&vertices[i]));
+    if vertices.len() < 3 || !distinct {
+        return Err(refuse::<M>(op, Refusal::BadFace));
+    }
+    if !vertices.iter().all(|&v| live(m, v)) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let new = [vertices.to_vec()];
+    check_result(m, &[], &new, vertices).map_err(|r| refuse::<M>(op, r))?;
+    m.rewrite(&[], &new);
+    Ok(FaceId::new(m.num_faces() - 1))
+}
+
+/// [`MeshEdit::delete_face`] over [`FaceRewrite`].
+pub fn delete_face<M: FaceRewrite>(m: &mut M, f: FaceId) -> Result<()> {
+    let op = EditOp::DeleteFace;
+    if f.index() >= m.num_faces() {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let c = corners(m, f);
+    check_result(m, &[f], &[], &c).map_err(|r| refuse::<M>(op, r))?;
+    m.rewrite(&[f], &[]);
+    Ok(())
+}
+
+/// [`MeshEdit::delete_vertex`] over [`FaceRewrite`].
+pub fn delete_vertex<M: FaceRewrite>(m: &mut M, v: VertexId) -> Result<()> {
+    let op = EditOp::DeleteVertex;
+    if !live(m, v) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let old = faces_at(m, v);
+    let check: Vec<VertexId> = all_corners(m, &old, &[])
+        .into_iter()
+        .filter(|&w| w != v)
+        .collect();
+    check_result(m, &old, &[], &check).map_err(|r| refuse::<M>(op, r))?;
+    m.rewrite(&old, &[]);
+    m.mark_vertex_deleted(v);
+    Ok(())
+}
+
+/// [`MeshEdit::flip_edge`] over [`FaceRewrite`].
+pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
+    let op = EditOp::FlipEdge;
+    if !m.is_edge(e) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let [a, b] = m.edge_vertices(e);
+    let [Some((f1, c1, i1)), Some((f2, c2, i2))] = sides_of(m, e, a, b) else {
+        return Err(refuse::<M>(op, Refusal::BoundaryEdge));
+    };
+    if c1.len() != 3 || c2.len() != 3 {
+        return Err(refuse::<M>(op, Refusal::NotTriangles));
+    }
+    let (x, y) = (c1[(i1 + 2) % 3], c2[(i2 + 2) % 3]);
+    if x == y || adjacent(m, x, y) {
+        return Err(refuse::<M>(op, Refusal::EdgeExists));
+    }
+    m.rewrite(&[f1, f2], &[vec![a, y, x], vec![b, x, y]]);
+    Ok(())
+}
+
+/// [`MeshEdit::split_edge`] over [`FaceRewrite`].
+pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<VertexId> {
+    let op = EditOp::SplitEdge;
+    if !m.is_edge(e) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let [a, b] = m.edge_vertices(e);
+    let sides: Vec<(FaceId, Vec<VertexId>, usize)> =
+        sides_of(m, e, a, b).into_iter().flatten().collect();
+    if sides.is_empty() {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    if sides.iter().any(|(_, c, _)| c.len() != 3) {
+        return Err(refuse::<M>(op, Refusal::NotTriangles));
+    }
+    if sides.len() == 2 && sides[0].1[(sides[0].2 + 2) % 3] == sides[1].1[(sides[1].2 + 2) % 3] {
+        return Err(refuse::<M>(op, Refusal::EdgeExists));
+    }
+    let n = m.push_vertex(p)?;
+    let old: Vec<FaceId> = sides.iter().map(|s| s.0).collect();
+    let mut first = Vec::new();
+    let mut second = Vec::new();
+    for (_, c, i) in &sides {
+        let (s, t, o) = (c[*i], c[(i + 1) % 3], c[(i + 2) % 3]);
+        first.push(vec![s, n, o]);
+        second.push(vec![n, t, o]);
+    }
+    first.extend(second);
+    m.rewrite(&old, &first);
+    Ok(n)
+}
+
+/// [`MeshEdit::split_face`] over [`FaceRewrite`].
+pub fn split_face<M: FaceRewrite>(m: &mut M, f: FaceId, p: DVec3) -> Result<VertexId> {
+    if f.index() >= m.num_faces() {
+        return Err(refuse::<M>(EditOp::SplitFace, Refusal::NoSuchElement));
+    }
+    let c = corners(m, f);
+    let n = m.push_vertex(p)?;
+    let k = c.len();
+    let new: Vec<Vec<VertexId>> = (0..k).map(|i| vec![c[i], c[(i + 1) % k], n]).collect();
+    m.rewrite(&[f], &new);
+    Ok(n)
+}
+
+/// [`MeshEdit::collapse_edge`] over [`FaceRewrite`]: pmp-library's `is_collapse_ok`, then
+/// the faces around `from` rewritten around `to`.
+pub fn collapse_edge<M: FaceRewrite>(m: &mut M, from: VertexId, to: VertexId) -> Result<()> {
+    let op = EditOp::CollapseEdge;
+    let no = |r| Err(refuse::<M>(op, r));
+    if !live(m, from) || !live(m, to) {
+        return no(Refusal::NoSuchElement);
+    }
+    let ring0 = neighbours(m, from);
+    if !ring0.contains(&to) {
+        return no(Refusal::NotNeighbours);
+    }
+    let around = faces_at(m, from);
+    let faces: Vec<Vec<VertexId>> = around.iter().map(|&f| corners(m, f)).collect();
+    if faces.iter().any(|c| c.len() != 3) {
+        return no(Refusal::NotTriangles);
+    }
+    let third = |a: VertexId, b: VertexId| {
+        faces.iter().find_map(|c| {
+            (0..3)
+                .find(|&i| c[i] == a && c[(i + 1) % 3] == b)
+                .map(|i| c[(i + 2) % 3])
+        })
+    };
+    let (left, right) = (third(from, to), third(to, from));
+    for (side, a, b) in [(left, to, from), (right, from, to)] {
+        if let Some(x) = side {
+            if is_boundary_edge(m, a, x) && is_boundary_edge(m, x, b) {
+                return no(Refusal::LinkCondition);
+            }
+        }
+    }
+    if left == right {
+        return no(Refusal::LinkCondition);
+    }
+    if let (Some(l), Some(r)) = (left, right) {
+        let valence = |v: VertexId| neighbours(m, v).len();
+        if neighbours(m, l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
+            return no(Refusal::LinkCondition);
+        }
+    }
+    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {
+        return no(Refusal::LinkCondition);
+    }
+    let ring1 = neighbours(m, to);
+    if ring0
+        .iter()
+        .any(|&w| w != to && Some(w) != left && Some(w) != right && ring1.contains(&w))
+    {
+        return no(Refusal::LinkCondition);
+    }
+    let mut old = Vec::new();
+    let mut new = Vec::new();
+    let mut gone = Vec::new();
+    for (f, c) in around.iter().zip(&faces) {
+        if c.contains(&to) {
+            gone.push(*f);
+        } else {
+            old.push(*f);
+            new.push(c.iter().map(|&v| if v == from { to } else { v }).collect());
+        }
+    }
+    old.extend(gone);
+    m.rewrite(&old, &new);
+    m.mark_vertex_deleted(from);
+    Ok(())
+}
+
+/// [`MeshEdit::split_vertex`] over [`FaceRewrite`].
+pub fn split_vertex<M: FaceRewrite>(
+    m: &mut M,
+    v: VertexId,
+    p: DVec3,
+    left: VertexId,
+    right: VertexId,
+) -> Result<VertexId> {
+    let op = EditOp::SplitVertex;
+    let no = |r| Err(refuse::<M>(op, r));
+    if [v, left, right].iter().any(|&x| !live(m, x)) {
+        return no(Refusal::NoSuchElement);
+    }
+    if left == right || left == v || right == v {
+        return no(Refusal::NotNeighbours);
+    }
+    let ring = neighbours(m, v);
+    if !ring.contains(&left) || !ring.contains(&right) {
+        return no(Refusal::NotNeighbours);
+    }
+    // From the face running v → left, clockwise to the one running right → v: they move.
+    let Some((mut f, mut c, _)) = face_with(m, v, left) else {
+        return no(Refusal::NotNeighbours);
+    };
+    let mut moved: Vec<(FaceId, Vec<VertexId>)> = Vec::new();
+    loop {
+        if moved.iter().any(|(g, _)| *g == f) {
+            return no(Refusal::NotNeighbours);
+        }
+        let k = c.len();
+        let i = c.iter().position(|&x| x == v).expect("around v");
+        let before = c[(i + k - 1) % k];
+        moved.push((f, c));
+        if before == right {
+            break;
+        }
+        let Some((g, d, _)) = face_with(m, v, before) else {
+            return no(Refusal::NotNeighbours);
+        };
+        (f, c) = (g, d);
+    }
+    let n = m.push_vertex(p)?;
+    let old: Vec<FaceId> = moved.iter().map(|(f, _)| *f).collect();
+    let mut new: Vec<Vec<VertexId>> = moved
+        .into_iter()
+        .map(|(_, c)| c.into_iter().map(|x| if x == v { n } else { x }).collect())
+        .collect();
+    new.push(vec![n, v, left]);
+    new.push(vec![v, n, right]);
+    m.rewrite(&old, &new);
+    Ok(n)
+}
+
+/// [`MeshEdit::weld_vertices`] over [`FaceRewrite`]: the faces around `b` rewritten around
+/// `a`, refused when a face would have both or the result would not be a manifold.
+pub fn weld_vertices<M: FaceRewrite>(m: &mut M, a: VertexId, b: VertexId) -> Result<()> {
+    let op = EditOp::WeldVertices;
+    if !live(m, a) || !live(m, b) || a == b {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let old = faces_at(m, b);
+    let mut new = Vec::with_capacity(old.len());
+    for &f in &old {
+        let c = corners(m, f);
+        if c.contains(&a) {
+            return Err(refuse::<M>(op, Refusal::BadFace));
+        }
+        new.push(c.into_iter().map(|x| if x == b { a } else { x }).collect());
+    }
+    let check = all_corners(m, &old, &new);
+    let check: Vec<VertexId> = check.into_iter().filter(|&x| x != b).collect();
+    check_result(m, &old, &new, &check).map_err(|r| refuse::<M>(op, r))?;
+    m.rewrite(&old, &new);
+    m.mark_vertex_deleted(b);
+    Ok(())
+}
+
+/// [`MeshEdit::set_position`] over [`FaceRewrite`].
+pub fn set_position<M: FaceRewrite>(m: &mut M, v: VertexId, p: DVec3) -> Result<()> {
+    if !live(m, v) {
+        return Err(refuse::<M>(EditOp::AddVertex, Refusal::NoSuchElement));
+    }
+    m.write_position(v, p);
+    Ok(())
+}
+
+/// Face runs packed in one array with offsets (face f is `items[offsets[f]..offsets[f + 1]]`):
+/// the storage of the vertex list's corners and the edge list's polygons.
+pub(crate) mod packed {
+    /// Writes face `f`'s run: in place when the length is the same (O(k)), else by shifting
+    /// everything after it (O(n)).
+    pub(crate) fn set<T: Copy>(items: &mut Vec<T>, offsets: &mut [u32], f: usize, run: &[T]) {
+        let (start, end) = (offsets[f] as usize, offsets[f + 1] as usize);
+        if end - start == run.len() {
+            items[start..end].copy_from_slice(run);
+            return;
+        }
+        items.splice(start..end, run.iter().copied());
+        let shift = run.len() as i64 - (end - start) as i64;
+        for o in &mut offsets[f + 1..] {
+            *o = (*o as i64 + shift) as u32;
+        }
+    }
+
+    /// Appends a face's run; returns its face index.
+    pub(crate) fn push<T: Copy>(items: &mut Vec<T>, offsets: &mut Vec<u32>, run: &[T]) -> usize {
+        items.extend_from_slice(run);
+        offsets.push(items.len() as u32);
+        offsets.len() - 2
+    }
+
+    /// Removes face `f`'s run: the last face's run moves into it (O(k) for equal lengths).
+    pub(crate) fn remove<T: Copy>(items: &mut Vec<T>, offsets: &mut Vec<u32>, f: usize) {
+        let last = offsets.len() - 2;
+        if f != last {
+            let run: Vec<T> = items[offsets[last] as usize..offsets[last + 1] as usize].to_vec();
+            set(items, offsets, f, &run);
+        }
+        let start = offsets[last] as usize;
+        items.truncate(start);
+        offsets.pop();
+    }
+}
+
+/// Implements [`MeshEdit`] for a [`FaceRewrite`] structure with the operations of this
+/// module; `$cost` is its `edit_cost`, `$supports` its `supports` and the optional last
+/// argument its `STABLE_EDGE_IDS`.
+macro_rules! mesh_edit_by_rewrite {
+    ($ty:ty, $cost:expr, $supports:expr $(, $stable:expr)?) => {
+        impl $crate::core::edit::MeshEdit for $ty {
+            const DELETION: $crate::core::edit::Deletion = $crate::core::edit::Deletion::LastMoves;
+            $(const STABLE_EDGE_IDS: bool = $stable;)?
+            fn edit_cost(op: $crate::core::edit::EditOp) -> $crate::core::topology::Cost {
+                ($cost)(op)
+            }
+            fn supports(op: $crate::core::edit::EditOp) -> bool {
+                ($supports)(op)
+            }
+            fn add_vertex(&mut self, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
+                $crate::core::rewrite::FaceRewrite::push_vertex(self, p)
+            }
+            fn set_position(&mut self, v: $crate::VertexId, p: glam::DVec3) -> $crate::Result<()> {
+                $crate::core::rewrite::set_position(self, v, p)
+            }
+            fn add_face(&mut self, vertices: &[$crate::VertexId]) -> $crate::Result<$crate::FaceId> {
+                $crate::core::rewrite::add_face(self, vertices)
+            }
+            fn delete_face(&mut self, f: $crate::FaceId) -> $crate::Result<()> {
+                $crate::core::rewrite::delete_face(self, f)
+            }
+            fn delete_vertex(&mut self, v: $crate::VertexId) -> $crate::Result<()> {
+                $crate::core::rewrite::delete_vertex(self, v)
+            }
+            fn flip_edge(&mut self, e: $crate::EdgeId) -> $crate::Result<()> {
+                $crate::core::rewrite::flip_edge(self, e)
+            }
+            fn split_edge(&mut self, e: $crate::EdgeId, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
+                $crate::core::rewrite::split_edge(self, e, p)
+            }
+            fn split_face(&mut self, f: $crate::FaceId, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
+                $crate::core::rewrite::split_face(self, f, p)
+            }
+            fn collapse_edge(&mut self, from: $crate::VertexId, to: $crate::VertexId) -> $crate::Result<()> {
+                $crate::core::rewrite::collapse_edge(self, from, to)
+            }
+            fn split_vertex(
+                &mut self,
+                v: $crate::VertexId,
+                p: glam::DVec3,
+                left: $crate::VertexId,
+                right: $crate::VertexId,
+            ) -> $crate::Result<$crate::VertexId> {
+                $crate::core::rewrite::split_vertex(self, v, p, left, right)
+            }
+            fn weld_vertices(&mut self, a: $crate::VertexId, b: $crate::VertexId) -> $crate::Result<()> {
+                $crate::core::rewrite::weld_vertices(self, a, b)
+            }
+            fn is_deleted_vertex(&self, v: $crate::VertexId) -> bool {
+                $crate::core::rewrite::FaceRewrite::vertex_deleted(self, v)
+            }
+            fn is_deleted_face(&self, _f: $crate::FaceId) -> bool {
+                false
+            }
+            fn garbage_collection(&mut self) {
+                $crate::core::rewrite::FaceRewrite::collect_vertices(self)
+            }
+            fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+                $crate::core::rewrite::FaceRewrite::reserve_room(self, vertices, edges, faces)
+            }
+        }
+    };
+}
+pub(crate) use mesh_edit_by_rewrite;
