@@ -143,14 +143,6 @@ fn curated() -> Vec<Vec<&'static str>> {
             "--out",
             "@DIR/x.off",
         ],
-        vec![
-            "decimate",
-            "torus:100000000",
-            "--faces",
-            "10",
-            "--out",
-            "@DIR/x.off",
-        ],
         // Past u32 after two levels; the input alone (17 GB) might fit: refused ungenerated.
         vec![
             "refine",
