@@ -632,6 +632,15 @@ fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f64> {
     }
 }
 
+/// The table cell's class for a "met" column of "yes", "no" or "–".
+fn class_of(met: &str) -> &'static str {
+    match met {
+        "yes" => "ok",
+        "no" => "bad",
+        _ => "skip",
+    }
+}
+
 /// The Targets section: every target measured in turns, on the largest torus of the run.
 pub fn render(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
@@ -678,11 +687,7 @@ pub fn render(h: &mut String, r: &Results) {
             ),
             None => ("not measured".into(), "–".into(), "–".into(), "–"),
         };
-        let class = match met {
-            "yes" => "ok",
-            "no" => "bad",
-            _ => "skip",
-        };
+        let class = class_of(met);
         let skipped = || {
             r.measurements.iter().any(|m| {
                 m.mesh == mesh
@@ -721,11 +726,7 @@ pub fn render(h: &mut String, r: &Results) {
             Some(v) => (format!("{v:.2}×"), if v <= goal { "yes" } else { "no" }),
             None => ("not measured".into(), "–"),
         };
-        let class = match met {
-            "yes" => "ok",
-            "no" => "bad",
-            _ => "skip",
-        };
+        let class = class_of(met);
         let _ = write!(
             h,
             "<tr><td class=l>{}<br><span class=small>timed in turns in the Decimation section</span></td><td>{value}</td><td>–</td><td>–</td><td>–</td><td>≤ {goal}×</td><td class={class}>{met}</td></tr>",

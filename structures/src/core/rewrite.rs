@@ -55,6 +55,43 @@ pub trait FaceRewrite: MeshTopology {
     fn reserve_room(&mut self, vertices: usize, edges: usize, faces: usize);
 }
 
+/// The vertex compaction every [`FaceRewrite::collect_vertices`] shares: takes the marks out
+/// of `deleted` (shorter than `count` where later vertices were never marked) and returns
+/// them, one per vertex, with the old-to-new id map (deleted vertices map to
+/// `VertexId::INVALID`); `None`, the marks cleared, when nothing was marked.
+pub(crate) fn compact_vertices(
+    deleted: &mut Vec<bool>,
+    count: usize,
+) -> Option<(Vec<bool>, Vec<VertexId>)> {
+    let mut marks = std::mem::take(deleted);
+    if !marks.iter().any(|&d| d) {
+        return None;
+    }
+    marks.resize(count, false);
+    let mut next = 0;
+    let map = marks
+        .iter()
+        .map(|&gone| {
+            if gone {
+                VertexId::INVALID
+            } else {
+                next += 1;
+                VertexId(next - 1)
+            }
+        })
+        .collect();
+    Some((marks, map))
+}
+
+/// Keeps the entries of a per-vertex container whose vertex `marks` does not mark deleted.
+pub(crate) fn retain_unmarked<T>(per_vertex: &mut Vec<T>, marks: &[bool]) {
+    let mut i = 0;
+    per_vertex.retain(|_| {
+        i += 1;
+        !marks[i - 1]
+    });
+}
+
 fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
     Error::EditRefused {
         structure: M::NAME,

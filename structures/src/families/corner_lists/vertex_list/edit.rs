@@ -33,7 +33,9 @@ use super::VertexList;
 use crate::core::edit::EditOp;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::rewrite::{mesh_edit_by_rewrite, packed, FaceRewrite};
+use crate::core::rewrite::{
+    compact_vertices, mesh_edit_by_rewrite, packed, retain_unmarked, FaceRewrite,
+};
 use crate::core::topology::Cost;
 use glam::DVec3;
 
@@ -106,26 +108,12 @@ impl FaceRewrite for VertexList {
     }
 
     fn collect_vertices(&mut self) {
-        let mut deleted = std::mem::take(&mut self.deleted);
-        if !deleted.iter().any(|&d| d) {
+        let Some((deleted, map)) = compact_vertices(&mut self.deleted, self.positions.len()) else {
             return;
-        }
-        deleted.resize(self.positions.len(), false);
-        let mut map = vec![u32::MAX; self.positions.len()];
-        let mut next = 0;
-        for (v, slot) in map.iter_mut().enumerate() {
-            if !deleted[v] {
-                *slot = next;
-                next += 1;
-            }
-        }
-        let mut i = 0;
-        self.positions.retain(|_| {
-            i += 1;
-            !deleted[i - 1]
-        });
+        };
+        retain_unmarked(&mut self.positions, &deleted);
         for k in &mut self.corners.keys {
-            *k = map[*k as usize];
+            *k = map[*k as usize].0;
         }
     }
 

@@ -41,7 +41,7 @@ use super::WingedEdge;
 use crate::core::edit::EditOp;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::rewrite::{mesh_edit_by_rewrite, FaceRewrite};
+use crate::core::rewrite::{compact_vertices, mesh_edit_by_rewrite, retain_unmarked, FaceRewrite};
 use crate::core::topology::Cost;
 use glam::DVec3;
 
@@ -340,30 +340,11 @@ impl FaceRewrite for WingedEdge {
     }
 
     fn collect_vertices(&mut self) {
-        if !self.deleted.iter().any(|&d| d) {
-            self.deleted.clear();
+        let Some((deleted, map)) = compact_vertices(&mut self.deleted, self.positions.len()) else {
             return;
-        }
-        let mut map = vec![VertexId::INVALID; self.positions.len()];
-        let mut next = 0;
-        for (v, slot) in map.iter_mut().enumerate() {
-            if !self.deleted.get(v).copied().unwrap_or(false) {
-                *slot = VertexId(next);
-                next += 1;
-            }
-        }
-        let mut deleted = std::mem::take(&mut self.deleted);
-        deleted.resize(self.positions.len(), false);
-        let mut i = 0;
-        self.positions.retain(|_| {
-            i += 1;
-            !deleted[i - 1]
-        });
-        let mut i = 0;
-        self.av.retain(|_| {
-            i += 1;
-            !deleted[i - 1]
-        });
+        };
+        retain_unmarked(&mut self.positions, &deleted);
+        retain_unmarked(&mut self.av, &deleted);
         for r in self.edges.iter_mut().filter(|r| r.is_live()) {
             r.v1 = map[r.v1.index()];
             r.v2 = map[r.v2.index()];
