@@ -7,15 +7,23 @@
 //! cargo run --release --example build_sweep                    # torus, 1M triangles, 7 rounds
 //! cargo run --release --example build_sweep -- 1000000 torus 9 # TRIANGLES, torus|grid, ROUNDS
 //! cargo run --release --example build_sweep -- 1000000 torus 9 che-l1,openmesh
+//! cargo run --release --example build_sweep -- 1000000 torus 9 che-l1,openmesh cold
+//! cargo run --release --example build_sweep -- 1000000 torus 9 all passes
 //! ```
 //!
 //! Each cell is the median of the rounds (the lab's statistic), and again the fastest round,
 //! with the ratio of the report's construction target (che-l1 against OpenMesh's `add_face`
 //! build, which is OpenMesh's own construction as the report times it).
+//!
+//! `cold` times cold builds instead: glibc returns its free memory to the kernel before each
+//! build, so every page the build touches is a first-touch page fault (the report's Construction
+//! time table shows both); the minor page faults per build are printed beside the times.
+//! `passes` times che-l1's construction pass by pass, each in turns with the whole build and
+//! OpenMesh's: what each pass costs, and what the target leaves for them (0.1× OpenMesh).
 
-use topolab::alloc::{keep_freed_memory, thread_cpu_ns};
+use topolab::alloc::{keep_freed_memory, minor_faults, release_free_memory, thread_cpu_ns};
 use topolab_structures::{
-    meshes, CheL1, CheL2, CheL3, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup,
+    che, meshes, CheL1, CheL2, CheL3, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup,
 };
 
 /// One build of a structure from `soup`; returns its number of faces (the check that the
@@ -49,6 +57,11 @@ fn main() {
     let grid = args.get(1).is_some_and(|a| a == "grid");
     let rounds: usize = args.get(2).map_or(7, |a| a.parse().expect("ROUNDS"));
     let only = args.get(3).cloned().filter(|s| s != "all");
+    let mode = args.get(4).map_or("warm", String::as_str);
+    assert!(
+        ["warm", "cold", "passes"].contains(&mode),
+        "MODE is warm, cold or passes"
+    );
 
     let soup = if grid {
         let side = ((triangles / 2) as f64).sqrt().round().max(1.0) as usize;
@@ -70,9 +83,13 @@ fn main() {
             .is_none_or(|s| s.split(',').any(|x| x == *name))
     });
     assert!(keep_freed_memory(), "glibc refused to keep freed memory");
+    if mode == "passes" {
+        return passes(&soup, rounds);
+    }
+    let cold = mode == "cold";
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!(
-        "{} {} vertices, {} triangles; {rounds} rounds taking turns, warm builds, \
+        "{} {} vertices, {} triangles; {rounds} rounds taking turns, {mode} builds, \
          thread CPU ns/face; load {}",
         if grid { "grid" } else { "torus" },
         soup.num_vertices(),
@@ -87,14 +104,24 @@ fn main() {
         assert_eq!(b(&soup), soup.num_faces(), "{name} built another mesh");
     }
     let mut times = vec![Vec::new(); all.len()];
+    let mut faults = vec![Vec::new(); all.len()];
     for _ in 0..rounds {
         for (s, (_, b)) in all.iter().enumerate() {
+            if cold {
+                release_free_memory();
+            }
+            let first = minor_faults().unwrap_or(0);
             let start = thread_cpu_ns().expect("thread CPU clock");
             let faces = std::hint::black_box(b(&soup));
             let ns = thread_cpu_ns().expect("thread CPU clock") - start;
+            faults[s].push((minor_faults().unwrap_or(0) - first) as f64);
             assert_eq!(faces, soup.num_faces());
             times[s].push(ns as f64 / faces as f64);
         }
+    }
+    println!("{:<28}{:>12}", "page faults per build", "median");
+    for ((name, _), f) in all.iter().zip(&faults) {
+        println!("{name:<28}{:>12.0}", median(f.clone()));
     }
     for (stat, pick) in [
         ("median", median as fn(Vec<f64>) -> f64),
@@ -115,5 +142,78 @@ fn main() {
                 println!("{:<28}{:>12.3}", format!("{a}/{b}"), values[i] / values[j]);
             }
         }
+    }
+}
+
+/// The passes of che-l1's construction (`CheL1::from_soup`: the containers copied and checked,
+/// `O[]` paired, Algorithm 3's `VH[]`, the one-fan walk), each timed on its own in turns with
+/// the whole build and OpenMesh's, warm, in ns/face: the breakdown the report's construction
+/// target quotes.
+fn passes(soup: &PolygonSoup, rounds: usize) {
+    let n = soup.num_vertices();
+    let faces = soup.num_faces() as f64;
+    let mut rows: Vec<(&str, Vec<f64>)> = [
+        "copy G[]",
+        "check G[] finite",
+        "copy V[]",
+        "pair O[] (opposites_by_buckets)",
+        "VH[] (Algorithm 3)",
+        "one-fan walk (every_vertex_one_fan)",
+        "sum of the passes",
+        "whole che-l1 build",
+        "openmesh build",
+    ]
+    .into_iter()
+    .map(|name| (name, Vec::new()))
+    .collect();
+    let time = |f: &mut dyn FnMut()| {
+        let start = thread_cpu_ns().expect("thread CPU clock");
+        f();
+        (thread_cpu_ns().expect("thread CPU clock") - start) as f64 / faces
+    };
+    // One round more than asked: the first warms up and is dropped.
+    for round in 0..=rounds {
+        let (mut g, mut v, mut o, mut vh) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        let (mut finite, mut one_fan) = (false, false);
+        let mut t = vec![
+            time(&mut || g = soup.positions.clone()),
+            time(&mut || finite = g.iter().all(|p| p.is_finite())),
+            time(&mut || v = soup.indices().to_vec()),
+            time(&mut || o = che::opposites_by_buckets(&v, n).expect("a manifold mesh")),
+            time(&mut || vh = che::vertex_half_edges_algorithm_3(&v, &o, n)),
+            time(&mut || one_fan = che::every_vertex_one_fan(&o, &vh)),
+        ];
+        assert!(finite && one_fan, "the generated meshes are manifold");
+        drop((g, v, o, vh));
+        t.push(t.iter().sum());
+        t.push(time(&mut || {
+            std::hint::black_box(build::<CheL1>(soup));
+        }));
+        #[cfg(has_openmesh)]
+        t.push(time(&mut || {
+            std::hint::black_box(build::<topolab::openmesh::OpenMesh>(soup));
+        }));
+        if round > 0 {
+            for ((_, times), x) in rows.iter_mut().zip(t) {
+                times.push(x);
+            }
+        }
+    }
+    rows.retain(|(_, t)| !t.is_empty());
+    println!(
+        "che-l1 construction by pass, {} triangles, {rounds} rounds, warm, thread CPU ns/face",
+        soup.num_faces()
+    );
+    println!("{:<40}{:>8}{:>8}{:>8}", "", "median", "min", "max");
+    for (name, t) in &rows {
+        let (lo, hi) = (fastest(t.clone()), -fastest(t.iter().map(|x| -x).collect()));
+        println!("{name:<40}{:>8.2}{lo:>8.2}{hi:>8.2}", median(t.clone()));
+    }
+    if let Some((_, om)) = rows.iter().find(|(name, _)| *name == "openmesh build") {
+        println!(
+            "{:<40}{:>8.2}",
+            "0.1 × openmesh (the target's budget)",
+            0.1 * median(om.clone())
+        );
     }
 }

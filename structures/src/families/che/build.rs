@@ -1,5 +1,50 @@
 //! Construction of the CHE containers: the chapter's Algorithms 1–4 as written, and the fast
 //! construction of `O[]` and `EH` that produces identical containers without hashing.
+//!
+//! ## Where the fast construction's time goes
+//!
+//! Level 1's fast build ([`build_fast`]) is five passes. Measured pass by pass on the
+//! 1M-triangle torus, warm builds, median of 9 rounds in turns with OpenMesh's `add_face`
+//! build (`cargo run --release --example build_sweep -- 1000000 torus 9 all passes`, 2-core
+//! VM at load 16), in ns per face:
+//!
+//! | pass | ns/face |
+//! |---|---|
+//! | copy `G[]`, check it finite | 1.6 + 0.65 |
+//! | copy `V[]` | 1.5 |
+//! | pair `O[]` ([`opposites_by_buckets`]) | 12.6 |
+//! | `VH[]` (Algorithm 3, [`vertex_half_edges_algorithm_3`]) | 2.4 |
+//! | one-fan walk ([`every_vertex_one_fan`]) | 4.1 |
+//! | whole build (OpenMesh: 170) | 22.1 |
+//!
+//! The pairing waits on its bucket walk: each step loads the node of the half-edge that
+//! joined the bucket before, and the twin of an edge between two strips of the torus arrives
+//! a whole strip later, its node tens of KB back, out of L1. Measured against it in one process, each returning the same `O[]`, none was faster
+//! (ns/face of the pairing alone, same run, the bucket walk at 11–16 under the run's load):
+//!
+//! - a counting sort of the half-edges into buckets keyed by the smaller vertex (count,
+//!   prefix sum, scatter `larger << 32 | he` as `u64`, then an insertion sort and a scan of
+//!   each bucket, about 6 entries): 18–22. Its scatter alone costs 4 (a read-modify-write of
+//!   each bucket's cursor), and sorting the buckets more than the walk saves;
+//! - buckets keyed by the origin, that is, each vertex's star, matched inside the star (a
+//!   half-edge's twin leaving the vertex is the one whose destination is the origin of the
+//!   triangle's previous half-edge), which gives `O[]`, `VH[]` and the one-fan check in one
+//!   pass over the stars: 24–28 for all three against 18–19 for the three passes here, even
+//!   with the matches compared four lanes at a time;
+//! - the bucket as split `u32` arrays (key and link), or with the key read back from `V[]`
+//!   to halve the scratch: 18–22;
+//! - seven fixed slots per vertex (one cache line) with an overflow list: within the noise
+//!   of the bucket walk (10–16), for 32 more bytes per face to clear first;
+//! - `VH[]` kept inside the pairing loop (the first half-edge leaving each vertex, then the
+//!   boundary ones from `O[]`): slower, the added branch costs more than Algorithm 3's pass.
+//!
+//! So the construction target (0.1× OpenMesh, about 17 ns/face in that run) is not met: the
+//! pairing alone is 0.07×, and the copies and checks every level needs add 0.06×. Cold builds
+//! (memory returned to the kernel before each build) add about 28 ns/face here: 15.6k
+//! first-touch page faults per build (64 MB: `G[]`, `V[]`, `O[]` 12 bytes per face each, the
+//! pairing's nodes 24, `head` and `VH[]` 2 each), about 1.8 µs each on this VM; OpenMesh
+//! takes 16.1k. Halving the nodes would save about a fifth of that, but every `u32` layout
+//! measured made the warm pairing slower.
 
 use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
 use crate::core::error::{Error, Result};
@@ -201,7 +246,7 @@ pub fn vertex_half_edges_algorithm_3(v: &[u32], o: &[i32], num_vertices: usize) 
 /// `true` when, for every vertex, the walk of its star from `VH[v]` reaches every half-edge
 /// leaving it: the walks together reach all `3·n2` half-edges exactly when every vertex is
 /// one fan (a second fan is never reached, since a walk stays in its fan).
-pub(crate) fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
+pub fn every_vertex_one_fan(o: &[i32], vh: &[i32]) -> bool {
     let mut reached = 0usize;
     for &start in vh.iter().filter(|&&h| h >= 0) {
         fan_walk_algorithm_7(o, HalfEdgeId(start as u32), |_| {}, |_| reached += 1);

@@ -160,8 +160,9 @@ mod level3;
 mod topology;
 
 pub use build::{
-    boundary_curves_algorithm_4, edge_map_algorithm_2, edge_map_by_scan, opposites_algorithm_1,
-    opposites_and_vertex_half_edges, opposites_by_buckets, vertex_half_edges_algorithm_3,
+    boundary_curves_algorithm_4, edge_map_algorithm_2, edge_map_by_scan, every_vertex_one_fan,
+    opposites_algorithm_1, opposites_and_vertex_half_edges, opposites_by_buckets,
+    vertex_half_edges_algorithm_3,
 };
 pub use level0::CheL0;
 pub use level1::CheL1;
