@@ -9,6 +9,8 @@ use crate::core::ids::{FaceId, VertexId};
 use crate::families::half_edge::{HalfEdge, NONE};
 use glam::DVec3;
 
+mod weld;
+
 impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     // --- reads by id -------------------------------------------------------------------------
 
