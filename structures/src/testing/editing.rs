@@ -627,10 +627,7 @@ pub fn run_with<M: MeshEdit>(
 
 /// How many vertex welds the random sequences of `seeds` did (each checked as in [`run`]):
 /// the suite's evidence that welds the model allows are drawn and done, not only refused.
-pub fn welds_done<M: MeshEdit>(
-    seeds: std::ops::Range<u64>,
-    steps: usize,
-) -> Result<usize, String> {
+pub fn welds_done<M: MeshEdit>(seeds: std::ops::Range<u64>, steps: usize) -> Result<usize, String> {
     let mut welds = 0;
     for seed in seeds {
         welds += run_tally::<M>(seed, steps, false)

@@ -306,7 +306,9 @@ fn welds_done_as_expected<M: MeshEdit>(
         faces = welded_faces(&faces, a, b);
         let got = live_faces(&m);
         if got != faces {
-            return Err(format!("{name}: welded v{a} v{b}: faces {got:?}, expected {faces:?}"));
+            return Err(format!(
+                "{name}: welded v{a} v{b}: faces {got:?}, expected {faces:?}"
+            ));
         }
         compare(&m, &to_soup(&m)).map_err(|e| format!("{name} after weld v{a} v{b}: {e}"))?;
     }
@@ -325,16 +327,22 @@ fn weld_refused<M: MeshEdit>(
     let mut m = M::from_soup(soup).map_err(|e| format!("{name}: {e}"))?;
     let got = refusal(m.weld_vertices(crate::VertexId(a), crate::VertexId(b)));
     if !got.is_some_and(|r| reasons.contains(&r)) {
-        return Err(format!("{name}: weld v{a} v{b} gave {got:?}, not one of {reasons:?}"));
+        return Err(format!(
+            "{name}: weld v{a} v{b} gave {got:?}, not one of {reasons:?}"
+        ));
     }
     let deleted = (0..m.num_vertices()).any(|v| m.is_deleted_vertex(crate::VertexId::new(v)));
     if deleted || m.num_vertices() != soup.num_vertices() {
-        return Err(format!("{name}: the refused weld v{a} v{b} deleted a vertex"));
+        return Err(format!(
+            "{name}: the refused weld v{a} v{b} deleted a vertex"
+        ));
     }
     let mut want: Vec<Vec<u32>> = soup_faces(soup).iter().map(|f| canonical_face(f)).collect();
     want.sort();
     if live_faces(&m) != want {
-        return Err(format!("{name}: the refused weld v{a} v{b} changed the faces"));
+        return Err(format!(
+            "{name}: the refused weld v{a} v{b} changed the faces"
+        ));
     }
     compare(&m, soup).map_err(|e| format!("{name} after the refused weld v{a} v{b}: {e}"))
 }

@@ -61,7 +61,11 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     }
 
     /// See the module docs.
-    pub(in crate::families::half_edge::edit) fn weld_checked(&mut self, a: u32, b: u32) -> Result<()> {
+    pub(in crate::families::half_edge::edit) fn weld_checked(
+        &mut self,
+        a: u32,
+        b: u32,
+    ) -> Result<()> {
         let op = EditOp::WeldVertices;
         self.live_vertex(a, op)?;
         self.live_vertex(b, op)?;
