@@ -146,15 +146,8 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
                 }
             }
         }
-        // Every half-edge leaving `b` leaves `a` (set_vertex leaves the rotation intact).
-        let mut g = ob;
-        loop {
-            self.links.set_vertex(g, a);
-            g = self.cw(g);
-            if g == ob {
-                break;
-            }
-        }
+        // Every half-edge leaving `b` leaves `a`.
+        self.move_rotation(ob, a);
         let [a_in, a_out, b_in, b_out] = bnd;
         let out_a = match (at_p, at_q) {
             // `a` was unused: it takes `b`'s fan as it is.
