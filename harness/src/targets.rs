@@ -644,7 +644,7 @@ fn class_of(met: &str) -> &'static str {
 /// Why che-l1's construction misses its target, shown under the row when it does: the build's
 /// passes as measured pass by pass (see the CHE build module's docs, where the alternatives
 /// tried are measured too).
-pub const CHE_L1_CONSTRUCTION: &str = "Measured pass by pass (torus-1M, warm, median of 9 rounds in turns with OpenMesh, ns/face; `cargo run --release --example build_sweep -- 1000000 torus 9 all passes`): copy G[] and check it finite 2.3, copy V[] 1.5, pair O[] 12.6, VH[] (Algorithm 3) 2.4, one-fan walk 4.1; whole build 22.1 against OpenMesh's 170, so the target leaves 17. The pairing waits on its bucket walk (one dependent load per step), and pairing by a counting sort, by vertex stars or by fixed slots measured no faster.";
+pub const CHE_L1_CONSTRUCTION: &str = "Measured separately on 2026-12-01, not in this run, pass by pass (torus-1M, warm, median of 9 rounds in turns with OpenMesh, ns/face; `cargo run --release --example build_sweep -- 1000000 torus 9 all passes`): copy G[] and check it finite 2.3, copy V[] 1.5, pair O[] 12.6, VH[] (Algorithm 3) 2.4, one-fan walk 4.1; whole build 22.1 against OpenMesh's 170, so the target leaves 17. The pairing waits on its bucket walk (one dependent load per step), and pairing by a counting sort, by vertex stars or by fixed slots measured no faster.";
 
 /// The measured reason shown under a target that is not met and has one ([`CHE_L1_CONSTRUCTION`]).
 fn reason(t: &Target, met: &str) -> Option<&'static str> {
