@@ -5,7 +5,11 @@
 //! - *Bandwidth*: the bytes the sweep reads, at the probe's sequential read bandwidth for the
 //!   working set of the containers it touches. A sweep in storage order reads each cache line
 //!   of a container once, so a container's bytes count at most once (its size), except for
-//!   scans, which read it whole for every query.
+//!   scans, which read it whole for every query. The cache moves whole lines, not the bytes a
+//!   query reads: where a model says its reads take part of a record (OpenMesh's halfedge:
+//!   to-vertex and next, 8 of its 16 bytes), the sweep fetches the whole records it visits
+//!   ([`Read::fetched`](topolab_structures::Read::fetched)). Counting only the bytes read put
+//!   such a structure's bound at half of what a sweep of every record can reach.
 //! - *Latency*: the dependent loads on the queries' chains, one after the other, each at the
 //!   probe's load latency for the working set one query reads (an O(k) query's few lines sit
 //!   in L1; a query that reads the whole mesh, such as the boundary curves, waits on memory).
@@ -182,19 +186,21 @@ pub fn limit(
     };
     for r in access.reads {
         let size = counts.elements(r.container.per) * r.container.bytes;
+        let [per_query, per_answer] = r.fetched();
         add(
             r.container,
-            r.per_query * q + r.per_answer * answers,
+            per_query * q + per_answer * answers,
             r.scans * q * size,
         );
     }
     if keys > 0.0 {
         for r in r10?.reads {
             let size = counts.elements(r.container.per) * r.container.bytes;
+            let [per_query, per_answer] = r.fetched();
             // R10 answers two vertices per query: its reads are per query.
             add(
                 r.container,
-                (r.per_query + 2.0 * r.per_answer) * keys,
+                (per_query + 2.0 * per_answer) * keys,
                 r.scans * keys * size,
             );
         }
@@ -404,5 +410,28 @@ mod tests {
             limit(&r12, Some(&r10), Operator::R12, &TORUS, 0, &probe()),
             None
         );
+    }
+
+    #[test]
+    fn reads_that_take_part_of_a_record_fetch_the_whole_record() {
+        // OpenMesh's R00: to-vertex and next, 8 bytes of a 16-byte halfedge, per answer.
+        const HALFEDGES: Container = Container::new("halfedges", Unit::HalfEdge, 16.0);
+        let bytes_only = Access::new(const { &[Read::new(HALFEDGES, 0.0, 8.0)] }, 0.0, 1.0);
+        let records = Access::new(
+            const { &[Read::new(HALFEDGES, 0.0, 8.0).in_records(0.0, 1.0)] },
+            0.0,
+            1.0,
+        );
+        let l = |a: &Access| limit(a, None, Operator::R00, &TORUS, TORUS.vertices, &probe());
+        let (b, r) = (l(&bytes_only).unwrap(), l(&records).unwrap());
+        // 6 answers a vertex: 48 bytes read, but 96 bytes of records brought in; the torus's 6
+        // million halfedges are read whole (96 MB), not past their size.
+        assert!((b.bytes_per_item - 48.0).abs() < 1e-9, "{b:?}");
+        assert!((r.bytes_per_item - 96.0).abs() < 1e-9, "{r:?}");
+        assert!((r.bandwidth_ns_per_item - 2.0 * b.bandwidth_ns_per_item).abs() < 1e-9);
+        // A whole-record read (an array of one field) fetches what it reads.
+        let next = Read::new(NEXT, 0.0, 4.0);
+        assert_eq!(next.fetched(), [0.0, 4.0]);
+        assert_eq!(next.in_records(0.0, 1.0).fetched(), [0.0, 4.0]);
     }
 }

@@ -28,7 +28,7 @@ use crate::timing::median;
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_structures::algorithms::changing::Changing;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup, VertexId};
+use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
 
 /// Timed rounds of every target, after one warm-up round.
 pub const ROUNDS: usize = 7;
@@ -397,13 +397,9 @@ impl<M: MeshTopology> Built<M> {
     /// Builds `M` from `soup`.
     pub fn new(soup: &PolygonSoup) -> Result<Self, String> {
         let m = M::from_soup(soup).map_err(|e| format!("cannot build {}: {e}", M::NAME))?;
-        // Every vertex, the sweep's queries of R00 as `Queries::all` has them; without the
-        // edges and (edge, face) pairs, which its hash map of edges makes costly to build on
-        // a large mesh and no cell of a target reads.
-        let q = Queries {
-            vertices: (0..m.num_vertices()).map(VertexId::new).collect(),
-            ..Queries::default()
-        };
+        // Every vertex, the sweep's queries of R00 as `Queries::all` has them; no cell of a
+        // target reads the others.
+        let q = Queries::every_vertex(&m);
         Ok(Self {
             m,
             q,
@@ -632,6 +628,30 @@ fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f64> {
     }
 }
 
+/// Why `t.structure` misses its goal against `b`, measured: each side's bytes fetched per
+/// element by its access model, its time as a multiple of its limit in the size sweep, and the
+/// ratio of the two limits, which is as low as the ratio goes when both sides run at their
+/// limits. `None` when a side has no limit.
+fn versus_text(measurements: &[Measurement], mesh: &str, t: &Target, b: &str) -> Option<String> {
+    let side = |s| {
+        let m = sequential(measurements, mesh, s, t.cell)?;
+        Some((s, m.limit.as_ref()?, times_limit(m)?))
+    };
+    let (a, b) = (side(t.structure)?, side(b)?);
+    let text = |(s, l, x): (&str, &Limit, f64)| {
+        format!(
+            "{s} {x:.2}× its limit ({:.0} bytes per element at the {} bandwidth, {:.1} dependent loads)",
+            l.bytes_per_item, l.bandwidth_level, l.loads_per_item
+        )
+    };
+    Some(format!(
+        "size sweep: {}; {}; at their limits the ratio would be {:.2}×",
+        text(a),
+        text(b),
+        a.1.ns_per_item / b.1.ns_per_item
+    ))
+}
+
 /// The table cell's class for a "met" column of "yes", "no" or "–".
 fn class_of(met: &str) -> &'static str {
     match met {
@@ -710,6 +730,9 @@ pub fn render(h: &mut String, r: &Results) {
         let why = match (t.against, limit, reason(t, met)) {
             (Against::Limit, Some(l), _) if met == "no" => esc(&limit_text(l)),
             (_, _, Some(measured)) => esc(measured),
+            (Against::Structure(b), _, _) if met == "no" => {
+                esc(&versus_text(&r.measurements, mesh, t, b).unwrap_or_default())
+            }
             _ if spread.is_none() && skipped() => {
                 "not timed in turns: the size sweep skipped this cell as too long".into()
             }
@@ -938,6 +961,61 @@ mod tests {
         for pass in ["G[]", "V[]", "O[]", "VH[]", "one-fan walk", "OpenMesh"] {
             assert!(CHE_L1_CONSTRUCTION.contains(pass), "{pass}");
         }
+    }
+
+    #[test]
+    fn a_missed_target_between_two_structures_says_how_far_each_is_from_its_limit() {
+        let sweep = |s: &str, ns: f64, bytes: f64, limit_ns: f64| {
+            let mut l = limit_of(bytes, 0.0, 0.0);
+            (l.ns_per_item, l.bandwidth_level) = (limit_ns, "memory".into());
+            Measurement {
+                structure: s.into(),
+                operator: Subject::Query(Operator::R00),
+                kernel: Kernel::Sweep,
+                mesh: "torus-1M".into(),
+                family: "torus".into(),
+                triangles: 1_000_000,
+                status: Status::Measured,
+                ns_per_item: Some(ns),
+                min_ns_per_item: None,
+                max_ns_per_item: None,
+                items: 500_000,
+                reps: 1,
+                checksum: None,
+                bytes: None,
+                peak_bytes: None,
+                declared_bytes: None,
+                estimate_ns_per_item: None,
+                native: false,
+                note: None,
+                cold_ns_per_item: None,
+                page_faults: None,
+                cold_page_faults: None,
+                limit: Some(l),
+            }
+        };
+        let t = Target {
+            cell: Cell::R00Sweep,
+            structure: "index-half-edge",
+            against: Against::Structure("openmesh"),
+            goal: 0.5,
+        };
+        let ms = [
+            sweep("index-half-edge", 9.2, 52.0, 8.0),
+            sweep("openmesh", 16.0, 100.0, 15.0),
+        ];
+        let text = versus_text(&ms, "torus-1M", &t, "openmesh").unwrap();
+        assert!(
+            text.contains("index-half-edge 1.15× its limit (52 bytes"),
+            "{text}"
+        );
+        assert!(
+            text.contains("openmesh 1.07× its limit (100 bytes"),
+            "{text}"
+        );
+        assert!(text.contains("the ratio would be 0.53×"), "{text}");
+        // Without a limit on one side there is nothing measured to say.
+        assert_eq!(versus_text(&ms[..1], "torus-1M", &t, "openmesh"), None);
     }
 
     fn limit_of(bytes: f64, latency: f64, checksum: f64) -> Limit {

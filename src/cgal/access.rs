@@ -21,7 +21,11 @@
 //!   (the lab's pointer half-edge enters its records from an id table instead; neither load
 //!   is on a query's chain, see [`topolab_structures::Access`]).
 //!
-//! Edge keys the harness's checksum mixes in are the harness's reads, not counted here.
+//! Edge keys the harness's checksum mixes in are the harness's reads, not counted here. A
+//! `Surface_mesh` loop reads a field or two of each 16-byte `h:connectivity` record it visits,
+//! and the cache brings the whole record: each such read says the records it lands in
+//! ([`Read::in_records`](topolab_structures::Read::in_records)). The `Polyhedron_3` models
+//! count the bytes read only.
 //!
 //! [`MeshTopology::access`]: topolab_structures::MeshTopology::access
 //! [`MeshTopology::native`]: topolab_structures::MeshTopology::native
@@ -45,66 +49,117 @@ pub(super) fn surface_mesh(op: Operator) -> Option<Access> {
     Some(match op {
         // halfedge(v), then per step next(h) and the opposite's target (the neighbour).
         Operator::R00 => Access::new(
-            const { &[Read::new(VCONN, 4.0, 0.0), Read::new(HCONN, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::new(VCONN, 4.0, 0.0),
+                    Read::new(HCONN, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         Operator::R01 => Access::new(
-            const { &[Read::new(VCONN, 4.0, 0.0), Read::new(HCONN, 0.0, 4.0)] },
+            const {
+                &[
+                    Read::new(VCONN, 4.0, 0.0),
+                    Read::new(HCONN, 0.0, 4.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         // Per step next(h) and face(h).
         Operator::R02 => Access::new(
-            const { &[Read::new(VCONN, 4.0, 0.0), Read::new(HCONN, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::new(VCONN, 4.0, 0.0),
+                    Read::new(HCONN, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         // The targets of halfedges 2e and 2e + 1.
-        Operator::R10 => Access::new(const { &[Read::new(HCONN, 8.0, 0.0)] }, 0.0, 0.0),
+        Operator::R10 => Access::new(
+            const { &[Read::new(HCONN, 8.0, 0.0).in_records(2.0, 0.0)] },
+            0.0,
+            0.0,
+        ),
         // Per side: its face (is it the border?), then next three times around the triangle.
         Operator::R11 => Access::new(const { &[Read::new(HCONN, 32.0, 0.0)] }, 3.0, 0.0),
-        Operator::R12 | Operator::BoundaryEdge => {
-            Access::new(const { &[Read::new(HCONN, 8.0, 0.0)] }, 0.0, 0.0)
-        }
+        Operator::R12 | Operator::BoundaryEdge => Access::new(
+            const { &[Read::new(HCONN, 8.0, 0.0).in_records(2.0, 0.0)] },
+            0.0,
+            0.0,
+        ),
         // halfedge(f), then per step the target (or the opposite's face) and next.
         Operator::R20 | Operator::R22 => Access::new(
-            const { &[Read::new(FCONN, 4.0, 0.0), Read::new(HCONN, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::new(FCONN, 4.0, 0.0),
+                    Read::new(HCONN, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         Operator::R21 => Access::new(
-            const { &[Read::new(FCONN, 4.0, 0.0), Read::new(HCONN, 0.0, 4.0)] },
+            const {
+                &[
+                    Read::new(FCONN, 4.0, 0.0),
+                    Read::new(HCONN, 0.0, 4.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         // is_border(v, false): the face of halfedge(v).
         Operator::BoundaryVertex => Access::new(
-            const { &[Read::new(VCONN, 4.0, 0.0), Read::new(HCONN, 4.0, 0.0)] },
+            const {
+                &[
+                    Read::new(VCONN, 4.0, 0.0),
+                    Read::new(HCONN, 4.0, 0.0).in_records(1.0, 0.0),
+                ]
+            },
             1.0,
             0.0,
         ),
         // A scan of every halfedge's face, then each loop walked twice by next (once to mark
         // it and count its length, once for the checksum).
         Operator::BoundaryCurves => Access::new(
-            const { &[Read::scan(HCONN, 1.0), Read::new(HCONN, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::scan(HCONN, 1.0),
+                    Read::new(HCONN, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             2.0,
         ),
         // Per face (a third of a query each): halfedge(f), then per halfedge next to step and
         // to answer (prev too for the predecessor).
         Operator::EdgeSuccessor => Access::new(
-            const { &[Read::new(FCONN, 4.0 / 3.0, 0.0), Read::new(HCONN, 4.0, 0.0)] },
+            const {
+                &[
+                    Read::new(FCONN, 4.0 / 3.0, 0.0),
+                    Read::new(HCONN, 4.0, 0.0).in_records(1.0, 0.0),
+                ]
+            },
             1.0,
             0.0,
         ),
         Operator::EdgePredecessor => Access::new(
-            const { &[Read::new(FCONN, 4.0 / 3.0, 0.0), Read::new(HCONN, 8.0, 0.0)] },
+            const {
+                &[
+                    Read::new(FCONN, 4.0 / 3.0, 0.0),
+                    Read::new(HCONN, 8.0, 0.0).in_records(1.0, 0.0),
+                ]
+            },
             1.0,
             0.0,
         ),

@@ -4,7 +4,12 @@
 //! one halfedge, and per halfedge (two per edge, side by side) its face, to-vertex, next and
 //! prev handles, 16 bytes; the opposite of halfedge `h` is `h ^ 1`, read from nothing. A step of
 //! a vertex circulator is one dependent load (`next` of the opposite), as in the index
-//! half-edge; positions (24 bytes per vertex) are not read by the relations.
+//! half-edge; positions (24 bytes per vertex) are not read by the relations. A loop reads a
+//! field or two of each halfedge it visits, and the cache brings the whole 16-byte record:
+//! each read says the records it lands in ([`Read::in_records`]), so the bandwidth bound of a
+//! sweep counts the records' bytes (the R00 sweep: 16, not 8, per answer).
+//!
+//! [`Read::in_records`]: topolab_structures::Read::in_records
 //!
 //! [`MeshTopology::access`]: topolab_structures::MeshTopology::access
 //! [`MeshTopology::native`]: topolab_structures::MeshTopology::native
@@ -26,7 +31,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTICES, 4.0, 0.0),
-                    Read::new(HALFEDGES, 0.0, 8.0),
+                    Read::new(HALFEDGES, 0.0, 8.0).in_records(0.0, 1.0),
                 ]
             },
             0.0,
@@ -37,7 +42,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTICES, 4.0, 0.0),
-                    Read::new(HALFEDGES, 0.0, 4.0),
+                    Read::new(HALFEDGES, 0.0, 4.0).in_records(0.0, 1.0),
                 ]
             },
             0.0,
@@ -45,21 +50,37 @@ pub(super) fn model(op: Operator) -> Option<Access> {
         )
         .noting(CIRCULATOR),
         // The to-vertices of both halfedges.
-        Operator::R10 => Access::new(const { &[Read::new(HALFEDGES, 8.0, 0.0)] }, 0.0, 0.0),
+        Operator::R10 => Access::new(
+            const { &[Read::new(HALFEDGES, 8.0, 0.0).in_records(2.0, 0.0)] },
+            0.0,
+            0.0,
+        ),
         // Per side: its face (is it the boundary?), then `next` around the triangle.
         Operator::R11 => Access::new(const { &[Read::new(HALFEDGES, 32.0, 0.0)] }, 2.0, 0.0),
-        Operator::R12 | Operator::BoundaryEdge => {
-            Access::new(const { &[Read::new(HALFEDGES, 8.0, 0.0)] }, 0.0, 0.0)
-        }
+        Operator::R12 | Operator::BoundaryEdge => Access::new(
+            const { &[Read::new(HALFEDGES, 8.0, 0.0).in_records(2.0, 0.0)] },
+            0.0,
+            0.0,
+        ),
         // halfedge_handle(f), then per step the to-vertex (or the opposite's face) and `next`.
         Operator::R20 | Operator::R22 => Access::new(
-            const { &[Read::new(FACES, 4.0, 0.0), Read::new(HALFEDGES, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::new(FACES, 4.0, 0.0),
+                    Read::new(HALFEDGES, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
         .noting(CIRCULATOR),
         Operator::R21 => Access::new(
-            const { &[Read::new(FACES, 4.0, 0.0), Read::new(HALFEDGES, 0.0, 4.0)] },
+            const {
+                &[
+                    Read::new(FACES, 4.0, 0.0),
+                    Read::new(HALFEDGES, 0.0, 4.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             1.0,
         )
@@ -69,7 +90,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTICES, 4.0, 0.0),
-                    Read::new(HALFEDGES, 4.0, 0.0),
+                    Read::new(HALFEDGES, 4.0, 0.0).in_records(1.0, 0.0),
                 ]
             },
             1.0,
@@ -78,7 +99,12 @@ pub(super) fn model(op: Operator) -> Option<Access> {
         // A scan of every halfedge's face, then each loop walked twice by `next` (once for
         // its length, which the checksum mixes in, once for its edges).
         Operator::BoundaryCurves => Access::new(
-            const { &[Read::scan(HALFEDGES, 1.0), Read::new(HALFEDGES, 0.0, 8.0)] },
+            const {
+                &[
+                    Read::scan(HALFEDGES, 1.0),
+                    Read::new(HALFEDGES, 0.0, 8.0).in_records(0.0, 1.0),
+                ]
+            },
             0.0,
             2.0,
         ),
@@ -88,7 +114,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(FACES, 4.0 / 3.0, 0.0),
-                    Read::new(HALFEDGES, 8.0, 0.0),
+                    Read::new(HALFEDGES, 8.0, 0.0).in_records(1.0, 0.0),
                 ]
             },
             1.0,

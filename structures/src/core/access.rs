@@ -62,6 +62,12 @@ pub struct Read {
     /// Times the query reads the whole container (a scan; 0.5 for a scan that stops halfway on
     /// average).
     pub scans: f64,
+    /// The records its bytes land in, once per query and per answer, when each read takes only
+    /// part of a record (a field or two of a 16-byte halfedge). `None`: the bytes read are whole
+    /// records, as in an array of one field. The cache brings whole lines, so a sweep fetches
+    /// every byte of the records it visits: its bandwidth bound counts these records' bytes,
+    /// not only the bytes read ([`Read::fetched`]).
+    pub records: Option<[f64; 2]>,
 }
 
 impl Read {
@@ -72,7 +78,25 @@ impl Read {
             per_query,
             per_answer,
             scans: 0.0,
+            records: None,
         }
+    }
+
+    /// The same reads, landing in `per_query` records once per query and `per_answer` per
+    /// answer, each read in part (see [`Read::records`]).
+    pub const fn in_records(self, per_query: f64, per_answer: f64) -> Self {
+        Self {
+            records: Some([per_query, per_answer]),
+            ..self
+        }
+    }
+
+    /// The bytes a cache brings in for these reads, once per query and per answer: the bytes
+    /// read, or the whole records they land in when that is more.
+    pub fn fetched(&self) -> [f64; 2] {
+        let [q, a] = self.records.unwrap_or([0.0, 0.0]);
+        let b = self.container.bytes;
+        [self.per_query.max(q * b), self.per_answer.max(a * b)]
     }
 
     /// `scans` times the whole `container` per query.
@@ -82,6 +106,7 @@ impl Read {
             per_query: 0.0,
             per_answer: 0.0,
             scans,
+            records: None,
         }
     }
 }

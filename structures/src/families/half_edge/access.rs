@@ -128,7 +128,11 @@ pub(crate) fn index(op: Operator) -> Option<Access> {
 
 /// The pointer storage's records and id tables ([`PointerHalfEdge`](crate::PointerHalfEdge)):
 /// each record is its own glibc block, 8 bytes of header and rounded up to 16, so a 40-byte
-/// record takes 48 bytes of memory and a 16-byte one 32.
+/// record takes 48 bytes of memory and a 16-byte one 32. A fan walk reads a field or two of
+/// each record it visits (a step: `pair` of `h`, `vert` and `next` of the pair, two records),
+/// and the cache brings the whole record, so the vertex loops say the records their reads land
+/// in ([`Read::in_records`](crate::core::access::Read::in_records)); the other operators count
+/// the bytes read only.
 mod pointer {
     use super::*;
     pub const VERTS: Container = Container::new("verts", Unit::Vertex, 8.0);
@@ -151,8 +155,8 @@ pub(crate) fn pointer(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTS, 8.0, 0.0),
-                    Read::new(HE_VERT, 8.0, 4.0),
-                    Read::new(HE_EDGE, 0.0, 24.0),
+                    Read::new(HE_VERT, 8.0, 4.0).in_records(1.0, 1.0),
+                    Read::new(HE_EDGE, 0.0, 24.0).in_records(0.0, 2.0),
                 ]
             },
             1.0,
@@ -163,8 +167,8 @@ pub(crate) fn pointer(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTS, 8.0, 0.0),
-                    Read::new(HE_VERT, 8.0, 0.0),
-                    Read::new(HE_EDGE, 0.0, 20.0),
+                    Read::new(HE_VERT, 8.0, 0.0).in_records(1.0, 0.0),
+                    Read::new(HE_EDGE, 0.0, 20.0).in_records(0.0, 2.0),
                 ]
             },
             1.0,
@@ -175,9 +179,9 @@ pub(crate) fn pointer(op: Operator) -> Option<Access> {
             const {
                 &[
                     Read::new(VERTS, 8.0, 0.0),
-                    Read::new(HE_VERT, 8.0, 0.0),
-                    Read::new(HE_EDGE, 0.0, 24.0),
-                    Read::new(HE_FACE, 0.0, 4.0),
+                    Read::new(HE_VERT, 8.0, 0.0).in_records(1.0, 0.0),
+                    Read::new(HE_EDGE, 0.0, 24.0).in_records(0.0, 2.0),
+                    Read::new(HE_FACE, 0.0, 4.0).in_records(0.0, 1.0),
                 ]
             },
             1.0,

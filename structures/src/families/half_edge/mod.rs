@@ -66,6 +66,23 @@
 //! It is not kept. Both storages are edited in place (`MeshEdit`), so a range checked when
 //! the mesh is built would not stay true. Keeping it true would mean checking every link
 //! that an edit writes.
+//!
+//! ## Memory order
+//!
+//! Edges keep the soup's first-appearance order ([`crate::Connectivity`]); the build does not
+//! renumber them around vertices. A vertex's fan then lies in two runs of edges, those its
+//! faces' row created and those the row before created, and a sweep over the vertices in
+//! order reads both runs as streams. Measured with callgrind's cache simulation (64-byte
+//! lines), R00 over every vertex of a 100k-triangle torus: the index storage misses L1
+//! 0.814 times per vertex, which is its 52 bytes per vertex (`vertex_half_edge`, then
+//! `vertex` and `next` of six half-edges) divided by 64: every line is fetched once. On the
+//! 1M-triangle torus (a last-level cache of 32 MB simulated) it misses L1 1.56 times per
+//! vertex, as the two runs lie a row of edges apart, more than L1 holds, but the last level
+//! 0.81 times: every line still comes from memory once, and the Targets table finds the
+//! sweep at its bandwidth limit. A numbering that put each fan in fewer lines could not fetch
+//! fewer lines from memory; it would cost construction time. OpenMesh's sweep misses 1.59 times per vertex (102 bytes: its
+//! 16-byte halfedge records, fetched whole for the 8 bytes read of each), so on a mesh
+//! larger than the caches the two stream 52 against about 100 bytes per vertex.
 
 mod access;
 mod build;
