@@ -5,7 +5,7 @@
 //! measured the same way.
 //!
 //! On the run's largest torus (torus-1M in a full report: the Targets table's mesh) the
-//! index half-edge and OpenMesh's Decimater take turns, [`TURNS`] rounds from fresh builds, so
+//! index half-edge and OpenMesh's Decimater take turns, three rounds from fresh builds, so
 //! the Targets row's ratio is the median of per-round ratios with its spread; above
 //! [`MAX_FACES`] only that pair runs there.
 //!
