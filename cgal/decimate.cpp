@@ -3,8 +3,14 @@
 // vertex placed at the quadric's minimiser) on a Surface_mesh, for the report's decimation
 // section. CGAL 5.5's stop predicates count edges: the target is a face count turned into
 // edges (a closed triangle mesh has 3F/2 edges), and the caller gets the faces it kept.
-// Timed here around edge_collapse() alone (the policies' quadrics are computed inside it);
-// building and compacting the mesh are outside the clock, as for the other decimaters.
+// Timed here in the thread's CPU time around edge_collapse() alone (the policies' quadrics
+// are computed inside it); building and compacting the mesh are outside the clock, as for the
+// other decimaters. Nothing here slows it: Eigen solves the 4x4 quadrics (invert_matrix_4),
+// the points are the Surface_mesh's own property map and its indices are its own. Its cost
+// is the package's design: every cost or placement computed builds an Edge_profile (vectors of
+// the link's vertices and triangles, allocated each time), and every collapse gathers the
+// edges to update in a std::set. Callgrind, 16k torus to 10%: 516 M instructions, 12 % of
+// them in free and 7 % in malloc, 8 % inverting the 4x4 matrices.
 //
 // The same C API discipline as shim.cpp: every exception is caught (none reaches Rust), a
 // status from shim.h is returned, results go to out-parameters sized by the caller.
@@ -19,7 +25,7 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
-#include <chrono>
+#include <ctime>
 #include <new>
 
 #include "shim.h"
@@ -30,6 +36,14 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace SMS = CGAL::Surface_mesh_simplification;
+
+// The calling thread's CPU time in seconds, as the report times the lab's decimater (its
+// Stopwatch): time slices other processes take on the loaded machine do not count.
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
 
 template <class F> int guard(F &&body) noexcept {
   try {
@@ -62,12 +76,11 @@ extern "C" int topolab_cgal_decimate(const double *xyz, uint32_t vertices,
     const size_t edges = size_t(target) * 3 / 2;
     SMS::Count_stop_predicate<SurfaceMesh> stop(edges);
     SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel> policies(m);
-    const auto started = std::chrono::steady_clock::now();
+    const double started = thread_seconds();
     SMS::edge_collapse(m, stop,
                        CGAL::parameters::get_cost(policies.get_cost())
                            .get_placement(policies.get_placement()));
-    const auto stopped = std::chrono::steady_clock::now();
-    *seconds = std::chrono::duration<double>(stopped - started).count();
+    *seconds = thread_seconds() - started;
     m.collect_garbage();
     uint32_t nv = 0, nf = 0;
     for (auto v : m.vertices()) {

@@ -754,18 +754,23 @@ pub fn render(h: &mut String, r: &Results) {
             t.goal
         );
     }
-    // Decimation is timed in its own section, the decimaters taking turns on each mesh there:
-    // its row shows that section's median ratio.
-    for (what, value, goal) in crate::decimate::targets(&r.decimate) {
-        let (value, met) = match value {
-            Some(v) => (format!("{v:.2}×"), if v <= goal { "yes" } else { "no" }),
+    // Decimation is timed in its own section, the index half-edge and OpenMesh taking turns on
+    // the run's largest torus there: its row shows the median of their per-round ratios.
+    for row in crate::decimate::targets(&r.decimate) {
+        let (value, met) = match row.value {
+            Some(v) => (format!("{v:.2}×"), if v <= row.goal { "yes" } else { "no" }),
             None => ("not measured".into(), "–"),
+        };
+        let (range, rounds) = match row.spread {
+            Some(s) => (format!("{:.2}–{:.2}", s.min, s.max), s.rounds.to_string()),
+            None => ("–".into(), "–".into()),
         };
         let class = class_of(met);
         let _ = write!(
             h,
-            "<tr><td class=l>{}<br><span class=small>timed in turns in the Decimation section</span></td><td>{value}</td><td>–</td><td>–</td><td>–</td><td>≤ {goal}×</td><td class={class}>{met}</td></tr>",
-            esc(&what)
+            "<tr><td class=l>{}<br><span class=small>timed in turns in the Decimation section</span></td><td>{value}</td><td>{range}</td><td>{rounds}</td><td>–</td><td>≤ {}×</td><td class={class}>{met}</td></tr>",
+            esc(&row.what),
+            row.goal
         );
     }
     let seconds: f64 = turns.iter().map(|t| t.seconds).sum();
