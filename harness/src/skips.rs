@@ -23,7 +23,8 @@ pub struct Skip {
 pub fn group(skips: &[Skip]) -> Vec<String> {
     // (what, reason) → [(structure, [mesh with detail])], in first-appearance order.
     type Meshes = Vec<String>;
-    let mut groups: Vec<((&str, &str), Vec<(&str, Meshes)>)> = Vec::new();
+    type ByStructure<'a> = Vec<(&'a str, Meshes)>;
+    let mut groups: Vec<((&str, &str), ByStructure)> = Vec::new();
     for s in skips {
         let key = (s.what.as_str(), s.reason.as_str());
         let at = match groups.iter().position(|g| g.0 == key) {

@@ -175,7 +175,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cell_budget: Duration::from_millis(if quick { 30 } else { 100 }),
         cell_max: Duration::from_millis(if quick { 150 } else { 300 }),
         min_reps: 3,
-        max_reps: 25,
+        max_reps: super::report_timing::MAX_REPS,
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
@@ -233,6 +233,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         phases: Vec::new(),
     };
     crate::registry::note_absent(&mut results.notes);
+    results
+        .notes
+        .extend(super::report_timing::budget_notes(quick));
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
@@ -280,7 +283,8 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let plan = if selection.light(fam) { &light } else { &plan };
+        let light_here = selection.light(fam) || report_scale::light(name);
+        let plan = if light_here { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
