@@ -4,8 +4,10 @@
 //! The wall time of a section stretches with the load of the machine; its CPU time does not
 //! (much). The report runs its sections one after the other, on one thread except where a
 //! structure's construction or a subprocess (libigl, Qhull) uses more, so the CPU seconds of a
-//! section are close to its wall seconds on an idle machine. A section whose CPU time exceeds
-//! its wall time ran threads.
+//! section with a fixed amount of work are close to its wall seconds on an idle machine. A
+//! section whose CPU time exceeds its wall time ran threads. The meshes' measurement is the
+//! exception: its cells repeat until a wall-time budget, so under load they repeat less, and
+//! its CPU time falls short of its time alone.
 
 use crate::html::esc;
 use std::fmt::Write;
@@ -114,7 +116,7 @@ pub fn render(h: &mut String, times: &[PhaseTime]) {
     let cpu: f64 = rows.iter().map(|r| r.3).sum();
     let _ = write!(
         h,
-        "<h3>Time by section</h3><p class=small>Wall time stretches with the machine's load; CPU time (the report's process, all its threads, and the subprocesses it waited for) is about what a section takes alone, except where it runs threads (CPU above wall). This run: {wall:.0} s wall, {cpu:.0} s CPU.</p><table><tr><th class=l>section</th><th>wall s</th><th>CPU s</th><th>share of wall</th></tr>"
+        "<h3>Time by section</h3><p class=small>Wall time stretches with the machine's load; CPU time (the report's process, all its threads, and the subprocesses it waited for) is about what a section with a fixed amount of work takes alone, unless it runs threads (CPU above wall). The measurement of the meshes is not such a section: each cell repeats until a wall-time budget, so on a loaded machine it repeats less and its CPU time is below its time alone. This run: {wall:.0} s wall, {cpu:.0} s CPU.</p><table><tr><th class=l>section</th><th>wall s</th><th>CPU s</th><th>share of wall</th></tr>"
     );
     for (phase, n, w, c) in &rows {
         let label = if *n > 1 {
