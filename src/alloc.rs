@@ -228,6 +228,30 @@ pub fn thread_cpu_ns() -> Option<u64> {
     }
 }
 
+/// Whose CPU time [`cpu_seconds`] reads.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Who {
+    /// The process, all its threads (`RUSAGE_SELF`).
+    Process,
+    /// The subprocesses it has waited for (`RUSAGE_CHILDREN`).
+    Children,
+}
+
+/// User plus system CPU time of `who` so far (`getrusage`), seconds; `None` where unavailable.
+pub fn cpu_seconds(who: Who) -> Option<f64> {
+    let id = match who {
+        Who::Process => libc::RUSAGE_SELF,
+        Who::Children => libc::RUSAGE_CHILDREN,
+    };
+    let mut usage = std::mem::MaybeUninit::<libc::rusage>::zeroed();
+    // SAFETY: `usage` is a valid, writable `rusage`; `getrusage` fills it or fails.
+    let ok = unsafe { libc::getrusage(id, usage.as_mut_ptr()) } == 0;
+    // SAFETY: zero-initialised, and filled by `getrusage` when it succeeded.
+    let u = ok.then(|| unsafe { usage.assume_init() })?;
+    let s = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+    Some(s(u.ru_utime) + s(u.ru_stime))
+}
+
 /// The lab's allocator as the harness's memory meter, for the report's measurements and the
 /// hull benchmark: counting starts and stops with [`CountingAllocator::start`] and
 /// [`CountingAllocator::stop`], on the calling thread only.

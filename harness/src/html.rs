@@ -120,6 +120,7 @@ fn machine_section(h: &mut String, r: &Results) {
         p.levels.iter().map(|l| format!("{} ({}): {:.1} ns per dependent load, {:.1} GB/s", l.name, bytes(l.bytes as f64), l.load_ns, l.read_bytes_per_s / 1e9)).collect::<Vec<_>>().join("; "),
         3, r.settings.cell_budget_s, r.settings.samples
     );
+    crate::phases::render(h, &r.phases);
 }
 
 /// The measured cells of one (structure, operator, kernel, family), by size.

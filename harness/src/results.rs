@@ -51,6 +51,8 @@ pub struct Results {
     pub reads: Vec<crate::reads::count::ReadsRow>,
     /// Anything the reader should know (skipped baselines, missing data).
     pub notes: Vec<String>,
+    /// How long each section of the run took, wall and CPU ([`crate::phases`]).
+    pub phases: Vec<crate::phases::PhaseTime>,
 }
 
 /// Settings of a run.

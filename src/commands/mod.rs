@@ -24,4 +24,5 @@ pub mod report_repair;
 pub mod report_scale;
 pub mod report_sections;
 pub mod report_targets;
+pub mod report_timing;
 pub mod subdivide;

@@ -14,6 +14,7 @@ use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
+use topolab_harness::phases::Phase;
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
     FORMAT_VERSION,
@@ -174,7 +175,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cell_budget: Duration::from_millis(if quick { 30 } else { 100 }),
         cell_max: Duration::from_millis(if quick { 150 } else { 300 }),
         min_reps: 3,
-        max_reps: 25,
+        max_reps: super::report_timing::MAX_REPS,
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
@@ -194,7 +195,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::limits::admit_report(&sizes, &generated, &names, probe_mb)?;
     crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
+    let mut clock = super::report_timing::Clock::start();
     let probe = probe::measure(probe_mb, probe_mb);
+    clock.lap(Phase::Probe, None);
     let mut notes = Vec::new();
     let selection = Selection::new(
         args.sections.as_deref(),
@@ -227,8 +230,12 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         teaching: Vec::new(),
         reads: Vec::new(),
         notes,
+        phases: Vec::new(),
     };
     crate::registry::note_absent(&mut results.notes);
+    results
+        .notes
+        .extend(super::report_timing::budget_notes(quick));
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
@@ -261,6 +268,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((name, report_scale::FAMILY.into(), soup));
         }
     }
+    clock.lap(Phase::Meshes, None);
     let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
     let bar = ProgressBar::new((measured * names.len()) as u64);
     bar.set_style(
@@ -275,7 +283,8 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let plan = if selection.light(fam) { &light } else { &plan };
+        let light_here = selection.light(fam) || report_scale::light(name);
+        let plan = if light_here { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
             name,
@@ -323,31 +332,39 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             counts: MeshCounts::of(soup),
             repaired: repaired.remove(name),
         });
+        bar.suspend(|| clock.lap(Phase::Measure, Some(name)));
     }
     bar.finish_and_clear();
     if selection.orderings {
         orderings::<X>(&cases, &names, &plan, &mut results)?;
+        clock.lap(Phase::Orderings, None);
     }
     if selection.libigl {
         results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+        clock.lap(Phase::Libigl, None);
     }
     if selection.hull {
         results.hull = hull(quick, &mut results.notes)?;
         results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+        clock.lap(Phase::Hull, None);
     }
     if selection.changing {
         results.changing =
             super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
+        clock.lap(Phase::Changing, None);
     }
     if selection.decimate {
         results.decimate =
             super::report_decimate::measure(&cases, &names, quick, &mut results.notes)?;
+        clock.lap(Phase::Decimate, None);
     }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
+    limit::annotate(&mut results);
+    clock.lap(Phase::Fits, None);
     if selection.sections.contains(&Section::Table41) {
         results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
+        clock.lap(Phase::Reads, None);
     }
-    limit::annotate(&mut results);
     if selection.sections.contains(&Section::Targets) {
         results.targets = super::report_targets::measure::<X>(
             &cases,
@@ -356,6 +373,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             &results.probe,
             &mut results.notes,
         )?;
+        clock.lap(Phase::Targets, None);
     }
     let skipped = results
         .measurements
@@ -368,7 +386,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             plan.cell_max.as_secs_f64()
         ));
     }
-    write(&args.out, &results)?;
+    write(&args.out, &mut results, clock)?;
     Ok(format!(
         "wrote {} measurements of {} structures on {} meshes to {}\n",
         results.measurements.len(),
@@ -654,15 +672,29 @@ fn libigl(
     rows
 }
 
-fn write(out: &Path, results: &Results) -> Result<(), Failure> {
+/// Writes `results.json` and `index.html`, with the sections' times of `clock` and the time of
+/// rendering the page itself (its row is put into the rendered page's table afterwards).
+fn write(
+    out: &Path,
+    results: &mut Results,
+    mut clock: super::report_timing::Clock,
+) -> Result<(), Failure> {
     use std::io::Write as _;
     std::fs::create_dir_all(out).map_err(|e| Failure {
         message: format!("cannot write the report to {}: {e}", out.display()),
         code: 2,
     })?;
+    results.phases = clock.times().to_vec();
+    let mut without = String::new();
+    topolab_harness::phases::render(&mut without, &results.phases);
+    let page = html::render(results);
+    clock.lap(Phase::Writing, None);
+    results.phases = clock.times().to_vec();
+    let mut with = String::new();
+    topolab_harness::phases::render(&mut with, &results.phases);
+    let page = page.replacen(&without, &with, 1);
     let json = serde_json::to_string_pretty(results).expect("serialisable");
     crate::output::write_file(&out.join("results.json"), |w| w.write_all(json.as_bytes()))?;
-    let page = html::render(results);
     crate::output::write_file(&out.join("index.html"), |w| w.write_all(page.as_bytes()))?;
     Ok(())
 }

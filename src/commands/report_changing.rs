@@ -19,6 +19,7 @@ use crate::registry::{self, EditVisitor};
 use topolab_harness::changing::{
     cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum,
 };
+use topolab_harness::skips::{self, Skip};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(has_openmesh)]
 use topolab_structures::MeshTopology;
@@ -53,17 +54,19 @@ fn elements(c: Cost, n: f64) -> f64 {
 /// half-edge's.
 pub const LINEAR_EDIT_MAX_FACES: usize = 1_500;
 
-/// Why `M` does not run `w` on a mesh of `faces` faces, if it does not.
-fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<String> {
+/// Why `M` does not run `w` on a mesh of `faces` faces, if it does not: the reason (the same
+/// words on every mesh, so that the notes group them) and what differs by mesh.
+fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, Option<String>)> {
     let max = if quick {
         MAX_SECONDS / 10.0
     } else {
         MAX_SECONDS
     };
     if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
-        return Some(
+        return Some((
             "its edge ids change when faces are split, and √3 flips the old edges by id".into(),
-        );
+            None,
+        ));
     }
     // The mesh grows to about three times its faces (corners, edges): n ≈ 3 faces.
     let n = 3.0 * faces as f64;
@@ -75,10 +78,12 @@ fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<String> {
         })
         .sum();
     if seconds > max {
-        return Some(format!(
-            "its declared costs ({}) predict about {} s at ≥ 1 ns per element read, above {max} s",
-            declared::<M>(w),
-            format_seconds(seconds)
+        return Some((
+            format!(
+                "its declared costs ({}) predict above {max} s at ≥ 1 ns per element read",
+                declared::<M>(w)
+            ),
+            Some(format!("about {} s", format_seconds(seconds))),
         ));
     }
     let linear = w
@@ -86,9 +91,12 @@ fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<String> {
         .iter()
         .any(|&(op, per_face)| per_face > 0.0 && elements(M::edit_cost(op), n) >= n);
     (linear && faces > LINEAR_EDIT_MAX_FACES).then(|| {
-        format!(
-            "its declared costs ({}) are O(n) per edit: run up to {LINEAR_EDIT_MAX_FACES} faces",
-            declared::<M>(w)
+        (
+            format!(
+                "its declared costs ({}) are O(n) per edit: run up to {LINEAR_EDIT_MAX_FACES} faces",
+                declared::<M>(w)
+            ),
+            None,
         )
     })
 }
@@ -112,7 +120,7 @@ struct Timed<'a> {
 /// The outcome of [`Timed`]: the median time and the result, or the reason for the skip.
 enum Outcome {
     Ran(Result<((f64, MeshChecksum), String), String>),
-    Skipped(String),
+    Skipped((String, Option<String>)),
 }
 
 impl EditVisitor for Timed<'_> {
@@ -205,6 +213,7 @@ pub fn measure(
     notes: &mut Vec<String>,
 ) -> Result<Vec<ChangingRow>, Failure> {
     let mut rows = Vec::new();
+    let mut skips = Vec::new();
     let editing: Vec<&str> = names
         .iter()
         .map(String::as_str)
@@ -241,8 +250,14 @@ pub fn measure(
                 } else {
                     match registry::visit_editable(s, timed) {
                         Some(Outcome::Ran(got)) => got,
-                        Some(Outcome::Skipped(why)) => {
-                            notes.push(format!("{} on {mesh} skipped {s}: {why}.", w.name()));
+                        Some(Outcome::Skipped((reason, detail))) => {
+                            skips.push(Skip {
+                                what: w.name().to_string(),
+                                structure: s.to_string(),
+                                mesh: mesh.clone(),
+                                reason,
+                                detail,
+                            });
                             continue;
                         }
                         None => Err(format!("{s} does not edit")),
@@ -270,6 +285,7 @@ pub fn measure(
             code: 1,
         })?;
     }
+    notes.extend(skips::group(&skips));
     Ok(rows)
 }
 
@@ -286,17 +302,19 @@ mod tests {
                 assert_eq!(skip::<WingedEdge>(w, faces, false), None);
             }
             assert_eq!(skip::<EdgeList>(w, 1_000, false), None, "{w:?}");
-            let why = skip::<EdgeList>(w, 1_000_000, false).expect("quadratic at 1M");
+            let (why, estimate) = skip::<EdgeList>(w, 1_000_000, false).expect("quadratic at 1M");
             assert!(
-                why.contains("predict about") && why.contains("O(n)"),
+                why.contains("predict above") && why.contains("O(n)"),
                 "{why}"
             );
+            assert!(estimate.is_some_and(|e| e.starts_with("about ")));
         }
         assert_eq!(skip::<VertexList>(Changing::Collapse, 1_000, false), None);
         assert!(skip::<VertexList>(Changing::Collapse, 1_000_000, false).is_some());
         // The report test's quick 64k torus: skipped, not minutes of scans.
         assert!(skip::<VertexList>(Changing::Collapse, 64_000, true).is_some());
-        let why = skip::<VertexList>(Changing::Sqrt3, 1_000, false).expect("no stable edge ids");
+        let (why, _) =
+            skip::<VertexList>(Changing::Sqrt3, 1_000, false).expect("no stable edge ids");
         assert!(why.contains("edge ids"), "{why}");
     }
 }
