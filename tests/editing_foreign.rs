@@ -13,6 +13,9 @@ topolab_structures::edit_conformance!(
 #[cfg(has_cgal)]
 topolab_structures::edit_conformance!(cgal_surface_mesh, topolab::cgal::SurfaceMesh);
 
+#[cfg(has_cgal)]
+topolab_structures::edit_conformance!(cgal_polyhedron, topolab::cgal::Polyhedron);
+
 #[cfg(not(any(has_openmesh, has_cgal)))]
 mod common;
 
