@@ -35,6 +35,7 @@
 #include <CGAL/boost/graph/internal/helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <iterator>
@@ -53,6 +54,7 @@ using namespace edit_rules;
 using edit_rules::BOUNDARY_EDGE;
 
 using polyhedron::Adapter;
+using polyhedron::DEAD;
 using polyhedron::FH;
 using polyhedron::HH;
 using polyhedron::Point;
@@ -376,33 +378,34 @@ int collapse(Adapter &a, uint32_t from, uint32_t to) {
   if (!lab_collapse_ok(m, h)) return LINK_CONDITION;
   const auto e = edge(h, m);  // made from h: its halfedge is h, whose source goes
   if (!CGAL::Euler::does_satisfy_link_condition(e, m)) return LINK_CONDITION;
-  // What CGAL may erase: the edge, its triangles and their other sides (see the file's notes).
-  std::vector<uint32_t> edges{eid(h)}, faces;
+  // What CGAL may erase: the edge, its triangles and their other sides (see the file's
+  // notes), at most 5 edges and 2 faces, in fixed arrays (no allocation per collapse).
+  std::array<uint32_t, 5> edges{eid(h), DEAD, DEAD, DEAD, DEAD};
+  std::array<uint32_t, 2> faces{DEAD, DEAD};
+  size_t sides = 0;
   for (HH side : {h, h->opposite()}) {
     if (side->is_border()) continue;
-    faces.push_back(uint32_t(side->facet()->id()));
-    edges.push_back(eid(side->next()));
-    edges.push_back(eid(side->prev()));
+    faces[sides] = uint32_t(side->facet()->id());
+    edges[1 + 2 * sides] = eid(side->next());
+    edges[2 + 2 * sides] = eid(side->prev());
+    ++sides;
   }
   const VH kept = CGAL::Euler::collapse_edge(e, m);
-  // What is left of those: around the kept vertex.
-  std::vector<uint32_t> kept_edges, kept_faces;
+  // What is left of those is around the kept vertex: struck off the lists, the rest buried.
   if (!isolated(kept)) {
     const HH start = kept->halfedge();
     HH x = start;
     do {
-      kept_edges.push_back(eid(x));
-      if (!x->is_border()) kept_faces.push_back(uint32_t(x->facet()->id()));
+      std::replace(edges.begin(), edges.end(), eid(x), DEAD);
+      if (!x->is_border())
+        std::replace(faces.begin(), faces.end(), uint32_t(x->facet()->id()), DEAD);
       x = x->next()->opposite();
     } while (x != start);
   }
-  auto kept_in = [](const std::vector<uint32_t> &ids, uint32_t id) {
-    return std::find(ids.begin(), ids.end(), id) != ids.end();
-  };
   for (uint32_t x : edges)
-    if (!kept_in(kept_edges, x) && !a.is_dead_edge(x)) a.bury_edge(x);
+    if (x != DEAD) a.bury_edge(x);
   for (uint32_t f : faces)
-    if (!kept_in(kept_faces, f) && !a.is_dead_facet(f)) a.bury_facet(f);
+    if (f != DEAD) a.bury_facet(f);
   if (uint32_t(kept->id()) != to) {
     // Not what CGAL documents (target(halfedge(e)) is kept): the ids would lie, so they are
     // given again, and the call fails.

@@ -44,7 +44,12 @@ mod polyhedron {
                 let mut edited = Polyhedron::from_soup(&soup).expect("manifold");
                 w.run(&mut edited).expect("runs through MeshEdit");
                 edited.validate().expect("valid after the workload");
-                assert_eq!(mesh_checksum(&edited), mesh_checksum(&native), "{}", w.name());
+                assert_eq!(
+                    mesh_checksum(&edited),
+                    mesh_checksum(&native),
+                    "{}",
+                    w.name()
+                );
             }
         }
     }
@@ -66,9 +71,15 @@ mod polyhedron {
             .find(|&e| m.is_boundary_edge(e))
             .expect("a grid has a boundary");
         assert_eq!(reason(m.add_face(&first)), Refusal::NonManifoldEdge);
-        assert_eq!(reason(m.collapse_edge(VertexId(0), far)), Refusal::NotNeighbours);
+        assert_eq!(
+            reason(m.collapse_edge(VertexId(0), far)),
+            Refusal::NotNeighbours
+        );
         assert_eq!(reason(m.flip_edge(boundary)), Refusal::BoundaryEdge);
-        assert_eq!(reason(m.delete_face(FaceId(f as u32))), Refusal::NoSuchElement);
+        assert_eq!(
+            reason(m.delete_face(FaceId(f as u32))),
+            Refusal::NoSuchElement
+        );
         assert_eq!(mesh_checksum(&m), before);
         assert_eq!([m.num_vertices(), m.num_edges(), m.num_faces()], [v, e, f]);
 

@@ -75,9 +75,9 @@
 //! | garbage collection | ids and tables again in list order | O(n) |
 
 use super::{Cgal, PolyhedronClass, SurfaceMeshClass};
-use crate::foreign::edit::{edit_api, impl_mesh_edit, EditApi, ForeignEdit};
 #[cfg(doc)]
 use super::{Polyhedron, SurfaceMesh};
+use crate::foreign::edit::{edit_api, impl_mesh_edit, EditApi, ForeignEdit};
 use topolab_structures::Result;
 
 edit_api!(SURFACE_MESH: super::ffi::RawMesh = [
@@ -144,4 +144,3 @@ cgal_edit!(SurfaceMeshClass, SURFACE_MESH, u32::MAX as u64 - 1);
 // The Polyhedron's ids are the shim's tables' (`size_t` in the items), kept to `u32`, the
 // largest one its tombstones' id.
 cgal_edit!(PolyhedronClass, POLYHEDRON, u32::MAX as u64 - 1);
-

@@ -134,22 +134,58 @@ macro_rules! edit_api {
         const $api: $crate::foreign::edit::EditApi<$raw> = {
             use $crate::foreign::edit::Call;
             $crate::foreign::edit::EditApi {
-                add_vertex: Call { name: stringify!($add_vertex), f: $add_vertex },
-                set_position: Call { name: stringify!($set_position), f: $set_position },
-                add_face: Call { name: stringify!($add_face), f: $add_face },
-                delete_face: Call { name: stringify!($delete_face), f: $delete_face },
-                delete_vertex: Call { name: stringify!($delete_vertex), f: $delete_vertex },
-                flip: Call { name: stringify!($flip), f: $flip },
-                split_edge: Call { name: stringify!($split_edge), f: $split_edge },
-                split_face: Call { name: stringify!($split_face), f: $split_face },
-                collapse: Call { name: stringify!($collapse), f: $collapse },
-                split_vertex: Call { name: stringify!($split_vertex), f: $split_vertex },
-                is_deleted: Call { name: stringify!($is_deleted), f: $is_deleted },
+                add_vertex: Call {
+                    name: stringify!($add_vertex),
+                    f: $add_vertex,
+                },
+                set_position: Call {
+                    name: stringify!($set_position),
+                    f: $set_position,
+                },
+                add_face: Call {
+                    name: stringify!($add_face),
+                    f: $add_face,
+                },
+                delete_face: Call {
+                    name: stringify!($delete_face),
+                    f: $delete_face,
+                },
+                delete_vertex: Call {
+                    name: stringify!($delete_vertex),
+                    f: $delete_vertex,
+                },
+                flip: Call {
+                    name: stringify!($flip),
+                    f: $flip,
+                },
+                split_edge: Call {
+                    name: stringify!($split_edge),
+                    f: $split_edge,
+                },
+                split_face: Call {
+                    name: stringify!($split_face),
+                    f: $split_face,
+                },
+                collapse: Call {
+                    name: stringify!($collapse),
+                    f: $collapse,
+                },
+                split_vertex: Call {
+                    name: stringify!($split_vertex),
+                    f: $split_vertex,
+                },
+                is_deleted: Call {
+                    name: stringify!($is_deleted),
+                    f: $is_deleted,
+                },
                 garbage_collection: Call {
                     name: stringify!($garbage_collection),
                     f: $garbage_collection,
                 },
-                reserve: Call { name: stringify!($reserve), f: $reserve },
+                reserve: Call {
+                    name: stringify!($reserve),
+                    f: $reserve,
+                },
             }
         };
     };
@@ -291,8 +327,8 @@ pub(crate) fn set_position<M: ForeignEdit>(m: &mut M, v: VertexId, p: DVec3) -> 
 }
 
 pub(crate) fn add_face<M: ForeignEdit>(m: &mut M, vertices: &[VertexId]) -> Result<FaceId> {
-    let n =
-        u32::try_from(vertices.len()).map_err(|_| refused::<M>(EditOp::AddFace, Refusal::BadFace))?;
+    let n = u32::try_from(vertices.len())
+        .map_err(|_| refused::<M>(EditOp::AddFace, Refusal::BadFace))?;
     room(m, 0, n as u64, 1)?;
     let ids: Vec<u32> = vertices.iter().map(|v| v.0).collect();
     let (raw, api) = (m.raw(), &M::API.add_face);
@@ -308,7 +344,9 @@ pub(crate) fn add_face<M: ForeignEdit>(m: &mut M, vertices: &[VertexId]) -> Resu
 fn on_id<M: ForeignEdit>(m: &mut M, op: EditOp, api: &Call<OnId<M::Raw>>, id: u32) -> Result<()> {
     let raw = m.raw();
     // SAFETY: `raw` is live and exclusively borrowed; the shim checks `id`.
-    change(m, op, api.name, |refusal| unsafe { (api.f)(raw, id, refusal) })
+    change(m, op, api.name, |refusal| unsafe {
+        (api.f)(raw, id, refusal)
+    })
 }
 
 pub(crate) fn delete_face<M: ForeignEdit>(m: &mut M, f: FaceId) -> Result<()> {
@@ -419,31 +457,62 @@ macro_rules! impl_mesh_edit {
             fn edit_cost(op: topolab_structures::EditOp) -> topolab_structures::Cost {
                 $crate::foreign::edit::edit_cost(op)
             }
-            fn add_vertex(&mut self, p: glam::DVec3) -> topolab_structures::Result<topolab_structures::VertexId> {
+            fn add_vertex(
+                &mut self,
+                p: glam::DVec3,
+            ) -> topolab_structures::Result<topolab_structures::VertexId> {
                 $crate::foreign::edit::add_vertex(self, p)
             }
-            fn set_position(&mut self, v: topolab_structures::VertexId, p: glam::DVec3) -> topolab_structures::Result<()> {
+            fn set_position(
+                &mut self,
+                v: topolab_structures::VertexId,
+                p: glam::DVec3,
+            ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::set_position(self, v, p)
             }
-            fn add_face(&mut self, vertices: &[topolab_structures::VertexId]) -> topolab_structures::Result<topolab_structures::FaceId> {
+            fn add_face(
+                &mut self,
+                vertices: &[topolab_structures::VertexId],
+            ) -> topolab_structures::Result<topolab_structures::FaceId> {
                 $crate::foreign::edit::add_face(self, vertices)
             }
-            fn delete_face(&mut self, f: topolab_structures::FaceId) -> topolab_structures::Result<()> {
+            fn delete_face(
+                &mut self,
+                f: topolab_structures::FaceId,
+            ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::delete_face(self, f)
             }
-            fn delete_vertex(&mut self, v: topolab_structures::VertexId) -> topolab_structures::Result<()> {
+            fn delete_vertex(
+                &mut self,
+                v: topolab_structures::VertexId,
+            ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::delete_vertex(self, v)
             }
-            fn flip_edge(&mut self, e: topolab_structures::EdgeId) -> topolab_structures::Result<()> {
+            fn flip_edge(
+                &mut self,
+                e: topolab_structures::EdgeId,
+            ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::flip_edge(self, e)
             }
-            fn split_edge(&mut self, e: topolab_structures::EdgeId, p: glam::DVec3) -> topolab_structures::Result<topolab_structures::VertexId> {
+            fn split_edge(
+                &mut self,
+                e: topolab_structures::EdgeId,
+                p: glam::DVec3,
+            ) -> topolab_structures::Result<topolab_structures::VertexId> {
                 $crate::foreign::edit::split_edge(self, e, p)
             }
-            fn split_face(&mut self, f: topolab_structures::FaceId, p: glam::DVec3) -> topolab_structures::Result<topolab_structures::VertexId> {
+            fn split_face(
+                &mut self,
+                f: topolab_structures::FaceId,
+                p: glam::DVec3,
+            ) -> topolab_structures::Result<topolab_structures::VertexId> {
                 $crate::foreign::edit::split_face(self, f, p)
             }
-            fn collapse_edge(&mut self, from: topolab_structures::VertexId, to: topolab_structures::VertexId) -> topolab_structures::Result<()> {
+            fn collapse_edge(
+                &mut self,
+                from: topolab_structures::VertexId,
+                to: topolab_structures::VertexId,
+            ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::collapse_edge(self, from, to)
             }
             fn split_vertex(
@@ -471,3 +540,50 @@ macro_rules! impl_mesh_edit {
     };
 }
 pub(crate) use impl_mesh_edit;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `NO_SUCH_ELEMENT` → `NoSuchElement`.
+    fn camel(name: &str) -> String {
+        name.split('_')
+            .map(|w| w[..1].to_string() + &w[1..].to_lowercase())
+            .collect()
+    }
+
+    #[test]
+    fn refusal_codes_are_those_of_both_edit_headers() {
+        for (header, prefix) in [
+            (include_str!("../../openmesh/edit.h"), "TOPOLAB_OM_"),
+            (include_str!("../../cgal/edit.h"), "TOPOLAB_CGAL_"),
+        ] {
+            let defines: Vec<(String, i32)> = header
+                .lines()
+                .filter_map(|l| l.strip_prefix("#define "))
+                .filter_map(|l| l.strip_prefix(prefix))
+                .filter_map(|l| {
+                    let (name, value) = l.split_once(' ')?;
+                    Some((name.to_string(), value.trim().parse().ok()?))
+                })
+                .collect();
+            let refusals: Vec<&(String, i32)> = defines
+                .iter()
+                .filter(|(name, _)| name.starts_with("REFUSAL_"))
+                .collect();
+            assert_eq!(refusals.len(), REFUSALS.len(), "{prefix}: {refusals:?}");
+            for (name, code) in refusals {
+                let reason = REFUSALS[*code as usize];
+                assert_eq!(
+                    format!("{reason:?}"),
+                    camel(&name["REFUSAL_".len()..]),
+                    "{name}"
+                );
+            }
+            assert!(
+                defines.contains(&("EDIT_REFUSED".to_string(), EDIT_REFUSED)),
+                "{prefix}EDIT_REFUSED"
+            );
+        }
+    }
+}
