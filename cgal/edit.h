@@ -1,7 +1,8 @@
 /* The changing workloads and topolab's MeshEdit over CGAL's own Euler operations: C API for
  * Rust FFI, implemented in edit_surface_mesh.cpp and edit_polyhedron.cpp (one translation unit
- * per structure, like the builders), wrapped by src/cgal/changing.rs and src/cgal/edit.rs. Same discipline as shim.h: every function is noexcept, catches every C++
- * exception and returns a status; the mesh must be of the structure the function names. */
+ * per structure, like the builders), wrapped by src/cgal/changing.rs and src/cgal/edit.rs.
+ * Same discipline as shim.h: every function is noexcept, catches every C++ exception and
+ * returns a status; the mesh must be of the structure the function names. */
 #ifndef TOPOLAB_CGAL_EDIT_H
 #define TOPOLAB_CGAL_EDIT_H
 
@@ -19,12 +20,13 @@ int topolab_cgal_polyhedron_changing(topolab_cgal_mesh *mesh, int workload) TOPO
 
 /* The editing operations of topolab's MeshEdit on a Surface_mesh (topolab_cgal_sm_edit_*) and
  * on a Polyhedron_3 (topolab_cgal_ph_edit_*, the same signatures; see the end of this file),
- * one per CGAL Euler operation (src/cgal/edit.rs). Besides shim.h's statuses an edit may return TOPOLAB_CGAL_EDIT_REFUSED
- * with *refusal set to one of the refusal codes below (topolab's Refusal, in its order): every
- * check runs before CGAL is called, so a refused edit changes nothing and no CGAL
- * precondition is ever violated. The first edit switches Surface_mesh's recycling of removed
- * slots off (set_recycle_garbage(false)): new elements are appended and removed ones keep
- * their slots, marked, until topolab_cgal_sm_edit_garbage_collection. */
+ * one per CGAL Euler operation (src/cgal/edit.rs). Besides shim.h's statuses an edit may
+ * return TOPOLAB_CGAL_EDIT_REFUSED with *refusal set to one of the refusal codes below
+ * (topolab's Refusal, in its order): every check runs before CGAL is called, so a refused
+ * edit changes nothing and no CGAL precondition is ever violated. The first edit switches
+ * Surface_mesh's recycling of removed slots off (set_recycle_garbage(false)): new elements
+ * are appended and removed ones keep their slots, marked, until
+ * topolab_cgal_sm_edit_garbage_collection. */
 #define TOPOLAB_CGAL_EDIT_REFUSED 5
 
 #define TOPOLAB_CGAL_REFUSAL_NO_SUCH_ELEMENT 0
