@@ -2,7 +2,7 @@
 //! a refused edit's exit code and reason.
 
 use std::process::{Command, Output};
-use topolab::commands::explain_edit::{run, ExplainOp, EDITABLE};
+use topolab::commands::explain_edit::{editable, run, ExplainOp};
 
 fn topolab(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_topolab"))
@@ -61,7 +61,7 @@ fn a_split_names_the_records_it_adds_and_rewrites() {
 
 #[test]
 fn a_collapse_marks_its_vertex_deleted_on_a_torus() {
-    for name in EDITABLE {
+    for name in editable() {
         let text = run(name, Some("torus:50"), ExplainOp::Collapse, 0)
             .unwrap_or_else(|f| panic!("{name}: {}", f.message));
         assert!(
@@ -76,7 +76,14 @@ fn a_collapse_marks_its_vertex_deleted_on_a_torus() {
 fn a_refused_flip_exits_with_the_reason_and_no_panic() {
     // Every interior edge of the open tetrahedron joins the apex; its flip would create a
     // boundary edge that exists already.
-    for name in ["index-half-edge", "che-l2", "che"] {
+    for name in [
+        "index-half-edge",
+        "che-l2",
+        "che",
+        "winged-edge",
+        "edge-list",
+        "vertex-list",
+    ] {
         let out = topolab(&["explain", name, "--op", "flip", "--edge", "1"]);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
@@ -103,7 +110,8 @@ fn bad_requests_are_usage_errors() {
         vec!["explain", "che-l1", "--op", "flip"],
         vec!["explain", "che-l1", "--op", "twist", "--edge", "1"],
         vec!["explain", "che-l1", "--op", "flip", "--edge", "6"],
-        vec!["explain", "edge-list", "--op", "flip", "--edge", "1"],
+        vec!["explain", "explicit", "--op", "flip", "--edge", "1"],
+        vec!["explain", "regular-grid", "--op", "split", "--edge", "1"],
         vec![
             "explain", "che-l1", "--op", "flip", "--edge", "1", "--trace", "r00",
         ],
@@ -112,5 +120,123 @@ fn bad_requests_are_usage_errors() {
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
+
+/// The lines of `text` that change a record (`  key.field: old -> new` or `  key: old -> new`).
+fn changed(text: &str) -> Vec<&str> {
+    text.lines()
+        .filter(|l| l.starts_with("  ") && l.contains(" -> "))
+        .map(str::trim)
+        .collect()
+}
+
+#[test]
+fn every_editable_structure_of_the_registry_is_explained() {
+    let names = editable();
+    assert_eq!(names, topolab_structures::registry::editable_names());
+    for name in ["winged-edge", "edge-list", "vertex-list"] {
+        assert!(names.contains(&name), "{name} is editable: {names:?}");
+    }
+    // What is not editable is a usage error naming the editable ones.
+    let out = topolab(&["explain", "explicit", "--op", "split", "--edge", "1"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("winged-edge, edge-list") || stderr.contains("edge-list, winged-edge"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_split_on_the_face_rewrite_structures_names_their_records() {
+    // Splitting interior edge 1 of the open tetrahedron adds one vertex, two triangles and
+    // (where edges are stored) three edges, and rewrites the two triangles beside it.
+    let count = |keys: &[&str], prefix: char| {
+        keys.iter()
+            .filter(|k| k.starts_with(prefix) && k[1..].chars().all(|c| c.is_ascii_digit()))
+            .count()
+    };
+    let winged = run("winged-edge", None, ExplainOp::Split, 1).expect("edge 1 splits");
+    let new = added(&winged);
+    assert_eq!(
+        (count(&new, 'v'), count(&new, 'f'), count(&new, 'e')),
+        (1, 2, 3),
+        "{winged}"
+    );
+    // The new edge records carry the hull lecture's wings, and old wings are re-pointed.
+    for field in [
+        "fccw = ", "fcw = ", "pccw = ", "nccw = ", "pcw = ", "ncw = ",
+    ] {
+        assert!(
+            winged
+                .lines()
+                .any(|l| l.starts_with("+ e") && l.contains(field)),
+            "{field}: {winged}"
+        );
+    }
+    assert!(
+        changed(&winged)
+            .iter()
+            .any(|l| l.starts_with('e') && l.contains("cw: ")),
+        "{winged}"
+    );
+    assert!(
+        winged.contains("reads: the edge record (v1, v2, fccw, fcw)"),
+        "{winged}"
+    );
+
+    let edges = run("edge-list", None, ExplainOp::Split, 1).expect("edge 1 splits");
+    let new = added(&edges);
+    assert_eq!(
+        (count(&new, 'V'), count(&new, 'P'), count(&new, 'E')),
+        (1, 2, 3),
+        "{edges}"
+    );
+    assert!(
+        edges
+            .lines()
+            .any(|l| l.starts_with("+ E") && l.contains("start = ") && l.contains("right = ")),
+        "the lecture's E = (start, end, left, right): {edges}"
+    );
+    assert!(
+        changed(&edges).iter().any(|l| l.starts_with("E1.end: ")),
+        "edge 1 now ends at the new vertex: {edges}"
+    );
+    assert!(
+        changed(&edges).iter().any(|l| l.starts_with('P')),
+        "polygons rewritten: {edges}"
+    );
+
+    let corners = run("vertex-list", None, ExplainOp::Split, 1).expect("edge 1 splits");
+    let new = added(&corners);
+    assert_eq!((count(&new, 'v'), count(&new, 'f')), (1, 2), "{corners}");
+    assert_eq!(
+        changed(&corners)
+            .iter()
+            .filter(|l| l.starts_with('f') && l.contains(": (v"))
+            .count(),
+        2,
+        "the two triangles beside the edge are rewritten: {corners}"
+    );
+}
+
+#[test]
+fn a_refused_collapse_on_the_face_rewrite_structures_exits_with_its_reason() {
+    // Edge 1 of the open tetrahedron joins the apex to a boundary vertex through the interior:
+    // its collapse would pinch the boundary.
+    for name in ["winged-edge", "edge-list", "vertex-list"] {
+        let out = topolab(&["explain", name, "--op", "collapse", "--edge", "1"]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
+        assert!(
+            stderr.contains(&format!("{name} refuses collapse-edge")),
+            "{stderr}"
+        );
+        assert!(stderr.contains("the link condition fails"), "{stderr}");
+        assert!(
+            out.stdout.is_empty(),
+            "{name}: nothing printed before the refusal"
+        );
     }
 }

@@ -1,27 +1,32 @@
 //! `topolab explain NAME --op flip|split|collapse --edge E [--mesh M]`: one edit on one
 //! structure (or, for `che`, on the four CHE levels), with the records it writes, old → new,
 //! in the field names of the structure's source (the lecture on polygon-mesh data structures
-//! for the half-edges, the CHE thesis chapter for the CHE's containers), and what it reads.
+//! for the half-edges, the edge list and the vertex list, the lecture on 3D convex hulls for
+//! the winged-edge's record, the CHE thesis chapter for the CHE's containers), and what it
+//! reads. Every structure the registry marks `[editable]` is explained
+//! ([`editable`]); the reads are described per family ([`Family`]).
 //!
 //! Edges are numbered as `--trace` numbers them: the mesh's edges in order of first
 //! appearance (the index half-edge's edge ids), so `--edge E` is the same edge on every
 //! structure. `collapse` collapses the edge's first vertex into its second; `split` splits it
 //! at its midpoint. A refused edit exits with code 1 and the structure's reason.
 //!
-//! The records are each structure's [`MeshTopology::explain`] lines read as `key: fields`
-//! (one record per line), except for the CHE levels, whose containers are listed entry by
-//! entry (`V[he]`, `O[he]`, `VH[v]`, `EH ∋ he`, `CH[k-1]`). The reads are described, not
+//! The records are each structure's [`MeshTopology::explain`] lines read as records
+//! ([`super::explain_records`]), except for the CHE levels, whose containers are listed entry
+//! by entry (`V[he]`, `O[he]`, `VH[v]`, `EH ∋ he`, `CH[k-1]`). The reads are described, not
 //! counted: the edit code reads its containers directly, not through the counted accessors
 //! `--trace` uses.
 
+use super::explain_records::explained_records;
 use crate::input::{mesh_or_tetrahedron, Failure};
-use std::any::Any;
+use crate::registry::{visit_editable, EditVisitor, NAMES};
+use std::any::{Any, TypeId};
 use std::collections::HashMap;
 use std::fmt::Write;
 use topolab_structures::che::CheLevel;
 use topolab_structures::{
-    CheL0, CheL1, CheL2, CheL3, EdgeId, IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge,
-    PolygonSoup, VertexId,
+    CheL0, CheL1, CheL2, CheL3, EdgeId, EdgeList, IndexHalfEdge, MeshEdit, MeshTopology,
+    PointerHalfEdge, PolygonSoup, VertexId, VertexList, WingedEdge,
 };
 
 /// The edits `--op` explains.
@@ -35,15 +40,66 @@ pub enum ExplainOp {
     Collapse,
 }
 
-/// The structures `--op` can explain: every one that implements [`MeshEdit`].
-pub const EDITABLE: [&str; 6] = [
-    "index-half-edge",
-    "pointer-half-edge",
-    "che-l0",
-    "che-l1",
-    "che-l2",
-    "che-l3",
-];
+/// The structures `--op` can explain: every one the registry marks `[editable]` (that
+/// [`visit_editable`] reaches), in the registry's order.
+pub fn editable() -> Vec<&'static str> {
+    struct Probe;
+    impl EditVisitor for Probe {
+        type Output = ();
+        fn visit<M: MeshEdit + 'static>(self) {}
+    }
+    NAMES
+        .iter()
+        .copied()
+        .filter(|name| visit_editable(name, Probe).is_some())
+        .collect()
+}
+
+/// The families whose edits read differently, for the reads `--op` describes.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// The index and pointer half-edges.
+    HalfEdge,
+    /// The CHE levels 0–3.
+    Che,
+    /// The winged-edge (the face rewrite over its edge records).
+    WingedEdge,
+    /// The edge list (the face rewrite over its edges and polygons).
+    EdgeList,
+    /// The vertex list (the face rewrite over its faces' corners).
+    VertexList,
+    /// An editable structure this command has no description for (its records are still
+    /// printed).
+    Other,
+}
+
+impl Family {
+    /// The family of structure `M`, by its type.
+    pub fn of<M: 'static>() -> Family {
+        let is = |t: TypeId| TypeId::of::<M>() == t;
+        if is(TypeId::of::<IndexHalfEdge>()) || is(TypeId::of::<PointerHalfEdge>()) {
+            Family::HalfEdge
+        } else if [
+            TypeId::of::<CheL0>(),
+            TypeId::of::<CheL1>(),
+            TypeId::of::<CheL2>(),
+            TypeId::of::<CheL3>(),
+        ]
+        .into_iter()
+        .any(is)
+        {
+            Family::Che
+        } else if is(TypeId::of::<WingedEdge>()) {
+            Family::WingedEdge
+        } else if is(TypeId::of::<EdgeList>()) {
+            Family::EdgeList
+        } else if is(TypeId::of::<VertexList>()) {
+            Family::VertexList
+        } else {
+            Family::Other
+        }
+    }
+}
 
 /// One structure's explanation, for [`visit`].
 struct Explain<'a> {
@@ -54,33 +110,27 @@ struct Explain<'a> {
     ends: [u32; 2],
 }
 
-/// Runs `e` on the editable structure `name`.
-fn visit(name: &str, e: Explain<'_>) -> Option<Result<String, Failure>> {
-    Some(match name {
-        "index-half-edge" => e.run::<IndexHalfEdge>(),
-        "pointer-half-edge" => e.run::<PointerHalfEdge>(),
-        "che-l0" => e.run::<CheL0>(),
-        "che-l1" => e.run::<CheL1>(),
-        "che-l2" => e.run::<CheL2>(),
-        "che-l3" => e.run::<CheL3>(),
-        _ => return None,
-    })
+impl EditVisitor for Explain<'_> {
+    type Output = Result<String, Failure>;
+    fn visit<M: MeshEdit + 'static>(self) -> Self::Output {
+        self.run::<M>()
+    }
 }
 
 /// The text of `topolab explain NAME --op OP --edge E [--mesh M]`.
 pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<String, Failure> {
+    let editable = editable();
     let names: Vec<&str> = if name == super::explain_che::NAME {
-        EDITABLE
-            .iter()
-            .copied()
-            .filter(|n| n.starts_with("che-"))
+        [CheL0::NAME, CheL1::NAME, CheL2::NAME, CheL3::NAME]
+            .into_iter()
+            .filter(|n| editable.contains(n))
             .collect()
-    } else if EDITABLE.contains(&name) {
+    } else if editable.contains(&name) {
         vec![name]
     } else {
         return Err(Failure::usage(format!(
             "--op: {name:?} cannot edit (or is not a structure); the editable structures: che (its four levels), {}",
-            EDITABLE.join(", ")
+            editable.join(", ")
         )));
     };
     let (soup, label) = mesh_or_tetrahedron(mesh, false, |s| {
@@ -107,7 +157,7 @@ pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<S
             edge,
             ends,
         };
-        out += &visit(n, e).expect("an editable structure")?;
+        out += &visit_editable(n, e).expect("an editable structure")?;
     }
     Ok(out)
 }
@@ -154,7 +204,7 @@ impl Explain<'_> {
             message: format!("{} is invalid after {what}: {e}", M::NAME),
             code: 1,
         })?;
-        let _ = writeln!(w, "reads: {}", reads(M::NAME, self.op));
+        let _ = writeln!(w, "reads: {}", reads(Family::of::<M>(), self.op));
         let _ = writeln!(
             w,
             "  (described, not counted: the edit code reads its records directly, not through the counted accessors of --trace)"
@@ -178,27 +228,56 @@ fn edge_between<M: MeshTopology>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
     found
 }
 
-/// What the edit reads in structure `name`, in its source's field names.
-fn reads(name: &str, op: ExplainOp) -> &'static str {
-    let che = name.starts_with("che-");
-    match (che, op) {
-        (true, ExplainOp::Flip) => {
+/// What the edit reads in a structure of `family`, in its source's field names.
+fn reads(family: Family, op: ExplainOp) -> &'static str {
+    match (family, op) {
+        (Family::Che, ExplainOp::Flip) => {
             "V[h], V[next(h)], V[prev(h)] (the corners a, b, x), O[h] = g (level 0: Algorithm 8's scan of V[]), V[prev(g)] (the corner y); the star of x to check that edge x-y is new (from VH[x] around by O[prev(h)] at levels 2-3, a scan of V[] at levels 0-1); then O[] of the two triangles' 6 half-edges (their outer opposites) and the fans of the 4 corners for VH[]; EH from a scan of O[] (levels 2-3)"
         }
-        (true, ExplainOp::Split) => {
+        (Family::Che, ExplainOp::Split) => {
             "V[] of the edge's one or two triangles, O[h] (level 0: a scan of V[]), O[] of their outer half-edges, the fans of their corners for VH[]; EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the edge is on the boundary (level 3, Algorithm 4)"
         }
-        (true, ExplainOp::Collapse) => {
+        (Family::Che, ExplainOp::Collapse) => {
             "the stars of both ends and of the two opposite corners (the link condition: from VH[] and O[] at levels 2-3, scans of V[] at levels 0-1), V[] and O[] of the star of the removed vertex, the last triangles (moved into the removed ones' slots); EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the boundary is touched (level 3, Algorithm 4)"
         }
-        (false, ExplainOp::Flip) => {
+        (Family::HalfEdge, ExplainOp::Flip) => {
             "the edge's two half-edges and their next, prev, vert and face; the corners' rotation (next of twin) to check that the new edge is not there; the vertices' and faces' edge fields it repoints"
         }
-        (false, ExplainOp::Split) => {
+        (Family::HalfEdge, ExplainOp::Split) => {
             "the edge's half-edges and their next, prev, vert and face, and the face records of its triangles"
         }
-        (false, ExplainOp::Collapse) => {
+        (Family::HalfEdge, ExplainOp::Collapse) => {
             "the rotations around both ends and the two opposite corners (the link condition), then every half-edge leaving the removed vertex (its vert) and the next/prev/face of the two removed triangles"
+        }
+        (Family::WingedEdge, ExplainOp::Flip) => {
+            "the edge record (v1, v2, fccw, fcw) and its two triangles' cycles through the wings (pccw, nccw in fccw; pcw, ncw in fcw); the fan of the far corner from its av through the wings, to check that the new edge is not there; the fans of the four corners for the rewrite's manifold check; then the two faces are rewritten, the edge record in place, the wings of the four outer edges re-pointed"
+        }
+        (Family::WingedEdge, ExplainOp::Split) => {
+            "the edge record (v1, v2, fccw, fcw) and the cycles of its one or two triangles through the wings; the fans of their corners from av for the rewrite's manifold check; then the triangles are rewritten in two, the new edge records appended and the outer edges' wings re-pointed"
+        }
+        (Family::WingedEdge, ExplainOp::Collapse) => {
+            "the fans of both ends and of the two far corners from av through the wings (the link condition), the cycles of the faces around the removed vertex; then those faces are rewritten around the kept vertex, the edges of the two removed triangles leave (the last edge and face records moving into their slots) and the wings around them are re-pointed"
+        }
+        (Family::EdgeList, ExplainOp::Flip) => {
+            "the edge E = (start, end, left, right), its two polygons P (lists of edge indices) and their edges' start and end; a scan of all of E for the far corner's edges (is the new edge there?) and for each corner's fan; then the two polygons are rewritten, the edge in place, and a scan of E finds the edges they share with the rest"
+        }
+        (Family::EdgeList, ExplainOp::Split) => {
+            "the edge E = (start, end, left, right), its one or two polygons P and their edges' ends; a scan of all of E for each corner's fan and for the edges the new polygons share with the rest; then the polygons are rewritten and the new edges appended"
+        }
+        (Family::EdgeList, ExplainOp::Collapse) => {
+            "a scan of all of E per vertex of the link condition (the rings of both ends and of the two far corners), the polygons around the removed vertex; then they are rewritten around the kept vertex, the edges and polygons of the two removed triangles leave (the last ones moving into their slots)"
+        }
+        (Family::VertexList, ExplainOp::Flip) => {
+            "a scan of all faces (lists of vertex indices) for the two that hold the edge, and for the far corner's neighbours (is the new edge there?); the faces around each of the four corners, a scan each; then the two faces' corners are rewritten in place"
+        }
+        (Family::VertexList, ExplainOp::Split) => {
+            "a scan of all faces for the one or two that hold the edge, and for the faces around each corner; then each triangle's corners are rewritten and one new triangle appended per side"
+        }
+        (Family::VertexList, ExplainOp::Collapse) => {
+            "a scan of all faces per vertex of the link condition (the rings of both ends and of the two far corners), then the faces around the removed vertex; they are rewritten around the kept vertex and the two removed triangles leave (the last faces moving into their slots)"
+        }
+        (Family::Other, _) => {
+            "not described for this structure: the records it writes are listed below"
         }
     }
 }
@@ -284,23 +363,6 @@ fn che_records(
     }
     for (k, he) in ch.into_iter().flatten().enumerate() {
         out.push((format!("CH[{k}]"), he.to_string()));
-    }
-    out
-}
-
-/// The lines of [`MeshTopology::explain`] that read `key: fields` (one record per line).
-fn explained_records<M: MeshTopology>(m: &M) -> Vec<(String, String)> {
-    let mut text = String::new();
-    let _ = m.explain(&mut text);
-    let mut out: Vec<(String, String)> = Vec::new();
-    for line in text.lines() {
-        let Some((key, value)) = line.trim().split_once(": ") else {
-            continue;
-        };
-        if key.is_empty() || key.contains(' ') {
-            continue;
-        }
-        out.push((key.to_string(), value.trim().to_string()));
     }
     out
 }

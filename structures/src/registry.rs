@@ -64,8 +64,9 @@ macro_rules! for_each_structure {
 pub trait EditVisitor {
     /// What the visit returns.
     type Output;
-    /// Runs with the structure `M`.
-    fn visit<M: MeshEdit>(self) -> Self::Output;
+    /// Runs with the structure `M` (`'static`, as every registered structure is, so that a
+    /// visitor may tell the concrete type, as `explain --op` does to print its records).
+    fn visit<M: MeshEdit + 'static>(self) -> Self::Output;
 }
 
 /// One line's `[editable]` capability: the visit of an editable structure, `None` otherwise.

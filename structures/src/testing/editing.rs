@@ -277,8 +277,19 @@ fn draw(rng: &mut ChaCha8Rng, model: &Model) -> Edit {
         }
         94..98 => {
             // Two neighbours of one vertex: on a boundary, welding them zips it by an edge.
+            // Half the time the two boundary neighbours of a boundary vertex, so that welds
+            // the model allows are drawn on every open mesh, not only by chance.
             let x = pick_vertex(rng);
-            Edit::Weld(near(rng, x), near(rng, x))
+            let along: Vec<u32> = model
+                .neighbours(x)
+                .into_iter()
+                .filter(|&w| model.is_boundary_edge(x, w))
+                .collect();
+            if along.len() == 2 && rng.random_bool(0.5) {
+                Edit::Weld(along[0], along[1])
+            } else {
+                Edit::Weld(near(rng, x), near(rng, x))
+            }
         }
         _ => Edit::Collect,
     }
@@ -611,20 +622,51 @@ pub fn run_with<M: MeshEdit>(
     steps: usize,
     not_implemented_on_polygons: bool,
 ) -> Result<(usize, usize), String> {
+    run_tally::<M>(seed, steps, not_implemented_on_polygons).map(|t| (t.done, t.refused))
+}
+
+/// How many vertex welds the random sequences of `seeds` did (each checked as in [`run`]):
+/// the suite's evidence that welds the model allows are drawn and done, not only refused.
+pub fn welds_done<M: MeshEdit>(seeds: std::ops::Range<u64>, steps: usize) -> Result<usize, String> {
+    let mut welds = 0;
+    for seed in seeds {
+        welds += run_tally::<M>(seed, steps, false)
+            .map_err(|msg| format!("seed {seed}: {msg}"))?
+            .welds;
+    }
+    Ok(welds)
+}
+
+/// What a run did.
+struct Tally {
+    done: usize,
+    refused: usize,
+    welds: usize,
+}
+
+fn run_tally<M: MeshEdit>(
+    seed: u64,
+    steps: usize,
+    not_implemented_on_polygons: bool,
+) -> Result<Tally, String> {
+    let mut tally = Tally {
+        done: 0,
+        refused: 0,
+        welds: 0,
+    };
     let soup = start_mesh(seed);
     let may_refuse = not_implemented_on_polygons && !soup.is_triangle_mesh();
     // The model's rules are those of an oriented manifold with one fan per vertex: a start
     // mesh with a non-manifold vertex (which OpenMesh builds, with open fans) is skipped, as
     // structures that cannot build it skip it below.
     if !Model::manifold(&soup) {
-        return Ok((0, 0));
+        return Ok(tally);
     }
     let Ok(mut m) = M::from_soup(&soup) else {
-        return Ok((0, 0));
+        return Ok(tally);
     };
     let mut model = Model::of(&soup);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
-    let (mut done, mut refused) = (0, 0);
     for step in 0..steps {
         let edit = draw(&mut rng, &model);
         let expected = expect(&model, &edit, M::supports(crate::EditOp::WeldVertices));
@@ -632,16 +674,17 @@ pub fn run_with<M: MeshEdit>(
         match (expected, got) {
             (Some(next), Ok(())) => {
                 model = next;
-                done += 1;
+                tally.done += 1;
+                tally.welds += matches!(edit, Edit::Weld(..)) as usize;
             }
-            (None, Err(e)) if e.kind() == "edit-refused" => refused += 1,
+            (None, Err(e)) if e.kind() == "edit-refused" => tally.refused += 1,
             (
                 Some(_),
                 Err(Error::EditRefused {
                     reason: crate::Refusal::NotImplemented,
                     ..
                 }),
-            ) if may_refuse => refused += 1,
+            ) if may_refuse => tally.refused += 1,
             (Some(_), Err(e)) => {
                 return Err(format!(
                     "step {step}: {edit:?} refused: {e}; the model allows it"
@@ -657,7 +700,7 @@ pub fn run_with<M: MeshEdit>(
     m.garbage_collection();
     model.collect();
     agree(&m, &model).map_err(|msg| format!("after the final collection: {msg}"))?;
-    Ok((done, refused))
+    Ok(tally)
 }
 
 /// Generates the editing tests of every structure the registry marks `[editable]`: the
@@ -749,6 +792,20 @@ macro_rules! edit_conformance {
                     refused += r;
                 }
                 assert!(done > 400 && refused > 100, "{done} edits done, {refused} refused");
+            }
+
+            #[test]
+            fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
+                use $crate::MeshEdit as _;
+                if !<$ty>::supports($crate::EditOp::WeldVertices) {
+                    return;
+                }
+                let cases = $crate::testing::weld::weld_vertex_cases::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert!(cases >= 8, "only {cases} weld cases ran");
+                let welds = $crate::testing::editing::welds_done::<$ty>(0..200, 40)
+                    .unwrap_or_else(|msg| panic!("{msg}"));
+                assert!(welds >= 20, "only {welds} random welds done");
             }
         }
     };

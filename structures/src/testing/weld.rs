@@ -5,11 +5,13 @@
 //! that were not on the cut). Then the refusals: a half welded to itself (its boundary runs
 //! the same way twice), to the other half turned over, and to the other half moved away.
 
+use crate::algorithms::changing::to_soup;
 use crate::algorithms::weld::weld_meshes;
 use crate::core::edit::{MeshEdit, Refusal};
 use crate::core::error::Error;
 use crate::core::soup::PolygonSoup;
 use crate::testing::conformance::compare;
+use crate::testing::editing::canonical_face;
 use crate::testing::meshes;
 use glam::DVec3;
 
@@ -155,4 +157,256 @@ pub fn weld_halves<M: MeshEdit>() -> Result<usize, String> {
         cut += 1;
     }
     Ok(cut)
+}
+
+/// A fan of triangles (centre, rim[i], rim[i + 1]) around vertex 0, the rim vertices 1.. on a
+/// circle; `closed` adds the triangle from the last rim vertex back to the first.
+fn fan(rim: usize, closed: bool) -> (Vec<DVec3>, Vec<Vec<u32>>) {
+    let mut positions = vec![DVec3::ZERO];
+    for i in 0..rim {
+        let t = i as f64 / rim as f64 * std::f64::consts::TAU;
+        positions.push(DVec3::new(t.cos(), t.sin(), 0.0));
+    }
+    let last = if closed { rim } else { rim - 1 };
+    let faces = (0..last)
+        .map(|i| vec![0, 1 + i as u32, 1 + ((i + 1) % rim) as u32])
+        .collect();
+    (positions, faces)
+}
+
+/// The open fan of `k` triangles whose last rim vertex lies on the first: welding the two
+/// closes the disk (the boundary edges to the centre merge).
+fn slit_fan(k: usize) -> PolygonSoup {
+    let (mut positions, mut faces) = fan(k, false);
+    positions.push(positions[1]);
+    faces.push(vec![0, k as u32, k as u32 + 1]);
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// A slit disk of two rings: the fan of `slit_fan(k)` and a ring of triangles around it,
+/// each ring's last vertex on its first (vertices: centre 0, inner 1..=k+1, outer k+2..).
+fn slit_disk(k: usize) -> PolygonSoup {
+    let inner = |i: usize| 1 + i as u32;
+    let outer = |i: usize| (k + 2 + i) as u32;
+    let mut positions = vec![DVec3::ZERO];
+    for r in [1.0, 2.0] {
+        for i in 0..=k {
+            let t = (i % k) as f64 / k as f64 * std::f64::consts::TAU;
+            positions.push(r * DVec3::new(t.cos(), t.sin(), 0.0));
+        }
+    }
+    let mut faces = Vec::new();
+    for i in 0..k {
+        faces.push(vec![0, inner(i), inner(i + 1)]);
+        faces.push(vec![inner(i), outer(i), outer(i + 1)]);
+        faces.push(vec![inner(i), outer(i + 1), inner(i + 1)]);
+    }
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// The 4 × 4 grid of triangles (diagonals from (i, j) to (i + 1, j + 1)), without the
+/// middle square's two triangles when `hole`; vertex (i, j) is `4 * j + i`.
+fn grid(hole: bool) -> PolygonSoup {
+    let id = |i: u32, j: u32| 4 * j + i;
+    let mut positions = Vec::new();
+    for j in 0..4 {
+        for i in 0..4 {
+            positions.push(DVec3::new(i as f64, j as f64, 0.0));
+        }
+    }
+    let mut faces = Vec::new();
+    for j in 0..3 {
+        for i in 0..3 {
+            if hole && (i, j) == (1, 1) {
+                continue;
+            }
+            faces.push(vec![id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            faces.push(vec![id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// An open band of `w` columns of squares (two triangles each) and one row, whose last
+/// column of vertices lies on its first: the seam's first weld would pinch the band.
+fn band(w: u32) -> PolygonSoup {
+    let id = |i: u32, j: u32| j * (w + 1) + i;
+    let mut positions = Vec::new();
+    for j in 0..2 {
+        for i in 0..=w {
+            let t = (i % w) as f64 / w as f64 * std::f64::consts::TAU;
+            positions.push(DVec3::new(t.cos(), t.sin(), j as f64));
+        }
+    }
+    let mut faces = Vec::new();
+    for i in 0..w {
+        faces.push(vec![id(i, 0), id(i + 1, 0), id(i + 1, 1)]);
+        faces.push(vec![id(i, 0), id(i + 1, 1), id(i, 1)]);
+    }
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// The faces of `soup` with `b` renamed `a`, then `b`'s slot removed (as a garbage
+/// collection numbers them), canonical and sorted.
+fn welded_faces(faces: &[Vec<u32>], a: u32, b: u32) -> Vec<Vec<u32>> {
+    let mut out: Vec<Vec<u32>> = faces
+        .iter()
+        .map(|f| {
+            let f: Vec<u32> = f
+                .iter()
+                .map(|&v| if v == b { a } else { v })
+                .map(|v| if v > b { v - 1 } else { v })
+                .collect();
+            canonical_face(&f)
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+fn soup_faces(soup: &PolygonSoup) -> Vec<Vec<u32>> {
+    soup.faces().map(|f| f.to_vec()).collect()
+}
+
+/// The live faces of `m`, canonical and sorted.
+fn live_faces<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
+    let faces: Vec<Vec<u32>> = (0..m.num_faces())
+        .map(crate::FaceId::new)
+        .filter(|&f| !m.is_deleted_face(f))
+        .map(|f| {
+            let mut face = Vec::new();
+            m.face_vertices(f, |v| face.push(v.0));
+            canonical_face(&face)
+        })
+        .collect();
+    let mut faces = faces;
+    faces.sort();
+    faces
+}
+
+/// Welds in turn the pairs `welds` (each `b` into `a`) of `soup` in `M`; each must be done.
+/// Then, after garbage collection, the faces must be the original's with each pair welded and
+/// every relation must agree with the oracle of those faces.
+fn welds_done_as_expected<M: MeshEdit>(
+    name: &str,
+    soup: &PolygonSoup,
+    welds: &[(u32, u32)],
+) -> Result<(), String> {
+    let mut m = M::from_soup(soup).map_err(|e| format!("{name}: {e}"))?;
+    let mut faces = soup_faces(soup);
+    for &(a, b) in welds {
+        m.weld_vertices(crate::VertexId(a), crate::VertexId(b))
+            .map_err(|e| format!("{name}: weld v{a} v{b} refused: {e}"))?;
+        m.validate()
+            .map_err(|e| format!("{name}: after weld v{a} v{b}: {e}"))?;
+        if !m.is_deleted_vertex(crate::VertexId(b)) {
+            return Err(format!("{name}: v{b} is not deleted after its weld"));
+        }
+        m.garbage_collection();
+        faces = welded_faces(&faces, a, b);
+        let got = live_faces(&m);
+        if got != faces {
+            return Err(format!(
+                "{name}: welded v{a} v{b}: faces {got:?}, expected {faces:?}"
+            ));
+        }
+        compare(&m, &to_soup(&m)).map_err(|e| format!("{name} after weld v{a} v{b}: {e}"))?;
+    }
+    Ok(())
+}
+
+/// The weld of `b` into `a` on `soup` must be refused for one of `reasons`, and change
+/// nothing. (Which manifold rule a structure names first is its own: the face rewrite checks
+/// edges before fans, the half-edges fans before edges.)
+fn weld_refused<M: MeshEdit>(
+    name: &str,
+    soup: &PolygonSoup,
+    (a, b): (u32, u32),
+    reasons: &[Refusal],
+) -> Result<(), String> {
+    let mut m = M::from_soup(soup).map_err(|e| format!("{name}: {e}"))?;
+    let got = refusal(m.weld_vertices(crate::VertexId(a), crate::VertexId(b)));
+    if !got.is_some_and(|r| reasons.contains(&r)) {
+        return Err(format!(
+            "{name}: weld v{a} v{b} gave {got:?}, not one of {reasons:?}"
+        ));
+    }
+    let deleted = (0..m.num_vertices()).any(|v| m.is_deleted_vertex(crate::VertexId::new(v)));
+    if deleted || m.num_vertices() != soup.num_vertices() {
+        return Err(format!(
+            "{name}: the refused weld v{a} v{b} deleted a vertex"
+        ));
+    }
+    let mut want: Vec<Vec<u32>> = soup_faces(soup).iter().map(|f| canonical_face(f)).collect();
+    want.sort();
+    if live_faces(&m) != want {
+        return Err(format!(
+            "{name}: the refused weld v{a} v{b} changed the faces"
+        ));
+    }
+    compare(&m, soup).map_err(|e| format!("{name} after the refused weld v{a} v{b}: {e}"))
+}
+
+/// [`MeshEdit::weld_vertices`] on chosen cases: boundaries that zip by one edge (a slit fan
+/// in both weld orders, a slit disk zipped vertex by vertex), a square hole closed by welding
+/// two opposite corners and a slit sphere closed (both ends merge), unused vertices, and the
+/// refusals (a shared face,
+/// an interior vertex, boundaries that meet at no edge, a neighbour of both through interior
+/// edges, one vertex twice, an id out of range). Returns how many cases ran.
+pub fn weld_vertex_cases<M: MeshEdit>() -> Result<usize, String> {
+    let mut cases = 0;
+    for k in 3..=6u32 {
+        let soup = slit_fan(k as usize);
+        welds_done_as_expected::<M>(&format!("slit fan {k}"), &soup, &[(1, k + 1)])?;
+        welds_done_as_expected::<M>(&format!("slit fan {k}, reversed"), &soup, &[(k + 1, 1)])?;
+        // Zipping the slit disk: the inner ring's ends, then the outer ring's (each pair's
+        // ids before the first weld's collection shifts the second).
+        let disk = slit_disk(k as usize);
+        welds_done_as_expected::<M>(
+            &format!("slit disk {k}"),
+            &disk,
+            &[(1, k + 1), (k + 1, 2 * k + 1)],
+        )?;
+        cases += 3;
+    }
+    // A square hole closed by its opposite corners: both boundary edge pairs merge.
+    let holed = grid(true);
+    welds_done_as_expected::<M>("hole (1,1)-(2,2)", &holed, &[(5, 10)])?;
+    welds_done_as_expected::<M>("hole (2,1)-(1,2)", &holed, &[(9, 6)])?;
+    // A slit of two edges in a closed fan pair: welding its end closes a sphere.
+    let (mut positions, mut faces) = fan(4, false);
+    positions.push(positions[1]);
+    faces.push(vec![0, 4, 5]);
+    positions.push(DVec3::new(0.0, 0.0, 1.0));
+    for i in 1..=4u32 {
+        faces.push(vec![i + 1, i, 6]);
+    }
+    let sphere = PolygonSoup::from_polygons(positions, &faces);
+    welds_done_as_expected::<M>("slit sphere", &sphere, &[(1, 5)])?;
+    cases += 3;
+    // Unused vertices: one welded into a used one, a used one into it.
+    let mut lonely = grid(false);
+    lonely.positions.push(DVec3::splat(9.0));
+    welds_done_as_expected::<M>("unused into used", &lonely, &[(0, 16)])?;
+    welds_done_as_expected::<M>("used into unused", &lonely, &[(16, 5)])?;
+    cases += 2;
+
+    let (p, f) = fan(4, true);
+    let disk = PolygonSoup::from_polygons(p, &f);
+    let manifold = [Refusal::NonManifoldVertex, Refusal::NonManifoldEdge];
+    let (shared, none) = ([Refusal::BadFace], [Refusal::NoSuchElement]);
+    for (name, soup, pair, reasons) in [
+        ("a shared face", &holed, (5, 6), &shared[..]),
+        ("a diagonal", &grid(false), (0, 5), &shared),
+        ("an interior vertex", &grid(false), (5, 15), &manifold),
+        ("two boundaries", &holed, (5, 15), &manifold),
+        ("a band's seam", &band(6), (0, 6), &manifold),
+        ("a centre of both", &disk, (1, 3), &manifold),
+        ("one vertex twice", &holed, (3, 3), &none),
+        ("an id out of range", &holed, (3, 16), &none),
+    ] {
+        weld_refused::<M>(name, soup, pair, reasons)?;
+        cases += 1;
+    }
+    Ok(cases)
 }

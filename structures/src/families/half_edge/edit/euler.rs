@@ -9,6 +9,8 @@ use crate::core::ids::{FaceId, VertexId};
 use crate::families::half_edge::{HalfEdge, NONE};
 use glam::DVec3;
 
+mod weld;
+
 impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     // --- reads by id -------------------------------------------------------------------------
 
@@ -652,6 +654,19 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         }
     }
 
+    /// Every half-edge of the rotation through `start` now leaves `v` (the rotation is read
+    /// through `next`, which this does not change).
+    fn move_rotation(&mut self, start: u32, v: u32) {
+        let mut g = start;
+        loop {
+            self.links.set_vertex(g, v);
+            g = self.cw(g);
+            if g == start {
+                break;
+            }
+        }
+    }
+
     /// pmp's `remove_edge_helper`.
     fn remove_edge(&mut self, h: u32) {
         let (hn, hp) = (self.nx(h), self.pv(h));
@@ -659,16 +674,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         let (on, op) = (self.nx(o), self.pv(o));
         let (fh, fo) = (self.face_of(h), self.face_of(o));
         let (vh, vo) = (self.to_v(h), self.start_v(h));
-        // Every half-edge leaving vo now leaves vh.
-        let start = self.out_of(vo);
-        let mut g = start;
-        loop {
-            self.links.set_vertex(g, vh);
-            g = self.cw(g);
-            if g == start {
-                break;
-            }
-        }
+        self.move_rotation(self.out_of(vo), vh);
         self.links.set_next(hp, hn);
         self.links.set_next(op, on);
         if fh != NONE {
