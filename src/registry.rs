@@ -69,10 +69,6 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
 /// `#[cfg(has_x)] if name == X { return Some(visitor.visit::<X>()); }`). `None` if there is
 /// none of that name in this build or it does not edit.
 pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-    #[cfg(has_cgal)]
-    if name == CGAL_POLYHEDRON {
-        return Some(visitor.visit::<crate::cgal::Polyhedron>());
-    }
     structures::visit_editable(name, visitor)
 }
 
