@@ -1,8 +1,8 @@
-/* The changing workloads (and, for Surface_mesh, topolab's MeshEdit) over CGAL's own Euler
- * operations: C API for Rust FFI, implemented in edit_surface_mesh.cpp and edit_polyhedron.cpp
- * (one translation unit per structure, like the builders), wrapped by src/cgal/changing.rs and
- * src/cgal/edit.rs. Same discipline as shim.h: every function is noexcept, catches every C++
- * exception and returns a status; the mesh must be of the structure the function names. */
+/* The changing workloads and topolab's MeshEdit over CGAL's own Euler operations: C API for
+ * Rust FFI, implemented in edit_surface_mesh.cpp and edit_polyhedron.cpp (one translation unit
+ * per structure, like the builders), wrapped by src/cgal/changing.rs and src/cgal/edit.rs.
+ * Same discipline as shim.h: every function is noexcept, catches every C++ exception and
+ * returns a status; the mesh must be of the structure the function names. */
 #ifndef TOPOLAB_CGAL_EDIT_H
 #define TOPOLAB_CGAL_EDIT_H
 
@@ -18,13 +18,15 @@ extern "C" {
 int topolab_cgal_sm_changing(topolab_cgal_mesh *mesh, int workload) TOPOLAB_CGAL_NOEXCEPT;
 int topolab_cgal_polyhedron_changing(topolab_cgal_mesh *mesh, int workload) TOPOLAB_CGAL_NOEXCEPT;
 
-/* The editing operations of topolab's MeshEdit on a Surface_mesh (src/cgal/edit.rs), one per
- * CGAL Euler operation. Besides shim.h's statuses an edit may return TOPOLAB_CGAL_EDIT_REFUSED
- * with *refusal set to one of the refusal codes below (topolab's Refusal, in its order): every
- * check runs before CGAL is called, so a refused edit changes nothing and no CGAL
- * precondition is ever violated. The first edit switches Surface_mesh's recycling of removed
- * slots off (set_recycle_garbage(false)): new elements are appended and removed ones keep
- * their slots, marked, until topolab_cgal_sm_edit_garbage_collection. */
+/* The editing operations of topolab's MeshEdit on a Surface_mesh (topolab_cgal_sm_edit_*) and
+ * on a Polyhedron_3 (topolab_cgal_ph_edit_*, the same signatures; see the end of this file),
+ * one per CGAL Euler operation (src/cgal/edit.rs). Besides shim.h's statuses an edit may
+ * return TOPOLAB_CGAL_EDIT_REFUSED with *refusal set to one of the refusal codes below
+ * (topolab's Refusal, in its order): every check runs before CGAL is called, so a refused
+ * edit changes nothing and no CGAL precondition is ever violated. The first edit switches
+ * Surface_mesh's recycling of removed slots off (set_recycle_garbage(false)): new elements
+ * are appended and removed ones keep their slots, marked, until
+ * topolab_cgal_sm_edit_garbage_collection. */
 #define TOPOLAB_CGAL_EDIT_REFUSED 5
 
 #define TOPOLAB_CGAL_REFUSAL_NO_SUCH_ELEMENT 0
@@ -78,6 +80,37 @@ int topolab_cgal_sm_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uin
 int topolab_cgal_sm_edit_garbage_collection(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;
 /* reserve() room for that many more vertices, edges and faces. */
 int topolab_cgal_sm_edit_reserve(topolab_cgal_mesh *mesh, uint32_t vertices, uint32_t edges,
+                                 uint32_t faces) TOPOLAB_CGAL_NOEXCEPT;
+
+/* The same operations on a Polyhedron_3, with the same arguments and results. A Polyhedron_3
+ * erases at once: the lab's ids stay stable through id tables kept beside it, an erased
+ * element's slot holding a tombstone until topolab_cgal_ph_edit_garbage_collection gives the
+ * ids again in list order (polyhedron.h, edit_polyhedron.cpp). */
+int topolab_cgal_ph_edit_add_vertex(topolab_cgal_mesh *mesh, const double *p,
+                                    uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_set_position(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
+                                      int *refusal) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_add_face(topolab_cgal_mesh *mesh, const uint32_t *vertices, uint32_t n,
+                                  int *refusal, uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_delete_face(topolab_cgal_mesh *mesh, uint32_t f,
+                                     int *refusal) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_delete_vertex(topolab_cgal_mesh *mesh, uint32_t v,
+                                       int *refusal) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_flip(topolab_cgal_mesh *mesh, uint32_t e,
+                              int *refusal) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_split_edge(topolab_cgal_mesh *mesh, uint32_t e, const double *p,
+                                    int *refusal, uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_split_face(topolab_cgal_mesh *mesh, uint32_t f, const double *p,
+                                    int *refusal, uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32_t to,
+                                  int *refusal) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
+                                      uint32_t left, uint32_t right, int *refusal,
+                                      uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
+                                    int *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_garbage_collection(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_reserve(topolab_cgal_mesh *mesh, uint32_t vertices, uint32_t edges,
                                  uint32_t faces) TOPOLAB_CGAL_NOEXCEPT;
 
 #ifdef __cplusplus

@@ -54,10 +54,14 @@
 #include <vector>
 
 #include "edit.h"
+#include "edit_rules.h"
 #include "mesh.h"
 
 namespace topolab_cgal {
 namespace {
+
+using namespace edit_rules;
+using edit_rules::BOUNDARY_EDGE;
 
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
@@ -121,20 +125,6 @@ void collapse_test(SurfaceMesh &m) {
 
 
 // --- MeshEdit ----------------------------------------------------------------------------
-
-// The refusal codes of edit.h; OK_EDIT when the edit is allowed (or done).
-enum Refusal {
-  OK_EDIT = -1,
-  NO_SUCH_ELEMENT = TOPOLAB_CGAL_REFUSAL_NO_SUCH_ELEMENT,
-  BAD_FACE = TOPOLAB_CGAL_REFUSAL_BAD_FACE,
-  NON_MANIFOLD_EDGE = TOPOLAB_CGAL_REFUSAL_NON_MANIFOLD_EDGE,
-  NON_MANIFOLD_VERTEX = TOPOLAB_CGAL_REFUSAL_NON_MANIFOLD_VERTEX,
-  NOT_TRIANGLES = TOPOLAB_CGAL_REFUSAL_NOT_TRIANGLES,
-  BOUNDARY_EDGE = TOPOLAB_CGAL_REFUSAL_BOUNDARY_EDGE,
-  EDGE_EXISTS = TOPOLAB_CGAL_REFUSAL_EDGE_EXISTS,
-  NOT_NEIGHBOURS = TOPOLAB_CGAL_REFUSAL_NOT_NEIGHBOURS,
-  LINK_CONDITION = TOPOLAB_CGAL_REFUSAL_LINK_CONDITION,
-};
 
 const HI NO_HALFEDGE = SurfaceMesh::null_halfedge();
 
@@ -381,7 +371,7 @@ int split_vertex(SurfaceMesh &m, uint32_t v1i, const Point &p, uint32_t vli, uin
   // split_vertex does not take).
   HI g = rotate(m, a);
   while (true) {
-    if (m.is_border(g)) return TOPOLAB_CGAL_REFUSAL_NOT_IMPLEMENTED;
+    if (m.is_border(g)) return NOT_IMPLEMENTED;
     if (g == b) break;
     g = rotate(m, g);
   }
@@ -453,7 +443,7 @@ template <class F> int edit(topolab_cgal_mesh *mesh, int *refusal, F &&body) {
   });
 }
 
-Point point(const double *p) { return Point(p[0], p[1], p[2]); }
+Point point(const double *p) { return point_of<Point>(p); }
 
 }  // namespace
 }  // namespace topolab_cgal

@@ -50,7 +50,7 @@ template <class Adapter> class CgalMesh final : public Mesh {
   // Surface_mesh's property maps point into it).
   Adapter &adapter() { return a_; }
 
-  void *native() override { return &a_.mesh; }
+  void *native() override { return a_.native(); }
   void renumber() override { a_.renumber(); }
 
   void summary(uint32_t *out) const override {

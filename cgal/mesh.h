@@ -76,11 +76,13 @@ struct topolab_cgal_mesh {
   virtual void prepare_workload(int workload) = 0;
   virtual double workload(int workload) = 0;
 
-  // The CGAL structure itself (a Surface_mesh or a Polyhedron_3, as built), for the
-  // translation units that change it (edit_surface_mesh.cpp, edit_polyhedron.cpp).
+  // For the translation units that change it (edit_surface_mesh.cpp, edit_polyhedron.cpp):
+  // the Surface_mesh itself, or the Polyhedron_3 with its id tables (polyhedron::Adapter of
+  // polyhedron.h: an edit keeps the tables).
   virtual void *native() = 0;
-  // Called after those changed it: the Polyhedron's id tables are built again (its erased
-  // elements leave the lists at once); a Surface_mesh's indices are its own.
+  // Called after those changed it wholesale (the changing workloads, the garbage collection):
+  // the Polyhedron's id tables are built again in list order (its erased elements leave the
+  // lists at once); a Surface_mesh's indices are its own.
   virtual void renumber() = 0;
 
   // mallinfo2 growth while building, set by topolab_cgal_build.

@@ -23,6 +23,7 @@ struct SurfaceMeshAdapter {
   SurfaceMesh mesh;
 
   const Graph &graph() const { return mesh; }
+  void *native() { return &mesh; }
   uint32_t vid(VI v) const { return uint32_t(v); }
   uint32_t fid(FI f) const { return uint32_t(f); }
   uint32_t hid(HI h) const { return uint32_t(h); }

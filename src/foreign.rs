@@ -1,11 +1,15 @@
 //! What the wrappers of the C++ baselines share (the `openmesh` and `cgal` modules): the status
 //! codes of their shims as typed errors, the operator and workload codes of the shims' tables,
 //! Rust closures called back from C++ with their panics carried across, the lab's checks and
-//! errors for what a halfedge library refuses, and the `explain` text of halfedge records.
+//! errors for what a halfedge library refuses, the `explain` text of halfedge records, and
+//! ([`edit`]) the one forwarding layer from `MeshEdit` to the shims' edit functions.
 //!
 //! Both shims number their statuses the same way (`openmesh/shim.h`, `cgal/shim.h`): 0 ok,
 //! 1 a refused face, 2 out of memory, 3 another C++ exception, 4 an unknown code; and their
 //! operators and workloads by the same tables (a test reads both headers).
+
+/// The forwarding layer from `MeshEdit` to the shims' edit functions.
+pub(crate) mod edit;
 
 use glam::DVec3;
 use std::any::Any;
