@@ -25,67 +25,54 @@ pub struct NativeDecimation {
     pub seconds: f64,
 }
 
-type Decimate = unsafe extern "C" fn(
-    xyz: *const f64,
-    vertices: u32,
-    triangles: *const u32,
-    faces: u32,
-    target: u32,
-    out_xyz: *mut f64,
-    out_vertices: *mut u32,
-    out_triangles: *mut u32,
-    out_faces: *mut u32,
-    seconds: *mut f64,
-) -> i32;
-
-#[cfg(has_openmesh)]
-extern "C" {
-    fn topolab_om_decimate(
-        xyz: *const f64,
-        vertices: u32,
-        triangles: *const u32,
-        faces: u32,
-        target: u32,
-        out_xyz: *mut f64,
-        out_vertices: *mut u32,
-        out_triangles: *mut u32,
-        out_faces: *mut u32,
-        seconds: *mut f64,
-    ) -> i32;
+/// Declares C decimation functions, all with the one signature of [`Decimate`]
+/// (`xyz, vertices, triangles, faces, target, out_xyz, out_vertices, out_triangles, out_faces,
+/// seconds`), each under its own `cfg`.
+macro_rules! decimate_functions {
+    ($( $(#[$cfg:meta])* fn $name:ident; )*) => {
+        /// One C decimation: the input mesh, the target face count, the output buffers sized by
+        /// the caller, the decimation's seconds; returns a status of the C API.
+        type Decimate = unsafe extern "C" fn(
+            xyz: *const f64,
+            vertices: u32,
+            triangles: *const u32,
+            faces: u32,
+            target: u32,
+            out_xyz: *mut f64,
+            out_vertices: *mut u32,
+            out_triangles: *mut u32,
+            out_faces: *mut u32,
+            seconds: *mut f64,
+        ) -> i32;
+        $(
+            $(#[$cfg])*
+            extern "C" {
+                fn $name(
+                    xyz: *const f64,
+                    vertices: u32,
+                    triangles: *const u32,
+                    faces: u32,
+                    target: u32,
+                    out_xyz: *mut f64,
+                    out_vertices: *mut u32,
+                    out_triangles: *mut u32,
+                    out_faces: *mut u32,
+                    seconds: *mut f64,
+                ) -> i32;
+            }
+        )*
+    };
 }
 
-// OpenMesh's Decimater with the library's own legality test as Debian compiles it (with its
-// assertions): only for the test that it gives the same mesh.
-#[cfg(all(has_openmesh, test))]
-extern "C" {
-    fn topolab_om_decimate_shipped(
-        xyz: *const f64,
-        vertices: u32,
-        triangles: *const u32,
-        faces: u32,
-        target: u32,
-        out_xyz: *mut f64,
-        out_vertices: *mut u32,
-        out_triangles: *mut u32,
-        out_faces: *mut u32,
-        seconds: *mut f64,
-    ) -> i32;
-}
-
-#[cfg(has_cgal_decimate)]
-extern "C" {
-    fn topolab_cgal_decimate(
-        xyz: *const f64,
-        vertices: u32,
-        triangles: *const u32,
-        faces: u32,
-        target: u32,
-        out_xyz: *mut f64,
-        out_vertices: *mut u32,
-        out_triangles: *mut u32,
-        out_faces: *mut u32,
-        seconds: *mut f64,
-    ) -> i32;
+decimate_functions! {
+    #[cfg(has_openmesh)]
+    fn topolab_om_decimate;
+    // OpenMesh's Decimater with the library's own legality test as Debian compiles it (with
+    // its assertions): only for the test that it gives the same mesh.
+    #[cfg(all(has_openmesh, test))]
+    fn topolab_om_decimate_shipped;
+    #[cfg(has_cgal_decimate)]
+    fn topolab_cgal_decimate;
 }
 
 impl NativeDecimater {

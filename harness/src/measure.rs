@@ -149,31 +149,14 @@ fn per_query_ns<M: MeshTopology>(
 }
 
 fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
-    Measurement {
-        structure: structure.into(),
-        operator: subject,
+    Measurement::new(
+        structure,
+        subject,
         kernel,
-        mesh: case.name.into(),
-        family: case.family.into(),
-        triangles: case.soup.num_faces(),
-        status: Status::Measured,
-        ns_per_item: None,
-        min_ns_per_item: None,
-        max_ns_per_item: None,
-        items: 0,
-        reps: 0,
-        checksum: None,
-        bytes: None,
-        peak_bytes: None,
-        declared_bytes: None,
-        estimate_ns_per_item: None,
-        native: false,
-        note: None,
-        cold_ns_per_item: None,
-        page_faults: None,
-        cold_page_faults: None,
-        limit: None,
-    }
+        case.name,
+        case.family,
+        case.soup.num_faces(),
+    )
 }
 
 /// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel

@@ -264,6 +264,44 @@ pub struct Measurement {
     pub limit: Option<crate::limit::Limit>,
 }
 
+impl Measurement {
+    /// A measured cell with nothing timed yet: every optional field empty, zero items and runs.
+    pub fn new(
+        structure: &str,
+        operator: Subject,
+        kernel: Kernel,
+        mesh: &str,
+        family: &str,
+        triangles: usize,
+    ) -> Self {
+        Measurement {
+            structure: structure.into(),
+            operator,
+            kernel,
+            mesh: mesh.into(),
+            family: family.into(),
+            triangles,
+            status: Status::Measured,
+            ns_per_item: None,
+            min_ns_per_item: None,
+            max_ns_per_item: None,
+            items: 0,
+            reps: 0,
+            checksum: None,
+            bytes: None,
+            peak_bytes: None,
+            declared_bytes: None,
+            estimate_ns_per_item: None,
+            native: false,
+            note: None,
+            cold_ns_per_item: None,
+            page_faults: None,
+            cold_page_faults: None,
+            limit: None,
+        }
+    }
+}
+
 /// A fitted exponent.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct FitRow {

@@ -974,29 +974,18 @@ mod tests {
             let mut l = limit_of(bytes, 0.0, 0.0);
             (l.ns_per_item, l.bandwidth_level) = (limit_ns, "memory".into());
             Measurement {
-                structure: s.into(),
-                operator: Subject::Query(Operator::R00),
-                kernel: Kernel::Sweep,
-                mesh: "torus-1M".into(),
-                family: "torus".into(),
-                triangles: 1_000_000,
-                status: Status::Measured,
                 ns_per_item: Some(ns),
-                min_ns_per_item: None,
-                max_ns_per_item: None,
                 items: 500_000,
                 reps: 1,
-                checksum: None,
-                bytes: None,
-                peak_bytes: None,
-                declared_bytes: None,
-                estimate_ns_per_item: None,
-                native: false,
-                note: None,
-                cold_ns_per_item: None,
-                page_faults: None,
-                cold_page_faults: None,
                 limit: Some(l),
+                ..Measurement::new(
+                    s,
+                    Subject::Query(Operator::R00),
+                    Kernel::Sweep,
+                    "torus-1M",
+                    "torus",
+                    1_000_000,
+                )
             }
         };
         let t = Target {
