@@ -360,29 +360,13 @@ mod tests {
 
     fn cell(operator: Subject, kernel: Kernel) -> Measurement {
         Measurement {
-            structure: "explicit".into(),
-            operator,
-            kernel,
-            mesh: "torus-200".into(),
-            family: "torus".into(),
-            triangles: 204,
-            status: Status::Measured,
             ns_per_item: Some(9540.225490196079),
             min_ns_per_item: Some(9504.588235294117),
             max_ns_per_item: Some(49622.12745098039),
             items: 102,
             reps: 23,
             checksum: Some("13793524636986848482".into()),
-            bytes: None,
-            peak_bytes: None,
-            declared_bytes: None,
-            estimate_ns_per_item: None,
-            native: false,
-            note: None,
-            cold_ns_per_item: None,
-            page_faults: None,
-            cold_page_faults: None,
-            limit: None,
+            ..Measurement::new("explicit", operator, kernel, "torus-200", "torus", 204)
         }
     }
 
