@@ -107,6 +107,8 @@ impl std::fmt::Display for EditOp {
 pub enum Refusal {
     /// An id that is out of range or names a deleted element.
     NoSuchElement,
+    /// A weld of a vertex to itself: both ids name the same vertex.
+    SameVertex,
     /// A face with fewer than three corners or a repeated vertex.
     BadFace,
     /// The result would have an edge with more than two faces.
@@ -140,6 +142,7 @@ impl Refusal {
     pub const fn message(self) -> &'static str {
         match self {
             Refusal::NoSuchElement => "an id is out of range or names a deleted element",
+            Refusal::SameVertex => "both ids name the same vertex: a vertex cannot be welded to itself",
             Refusal::BadFace => "a face needs at least three distinct vertices",
             Refusal::NonManifoldEdge => "an edge would have more than two faces",
             Refusal::NonManifoldVertex => "a vertex's faces would form several fans",
@@ -235,9 +238,11 @@ pub trait MeshEdit: MeshTopology {
         right: VertexId,
     ) -> Result<VertexId>;
     /// Merges vertex `b` into vertex `a`: every face around `b` then has `a` instead, and `b`
-    /// is deleted. Refused, nothing changed, when a face has both, or when the result would
-    /// not be an oriented manifold (an edge with three faces, or `a`'s faces in several fans:
-    /// the boundaries of `a` and `b` must meet along an edge, or one of them have no faces).
+    /// is deleted. Refused, nothing changed, when `a` and `b` are the same vertex
+    /// ([`Refusal::SameVertex`]), when a face has both ([`Refusal::BadFace`]), or when the
+    /// result would not be an oriented manifold (an edge with three faces, or `a`'s faces in
+    /// several fans: the boundaries of `a` and `b` must meet along an edge, or one of them
+    /// have no faces).
     fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
         let _ = (a, b);
         Err(crate::Error::EditRefused {

@@ -489,8 +489,11 @@ pub fn split_vertex<M: FaceRewrite>(
 /// `a`, refused when a face would have both or the result would not be a manifold.
 pub fn weld_vertices<M: FaceRewrite>(m: &mut M, a: VertexId, b: VertexId) -> Result<()> {
     let op = EditOp::WeldVertices;
-    if !live(m, a) || !live(m, b) || a == b {
+    if !live(m, a) || !live(m, b) {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    if a == b {
+        return Err(refuse::<M>(op, Refusal::SameVertex));
     }
     let old = faces_at(m, b);
     let mut new = Vec::with_capacity(old.len());

@@ -625,16 +625,21 @@ pub fn run_with<M: MeshEdit>(
     run_tally::<M>(seed, steps, not_implemented_on_polygons).map(|t| (t.done, t.refused))
 }
 
-/// How many vertex welds the random sequences of `seeds` did (each checked as in [`run`]):
-/// the suite's evidence that welds the model allows are drawn and done, not only refused.
-pub fn welds_done<M: MeshEdit>(seeds: std::ops::Range<u64>, steps: usize) -> Result<usize, String> {
-    let mut welds = 0;
+/// How many vertex welds the random sequences of `seeds` did and how many they had refused
+/// (each checked as in [`run`]): the suite's evidence that welds the model allows are drawn
+/// and done, and welds it forbids drawn and refused, not only one of the two.
+pub fn weld_counts<M: MeshEdit>(
+    seeds: std::ops::Range<u64>,
+    steps: usize,
+) -> Result<(usize, usize), String> {
+    let (mut done, mut refused) = (0, 0);
     for seed in seeds {
-        welds += run_tally::<M>(seed, steps, false)
-            .map_err(|msg| format!("seed {seed}: {msg}"))?
-            .welds;
+        let tally =
+            run_tally::<M>(seed, steps, false).map_err(|msg| format!("seed {seed}: {msg}"))?;
+        done += tally.welds;
+        refused += tally.welds_refused;
     }
-    Ok(welds)
+    Ok((done, refused))
 }
 
 /// What a run did.
@@ -642,6 +647,7 @@ struct Tally {
     done: usize,
     refused: usize,
     welds: usize,
+    welds_refused: usize,
 }
 
 fn run_tally<M: MeshEdit>(
@@ -653,6 +659,7 @@ fn run_tally<M: MeshEdit>(
         done: 0,
         refused: 0,
         welds: 0,
+        welds_refused: 0,
     };
     let soup = start_mesh(seed);
     let may_refuse = not_implemented_on_polygons && !soup.is_triangle_mesh();
@@ -677,7 +684,10 @@ fn run_tally<M: MeshEdit>(
                 tally.done += 1;
                 tally.welds += matches!(edit, Edit::Weld(..)) as usize;
             }
-            (None, Err(e)) if e.kind() == "edit-refused" => tally.refused += 1,
+            (None, Err(e)) if e.kind() == "edit-refused" => {
+                tally.refused += 1;
+                tally.welds_refused += matches!(edit, Edit::Weld(..)) as usize;
+            }
             (
                 Some(_),
                 Err(Error::EditRefused {
@@ -803,9 +813,10 @@ macro_rules! edit_conformance {
                 let cases = $crate::testing::weld::weld_vertex_cases::<$ty>()
                     .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
                 assert!(cases >= 8, "only {cases} weld cases ran");
-                let welds = $crate::testing::editing::welds_done::<$ty>(0..200, 40)
+                let (done, refused) = $crate::testing::editing::weld_counts::<$ty>(0..200, 40)
                     .unwrap_or_else(|msg| panic!("{msg}"));
-                assert!(welds >= 20, "only {welds} random welds done");
+                assert!(done >= 20, "only {done} random welds done");
+                assert!(refused >= 20, "only {refused} random welds refused");
             }
         }
     };

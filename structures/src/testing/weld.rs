@@ -350,9 +350,9 @@ fn weld_refused<M: MeshEdit>(
 /// [`MeshEdit::weld_vertices`] on chosen cases: boundaries that zip by one edge (a slit fan
 /// in both weld orders, a slit disk zipped vertex by vertex), a square hole closed by welding
 /// two opposite corners and a slit sphere closed (both ends merge), unused vertices, and the
-/// refusals (a shared face,
-/// an interior vertex, boundaries that meet at no edge, a neighbour of both through interior
-/// edges, one vertex twice, an id out of range). Returns how many cases ran.
+/// refusals (a shared face, an interior vertex, boundaries that meet at no edge, a neighbour
+/// of both through interior edges, one vertex twice, used or unused ([`Refusal::SameVertex`]),
+/// an id out of range, alone or twice: the ids are checked first). Returns how many cases ran.
 pub fn weld_vertex_cases<M: MeshEdit>() -> Result<usize, String> {
     let mut cases = 0;
     for k in 3..=6u32 {
@@ -394,7 +394,11 @@ pub fn weld_vertex_cases<M: MeshEdit>() -> Result<usize, String> {
     let (p, f) = fan(4, true);
     let disk = PolygonSoup::from_polygons(p, &f);
     let manifold = [Refusal::NonManifoldVertex, Refusal::NonManifoldEdge];
-    let (shared, none) = ([Refusal::BadFace], [Refusal::NoSuchElement]);
+    let (shared, same, none) = (
+        [Refusal::BadFace],
+        [Refusal::SameVertex],
+        [Refusal::NoSuchElement],
+    );
     for (name, soup, pair, reasons) in [
         ("a shared face", &holed, (5, 6), &shared[..]),
         ("a diagonal", &grid(false), (0, 5), &shared),
@@ -402,8 +406,10 @@ pub fn weld_vertex_cases<M: MeshEdit>() -> Result<usize, String> {
         ("two boundaries", &holed, (5, 15), &manifold),
         ("a band's seam", &band(6), (0, 6), &manifold),
         ("a centre of both", &disk, (1, 3), &manifold),
-        ("one vertex twice", &holed, (3, 3), &none),
+        ("one vertex twice", &holed, (3, 3), &same),
+        ("one unused vertex twice", &lonely, (16, 16), &same),
         ("an id out of range", &holed, (3, 16), &none),
+        ("an id out of range twice", &holed, (16, 16), &none),
     ] {
         weld_refused::<M>(name, soup, pair, reasons)?;
         cases += 1;

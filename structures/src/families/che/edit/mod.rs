@@ -27,10 +27,22 @@
 //! are marked ([`Deletion::Marked`]): a deleted vertex keeps its slot in `G[]` (and `VH[v] =
 //! -1`) until [`MeshEdit::garbage_collection`] renumbers `V[]`.
 //!
-//! Add face, delete face, delete vertex and split vertex are done by rebuilding `O[]`, `VH[]`,
-//! `EH` and `CH[]` from the edited `V[]` with the fast construction (O(n)), which also refuses
-//! a result that is not an oriented manifold with one fan per vertex: whether a face fits
-//! needs the boundary loops a half-edge structure links and the CHE does not store.
+//! Add face, delete face, delete vertex, split vertex and weld vertices are done by rebuilding
+//! `O[]`, `VH[]`, `EH` and `CH[]` from an edited copy of `V[]` with the fast construction
+//! (O(n)), which also refuses a result that is not an oriented manifold with one fan per
+//! vertex: whether a face fits needs the boundary loops a half-edge structure links and the
+//! CHE does not store. The containers are replaced only once the rebuild succeeded, so a
+//! refused edit changes nothing.
+//!
+//! A weld of `b` into `a` ([`MeshEdit::weld_vertices`]) renames `b`'s corners `a` in that
+//! copy and marks `b` deleted. It is refused, with the half-edges' reasons, when both ids
+//! name one vertex ([`Refusal::SameVertex`]), when a triangle has both
+//! ([`Refusal::BadFace`], found by the scan of `V[]` that finds `b`'s corners), and when the
+//! rebuild finds an edge with more than two triangles or run twice the same way
+//! ([`Refusal::NonManifoldEdge`]: a neighbour of both away from where their boundaries meet)
+//! or a vertex in several fans ([`Refusal::NonManifoldVertex`]: an interior vertex welded
+//! to a used one, or boundaries that meet at no edge). A `b` without triangles is only
+//! marked.
 //!
 //! Levels 0 and 1 have no `VH[]`: the star of a vertex starts with a scan of `V[]` (Algorithms
 //! 5 and 6), so every edit that must look around a vertex (the flip's check that the new edge
@@ -42,7 +54,7 @@
 //! | operation | L0 | L1 | L2 | L3 |
 //! |---|---|---|---|---|
 //! | add vertex | O(1) | O(1) | O(1) | O(1) |
-//! | add face, delete face, delete vertex, split vertex | O(n) rebuild | O(n) rebuild | O(n) rebuild | O(n) rebuild |
+//! | add face, delete face, delete vertex, split vertex, weld vertices | O(n) rebuild | O(n) rebuild | O(n) rebuild | O(n) rebuild |
 //! | flip edge | O(n) scans | O(n): the star scan of Algorithm 6 | O(n): `EH` | O(n): `EH` (and Algorithm 4 on the boundary) |
 //! | split edge, split face | O(n) scans | O(k) | O(n): `EH` | O(n): `EH` |
 //! | collapse edge | O(n) scans | O(n): star scans | O(n): `EH` | O(n): `EH` |
@@ -197,6 +209,7 @@ fn edit_cost(level: u8, op: EditOp) -> Cost {
     match (level, op) {
         (_, EditOp::AddVertex) => Cost::Constant,
         (1, EditOp::SplitEdge | EditOp::SplitFace) => Cost::Local,
+        // The rebuilds (weld vertices among them), the `EH` rebuild and the scans of V[].
         _ => Cost::Linear,
     }
 }
@@ -223,6 +236,9 @@ macro_rules! che_edit {
 
             fn edit_cost(op: EditOp) -> Cost {
                 edit_cost($level, op)
+            }
+            fn supports(_op: EditOp) -> bool {
+                true
             }
             fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
                 let mut parts = self.parts();
@@ -262,6 +278,9 @@ macro_rules! che_edit {
             ) -> Result<VertexId> {
                 self.edited(|parts| parts.split_vertex(v.0, p, left.0, right.0))
                     .map(VertexId)
+            }
+            fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
+                self.edited(|p| p.weld(a.0, b.0))
             }
             fn is_deleted_vertex(&self, v: VertexId) -> bool {
                 self.deleted_marks()

@@ -330,6 +330,33 @@ impl Parts<'_> {
         Ok(())
     }
 
+    /// Merges `b` into `a` (see the [module docs](super)): the corners of `b` in a copy of
+    /// `V[]` become `a`, and the rebuild refuses a result that is not an oriented manifold
+    /// with one fan per vertex, before anything is replaced.
+    pub(super) fn weld(&mut self, a: u32, b: u32) -> Result<()> {
+        let op = EditOp::WeldVertices;
+        if !self.live_vertex(a) || !self.live_vertex(b) {
+            return Err(self.refuse(op, Refusal::NoSuchElement));
+        }
+        if a == b {
+            return Err(self.refuse(op, Refusal::SameVertex));
+        }
+        let mut uses_b = false;
+        for t in self.v.chunks_exact(3) {
+            let has_b = t.contains(&b);
+            if has_b && t.contains(&a) {
+                return Err(self.refuse(op, Refusal::BadFace));
+            }
+            uses_b |= has_b;
+        }
+        if uses_b {
+            let v: Vec<u32> = self.v.iter().map(|&x| if x == b { a } else { x }).collect();
+            self.rebuild(op, v, self.g.len())?;
+        }
+        self.mark_deleted(b);
+        Ok(())
+    }
+
     pub(super) fn flip(&mut self, e: u32) -> Result<()> {
         let op = EditOp::FlipEdge;
         let h = self.half_edge(op, e)?;

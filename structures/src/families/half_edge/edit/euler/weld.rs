@@ -16,7 +16,7 @@
 //! a used one or two boundaries that meet at no edge ([`Refusal::NonManifoldVertex`]), and a
 //! neighbour of both other than at a merged end ([`Refusal::NonManifoldEdge`]: the edge to it
 //! would be doubled, with three or four faces or twice the same way). One vertex twice is
-//! [`Refusal::NoSuchElement`], as in the face-rewrite structures.
+//! [`Refusal::SameVertex`], as in the face-rewrite structures and the CHE.
 //!
 //! Cost: O(k) for the checks (the faces around `b`, the neighbours of both) and the renaming
 //! of `b`'s half-edges, plus O(1) per merged boundary edge (O(k) where `prev` is a walk).
@@ -70,7 +70,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         self.live_vertex(a, op)?;
         self.live_vertex(b, op)?;
         if a == b {
-            return Err(Self::refuse(op, Refusal::NoSuchElement));
+            return Err(Self::refuse(op, Refusal::SameVertex));
         }
         let (oa, ob) = (self.out_of(a), self.out_of(b));
         if ob == NONE {
