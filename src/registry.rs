@@ -66,9 +66,27 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
 /// Runs `visitor` with the editable structure (one that implements `MeshEdit`) called
 /// `name`: the crate's structures marked `[editable]` in its registry list, then the
 /// baselines that implement `MeshEdit` (a baseline that does is one line here,
-/// `#[cfg(has_x)] if name == X { return Some(visitor.visit::<X>()); }`). `None` if there is
-/// none of that name in this build or it does not edit.
+/// `#[cfg(has_x)] if name == X { return Some(visitor.visit::<X>()); }`): OpenMesh and CGAL's
+/// two structures, through their own Euler operations. `None` if there is none of that name
+/// in this build or it does not edit.
+///
+/// Callers that need more than `MeshEdit` offers tell the baselines apart by
+/// [`CPP_BASELINES`]: the report runs their changing workloads natively
+/// ([`NATIVE_CHANGING`]), and `explain --op`, which lists a structure's records, cannot list
+/// records kept inside a C++ library.
 pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    #[cfg(has_openmesh)]
+    if name == OPENMESH {
+        return Some(visitor.visit::<crate::openmesh::OpenMesh>());
+    }
+    #[cfg(has_cgal)]
+    if name == CGAL_SURFACE_MESH {
+        return Some(visitor.visit::<crate::cgal::SurfaceMesh>());
+    }
+    #[cfg(has_cgal)]
+    if name == CGAL_POLYHEDRON {
+        return Some(visitor.visit::<crate::cgal::Polyhedron>());
+    }
     structures::visit_editable(name, visitor)
 }
 
@@ -171,6 +189,24 @@ mod tests {
         assert_eq!(is_editable(OPENMESH), crate::HAS_OPENMESH);
         assert_eq!(is_editable(CGAL_SURFACE_MESH), crate::HAS_CGAL);
         assert_eq!(is_editable(CGAL_POLYHEDRON), crate::HAS_CGAL);
+    }
+
+    #[test]
+    fn every_baseline_in_this_build_is_visited_as_an_editable_structure_as_itself() {
+        struct EditName;
+        impl EditVisitor for EditName {
+            type Output = &'static str;
+            fn visit<M: topolab_structures::MeshEdit>(self) -> &'static str {
+                M::NAME
+            }
+        }
+        for name in CPP_BASELINES {
+            let expected = NAMES.contains(&name).then_some(name);
+            assert_eq!(visit_editable(name, EditName), expected, "{name}");
+        }
+        for name in structures::editable_names() {
+            assert_eq!(visit_editable(name, EditName), Some(name));
+        }
     }
 
     #[test]

@@ -240,3 +240,79 @@ fn a_refused_collapse_on_the_face_rewrite_structures_exits_with_its_reason() {
         );
     }
 }
+
+#[test]
+fn an_edit_on_a_cpp_baseline_says_its_records_live_in_the_library() {
+    // Built in or not, each baseline is named with why --op cannot show it, as a usage error.
+    for name in topolab::registry::CPP_BASELINES {
+        let out = topolab(&["explain", name, "--op", "flip", "--edge", "1"]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(
+            stderr.contains(&format!("{name} edits through its C++ library"))
+                && stderr.contains("records live inside that library"),
+            "{name}: {stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(out.stdout.is_empty(), "{name}: nothing printed");
+    }
+}
+
+/// The cost `topolab list` prints for editing operation `op` in `structure`'s column of its
+/// editing table, if the table has that column.
+fn listed_edit_cost(list: &str, structure: &str, op: &str) -> Option<String> {
+    let table = list
+        .split("Editing operations (MeshEdit) and their cost\n")
+        .nth(1)?;
+    let mut lines = table.lines();
+    let column = lines
+        .next()?
+        .split_whitespace()
+        .position(|name| name == structure)?;
+    let row = lines.find(|l| l.split_whitespace().next() == Some(op))?;
+    row.split_whitespace().nth(column).map(str::to_string)
+}
+
+#[cfg(has_openmesh)]
+#[test]
+fn list_shows_the_edit_costs_of_openmesh_beside_the_others() {
+    let out = topolab(&["list"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    // OpenMesh's own Euler operations: the 2-to-4 split appends, a flip is local.
+    assert_eq!(
+        listed_edit_cost(&text, "openmesh", "split-edge").as_deref(),
+        Some("O(1)"),
+        "{text}"
+    );
+    assert_eq!(
+        listed_edit_cost(&text, "openmesh", "flip-edge").as_deref(),
+        Some("O(k)"),
+        "{text}"
+    );
+    // The same table as before for the lab's structures (the CHE's weld is a rebuild).
+    assert_eq!(
+        listed_edit_cost(&text, "che-l3", "weld-vertices").as_deref(),
+        Some("O(n)"),
+        "{text}"
+    );
+    let json = topolab(&["list", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let editing = v["editing"].as_array().expect("an editing list");
+    assert!(
+        editing.iter().any(|row| row["name"] == "openmesh"),
+        "{editing:?}"
+    );
+}
+
+#[cfg(not(has_openmesh))]
+mod common;
+
+#[cfg(not(has_openmesh))]
+#[test]
+fn skipped_openmesh_edit_costs_in_list_not_compiled_in() {
+    common::report_skip("openmesh's edit costs in list", topolab::OPENMESH_MISSING);
+    let out = topolab(&["list"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(listed_edit_cost(&text, "openmesh", "split-edge"), None);
+}

@@ -4,7 +4,9 @@
 //! for the half-edges, the edge list and the vertex list, the lecture on 3D convex hulls for
 //! the winged-edge's record, the CHE thesis chapter for the CHE's containers), and what it
 //! reads. Every structure the registry marks `[editable]` is explained
-//! ([`editable`]); the reads are described per family ([`Family`]).
+//! ([`editable`]); the reads are described per family ([`Family`]). The C++ baselines edit
+//! too, but their records live inside the C++ library, out of this command's reach: asked for
+//! one, it says so, as a usage error.
 //!
 //! Edges are numbered as `--trace` numbers them: the mesh's edges in order of first
 //! appearance (the index half-edge's edge ids), so `--edge E` is the same edge on every
@@ -19,7 +21,7 @@
 
 use super::explain_records::explained_records;
 use crate::input::{mesh_or_tetrahedron, Failure};
-use crate::registry::{visit_editable, EditVisitor, NAMES};
+use crate::registry::{missing_baseline, visit_editable, EditVisitor, CPP_BASELINES, NAMES};
 use std::any::{Any, TypeId};
 use std::collections::HashMap;
 use std::fmt::Write;
@@ -41,7 +43,8 @@ pub enum ExplainOp {
 }
 
 /// The structures `--op` can explain: every one the registry marks `[editable]` (that
-/// [`visit_editable`] reaches), in the registry's order.
+/// [`visit_editable`] reaches) but the C++ baselines, whose records it cannot list
+/// ([`CPP_BASELINES`]), in the registry's order.
 pub fn editable() -> Vec<&'static str> {
     struct Probe;
     impl EditVisitor for Probe {
@@ -51,6 +54,7 @@ pub fn editable() -> Vec<&'static str> {
     NAMES
         .iter()
         .copied()
+        .filter(|name| !CPP_BASELINES.contains(name))
         .filter(|name| visit_editable(name, Probe).is_some())
         .collect()
 }
@@ -127,6 +131,14 @@ pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<S
             .collect()
     } else if editable.contains(&name) {
         vec![name]
+    } else if CPP_BASELINES.contains(&name) {
+        let absent = missing_baseline(name)
+            .map(|why| format!(" (and it is not in this build: {why})"))
+            .unwrap_or_default();
+        return Err(Failure::usage(format!(
+            "--op: {name} edits through its C++ library's own Euler operations, and its records live inside that library, which --op cannot list{absent}; `topolab list` and `topolab explain {name}` show its declared edit costs. The structures whose records --op shows: che (its four levels), {}",
+            editable.join(", ")
+        )));
     } else {
         return Err(Failure::usage(format!(
             "--op: {name:?} cannot edit (or is not a structure); the editable structures: che (its four levels), {}",
