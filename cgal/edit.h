@@ -72,6 +72,11 @@ int topolab_cgal_sm_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32
 int topolab_cgal_sm_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
                                       uint32_t left, uint32_t right, int *refusal,
                                       uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+/* Vertex b merged into vertex a (MeshEdit::weld_vertices): PMP::stitch_borders on the one or
+ * two pairs of border halfedges where their boundaries meet, or remove_vertex where one has no
+ * faces (edit_rules.h). */
+int topolab_cgal_sm_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) TOPOLAB_CGAL_NOEXCEPT;
 /* *out = 1 when vertex (kind 0), edge (kind 1) or face (kind 2) `id` is marked removed. */
 int topolab_cgal_sm_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) TOPOLAB_CGAL_NOEXCEPT;
@@ -107,6 +112,8 @@ int topolab_cgal_ph_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32
 int topolab_cgal_ph_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
                                       uint32_t left, uint32_t right, int *refusal,
                                       uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) TOPOLAB_CGAL_NOEXCEPT;
 int topolab_cgal_ph_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) TOPOLAB_CGAL_NOEXCEPT;
 int topolab_cgal_ph_edit_garbage_collection(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;

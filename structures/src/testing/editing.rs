@@ -628,9 +628,19 @@ pub fn run_with<M: MeshEdit>(
 /// How many vertex welds the random sequences of `seeds` did (each checked as in [`run`]):
 /// the suite's evidence that welds the model allows are drawn and done, not only refused.
 pub fn welds_done<M: MeshEdit>(seeds: std::ops::Range<u64>, steps: usize) -> Result<usize, String> {
+    welds_done_with::<M>(seeds, steps, false)
+}
+
+/// [`welds_done`] with the allowance of [`run_with`] (for a library's polygon kernel that
+/// refuses the triangle operations).
+pub fn welds_done_with<M: MeshEdit>(
+    seeds: std::ops::Range<u64>,
+    steps: usize,
+    not_implemented_on_polygons: bool,
+) -> Result<usize, String> {
     let mut welds = 0;
     for seed in seeds {
-        welds += run_tally::<M>(seed, steps, false)
+        welds += run_tally::<M>(seed, steps, not_implemented_on_polygons)
             .map_err(|msg| format!("seed {seed}: {msg}"))?
             .welds;
     }
@@ -835,6 +845,20 @@ macro_rules! edit_conformance {
                     refused += r;
                 }
                 assert!(done > 400 && refused > 100, "{done} edits done, {refused} refused");
+            }
+
+            #[test]
+            fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
+                use $crate::MeshEdit as _;
+                if !<$ty>::supports($crate::EditOp::WeldVertices) {
+                    return;
+                }
+                let cases = $crate::testing::weld::weld_vertex_cases::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert!(cases >= 8, "only {cases} weld cases ran");
+                let welds = $crate::testing::editing::welds_done_with::<$ty>(0..200, 40, true)
+                    .unwrap_or_else(|msg| panic!("{msg}"));
+                assert!(welds >= 20, "only {welds} random welds done");
             }
         }
     };
