@@ -647,6 +647,23 @@ pub fn welds_done_with<M: MeshEdit>(
     Ok(welds)
 }
 
+/// The suite's vertex-weld test, nothing where `M` does not weld: the chosen cases
+/// ([`weld_vertex_cases`](crate::testing::weld::weld_vertex_cases)) and the welds done in 200
+/// random sequences ([`welds_done_with`], with `not_implemented_on_polygons` as in
+/// [`run_with`]), enough of each to show that welds are done, not only refused. Panics on a
+/// disagreement.
+pub fn vertex_welds<M: MeshEdit>(not_implemented_on_polygons: bool) {
+    if !M::supports(crate::EditOp::WeldVertices) {
+        return;
+    }
+    let cases = crate::testing::weld::weld_vertex_cases::<M>()
+        .unwrap_or_else(|msg| panic!("{}: {msg}", M::NAME));
+    assert!(cases >= 8, "only {cases} weld cases ran");
+    let welds = welds_done_with::<M>(0..200, 40, not_implemented_on_polygons)
+        .unwrap_or_else(|msg| panic!("{msg}"));
+    assert!(welds >= 20, "only {welds} random welds done");
+}
+
 /// What a run did.
 struct Tally {
     done: usize,
@@ -806,16 +823,7 @@ macro_rules! edit_conformance {
 
             #[test]
             fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
-                use $crate::MeshEdit as _;
-                if !<$ty>::supports($crate::EditOp::WeldVertices) {
-                    return;
-                }
-                let cases = $crate::testing::weld::weld_vertex_cases::<$ty>()
-                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
-                assert!(cases >= 8, "only {cases} weld cases ran");
-                let welds = $crate::testing::editing::welds_done::<$ty>(0..200, 40)
-                    .unwrap_or_else(|msg| panic!("{msg}"));
-                assert!(welds >= 20, "only {welds} random welds done");
+                $crate::testing::editing::vertex_welds::<$ty>(false);
             }
         }
     };
@@ -849,16 +857,7 @@ macro_rules! edit_conformance {
 
             #[test]
             fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
-                use $crate::MeshEdit as _;
-                if !<$ty>::supports($crate::EditOp::WeldVertices) {
-                    return;
-                }
-                let cases = $crate::testing::weld::weld_vertex_cases::<$ty>()
-                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
-                assert!(cases >= 8, "only {cases} weld cases ran");
-                let welds = $crate::testing::editing::welds_done_with::<$ty>(0..200, 40, true)
-                    .unwrap_or_else(|msg| panic!("{msg}"));
-                assert!(welds >= 20, "only {welds} random welds done");
+                $crate::testing::editing::vertex_welds::<$ty>(true);
             }
         }
     };
