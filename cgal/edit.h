@@ -39,6 +39,7 @@ int topolab_cgal_polyhedron_changing(topolab_cgal_mesh *mesh, int workload) TOPO
 #define TOPOLAB_CGAL_REFUSAL_NOT_NEIGHBOURS 7
 #define TOPOLAB_CGAL_REFUSAL_LINK_CONDITION 8
 #define TOPOLAB_CGAL_REFUSAL_NOT_IMPLEMENTED 9
+#define TOPOLAB_CGAL_REFUSAL_SAME_VERTEX 10
 
 /* add_vertex(p) (p = 3 doubles); *out = the new vertex (appended). */
 int topolab_cgal_sm_edit_add_vertex(topolab_cgal_mesh *mesh, const double *p,
@@ -72,6 +73,11 @@ int topolab_cgal_sm_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32
 int topolab_cgal_sm_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
                                       uint32_t left, uint32_t right, int *refusal,
                                       uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+/* Vertex b merged into vertex a (MeshEdit::weld_vertices): PMP::stitch_borders on the one or
+ * two pairs of border halfedges where their boundaries meet, or remove_vertex where one has no
+ * faces (edit_rules.h). */
+int topolab_cgal_sm_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) TOPOLAB_CGAL_NOEXCEPT;
 /* *out = 1 when vertex (kind 0), edge (kind 1) or face (kind 2) `id` is marked removed. */
 int topolab_cgal_sm_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) TOPOLAB_CGAL_NOEXCEPT;
@@ -107,6 +113,8 @@ int topolab_cgal_ph_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32
 int topolab_cgal_ph_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
                                       uint32_t left, uint32_t right, int *refusal,
                                       uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;
+int topolab_cgal_ph_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) TOPOLAB_CGAL_NOEXCEPT;
 int topolab_cgal_ph_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) TOPOLAB_CGAL_NOEXCEPT;
 int topolab_cgal_ph_edit_garbage_collection(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;

@@ -30,6 +30,8 @@
 // violated), with two differences: a Polyhedron_3 vertex's halfedge is any halfedge into it
 // (its border test circulates), so nothing restores border halfedges after an edit; and the
 // deletions run CGAL's remove_face keeping isolated vertices here too, on the BGL functions.
+// The vertex weld is edit_rules.h's template, the same as Surface_mesh's (stitch_borders),
+// with the ids of the edges and the vertex it removes buried first.
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/internal/helpers.h>
@@ -454,6 +456,23 @@ int split_vertex(Adapter &a, uint32_t v1i, const Point &p, uint32_t vli, uint32_
   return OK_EDIT;
 }
 
+// The weld's id table (edit_rules.h): the adapter's, whose slots of what CGAL erases are
+// buried first; a vertex's halfedge is any halfedge into it, so nothing is restored.
+struct WeldIds {
+  Adapter &a;
+  bool live(uint32_t v) const { return topolab_cgal::live(a, v); }
+  VH vertex(uint32_t v) const { return a.vertex(v); }
+  uint32_t id(VH v) const { return uint32_t(v->id()); }
+  void bury_vertex(uint32_t v) { a.bury_vertex(v); }
+  void bury_edge(HH h) { a.bury_edge(eid(h)); }
+  void touched(VH) {}
+};
+
+int weld(Adapter &a, uint32_t v, uint32_t w) {
+  WeldIds ids{a};
+  return weld_vertices(a.mesh, ids, v, w);
+}
+
 // Runs an edit: OK, or EDIT_REFUSED with *refusal set. After a failure part-way the ids are
 // given again in list order, so that no table keeps the handle of an erased element.
 template <class F> int edit(topolab_cgal_mesh *mesh, int *refusal, F &&body) {
@@ -567,6 +586,12 @@ int topolab_cgal_ph_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const
   using namespace topolab_cgal;
   return edit(mesh, refusal,
               [&](Adapter &a) { return split_vertex(a, v, point(p), left, right, out); });
+}
+
+int topolab_cgal_ph_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) noexcept {
+  using namespace topolab_cgal;
+  return edit(mesh, refusal, [&](Adapter &ad) { return weld(ad, a, b); });
 }
 
 int topolab_cgal_ph_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,

@@ -36,6 +36,10 @@
 // unused (as a file's unused vertices are kept), so delete face runs CGAL's remove_face with
 // that one line changed (the vertex's halfedge is cleared instead).
 //
+// - vertex weld: Polygon_mesh_processing::stitch_borders on the pairs of border halfedges
+//   where the two boundaries meet, or remove_vertex where one vertex has no faces (the
+//   template of edit_rules.h, shared with edit_polyhedron.cpp).
+//
 // Garbage collection keeps the survivors' order, as MeshEdit promises; collect_garbage fills
 // each hole with the last live element (two indices walking towards each other), so the
 // compaction builds the mesh again from the live elements in order (add_vertex, add_face):
@@ -402,6 +406,23 @@ int split_vertex(SurfaceMesh &m, uint32_t v1i, const Point &p, uint32_t vli, uin
   return OK_EDIT;
 }
 
+// The weld's id table (edit_rules.h): Surface_mesh's indices, which only mark removal, so
+// nothing is buried; a vertex whose halfedge CGAL set gets its border halfedge back.
+struct WeldIds {
+  SurfaceMesh &m;
+  bool live(uint32_t v) const { return topolab_cgal::live(m, v); }
+  VI vertex(uint32_t v) const { return VI(v); }
+  uint32_t id(VI v) const { return uint32_t(v); }
+  void bury_vertex(uint32_t) {}
+  void bury_edge(HI) {}
+  void touched(VI v) { restore_border_halfedges(m, {v}); }
+};
+
+int weld(SurfaceMesh &m, uint32_t a, uint32_t b) {
+  WeldIds ids{m};
+  return weld_vertices(m, ids, a, b);
+}
+
 // The survivors in their order (see the file's notes): positions and face lists read, the
 // mesh cleared and built again with add_vertex and add_face.
 void compact(SurfaceMesh &m) {
@@ -535,6 +556,12 @@ int topolab_cgal_sm_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const
   using namespace topolab_cgal;
   return edit(mesh, refusal,
               [&](SurfaceMesh &m) { return split_vertex(m, v, point(p), left, right, out); });
+}
+
+int topolab_cgal_sm_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
+                              int *refusal) noexcept {
+  using namespace topolab_cgal;
+  return edit(mesh, refusal, [&](SurfaceMesh &m) { return weld(m, a, b); });
 }
 
 int topolab_cgal_sm_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,

@@ -1,6 +1,7 @@
 // The C API of edit.h: topolab's MeshEdit through OpenMesh's own operations (add_vertex,
 // add_face, delete_face, delete_vertex, TriConnectivity's flip, 2-to-4 split and
-// vertex_split, PolyConnectivity's face split and collapse).
+// vertex_split, PolyConnectivity's face split and collapse), and the vertex weld, which
+// OpenMesh lacks, written with its low-level connectivity setters as its own operators are.
 //
 // Each operation first checks everything that could make it refuse, with OpenMesh's handles
 // and circulators, and only then calls OpenMesh, so that a refused edit writes nothing and
@@ -47,6 +48,7 @@ enum Refusal {
   NOT_NEIGHBOURS = TOPOLAB_OM_REFUSAL_NOT_NEIGHBOURS,
   LINK_CONDITION = TOPOLAB_OM_REFUSAL_LINK_CONDITION,
   NOT_IMPLEMENTED = TOPOLAB_OM_REFUSAL_NOT_IMPLEMENTED,
+  SAME_VERTEX = TOPOLAB_OM_REFUSAL_SAME_VERTEX,
 };
 
 template <class M> constexpr bool is_tri() { return std::is_same<M, Tri>::value; }
@@ -296,6 +298,124 @@ int split_vertex(M &m, uint32_t v1i, const double *p, uint32_t vli, uint32_t vri
   }
 }
 
+// The halfedge into v on the boundary, invalid if v is interior: by rotation, as the half-edges'
+// incoming_boundary (OpenMesh's own adjust_outgoing_halfedge is not relied on).
+template <class M> HH boundary_into(const M &m, VH v) {
+  const HH start = m.halfedge_handle(v);
+  HH h = start;
+  do {
+    const HH in = m.opposite_halfedge_handle(h);
+    if (m.is_boundary(in)) return in;
+    h = rotate(m, h);
+  } while (h != start);
+  return HH();
+}
+
+// The boundary halfedge `keep` takes the place of opposite(drop) in its face, and the edge of
+// `drop` (a boundary halfedge running against `keep`) is marked deleted, with both halfedges,
+// as delete_edge marks them.
+template <class M> void merge_boundary_edges(M &m, HH keep, HH drop) {
+  const HH inner = m.opposite_halfedge_handle(drop);
+  const HH before = m.prev_halfedge_handle(inner), after = m.next_halfedge_handle(inner);
+  const FH f = m.face_handle(inner);
+  m.set_face_handle(keep, f);
+  m.set_next_halfedge_handle(before, keep);
+  m.set_next_halfedge_handle(keep, after);
+  if (m.halfedge_handle(f) == inner) m.set_halfedge_handle(f, keep);
+  m.status(m.edge_handle(drop)).set_deleted(true);
+  m.status(drop).set_deleted(true);
+  m.status(inner).set_deleted(true);
+}
+
+// MeshEdit::weld_vertices, b merged into a. OpenMesh has no weld (its remove_edge merges two
+// faces, not two vertices), so this is the half-edges' algorithm (structures/src/families/
+// half_edge/edit/euler/weld.rs) written with ArrayKernel's low-level connectivity setters
+// (set_vertex_handle, set_next_halfedge_handle, set_face_handle, set_halfedge_handle), as
+// OpenMesh's own collapse_edge and remove_edge are: every halfedge into b ends at a; where the
+// boundaries meet along an edge (a's runs q -> a -> p, b's s -> b -> r, with s == p or r == q),
+// each pair of boundary edges becomes one interior edge, a's boundary halfedge taking the place
+// of b's inner one in its face, and b's edge marked deleted. Face ids stay (deleting b's faces
+// and adding them again with a, through the documented API, would give them new ids).
+//
+// Every check runs before the first write, with the half-edges' reasons in their order, so the
+// shared cases agree: a dead id (NO_SUCH_ELEMENT); one vertex twice (SAME_VERTEX); a face around b holding a
+// (BAD_FACE); both used and one interior, or boundaries that meet at no edge
+// (NON_MANIFOLD_VERTEX); a neighbour of both other than p and q (NON_MANIFOLD_EDGE).
+template <class M> int weld(M &m, uint32_t ai, uint32_t bi) {
+  if (!live(m, ai) || !live(m, bi)) return NO_SUCH_ELEMENT;
+  if (ai == bi) return SAME_VERTEX;
+  const VH a{int(ai)}, b{int(bi)};
+  const HH ob = m.halfedge_handle(b);
+  if (!ob.is_valid()) {
+    m.delete_vertex(b, /*_delete_isolated_vertices=*/false);  // nothing refers to b
+    return OK_EDIT;
+  }
+  // No face around b may hold a (an edge a-b always has a face).
+  HH h = ob;
+  do {
+    if (!m.is_boundary(h))
+      for (VH v : m.fv_range(m.face_handle(h)))
+        if (v == a) return BAD_FACE;
+    h = rotate(m, h);
+  } while (h != ob);
+  HH a_in, a_out, b_in, b_out;
+  VH p, q;
+  bool at_p = false, at_q = false;
+  if (m.halfedge_handle(a).is_valid()) {
+    a_in = boundary_into(m, a);
+    b_in = boundary_into(m, b);
+    if (!a_in.is_valid() || !b_in.is_valid()) return NON_MANIFOLD_VERTEX;
+    a_out = m.next_halfedge_handle(a_in);
+    b_out = m.next_halfedge_handle(b_in);
+    p = m.to_vertex_handle(a_out);
+    q = m.from_vertex_handle(a_in);
+    // Boundary halfedges that would run the same way (b -> p beside a -> p) cannot meet: p
+    // would have two boundary halfedges into it.
+    at_p = m.from_vertex_handle(b_in) == p;
+    at_q = m.to_vertex_handle(b_out) == q;
+    if (!at_p && !at_q) return NON_MANIFOLD_VERTEX;
+    // Any other neighbour of both would get two edges to a.
+    std::vector<int> around_a;
+    for (VH w : m.vv_range(a)) around_a.push_back(w.idx());
+    std::sort(around_a.begin(), around_a.end());
+    for (VH y : m.vv_range(b)) {
+      if ((at_p && y == p) || (at_q && y == q)) continue;
+      if (std::binary_search(around_a.begin(), around_a.end(), y.idx())) return NON_MANIFOLD_EDGE;
+    }
+  }
+  // Every halfedge into b ends at a.
+  h = ob;
+  do {
+    m.set_vertex_handle(m.opposite_halfedge_handle(h), a);
+    h = rotate(m, h);
+  } while (h != ob);
+  HH out_a = ob;  // a was unused: it takes b's fan as it is
+  if (at_p && !at_q) {
+    // ... q -> a -> p -> b -> r ... becomes ... q -> a -> r ...; p is closed.
+    merge_boundary_edges(m, a_out, b_in);
+    m.set_next_halfedge_handle(a_in, b_out);
+    m.set_halfedge_handle(p, m.opposite_halfedge_handle(a_out));
+    out_a = b_out;
+  } else if (at_q && !at_p) {
+    // ... s -> b -> q -> a -> p ... becomes ... s -> a -> p ...; q is closed.
+    merge_boundary_edges(m, a_in, b_out);
+    m.set_next_halfedge_handle(b_in, a_out);
+    m.set_halfedge_handle(q, a_in);
+    out_a = a_out;
+  } else if (at_p && at_q) {
+    // The boundary loop a -> p -> b -> q -> a closes, and a with it.
+    merge_boundary_edges(m, a_out, b_in);
+    merge_boundary_edges(m, a_in, b_out);
+    m.set_halfedge_handle(p, m.opposite_halfedge_handle(a_out));
+    m.set_halfedge_handle(q, a_in);
+    out_a = m.opposite_halfedge_handle(a_in);
+  }
+  m.set_halfedge_handle(a, out_a);
+  m.set_isolated(b);
+  m.status(b).set_deleted(true);
+  return OK_EDIT;
+}
+
 // The survivors in their order, as a new mesh of the same kind. OpenMesh's own
 // garbage_collection fills each hole with the last live element (ArrayKernel: two indices
 // walking towards each other, swapping), so it renumbers survivors; MeshEdit promises that
@@ -405,6 +525,10 @@ int topolab_om_edit_split_vertex(topolab_om_mesh *mesh, uint32_t v, const double
                                  uint32_t left, uint32_t right, int *refusal,
                                  uint32_t *out) noexcept {
   return edit(mesh, refusal, [&](auto &m) { return split_vertex(m, v, p, left, right, out); });
+}
+
+int topolab_om_edit_weld(topolab_om_mesh *mesh, uint32_t a, uint32_t b, int *refusal) noexcept {
+  return edit(mesh, refusal, [&](auto &m) { return weld(m, a, b); });
 }
 
 int topolab_om_edit_is_deleted(const topolab_om_mesh *mesh, int kind, uint32_t id,

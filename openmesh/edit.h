@@ -31,6 +31,7 @@ extern "C" {
 #define TOPOLAB_OM_REFUSAL_NOT_NEIGHBOURS 7
 #define TOPOLAB_OM_REFUSAL_LINK_CONDITION 8
 #define TOPOLAB_OM_REFUSAL_NOT_IMPLEMENTED 9
+#define TOPOLAB_OM_REFUSAL_SAME_VERTEX 10
 
 /* add_vertex(p) (p = 3 doubles); *out = the new vertex (appended). */
 int topolab_om_edit_add_vertex(topolab_om_mesh *mesh, const double *p,
@@ -62,6 +63,10 @@ int topolab_om_edit_collapse(topolab_om_mesh *mesh, uint32_t from, uint32_t to,
 int topolab_om_edit_split_vertex(topolab_om_mesh *mesh, uint32_t v, const double *p,
                                  uint32_t left, uint32_t right, int *refusal,
                                  uint32_t *out) TOPOLAB_OM_NOEXCEPT;
+/* Vertex b merged into vertex a (MeshEdit::weld_vertices): OpenMesh has none, so the
+ * half-edges' weld with its low-level connectivity setters (see edit.cpp). */
+int topolab_om_edit_weld(topolab_om_mesh *mesh, uint32_t a, uint32_t b,
+                         int *refusal) TOPOLAB_OM_NOEXCEPT;
 /* *out = 1 when vertex (kind 0), edge (kind 1) or face (kind 2) `id` is marked deleted. */
 int topolab_om_edit_is_deleted(const topolab_om_mesh *mesh, int kind, uint32_t id,
                                int *out) TOPOLAB_OM_NOEXCEPT;

@@ -5,11 +5,20 @@
 //!
 //! ## `Surface_mesh`
 //!
-//! `Euler::add_face`, `Euler::add_face`,
+//! `Euler::add_face`,
 //! `Euler::remove_face` (keeping the vertices it isolates), `Euler::flip_edge`,
 //! `Euler::split_edge` followed by `Euler::split_face` on each side (the 2-to-4 split),
 //! `Euler::add_center_vertex`, `Euler::collapse_edge` after `does_satisfy_link_condition`,
 //! and `Euler::split_vertex` followed by two `Euler::split_face` (OpenMesh's vertex split).
+//!
+//! The vertex weld (`b` into `a`) is what CGAL documents for joining borders:
+//! `Polygon_mesh_processing::stitch_borders` with explicit pairs of border halfedges, the one
+//! or two pairs where the boundaries of `a` and `b` meet along an edge (b's halfedge first, so
+//! that b's edges stay and a's go, and CGAL keeps `a`: checked after the call); where `b` has
+//! no faces it is removed (`remove_vertex`), and where `a` has none, every halfedge into `b`
+//! is set to end at `a` (`set_target`, the BGL setter) before `b` is removed. One BGL template
+//! (`cgal/edit_rules.h`) serves both classes, with each class's id table. Its refusals are the
+//! lab's half-edges', checked first and in their order, so the shared cases agree.
 //! The first edit switches `Surface_mesh`'s recycling of removed slots off, so new elements
 //! are appended and removed ones keep their slots, marked
 //! ([`Deletion::Marked`](topolab_structures::Deletion::Marked), CGAL's `is_removed`).
@@ -35,6 +44,7 @@
 //! | split face | `Euler::add_center_vertex` | O(k) |
 //! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `does_satisfy_link_condition`, `Euler::collapse_edge` | O(k) |
 //! | split vertex | `Euler::split_vertex` (O(k)), `Euler::split_face` twice | O(k) |
+//! | weld vertices | the faces around `b` and the neighbours of both (checks), `PMP::stitch_borders` on one or two pairs, or `set_target` around `b` | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |
 
 //!
@@ -44,8 +54,9 @@
 //! interface `Polyhedron_3` models: `Euler::add_face`, `remove_face` keeping the vertices it
 //! isolates, `Euler::flip_edge`, `Euler::split_edge` and `Euler::split_face` twice,
 //! `Euler::add_center_vertex`, `Euler::collapse_edge` after `does_satisfy_link_condition`,
-//! `Euler::split_vertex` and `Euler::split_face` twice. A vertex's halfedge is any halfedge
-//! into it (its border test circulates), so no border halfedge is restored after an edit.
+//! `Euler::split_vertex` and `Euler::split_face` twice, and the same weld template
+//! (`stitch_borders`). A vertex's halfedge is any halfedge into it (its border test
+//! circulates), so no border halfedge is restored after an edit.
 //!
 //! Ids: a `Polyhedron_3` erases an element from its list at once, so the lab's stable ids are
 //! tables kept beside it (`cgal/polyhedron.h`): handles by id, and ids by handle in the id
@@ -72,6 +83,7 @@
 //! | split face | `Euler::add_center_vertex`, ids for the new elements | O(k) |
 //! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `does_satisfy_link_condition`, `Euler::collapse_edge`, the erased ids buried | O(k) |
 //! | split vertex | `Euler::split_vertex` (O(k)), `Euler::split_face` twice | O(k) |
+//! | weld vertices | as for `Surface_mesh`, the ids of the one or two edges and the vertex `stitch_borders` removes buried first | O(k) |
 //! | garbage collection | ids and tables again in list order | O(n) |
 
 use super::{Cgal, PolyhedronClass, SurfaceMeshClass};
@@ -91,6 +103,7 @@ edit_api!(SURFACE_MESH: super::ffi::RawMesh = [
     topolab_cgal_sm_edit_split_face,
     topolab_cgal_sm_edit_collapse,
     topolab_cgal_sm_edit_split_vertex,
+    topolab_cgal_sm_edit_weld,
     topolab_cgal_sm_edit_is_deleted,
     topolab_cgal_sm_edit_garbage_collection,
     topolab_cgal_sm_edit_reserve,
@@ -107,6 +120,7 @@ edit_api!(POLYHEDRON: super::ffi::RawMesh = [
     topolab_cgal_ph_edit_split_face,
     topolab_cgal_ph_edit_collapse,
     topolab_cgal_ph_edit_split_vertex,
+    topolab_cgal_ph_edit_weld,
     topolab_cgal_ph_edit_is_deleted,
     topolab_cgal_ph_edit_garbage_collection,
     topolab_cgal_ph_edit_reserve,

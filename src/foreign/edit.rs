@@ -28,7 +28,7 @@ use topolab_structures::{
 pub(crate) const EDIT_REFUSED: i32 = 5;
 
 /// The shims' refusal codes (`TOPOLAB_OM_REFUSAL_*`, `TOPOLAB_CGAL_REFUSAL_*`), in their order.
-pub(crate) const REFUSALS: [Refusal; 10] = [
+pub(crate) const REFUSALS: [Refusal; 11] = [
     Refusal::NoSuchElement,
     Refusal::BadFace,
     Refusal::NonManifoldEdge,
@@ -39,6 +39,7 @@ pub(crate) const REFUSALS: [Refusal; 10] = [
     Refusal::NotNeighbours,
     Refusal::LinkCondition,
     Refusal::NotImplemented,
+    Refusal::SameVertex,
 ];
 
 /// The element kinds of the shims' `is_deleted`.
@@ -55,6 +56,8 @@ pub(crate) struct Call<F> {
 type AddVertex<R> = unsafe extern "C" fn(*mut R, *const f64, *mut u32) -> i32;
 /// `(mesh, id, refusal)`: delete, flip or collapse one element.
 type OnId<R> = unsafe extern "C" fn(*mut R, u32, *mut i32) -> i32;
+/// `(mesh, a, b, refusal)`: collapse `a` into `b`, or weld `b` into `a`.
+type OnPair<R> = unsafe extern "C" fn(*mut R, u32, u32, *mut i32) -> i32;
 /// `(mesh, id, position, refusal, out)`: split an element at a new vertex.
 type SplitAt<R> = unsafe extern "C" fn(*mut R, u32, *const f64, *mut i32, *mut u32) -> i32;
 
@@ -69,10 +72,11 @@ pub(crate) struct EditApi<R> {
     pub(crate) flip: Call<OnId<R>>,
     pub(crate) split_edge: Call<SplitAt<R>>,
     pub(crate) split_face: Call<SplitAt<R>>,
-    pub(crate) collapse: Call<unsafe extern "C" fn(*mut R, u32, u32, *mut i32) -> i32>,
+    pub(crate) collapse: Call<OnPair<R>>,
     #[allow(clippy::type_complexity)]
     pub(crate) split_vertex:
         Call<unsafe extern "C" fn(*mut R, u32, *const f64, u32, u32, *mut i32, *mut u32) -> i32>,
+    pub(crate) weld: Call<OnPair<R>>,
     pub(crate) is_deleted: Call<unsafe extern "C" fn(*const R, i32, u32, *mut i32) -> i32>,
     pub(crate) garbage_collection: Call<unsafe extern "C" fn(*mut R) -> i32>,
     pub(crate) reserve: Call<unsafe extern "C" fn(*mut R, u32, u32, u32) -> i32>,
@@ -85,8 +89,8 @@ macro_rules! edit_api {
     ($api:ident: $raw:ty = [
         $add_vertex:ident, $set_position:ident, $add_face:ident, $delete_face:ident,
         $delete_vertex:ident, $flip:ident, $split_edge:ident, $split_face:ident,
-        $collapse:ident, $split_vertex:ident, $is_deleted:ident, $garbage_collection:ident,
-        $reserve:ident $(,)?
+        $collapse:ident, $split_vertex:ident, $weld:ident, $is_deleted:ident,
+        $garbage_collection:ident, $reserve:ident $(,)?
     ]) => {
         // All `noexcept` in C++, catching every exception (see `crate::foreign::edit`).
         extern "C" {
@@ -126,6 +130,7 @@ macro_rules! edit_api {
                 refusal: *mut i32,
                 out: *mut u32,
             ) -> i32;
+            fn $weld(mesh: *mut $raw, a: u32, b: u32, refusal: *mut i32) -> i32;
             fn $is_deleted(mesh: *const $raw, kind: i32, id: u32, out: *mut i32) -> i32;
             fn $garbage_collection(mesh: *mut $raw) -> i32;
             fn $reserve(mesh: *mut $raw, vertices: u32, edges: u32, faces: u32) -> i32;
@@ -174,6 +179,10 @@ macro_rules! edit_api {
                     name: stringify!($split_vertex),
                     f: $split_vertex,
                 },
+                weld: Call {
+                    name: stringify!($weld),
+                    f: $weld,
+                },
                 is_deleted: Call {
                     name: stringify!($is_deleted),
                     f: $is_deleted,
@@ -210,15 +219,15 @@ pub(crate) trait ForeignEdit: MeshTopology {
     fn refresh_counts(&mut self) -> Result<()>;
 }
 
-/// The cost of each operation in the three libraries: their Euler operations are local and
-/// append, and the garbage collection (a rebuild in order, or ids given again in list order)
-/// reads every element; see each library's table.
+/// The cost of each operation in the three libraries: their Euler operations (and the vertex
+/// weld: CGAL's `stitch_borders` on one or two pairs, OpenMesh's connectivity setters around
+/// the two fans) are local and append, and the garbage collection (a rebuild in order, or ids
+/// given again in list order) reads every element; see each library's table.
 pub(crate) fn edit_cost(op: EditOp) -> Cost {
     match op {
         EditOp::AddVertex | EditOp::SplitEdge => Cost::Constant,
         // Welding meshes is the trait's rebuild from the welded face list.
         EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
-        // Vertex welding is not implemented (refused, as for the lab's half-edges).
         EditOp::AddFace
         | EditOp::WeldVertices
         | EditOp::DeleteFace
@@ -396,6 +405,14 @@ pub(crate) fn collapse_edge<M: ForeignEdit>(m: &mut M, from: VertexId, to: Verte
     })
 }
 
+pub(crate) fn weld_vertices<M: ForeignEdit>(m: &mut M, a: VertexId, b: VertexId) -> Result<()> {
+    let (raw, api) = (m.raw(), &M::API.weld);
+    // SAFETY: `raw` is live and exclusively borrowed; the shim checks both ids.
+    change(m, EditOp::WeldVertices, api.name, |refusal| unsafe {
+        (api.f)(raw, a.0, b.0, refusal)
+    })
+}
+
 pub(crate) fn split_vertex<M: ForeignEdit>(
     m: &mut M,
     v: VertexId,
@@ -456,6 +473,9 @@ macro_rules! impl_mesh_edit {
 
             fn edit_cost(op: topolab_structures::EditOp) -> topolab_structures::Cost {
                 $crate::foreign::edit::edit_cost(op)
+            }
+            fn supports(_: topolab_structures::EditOp) -> bool {
+                true
             }
             fn add_vertex(
                 &mut self,
@@ -523,6 +543,13 @@ macro_rules! impl_mesh_edit {
                 right: topolab_structures::VertexId,
             ) -> topolab_structures::Result<topolab_structures::VertexId> {
                 $crate::foreign::edit::split_vertex(self, v, p, left, right)
+            }
+            fn weld_vertices(
+                &mut self,
+                a: topolab_structures::VertexId,
+                b: topolab_structures::VertexId,
+            ) -> topolab_structures::Result<()> {
+                $crate::foreign::edit::weld_vertices(self, a, b)
             }
             fn is_deleted_vertex(&self, v: topolab_structures::VertexId) -> bool {
                 $crate::foreign::edit::is_deleted_vertex(self, v)

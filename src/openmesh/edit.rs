@@ -3,7 +3,14 @@
 //! the forwarding layer of [`crate::foreign::edit`]): `add_vertex`, `add_face`, `delete_face`,
 //! `delete_vertex`, `TriConnectivity::flip` after `is_flip_ok`, the 2-to-4 `split(EdgeHandle,
 //! VertexHandle)`, the face split `split(FaceHandle, VertexHandle)`, `collapse` after
-//! `is_collapse_ok`, and `vertex_split`. The first edit requests OpenMesh's status attributes,
+//! `is_collapse_ok`, and `vertex_split`; and the vertex weld, which OpenMesh lacks (its API has
+//! no weld: `remove_edge` merges two faces, not two vertices), written as the lab's half-edges
+//! do it with OpenMesh's low-level connectivity setters (`set_vertex_handle`,
+//! `set_next_halfedge_handle`, `set_face_handle`, `set_halfedge_handle`), the way its own
+//! `collapse_edge` and `remove_edge` are written: every halfedge into `b` ends at `a`, and where
+//! the two boundaries meet along an edge, each pair of boundary edges becomes one interior edge
+//! (b's marked deleted). Face ids stay, which deleting `b`'s faces and adding them again with
+//! `a` through the documented API would not keep. The first edit requests OpenMesh's status attributes,
 //! where its deletion marks live ([`Deletion::Marked`](topolab_structures::Deletion::Marked), OpenMesh's choice).
 //!
 //! Every check runs in C++ before OpenMesh is called, so a refused edit changes nothing and
@@ -41,6 +48,7 @@
 //! | split face | `add_vertex`, `split(f, v)` | O(k) |
 //! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `is_collapse_ok`, `collapse` | O(k) |
 //! | split vertex | `add_vertex`, `vertex_split` | O(k) |
+//! | weld vertices | the faces around `b` and the neighbours of both (checks), the halfedges into `b` renamed, one or two boundary edge pairs merged | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |
 
 use super::{status, OpenMesh};
@@ -58,6 +66,7 @@ edit_api!(API: super::ffi::RawMesh = [
     topolab_om_edit_split_face,
     topolab_om_edit_collapse,
     topolab_om_edit_split_vertex,
+    topolab_om_edit_weld,
     topolab_om_edit_is_deleted,
     topolab_om_edit_garbage_collection,
     topolab_om_edit_reserve,
