@@ -265,7 +265,7 @@ bool fill(M &m, const double *xyz, uint32_t vertices, const uint32_t *indices,
   for (uint32_t j = 0; j < faces; ++j) {
     FH f;
     const uint32_t *begin = indices + offsets[j], *end = indices + offsets[j + 1];
-    if (std::is_same<M, Tri>::value) {
+    if (std::is_base_of<OpenMesh::TriConnectivity, M>::value) {
       f = m.add_face(VH(begin[0]), VH(begin[1]), VH(begin[2]));
     } else {
       corners.clear();
@@ -277,6 +277,74 @@ bool fill(M &m, const double *xyz, uint32_t vertices, const uint32_t *indices,
       return false;
     }
   }
+  return true;
+}
+
+// The changing workloads as the Surface_mesh benchmark's protocol runs them (pmp-library's
+// benchmarks/SurfaceMeshPerformance.h, with OpenMesh's names for the same calls): 0, sqrt3
+// subdivision; 1, the collapse test. The status attributes must have been requested.
+template <class M> void changing(M &m, int workload) {
+  const size_t nv = m.n_vertices(), ne = m.n_edges(), nf = m.n_faces();
+  m.reserve(nv + nf, ne + 3 * nf, 3 * nf);
+  if (workload == 0) {
+    // New positions of the old interior vertices (sqrt3's smoothing rule).
+    std::vector<typename M::Point> moved(nv);
+    for (size_t i = 0; i < nv; ++i) {
+      const VH v{int(i)};
+      moved[i] = m.point(v);
+      if (m.is_boundary(v)) continue;
+      typename M::Point p(0.0, 0.0, 0.0);
+      double n = 0.0;
+      for (VH w : m.vv_range(v)) {
+        p += m.point(w);
+        n += 1.0;
+      }
+      if (n == 0.0) continue;
+      const double alpha = (4.0 - 2.0 * std::cos(2.0 * M_PI / n)) / 9.0;
+      moved[i] = (1.0 - alpha) * m.point(v) + alpha / n * p;
+    }
+    for (size_t i = 0; i < nf; ++i) {
+      const FH f{int(i)};
+      typename M::Point c(0.0, 0.0, 0.0);
+      double k = 0.0;
+      for (VH v : m.fv_range(f)) {
+        c += m.point(v);
+        k += 1.0;
+      }
+      m.split(f, c / k);
+    }
+    for (size_t i = 0; i < nv; ++i)
+      if (!m.is_boundary(VH(int(i)))) m.set_point(VH(int(i)), moved[i]);
+    for (size_t i = 0; i < ne; ++i) {
+      const EH e{int(i)};
+      if (m.is_flip_ok(e)) m.flip(e);
+    }
+  } else {
+    for (size_t i = 0; i < nf; ++i) m.split(FH(int(i)), typename M::Point(0.0, 0.0, 0.0));
+    const size_t end = m.n_vertices();
+    for (size_t i = nv; i < end; ++i) m.collapse(m.halfedge_handle(VH(int(i))));
+    m.garbage_collection();
+  }
+}
+
+// Whether two meshes have the same elements linked the same way and the same positions.
+template <class A, class B> bool same_links(const A &a, const B &b) {
+  if (a.n_vertices() != b.n_vertices() || a.n_halfedges() != b.n_halfedges() ||
+      a.n_faces() != b.n_faces())
+    return false;
+  for (size_t i = 0; i < a.n_halfedges(); ++i) {
+    const HH h{int(i)};
+    if (a.to_vertex_handle(h) != b.to_vertex_handle(h) ||
+        a.next_halfedge_handle(h) != b.next_halfedge_handle(h) ||
+        a.face_handle(h) != b.face_handle(h))
+      return false;
+  }
+  for (size_t i = 0; i < a.n_vertices(); ++i) {
+    const VH v{int(i)};
+    if (a.halfedge_handle(v) != b.halfedge_handle(v) || a.point(v) != b.point(v)) return false;
+  }
+  for (size_t i = 0; i < a.n_faces(); ++i)
+    if (a.halfedge_handle(FH(int(i))) != b.halfedge_handle(FH(int(i)))) return false;
   return true;
 }
 
@@ -542,55 +610,55 @@ int topolab_om_prepare_changing(topolab_om_mesh *mesh) noexcept {
   });
 }
 
-// The changing workloads as the Surface_mesh benchmark's protocol runs them (pmp-library's
-// benchmarks/SurfaceMeshPerformance.h, with OpenMesh's names for the same calls).
+// The changing workloads (changing() above) on the mesh.
 int topolab_om_changing(topolab_om_mesh *mesh, int workload) noexcept {
   const int prepared = topolab_om_prepare_changing(mesh);
   if (prepared != TOPOLAB_OM_OK) return prepared;
   if (workload != 0 && workload != 1) return TOPOLAB_OM_UNKNOWN_CODE;
   return guard([&] {
-    Tri &m = *mesh->tri;
-    const size_t nv = m.n_vertices(), ne = m.n_edges(), nf = m.n_faces();
-    m.reserve(nv + nf, ne + 3 * nf, 3 * nf);
-    if (workload == 0) {
-      // New positions of the old interior vertices (sqrt3's smoothing rule).
-      std::vector<Tri::Point> moved(nv);
-      for (size_t i = 0; i < nv; ++i) {
-        const VH v{int(i)};
-        moved[i] = m.point(v);
-        if (m.is_boundary(v)) continue;
-        Tri::Point p(0.0, 0.0, 0.0);
-        double n = 0.0;
-        for (VH w : m.vv_range(v)) {
-          p += m.point(w);
-          n += 1.0;
+    changing(*mesh->tri, workload);
+    return TOPOLAB_OM_OK;
+  });
+}
+
+// Builds the soup with the lab's mesh types (mesh.h's overrides) and with the library's own
+// operations, and for triangles runs each changing workload on fresh builds of both: *agree = 1
+// when every result has the same links, element for element (or both refused the same face).
+int topolab_om_overrides_agree(const double *xyz, uint32_t vertices, const uint32_t *indices,
+                               const uint32_t *offsets, uint32_t faces, int triangles,
+                               int *agree) noexcept {
+  return guard([&] {
+    const auto compare = [&](auto ours, auto shipped) {
+      uint32_t failed_ours = UINT32_MAX, failed_shipped = UINT32_MAX;
+      const bool built_ours = fill(*ours, xyz, vertices, indices, offsets, faces, 0, &failed_ours);
+      const bool built_shipped =
+          fill(*shipped, xyz, vertices, indices, offsets, faces, 0, &failed_shipped);
+      if (built_ours != built_shipped || failed_ours != failed_shipped) return false;
+      return !built_ours || same_links(*ours, *shipped);
+    };
+    bool same;
+    if (triangles) {
+      same = compare(std::make_unique<Tri>(), std::make_unique<ShippedTri>());
+      for (int workload = 0; workload < 2 && same; ++workload) {
+        auto ours = std::make_unique<Tri>();
+        auto shipped = std::make_unique<ShippedTri>();
+        uint32_t failed = 0;
+        if (!fill(*ours, xyz, vertices, indices, offsets, faces, 0, &failed) ||
+            !fill(*shipped, xyz, vertices, indices, offsets, faces, 0, &failed))
+          break;  // refused alike (compared above)
+        for (auto *m : {static_cast<ShippedTri *>(ours.get()), shipped.get()}) {
+          m->request_vertex_status();
+          m->request_edge_status();
+          m->request_face_status();
         }
-        if (n == 0.0) continue;
-        const double alpha = (4.0 - 2.0 * std::cos(2.0 * M_PI / n)) / 9.0;
-        moved[i] = (1.0 - alpha) * m.point(v) + alpha / n * p;
-      }
-      for (size_t i = 0; i < nf; ++i) {
-        const FH f{int(i)};
-        Tri::Point c(0.0, 0.0, 0.0);
-        double k = 0.0;
-        for (VH v : m.fv_range(f)) {
-          c += m.point(v);
-          k += 1.0;
-        }
-        m.split(f, c / k);
-      }
-      for (size_t i = 0; i < nv; ++i)
-        if (!m.is_boundary(VH(int(i)))) m.set_point(VH(int(i)), moved[i]);
-      for (size_t i = 0; i < ne; ++i) {
-        const EH e{int(i)};
-        if (m.is_flip_ok(e)) m.flip(e);
+        changing(*ours, workload);
+        changing(*shipped, workload);
+        same = same_links(*ours, *shipped);
       }
     } else {
-      for (size_t i = 0; i < nf; ++i) m.split(FH(int(i)), Tri::Point(0.0, 0.0, 0.0));
-      const size_t end = m.n_vertices();
-      for (size_t i = nv; i < end; ++i) m.collapse(m.halfedge_handle(VH(int(i))));
-      m.garbage_collection();
+      same = compare(std::make_unique<Poly>(), std::make_unique<ShippedPoly>());
     }
+    *agree = same ? 1 : 0;
     return TOPOLAB_OM_OK;
   });
 }

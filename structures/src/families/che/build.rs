@@ -45,6 +45,14 @@
 //! pairing's nodes 24, `head` and `VH[]` 2 each), about 1.8 µs each on this VM; OpenMesh
 //! takes 16.1k. Halving the nodes would save about a fifth of that, but every `u32` layout
 //! measured made the warm pairing slower.
+//!
+//! The table's OpenMesh (170) is Debian's library with its compiled-in assertions. With the
+//! functions its build calls compiled here without them (the lab's OpenMesh since; see the
+//! fairness notes of the README), the same focused run of the two in turns
+//! (`cargo run --release --example build_sweep -- 1000000 torus 7 che-l1,openmesh`, load 11)
+//! gave OpenMesh 129.2 ns/face against 259.9 before, and che-l1 33.3 against 33.8: the ratio
+//! went from 0.13 to 0.26, and the target now asks for about half of what the passes above
+//! cost.
 
 use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
 use crate::core::error::{Error, Result};

@@ -1,0 +1,63 @@
+//! One OpenMesh kernel on a torus, once, for `valgrind --tool=callgrind`: what the report times
+//! of OpenMesh (its construction, or a changing workload after an untimed build), through the
+//! same shim calls, so instruction counts (repeatable under load, unlike times) say where
+//! OpenMesh's instructions go.
+//!
+//! ```sh
+//! cargo build --release --example openmesh_profile
+//! valgrind --tool=callgrind --toggle-collect=topolab_om_build \
+//!     target/release/examples/openmesh_profile build 65536
+//! valgrind --tool=callgrind --toggle-collect=topolab_om_changing \
+//!     target/release/examples/openmesh_profile sqrt3 65536      # or collapse
+//! callgrind_annotate --inclusive=yes callgrind.out.<pid>
+//! ```
+//!
+//! `--toggle-collect` counts only inside the named call: the build (`add_vertex` and
+//! `add_face` per element, as the report's construction), or the workload alone.
+
+#[cfg(not(has_openmesh))]
+fn main() -> std::process::ExitCode {
+    eprintln!("openmesh_profile: {}", topolab::OPENMESH_MISSING);
+    std::process::ExitCode::FAILURE
+}
+
+#[cfg(has_openmesh)]
+fn main() -> std::process::ExitCode {
+    use topolab::openmesh::OpenMesh;
+    use topolab_structures::algorithms::changing::Changing;
+    use topolab_structures::{meshes, MeshTopology};
+
+    let mut args = std::env::args().skip(1);
+    let kernel = args.next();
+    let triangles = args.next().map(|a| a.parse::<usize>());
+    let (kernel, triangles) = match (kernel.as_deref(), triangles) {
+        (Some(k @ ("build" | "sqrt3" | "collapse")), None) => (k.to_string(), 65_536),
+        (Some(k @ ("build" | "sqrt3" | "collapse")), Some(Ok(n))) if n >= 18 => (k.to_string(), n),
+        _ => {
+            eprintln!("usage: openmesh_profile build|sqrt3|collapse [TRIANGLES >= 18]");
+            return std::process::ExitCode::from(2);
+        }
+    };
+    let soup = meshes::torus_with_triangles(triangles);
+    let native = OpenMesh::native().expect("OpenMesh has native kernels");
+    let mut m = native
+        .construction(&soup)
+        .expect("OpenMesh has a native construction")
+        .expect("a torus is manifold");
+    let workload = match kernel.as_str() {
+        "sqrt3" => Some(Changing::Sqrt3),
+        "collapse" => Some(Changing::Collapse),
+        _ => None,
+    };
+    if let Some(w) = workload {
+        m.prepare_changing().expect("a TriMesh");
+        m.native_changing(w).expect("runs");
+    }
+    println!(
+        "{kernel} on a torus of {} faces: {} vertices, {} faces after",
+        soup.num_faces(),
+        m.num_vertices(),
+        m.num_faces()
+    );
+    std::process::ExitCode::SUCCESS
+}
