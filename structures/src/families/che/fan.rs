@@ -183,6 +183,19 @@ mod tests {
     use super::*;
 
     #[test]
+    fn next_and_prev_stay_in_the_triangle_as_its_remainders_say() {
+        // §4.1 by remainder, against the divisibility and two-candidate forms the walk runs,
+        // near 0 and near the largest half-edge id `ranges_hold` lets through (below i32::MAX).
+        let top = i32::MAX as u32 - 1;
+        for h in (0..300).chain(top - 300..=top) {
+            let base = h - h % 3;
+            let (n, p) = (next(HalfEdgeId(h)).0, prev(HalfEdgeId(h)).0);
+            assert_eq!(n, base + (h % 3 + 1) % 3, "next({h})");
+            assert_eq!(p, base + (h % 3 + 2) % 3, "prev({h})");
+        }
+    }
+
+    #[test]
     fn ranges_hold_only_for_ids_below_the_half_edge_count() {
         // One triangle: half-edges 0, 1, 2 over vertices 0, 1, 2, all on the boundary.
         let v = [0, 1, 2];

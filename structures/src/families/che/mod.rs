@@ -85,7 +85,7 @@
 //!
 //! R00, R01 and R02 answer sets, so levels 2 and 3 answer them by the fastest walk of the same
 //! star rather than in Algorithm 7's order; [`CheLevel::vertex_star`] (and with it
-//! `topolab explain che --trace`) keeps Algorithm 7 as the chapter writes it. Four things
+//! `topolab explain che --trace`) keeps Algorithm 7 as the chapter writes it. Five things
 //! made the walk slow, measured with instruction counts (callgrind; this machine has no
 //! hardware counters) on the harness's R00 sweep of a 100k-triangle torus:
 //!
@@ -115,19 +115,43 @@
 //!   of the walk then tracked the next spoke it reports (a half-edge entering the vertex),
 //!   which needs one state variable fewer: 120, smoothing 147, but
 //!   no faster in the timings below (R00 1.47–1.50× → 1.49–1.52× the index half-edge).
+//! - **`prev` as a choice of two candidates.** Written "`he + 2` if 3 divides `he`, else
+//!   `he - 1`", [`prev`] compiled to `he + (test ? 2 : -1)`: after the multiply and the
+//!   compare, an add-with-carry and an `or` made the `-1` or `2`, then an add, all before the
+//!   forward walk's next `O[]` load (7 cycles of arithmetic on that chain, against 6 for
+//!   [`next`], which the compiler already wrote as a conditional move). Written as a choice
+//!   between the candidates `he + 2` and `he - 1` (the same definition), both candidates are
+//!   computed beside the multiply and a conditional move picks one: multiply, compare, move,
+//!   load. 119 → 115 instructions per vertex on the sweep of the 100k-triangle torus (this
+//!   time measured with `valgrind --tool=callgrind --toggle-collect='topolab_harness::kernels::run*'`
+//!   on `fan_sweep 100000 torus 1 che-l2 r00`; the index half-edge: 98). Timed on the
+//!   1M-triangle torus in thread CPU time by a copy of both walks outside the crate (the
+//!   same arrays, the same checksum, the variants and the index half-edge taking turns, 15
+//!   to 21 rounds, at load 7–13 on 2 cores), the conditional move took R00 from 1.15–1.22×
+//!   the index half-edge's time to 1.10–1.15× (the medians of four runs; in one of them the
+//!   same move written in inline assembly gave 1.20 against 1.20, the Rust form 1.14). The
+//!   Targets turns of the report
+//!   (`topolab report --sizes 1000000 --meshes torus --structures che-l2,index-half-edge,openmesh --sections targets`,
+//!   the binaries before and after taking turns, load 12–13) did not resolve it: che-l2 ÷
+//!   index half-edge 1.23–1.46 before and 1.35–1.43 after, che-l2 ÷ OpenMesh 0.64–0.66 before
+//!   and 0.65–0.68 after (medians of three runs before, two after); at that load one run's
+//!   rounds spread over ±15%.
 //!
 //! What is left is the chain, and it is the CHE's design: each step computes `prev` or
-//! `next` (a multiply, a compare and a select, about five instructions) before its load,
-//! where the half-edge's `twin` is `h ^ 1`. These variants were measured on that same sweep
-//! and not kept:
+//! `next` (a multiply, a compare and a conditional move, about five instructions) before its
+//! load, where the half-edge's `twin` is `h ^ 1`, one instruction. Per spoke, that is 5 to 6
+//! cycles of arithmetic before the load on the CHE's chains against 1 on the index half-edge's,
+//! which the CHE's two chains (each half as long) only make up for in part. These variants
+//! were measured on that same sweep and not kept:
 //!
 //! | variant | instructions per vertex |
 //! |---|---|
 //! | one end only, with a boundary check first | fewer, 112, but 1.5–2× the time: one chain |
 //! | one end only, two steps unrolled | 112, same time as one end |
 //! | `prev` as arithmetic, `h - 1 + 3·[3 divides h]` | 118–126 |
-//! | `prev` as a select the compiler cannot turn into a branch | 115, no faster |
-//! | both candidate `O[]` entries of `prev` loaded, then one selected | 158–192 |
+//! | `prev` as a select the compiler cannot turn into a branch | 115, no faster (timed in wall time at load 16–17; the two-candidate `prev` above, the same 115, is kept) |
+//! | a software prefetch of `O[VH[v + 8]]`, offered to the index half-edge too (`next[VH[v + 8] ^ 1]`) | in the copy outside the crate, one run: 1.25× against 1.22× for the CHE, 0.98× its own time for the index half-edge (within the run's spread); the sweep reads two forward streams, which the hardware prefetcher already follows |
+//! | both candidate `O[]` entries of `prev` loaded, then one selected | 158–192; in the copy outside the crate (both chains, candidates clamped to the array), 1.34× the index half-edge's time against 1.22× |
 //! | both ends, each tracking the half-edge that enters | 114, no faster |
 //!
 //! On the 1M-triangle torus, in one process with the structures taking turns on a shared
@@ -146,8 +170,9 @@
 //!
 //! (These "after" rows were measured at 123 instructions, before the last change.)
 //! R00 stays about 1.4× the index half-edge's time at this size, and the instruction
-//! counts show why: 120 against 91 per vertex. About 30 of the difference is `prev` and
-//! `next` at each of a vertex's six steps.
+//! counts show why: 120 against 91 per vertex (115 against 98 when counted again for the
+//! two-candidate `prev`). About 30 of the difference is `prev` and `next` at each of a
+//! vertex's six steps.
 
 mod access;
 mod build;
@@ -191,13 +216,17 @@ pub const fn next(he: HalfEdgeId) -> HalfEdgeId {
 
 /// `prev(he)`: the preceding half-edge of the same triangle (§4.1); a divisibility test, as
 /// in [`next`].
+///
+/// Written as a choice between `he + 2` and `he - 1`, the two candidates, so that the compiler
+/// computes both beside the test and picks one with a conditional move: a multiply, a compare
+/// and the move on the fan walk's chain. Written `he + 2` or `he - 1` by whether 3 divides
+/// `he` (the same definition), it added `-1` or `2` to `he` after the test instead, two more
+/// dependent instructions before every `O[]` load of the forward walk (see "Speed" in the
+/// module docs).
 #[inline(always)]
 pub const fn prev(he: HalfEdgeId) -> HalfEdgeId {
-    HalfEdgeId(if he.0.is_multiple_of(3) {
-        he.0 + 2
-    } else {
-        he.0 - 1
-    })
+    let later = he.0 + 2;
+    HalfEdgeId(if later % 3 == 2 { later } else { later - 3 })
 }
 
 /// The triangle `⌊he/3⌋` that owns half-edge `he` (§4.1).
