@@ -10,8 +10,9 @@
 //!
 //! SHAPE: cube, ball, sphere (default ball and sphere). n runs 1k, 10k, 100k, 1M up to
 //! `--max` (default 1M). Gift wrapping (O(n·h)) and the plain incremental algorithm (O(n²))
-//! stop growing n once one size took more than 1 s; the randomized one always goes on. Each
-//! time is the best of 3 runs (1 run from 100k on) of [`bench::benchmark_row`], Qhull's the
+//! run the next n while its predicted `Volume6` tests are at most [`bench::MAX_TESTS`]; the
+//! randomized one always goes on. Each time is the best of 3 runs (1 run from 100k on, or
+//! after a first run over a second) of [`bench::benchmark_row`], Qhull's the
 //! best of as many `ConvexHull` calls; Qhull is skipped without the workspace's `.venv` with
 //! SciPy. Columns: `×Qhull` the time over Qhull's at the same n, `/bound` the `Volume6`
 //! tests over the algorithm's bound, `ΣP/nlgn` Σ|P(e)| over n lg n, `exact` the tests
@@ -77,7 +78,7 @@ fn main() {
             shape_name,
             &sizes,
             python.as_deref().map(|p| (p, root)),
-            1.0,
+            bench::MAX_TESTS,
             Some(&topolab::ALLOCATOR),
             |row| {
                 if row.algorithm == "qhull" {

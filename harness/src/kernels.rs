@@ -166,6 +166,16 @@ impl Queries {
         }
     }
 
+    /// The sampled vertices of `set` and nothing else: the sampled queries of a vertex
+    /// operator, without the hash map of edges [`Queries::sampled`] builds.
+    pub fn sampled_vertices(set: &QuerySet) -> Self {
+        Self {
+            vertices: set.vertices.iter().map(|&v| VertexId(v)).collect(),
+            dense: false,
+            ..Self::default()
+        }
+    }
+
     /// The sample `set` in `m`'s ids (edges looked up by their end vertices).
     pub fn sampled<M: MeshTopology>(m: &M, set: &QuerySet) -> Self {
         let mut edges = Vec::with_capacity(m.num_edges());

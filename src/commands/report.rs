@@ -30,6 +30,11 @@ pub struct ReportArgs {
     /// A smaller, faster run (three sizes up to 16k triangles, short budgets): under 2 minutes.
     #[arg(long)]
     pub quick: bool,
+    /// The full measurement, beyond the default's 15-minute budget: the hull on a sphere up to
+    /// 1M points and the slow hull algorithms' larger sizes, the 3.3M refined armadillo
+    /// measured like the 1.2M bunny, and five runs of the changing workloads on the 1M torus.
+    #[arg(long, conflicts_with = "quick")]
+    pub full: bool,
     /// Triangle counts of the size sweep, comma separated, each from 1 to 2^30, measured smallest
     /// first (default 1000,4000,16000,64000,256000,1000000).
     #[arg(long, value_delimiter = ',')]
@@ -175,7 +180,11 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cell_budget: Duration::from_millis(if quick { 30 } else { 100 }),
         cell_max: Duration::from_millis(if quick { 150 } else { 300 }),
         min_reps: 3,
-        max_reps: super::report_timing::MAX_REPS,
+        max_reps: if args.full {
+            super::report_timing::FULL_MAX_REPS
+        } else {
+            super::report_timing::MAX_REPS
+        },
         light: false,
     };
     let samples = if quick { 64 } else { 128 };
@@ -235,7 +244,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::registry::note_absent(&mut results.notes);
     results
         .notes
-        .extend(super::report_timing::budget_notes(quick));
+        .extend(super::report_timing::budget_notes(quick, args.full));
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
@@ -283,7 +292,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let light_here = selection.light(fam) || report_scale::light(name);
+        let light_here = selection.light(fam) || (!args.full && report_scale::light(name));
         let plan = if light_here { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
@@ -344,13 +353,13 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         clock.lap(Phase::Libigl, None);
     }
     if selection.hull {
-        results.hull = hull(quick, &mut results.notes)?;
+        results.hull = hull(HullSizes::of(quick, args.full), &mut results.notes)?;
         results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
         clock.lap(Phase::Hull, None);
     }
     if selection.changing {
         results.changing =
-            super::report_changing::measure(&cases, &names, quick, &mut results.notes)?;
+            super::report_changing::measure(&cases, &names, quick, args.full, &mut results.notes)?;
         clock.lap(Phase::Changing, None);
     }
     if selection.decimate {
@@ -406,10 +415,49 @@ fn short(n: usize) -> String {
     }
 }
 
-/// The hull benchmark: points in a ball and on a sphere up to 1M (10k and 1k with
-/// `--quick`), each run's peak heap measured by the process's counting allocator.
+/// How far the hull benchmark goes: the largest n in a ball and on a sphere, and the
+/// `Volume6` tests a slow algorithm's next size may be predicted to take
+/// ([`topolab_harness::hull::bench::run`]).
+#[derive(Copy, Clone, Debug, PartialEq)]
+struct HullSizes {
+    ball: usize,
+    sphere: usize,
+    max_tests: f64,
+}
+
+impl HullSizes {
+    /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
+    /// (h = n); its 1M points took 44 s alone (2026-12-01: CGAL 20 s, the randomized algorithm
+    /// 12, Qhull 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
+    /// The slow algorithms stop at [`topolab_harness::hull::bench::MAX_TESTS`]. `--full` takes
+    /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
+    /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
+    fn of(quick: bool, full: bool) -> Self {
+        use topolab_harness::hull::bench::MAX_TESTS;
+        match (quick, full) {
+            (true, _) => HullSizes {
+                ball: 10_000,
+                sphere: 1_000,
+                max_tests: MAX_TESTS,
+            },
+            (false, false) => HullSizes {
+                ball: 1_000_000,
+                sphere: 100_000,
+                max_tests: MAX_TESTS,
+            },
+            (false, true) => HullSizes {
+                ball: 1_000_000,
+                sphere: 1_000_000,
+                max_tests: 1.5e10,
+            },
+        }
+    }
+}
+
+/// The hull benchmark: points in a ball and on a sphere ([`HullSizes`]), each run's peak heap
+/// measured by the process's counting allocator.
 fn hull(
-    quick: bool,
+    sizes: HullSizes,
     notes: &mut Vec<String>,
 ) -> Result<Vec<topolab_harness::hull::bench::HullRow>, Failure> {
     use topolab_harness::hull::{bench, qhull};
@@ -423,22 +471,20 @@ fn hull(
         );
     }
     let mut rows = Vec::new();
-    // Largest n per shape, full and with --quick: on a sphere every point is on the hull
-    // (h = n), so gift wrapping's O(n·h) is quadratic there; the quick run keeps it small.
-    for (shape, name, max, quick_max) in [
-        (Shape::Ball, "ball", 1_000_000, 10_000),
-        (Shape::Sphere, "sphere", 1_000_000, 1_000),
+    for (shape, name, max) in [
+        (Shape::Ball, "ball", sizes.ball),
+        (Shape::Sphere, "sphere", sizes.sphere),
     ] {
-        let sizes: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
+        let sizes_here: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
             .into_iter()
-            .filter(|&n| n <= if quick { quick_max } else { max })
+            .filter(|&n| n <= max)
             .collect();
         let run = bench::run(
             shape,
             name,
-            &sizes,
+            &sizes_here,
             python.as_deref().map(|p| (p, root)),
-            1.0,
+            sizes.max_tests,
             Some(&crate::ALLOCATOR),
             |row| {
                 eprintln!(
@@ -697,4 +743,57 @@ fn write(
     crate::output::write_file(&out.join("results.json"), |w| w.write_all(json.as_bytes()))?;
     crate::output::write_file(&out.join("index.html"), |w| w.write_all(page.as_bytes()))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser as _;
+
+    fn args(line: &[&str]) -> Result<ReportArgs, clap::Error> {
+        crate::cli::Cli::try_parse_from(line).map(|cli| match cli.command {
+            crate::cli::Command::Report(args) => args,
+            _ => panic!("not a report"),
+        })
+    }
+
+    #[test]
+    fn the_default_hull_stops_the_sphere_at_100k_and_full_lifts_it() {
+        let default = HullSizes::of(false, false);
+        assert_eq!((default.ball, default.sphere), (1_000_000, 100_000));
+        let full = HullSizes::of(false, true);
+        assert_eq!((full.ball, full.sphere), (1_000_000, 1_000_000));
+        assert!(full.max_tests > default.max_tests);
+        let quick = HullSizes::of(true, false);
+        assert!(quick.ball <= 10_000 && quick.sphere <= 1_000);
+        // The incremental algorithm's next sizes, predicted from the tests counted on
+        // 2026-12-01: its 100k sphere and 1M ball run with --full only.
+        use topolab_harness::hull::bench::predicted_tests;
+        let sphere = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
+        let ball = predicted_tests(Some((10_000, 5_830_028)), (100_000, 185_455_794), 1_000_000);
+        for next in [sphere, ball] {
+            assert!(next > default.max_tests && next <= full.max_tests, "{next}");
+        }
+        // Gift wrapping's 100k ball runs by default, its 1M ball not even with --full.
+        let gift = predicted_tests(Some((1_000, 525_737)), (10_000, 17_299_135), 100_000);
+        assert!(gift <= default.max_tests, "{gift}");
+        let gift = predicted_tests(
+            Some((10_000, 17_299_135)),
+            (100_000, 550_997_245),
+            1_000_000,
+        );
+        assert!(gift > full.max_tests, "{gift}");
+    }
+
+    #[test]
+    fn full_is_an_option_of_its_own_and_not_with_quick() {
+        let full = args(&["topolab", "report", "--full"]).expect("--full parses");
+        assert!(full.full && !full.quick);
+        assert!(!args(&["topolab", "report"]).expect("parses").full);
+        let both = args(&["topolab", "report", "--quick", "--full"]).map(|_| ());
+        assert_eq!(
+            both.expect_err("conflict").kind(),
+            clap::error::ErrorKind::ArgumentConflict
+        );
+    }
 }

@@ -205,11 +205,13 @@ fn timed_native(
 }
 
 /// Runs both workloads on every torus of `cases` (name, family, soup) for each structure of
-/// `names` that can edit; a disagreement between structures is an error.
+/// `names` that can edit, each [`super::report_timing::changing_runs`] times; a disagreement
+/// between structures is an error.
 pub fn measure(
     cases: &[(String, String, PolygonSoup)],
     names: &[String],
     quick: bool,
+    full: bool,
     notes: &mut Vec<String>,
 ) -> Result<Vec<ChangingRow>, Failure> {
     let mut rows = Vec::new();
@@ -229,11 +231,7 @@ pub fn measure(
             ));
             continue;
         }
-        let runs = if quick || soup.num_faces() >= 1_000_000 {
-            3
-        } else {
-            5
-        };
+        let runs = super::report_timing::changing_runs(soup.num_faces(), quick, full);
         for w in Changing::ALL {
             for &s in &editing {
                 eprintln!("topolab report: {} on {mesh}: {s}", w.name());

@@ -93,21 +93,25 @@ pub fn benchmark_row(
 }
 
 /// Runs the benchmark for `shape` over `sizes` (increasing). Gift wrapping (O(n·h)) and the
-/// plain incremental algorithm (O(n²)) stop growing n once one size took more than
-/// `max_seconds`; the randomized one always goes on. Each time is the best of 3 runs (1 from
-/// 100k points on). `qhull` is `(python, workspace root)`; `meter`, when given, measures each
-/// run's peak heap. Every row goes to `progress` too.
+/// plain incremental algorithm (O(n²)) run the next size only while its `Volume6` tests,
+/// predicted by [`predicted_tests`], are at most `max_tests`; the randomized one always goes
+/// on. A count, not a time, decides, so the sizes shown do not depend on the machine's load. Each
+/// time is the best of 3 runs, or of 1 from 100k points on or when the first run took over a
+/// second (its work then dominates its noise). `qhull` is `(python, workspace root)`; `meter`,
+/// when given, measures each run's peak heap. Every row goes to `progress` too.
 pub fn run(
     shape: Shape,
     shape_name: &str,
     sizes: &[usize],
     qhull: Option<(&Path, &Path)>,
-    max_seconds: f64,
+    max_tests: f64,
     meter: Option<&dyn MemoryMeter>,
     mut progress: impl FnMut(&HullRow),
 ) -> Result<Vec<HullRow>, String> {
     let mut rows = Vec::new();
     let mut too_slow = [false; 3];
+    // Each slow algorithm's last (n, Volume6 tests): the growth of its work so far.
+    let mut last_work: [Option<(usize, u64)>; 3] = [None; 3];
     let mut push = |row: HullRow, rows: &mut Vec<HullRow>| {
         progress(&row);
         rows.push(row);
@@ -141,11 +145,17 @@ pub fn run(
                 let timed = benchmark_row(&points, algorithm, meter).map_err(|e| e.to_string())?;
                 best = best.min(timed.seconds);
                 last = Some(timed);
+                if timed.seconds > 1.0 {
+                    break;
+                }
             }
             let last = last.expect("at least one run");
-            // The next n is 10 times larger: up to 100 times the time for O(n²).
-            too_slow[a] = !matches!(algorithm, Algorithm::Randomized { .. }) && best > max_seconds;
             let randomized = matches!(algorithm, Algorithm::Randomized { .. });
+            let work = (n, last.work.volume6_tests);
+            if let (false, Some(&next)) = (randomized, sizes.iter().find(|&&m| m > n)) {
+                too_slow[a] = predicted_tests(last_work[a], work, next) > max_tests;
+            }
+            last_work[a] = Some(work);
             let row = HullRow {
                 shape: shape_name.into(),
                 n,
@@ -162,6 +172,29 @@ pub fn run(
         }
     }
     Ok(rows)
+}
+
+/// The `Volume6` tests a slow algorithm's next size may be predicted to take ([`run`]): 2·10⁹,
+/// some 6 to 30 s on the 2-core reference machine (gift wrapping about 15 ns a test,
+/// incremental 3). Counted on 2026-12-01, it keeps gift wrapping's 100k ball (551 million
+/// tests) and leaves out the incremental algorithm's 1M ball (6 billion, 17 s) and 100k sphere
+/// (10 billion, 36 s): their O(n²) shows on the sizes before (the ball to 100k, the sphere to
+/// 10k).
+pub const MAX_TESTS: f64 = 2e9;
+
+/// The predicted `Volume6` tests of a slow hull algorithm (gift wrapping, incremental) at
+/// `next` points, from its runs at `now` and `before` (the size before, same algorithm), each
+/// (n, tests): the tests grow from `now` to `next` at the exponent they grew from `before` to
+/// `now`. With no size before, they are taken to grow like n², the bound of both (n·h with
+/// h up to n for gift wrapping).
+pub fn predicted_tests(before: Option<(usize, u64)>, now: (usize, u64), next: usize) -> f64 {
+    let exponent = match before {
+        Some((n0, w0)) if n0 < now.0 && w0 > 0 && now.1 > 0 => {
+            (now.1 as f64 / w0 as f64).ln() / (now.0 as f64 / n0 as f64).ln()
+        }
+        _ => 2.0,
+    };
+    now.1 as f64 * (next as f64 / now.0.max(1) as f64).powf(exponent)
 }
 
 /// n lg n, the lecture's expected bound of the randomized algorithm.
@@ -274,6 +307,19 @@ mod tests {
             conflict_work: (algorithm == "randomized").then_some(tests),
             peak_bytes: None,
         }
+    }
+
+    #[test]
+    fn the_next_size_is_predicted_from_the_growth_of_the_work() {
+        // No size before: n² growth, 100 times the tests at 10 times the points.
+        assert!((predicted_tests(None, (1_000, 5), 10_000) - 500.0).abs() < 1e-9);
+        // Work that grew 32-fold from 1k to 10k points grows 32-fold again to 100k.
+        let p = predicted_tests(Some((1_000, 1_000)), (10_000, 32_000), 100_000);
+        assert!((p - 1_024_000.0).abs() < 1e-6, "{p}");
+        // The incremental algorithm on a sphere, as counted (2026-12-01): 995,004 tests at
+        // 1k, 99,950,004 at 10k, 9,999,500,004 at 100k.
+        let p = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
+        assert!((p / 9_999_500_004.0 - 1.0).abs() < 0.01, "{p}");
     }
 
     #[test]
