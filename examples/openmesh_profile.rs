@@ -9,11 +9,16 @@
 //!     target/release/examples/openmesh_profile build 65536
 //! valgrind --tool=callgrind --toggle-collect=topolab_om_changing \
 //!     target/release/examples/openmesh_profile sqrt3 65536      # or collapse
+//! valgrind --tool=callgrind --toggle-collect='*timed_decimation*' \
+//!     target/release/examples/openmesh_profile decimate 16384   # or decimate-shipped
 //! callgrind_annotate --inclusive=yes callgrind.out.<pid>
 //! ```
 //!
 //! `--toggle-collect` counts only inside the named call: the build (`add_vertex` and
-//! `add_face` per element, as the report's construction), or the workload alone.
+//! `add_face` per element, as the report's construction), the workload alone, or the
+//! Decimater's `initialize()` and `decimate_to_faces()` to 10% of the faces (what the report's
+//! decimation section times; `decimate-shipped` runs it on the mesh type as Debian's library
+//! compiles it, which the report does not).
 
 #[cfg(not(has_openmesh))]
 fn main() -> std::process::ExitCode {
@@ -30,15 +35,37 @@ fn main() -> std::process::ExitCode {
     let mut args = std::env::args().skip(1);
     let kernel = args.next();
     let triangles = args.next().map(|a| a.parse::<usize>());
+    const KERNELS: [&str; 5] = ["build", "sqrt3", "collapse", "decimate", "decimate-shipped"];
     let (kernel, triangles) = match (kernel.as_deref(), triangles) {
-        (Some(k @ ("build" | "sqrt3" | "collapse")), None) => (k.to_string(), 65_536),
-        (Some(k @ ("build" | "sqrt3" | "collapse")), Some(Ok(n))) if n >= 18 => (k.to_string(), n),
+        (Some(k), None) if KERNELS.contains(&k) => (k.to_string(), 65_536),
+        (Some(k), Some(Ok(n))) if KERNELS.contains(&k) && n >= 18 => (k.to_string(), n),
         _ => {
-            eprintln!("usage: openmesh_profile build|sqrt3|collapse [TRIANGLES >= 18]");
+            eprintln!(
+                "usage: openmesh_profile {} [TRIANGLES >= 18]",
+                KERNELS.join("|")
+            );
             return std::process::ExitCode::from(2);
         }
     };
     let soup = meshes::torus_with_triangles(triangles);
+    if kernel.starts_with("decimate") {
+        // The report's decimation: to 10% of the faces, the whole of it in C++.
+        let target = soup.num_faces() / 10;
+        let got = if kernel == "decimate" {
+            topolab::native_decimate::NativeDecimater::OpenMesh.decimate(&soup, target)
+        } else {
+            topolab::native_decimate::decimate_openmesh_shipped(&soup, target)
+        }
+        .expect("decimates");
+        println!(
+            "{kernel} on a torus of {} faces to {target}: {} vertices, {} faces after, {:.3} s",
+            soup.num_faces(),
+            got.result.num_vertices(),
+            got.result.num_faces(),
+            got.seconds
+        );
+        return std::process::ExitCode::SUCCESS;
+    }
     let native = OpenMesh::native().expect("OpenMesh has native kernels");
     let mut m = native
         .construction(&soup)

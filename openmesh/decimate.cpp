@@ -3,52 +3,65 @@
 // decimate_to_faces() (what topolab's decimate() does: quadrics, heap, collapses; building
 // the mesh and compacting it afterwards are outside the clock on both sides).
 //
-// Why the mesh type below overrides two of OpenMesh's functions. Debian's libopenmesh 9.0 is
+// Why the mesh type below overrides OpenMesh's functions. Debian's libopenmesh 9.0 is
 // compiled without NDEBUG (Debian builds CMake projects with build type "None"; OpenMesh's
 // documented build is Release), so every property access inside the compiled library runs
 // PropertyContainer.hh's `assert(internal_type_name() == get_type_name<T>())`: two
 // std::string built, compared and freed, and an out-of-line is_valid_handle() per handle
-// step. The Decimater itself is a header template, compiled here at -O3 -DNDEBUG, but its
-// legality test calls two functions of the compiled library, TriConnectivity::is_collapse_ok
-// and PolyConnectivity::find_halfedge. Callgrind on a 16k torus (to 10%): 2.79 G
-// instructions, 87 % of them in the library's is_collapse_ok (309 689 calls, 7 873
-// instructions each, 21 string allocations each), the same 190 k instructions per removed
-// face at 4k and 16k (linear, not quadratic). DecimaterT<Mesh> calls them on its Mesh type,
-// so the type below hides both with the same tests written out here, compiled as a release
-// build of OpenMesh would compile them: 0.39 G instructions for the same run, and the same
-// result mesh bit for bit (the test in src/native_decimate.rs decimates with both and
-// compares). The rest of the library (collapse(), add_face(), garbage_collection()) still
-// runs as Debian ships it: collapse() is about 12 % of the decimation's instructions.
+// step. The Decimater itself is a header template, compiled here at -O3 -DNDEBUG, but it
+// calls four functions of the compiled library: its legality test
+// TriConnectivity::is_collapse_ok, PolyConnectivity::find_halfedge and
+// PolyConnectivity::valence (BaseDecimaterT::is_collapse_legal), and
+// PolyConnectivity::collapse (with collapse_edge, collapse_loop, adjust_outgoing_halfedge).
+// DecimaterT<Mesh> calls them on its Mesh type, so the type below hides all four with
+// OpenMesh 9.0's algorithm written out (collapse and find_halfedge are mesh.h's Compiled<>,
+// which the shim's other kernels use too), compiled as a release build of OpenMesh would
+// compile them, with the same result mesh bit for bit (the test in src/native_decimate.rs
+// decimates with both and compares).
+//
+// Callgrind on a 16k torus (16 432 faces to 1 643), the instructions inside
+// timed_decimation (`examples/openmesh_profile.rs decimate|decimate-shipped 16384`):
+//
+// | mesh type | instructions | in libOpenMeshCore |
+// |---|---|---|
+// | Debian's library as shipped | 2 710.8 M | 89 % is_collapse_ok (307 500 calls, 7 878 each) |
+// | is_collapse_ok, find_halfedge compiled here | 321.0 M | collapse(): 47.2 M (7 395 calls), valence 0.02 M |
+// | all four compiled here (below) | 276.6 M | none |
+//
+// The library's collapse() was 14.7 % of the run (its is_valid_handle calls and status
+// strings, malloc and free); compiled here, its one part left out of line (collapse_loop) is
+// 5.7 M, the rest inlined into the Decimater's loop. What remains is the Decimater's own
+// design: a legality test for every outgoing half-edge of every vertex it heaps again.
+// add_face() and garbage_collection(), outside the clock, are mesh.h's too.
 //
 // The same C API discipline as shim.cpp: every exception is caught (none reaches Rust), a
 // status from shim.h is returned, results go to out-parameters sized by the caller.
 
-#include "shim.h"
+#include "mesh.h"
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <ctime>
-#include <ios>
-#include <new>
 #include <vector>
 
 namespace {
 
-struct Traits : OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
-};
-// The mesh as Debian's library compiles it (used by the test that compares the two).
-using Shipped = OpenMesh::TriMesh_ArrayKernelT<Traits>;
+using topolab_om::guard;
+using HH = topolab_om::HH;
+using VH = topolab_om::VH;
+// The mesh as Debian's library compiles it (used by the test that compares the two): every
+// call of the Decimater into the library is the library's own.
+using Shipped = topolab_om::ShippedTri;
 
-// The mesh the report decimates: OpenMesh's, with the Decimater's two calls into the
-// compiled library (see the top of the file) compiled here instead. Each keeps OpenMesh 9.0's
+// The mesh the report decimates: OpenMesh's, with every call of the Decimater into the
+// compiled library (see the top of the file) compiled here instead. mesh.h's Compiled<> gives
+// collapse() (PolyConnectivity::collapse, collapse_edge, collapse_loop,
+// adjust_outgoing_halfedge), find_halfedge, and the add_face and garbage_collection that run
+// outside the clock; the two below are the Decimater's own. Each keeps OpenMesh 9.0's
 // documented contract and order of tests, so the Decimater's choices do not change.
-struct Tri : Shipped {
-  using Shipped::find_halfedge;
+struct Tri : topolab_om::Compiled<Shipped> {
+  using Compiled::valence;
 
   // TriConnectivity::is_collapse_ok: may the half-edge v0 -> v1 collapse? Refused when the
   // edge or an end is deleted, when a triangle beside it has its two other edges on the
@@ -56,34 +69,36 @@ struct Tri : Shipped {
   // when the one-rings of v0 and v1 share a vertex other than vl and vr (the link condition;
   // tagged with the status bit, as the library does), and when an interior edge joins two
   // boundary vertices.
-  bool is_collapse_ok(HalfedgeHandle v0v1) {
+  bool is_collapse_ok(HH v0v1) {
     if (status(edge_handle(v0v1)).deleted()) return false;
-    const HalfedgeHandle v1v0 = opposite_halfedge_handle(v0v1);
-    const VertexHandle v0 = to_vertex_handle(v1v0), v1 = to_vertex_handle(v0v1);
+    const HH v1v0 = opposite_halfedge_handle(v0v1);
+    const VH v0 = to_vertex_handle(v1v0), v1 = to_vertex_handle(v0v1);
     if (status(v0).deleted() || status(v1).deleted()) return false;
     // The apex of the triangle left of `h` into `apex`; false when its two other edges are
     // both on the boundary.
-    const auto side_ok = [this](HalfedgeHandle h, VertexHandle &apex) {
+    const auto side_ok = [this](HH h, VH &apex) {
       if (is_boundary(h)) return true;
-      const HalfedgeHandle h1 = next_halfedge_handle(h), h2 = next_halfedge_handle(h1);
+      const HH h1 = next_halfedge_handle(h), h2 = next_halfedge_handle(h1);
       apex = to_vertex_handle(h1);
       return !(is_boundary(opposite_halfedge_handle(h1)) &&
                is_boundary(opposite_halfedge_handle(h2)));
     };
-    VertexHandle vl, vr;
+    VH vl, vr;
     if (!side_ok(v0v1, vl) || !side_ok(v1v0, vr) || vl == vr) return false;
-    for (const VertexHandle w : vv_range(v0)) status(w).set_tagged(false);
-    for (const VertexHandle w : vv_range(v1)) status(w).set_tagged(true);
-    for (const VertexHandle w : vv_range(v0))
+    for (const VH w : vv_range(v0)) status(w).set_tagged(false);
+    for (const VH w : vv_range(v1)) status(w).set_tagged(true);
+    for (const VH w : vv_range(v0))
       if (status(w).tagged() && w != vl && w != vr) return false;
     return !(is_boundary(v0) && is_boundary(v1) && !is_boundary(v0v1) && !is_boundary(v1v0));
   }
 
-  // PolyConnectivity::find_halfedge: the half-edge from `from` to `to`, or an invalid one.
-  OpenMesh::SmartHalfedgeHandle find_halfedge(VertexHandle from, VertexHandle to) const {
-    for (const OpenMesh::SmartHalfedgeHandle h : voh_range(from))
-      if (h.to() == to) return h;
-    return OpenMesh::SmartHalfedgeHandle();
+  // PolyConnectivity::valence(vertex): the vertices around it, counted by the same
+  // circulator. The Decimater asks it only of the apexes of an edge whose apexes are joined
+  // (BaseDecimaterT::is_collapse_legal: two valence-3 apexes refuse the collapse).
+  unsigned valence(VH vh) const {
+    unsigned count = 0;
+    for (auto it = cvv_iter(vh); it.is_valid(); ++it) ++count;
+    return count;
   }
 };
 
@@ -95,14 +110,15 @@ double thread_seconds() {
   return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
 }
 
-template <class F> int guard(F &&body) noexcept {
-  try {
-    return body();
-  } catch (const std::bad_alloc &) {
-    return TOPOLAB_OM_OUT_OF_MEMORY;
-  } catch (...) {
-    return TOPOLAB_OM_EXCEPTION;
-  }
+// The timed region: the Decimater's initialize() and decimate_to_faces(), in a call of its
+// own so that `valgrind --tool=callgrind --toggle-collect='*timed_decimation*'` counts it
+// alone (examples/openmesh_profile.rs); one call per decimation, nothing else changes.
+template <class Decimater>
+[[gnu::noinline]] double timed_decimation(Decimater &decimater, uint32_t target) {
+  const double started = thread_seconds();
+  decimater.initialize();
+  decimater.decimate_to_faces(0, target);
+  return thread_seconds() - started;
 }
 
 // The decimation on mesh type M (Tri or Shipped); the arguments are topolab_om_decimate's.
@@ -110,15 +126,9 @@ template <class M>
 int decimate(const double *xyz, uint32_t vertices, const uint32_t *triangles, uint32_t faces,
              uint32_t target, double *out_xyz, uint32_t *out_vertices, uint32_t *out_triangles,
              uint32_t *out_faces, double *seconds) noexcept {
+  // guard() (mesh.h) also silences omerr once: add_face's refusals are returned as a status,
+  // not printed.
   return guard([&] {
-    // add_face's refusals are returned as a status, not printed (shim.cpp silences omerr
-    // the same way; doing it again is harmless).
-    static const bool silenced = [] {
-      omerr().disable();
-      omerr().setstate(std::ios::badbit | std::ios::failbit);
-      return true;
-    }();
-    (void)silenced;
     M m;
     m.reserve(vertices, size_t(faces) * 3 / 2 + 3, faces);
     for (uint32_t v = 0; v < vertices; ++v)
@@ -135,10 +145,7 @@ int decimate(const double *xyz, uint32_t vertices, const uint32_t *triangles, ui
     Decimater decimater(m);
     typename Quadric::Handle quadric;
     decimater.add(quadric);
-    const double started = thread_seconds();
-    decimater.initialize();
-    decimater.decimate_to_faces(0, target);
-    *seconds = thread_seconds() - started;
+    *seconds = timed_decimation(decimater, target);
     m.garbage_collection();
     uint32_t nv = 0, nf = 0;
     for (auto v : m.vertices()) {
@@ -173,8 +180,9 @@ extern "C" int topolab_om_decimate(const double *xyz, uint32_t vertices,
                        out_triangles, out_faces, seconds);
 }
 
-// The same with the library's own is_collapse_ok and find_halfedge, as Debian ships them: for
-// the test that both give the same mesh, and for measuring what the library's build costs.
+// The same on the mesh type as Debian ships it (the library's own is_collapse_ok,
+// find_halfedge, valence, collapse, add_face and garbage_collection): for the test that both
+// give the same mesh, and for measuring what the library's build costs.
 extern "C" int topolab_om_decimate_shipped(const double *xyz, uint32_t vertices,
                                            const uint32_t *triangles, uint32_t faces,
                                            uint32_t target, double *out_xyz,

@@ -53,12 +53,15 @@ using ShippedPoly = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
 // | construction (add_vertex + add_face) | 158.8 M | 66.7 M | add_face, find_halfedge, adjust_outgoing_halfedge |
 // | sqrt3 subdivision | 396.0 M | 126.4 M | split (face), flip, is_flip_ok |
 // | collapse test | 894.8 M | 213.4 M | split (face), collapse, garbage_collection |
+// | decimation to 10 %, 16 432-triangle torus (decimate.cpp) | 2 710.8 M | 276.6 M | collapse, find_halfedge; decimate.cpp's is_collapse_ok, valence |
 //
 // Before, is_valid_handle alone (out of line, the assertions' call) was 30 %, 37 % and 26 %
-// of them, and the collapse test's status lookups (their string compares) another 20 %.
-// Not overridden: add_face's
-// triangulation of polygons in a TriMesh, the vertex split, delete_face/delete_vertex, the
-// Decimater's (decimate.cpp has its own). decimate.cpp's note gives the Decimater's numbers.
+// of the first three, and the collapse test's status lookups (their string compares) another
+// 20 %. decimate.cpp's Decimater runs on Compiled<ShippedTri> with TriConnectivity's
+// is_collapse_ok and PolyConnectivity::valence added there (its note gives the numbers);
+// nothing of the compiled library runs inside its timed call. Not overridden: add_face's
+// triangulation of polygons in a TriMesh, the vertex split, delete_face/delete_vertex, and
+// is_collapse_ok for the editing operations (edit.cpp).
 template <class Shipped> struct Compiled : Shipped {
   using typename Shipped::Point;
   using Shipped::add_face;
