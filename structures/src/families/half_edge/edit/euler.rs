@@ -6,6 +6,7 @@ use super::HalfEdgeLinksMut;
 use crate::core::edit::{EditOp, Refusal};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::MeshTopology;
 use crate::families::half_edge::{HalfEdge, NONE};
 use glam::DVec3;
 
@@ -96,12 +97,12 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             }
         }
     }
-    /// Does `v` have a boundary half-edge? One read: a vertex's half-edge is a boundary one
-    /// when it has any (the invariant [`Self::adjust_outgoing`] keeps).
+    /// Does `v` have a boundary half-edge? The queries' boundary test: one read, because a
+    /// vertex's half-edge is a boundary one when it has any (the invariant
+    /// [`Self::adjust_outgoing`] keeps).
     #[inline(always)]
     fn is_boundary_vertex_id(&self, v: u32) -> bool {
-        let h = self.out_of(v);
-        h != NONE && self.is_bnd(h)
+        self.is_boundary_vertex(VertexId(v))
     }
     /// Is the face of `h` a triangle?
     #[inline(always)]
