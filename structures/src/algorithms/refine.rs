@@ -23,7 +23,8 @@
 //! then the middle one. Appending keeps old vertices in place but scatters each new vertex far
 //! from its neighbours in memory: the vertex order a refined mesh really has (see `ordering`).
 //!
-//! Cost per level: one edge analysis (a sort of the corners, O(c log c)), then O(V + E + F).
+//! Cost per level: one edge analysis (one pass by buckets, see [`Connectivity`]), then
+//! O(V + E + F).
 //! Memory: the input, its [`Connectivity`] and the output (about 4 times the input).
 
 use crate::core::error::{Error, Result};

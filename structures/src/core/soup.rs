@@ -5,6 +5,9 @@ use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use glam::DVec3;
 
+mod buckets;
+mod fans;
+
 /// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.
 ///
 /// Face `j` is `indices[offsets[j]..offsets[j + 1]]`, its corners in order (counter-clockwise
@@ -245,8 +248,9 @@ impl PolygonSoup {
     }
 }
 
-/// The undirected edges of a checked soup, found by sorting the corners by vertex pair
-/// (O(c log c) for c corners), with each edge's one or two corners.
+/// The undirected edges of a checked soup with each edge's one or two corners: found in one
+/// pass by buckets when every edge has at most two corners running opposite ways, by sorting
+/// the corners by vertex pair (O(c log c) for c corners) when some edge has not.
 ///
 /// Edges are numbered in order of first appearance: edge 0 is the edge leaving corner 0, and
 /// so on, so every structure that numbers its edges from this table agrees with the others.
@@ -277,7 +281,20 @@ impl Connectivity {
     /// non-manifold edge is stored with no twin (all its corners map to it, `edge_corners`
     /// holds its first corner only), so that [`Connectivity::vertex_fans`] still works.
     /// `stop_at_first` ends the analysis at the first problem (what constructions want).
+    ///
+    /// A soup whose edges all have one corner, or two running opposite ways, is analysed by
+    /// buckets in one pass without sorting (the module `buckets`); any other falls back to
+    /// sorting the corners by vertex pair, which finds and orders the problems.
     pub fn analyse(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
+        match buckets::connectivity_by_buckets(soup) {
+            Some(connectivity) => (connectivity, Vec::new()),
+            None => Self::analyse_by_sorting(soup, stop_at_first),
+        }
+    }
+
+    /// [`Connectivity::analyse`] by sorting the corners by vertex pair, O(c log c): the
+    /// analysis that reports problems, and the oracle the buckets are tested against.
+    fn analyse_by_sorting(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
         let nc = soup.num_corners();
         let mut corner_face = Vec::with_capacity(nc);
         for (j, f) in soup.faces().enumerate() {
@@ -379,89 +396,4 @@ impl Connectivity {
         };
         (other != u32::MAX).then_some(other as usize)
     }
-
-    /// Per vertex, the number of fans its faces fall into (0 for an unused vertex, 1 for a
-    /// manifold vertex). Union-find over corners joined across interior edges, O(c α(c)).
-    pub fn vertex_fans(&self, soup: &PolygonSoup) -> Vec<u32> {
-        // Counted on the forest itself: constructions call this, and their timings and peaks
-        // are measured, so no per-corner array beyond the forest.
-        let mut parent = self.fan_forest(soup);
-        let mut fans = vec![0u32; soup.num_vertices()];
-        for c in 0..soup.num_corners() {
-            if find_root(&mut parent, c as u32) == c as u32 {
-                fans[soup.indices[c] as usize] += 1;
-            }
-        }
-        fans
-    }
-
-    /// Per corner, the fan of its vertex it lies in, named by one corner of that fan (the
-    /// same for the whole fan): corners at one vertex are in one fan when a walk across
-    /// interior edges (edges of exactly two corners) joins their faces around the vertex. A
-    /// non-manifold edge joins nothing: its faces meet there as at a cut. O(c α(c)).
-    pub fn corner_fans(&self, soup: &PolygonSoup) -> Vec<u32> {
-        let mut parent = self.fan_forest(soup);
-        for c in 0..parent.len() as u32 {
-            parent[c as usize] = find_root(&mut parent, c);
-        }
-        parent
-    }
-
-    /// The union-find forest over corners of [`Connectivity::corner_fans`]: corners that meet
-    /// at a vertex across an interior edge are joined.
-    fn fan_forest(&self, soup: &PolygonSoup) -> Vec<u32> {
-        let mut parent: Vec<u32> = (0..soup.num_corners() as u32).collect();
-        for &[c0, c1] in &self.edge_corners {
-            if c1 == u32::MAX {
-                continue;
-            }
-            let (c0, c1) = (c0 as usize, c1 as usize);
-            let n0 = soup.next_corner(c0, self.corner_face[c0] as usize);
-            let n1 = soup.next_corner(c1, self.corner_face[c1] as usize);
-            // c0 goes a->b, c1 goes b->a: at a, corners c0 and n1 meet; at b, n0 and c1. (A
-            // pair of the lenient analysis may both go a->b: then c0, c1 meet at a, n0, n1 at b.)
-            let same_direction = soup.indices[c0] == soup.indices[c1];
-            let meetings = if same_direction {
-                [(c0, c1), (n0, n1)]
-            } else {
-                [(c0, n1), (n0, c1)]
-            };
-            for (x, y) in meetings {
-                let (rx, ry) = (
-                    find_root(&mut parent, x as u32),
-                    find_root(&mut parent, y as u32),
-                );
-                if rx != ry {
-                    parent[rx as usize] = ry;
-                }
-            }
-        }
-        parent
-    }
-
-    /// Fails with [`Error::NonManifoldVertex`] on the first vertex whose star is not one fan.
-    pub fn check_vertex_fans(&self, soup: &PolygonSoup) -> Result<()> {
-        match self
-            .vertex_fans(soup)
-            .iter()
-            .enumerate()
-            .find(|(_, &n)| n > 1)
-        {
-            Some((v, &fans)) => Err(Error::NonManifoldVertex {
-                vertex: v as u32,
-                fans: fans as usize,
-            }),
-            None => Ok(()),
-        }
-    }
-}
-
-/// The root of `x` in a union-find forest, halving the path on the way.
-fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[parent[x as usize] as usize];
-        parent[x as usize] = p;
-        x = p;
-    }
-    x
 }

@@ -1,6 +1,6 @@
 //! The half-edge arrays every half-edge structure is built from, made from the soup's shared
-//! edge analysis ([`crate::Connectivity`]) without hash maps: O(c log c) for c corners (the
-//! sort inside `connectivity()`), everything after it linear.
+//! edge analysis ([`crate::Connectivity`], one pass by buckets for a mesh with manifold edges)
+//! and its fan walk, without hash maps: linear in the corners for bounded valence.
 
 use crate::core::error::{Error, Result};
 use crate::core::soup::PolygonSoup;

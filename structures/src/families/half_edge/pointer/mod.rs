@@ -49,7 +49,7 @@
 //! The lecture's summary table gives the successor O(k) too; it assumes a stored predecessor
 //! instead of the record's `next` (see "Costs" in [`crate::families::half_edge`]).
 //!
-//! Construction: `soup.connectivity()` (one sort, O(c log c)), then linear. Non-manifold
+//! Construction: `soup.connectivity()` (one pass by buckets) and its fan walk, then linear. Non-manifold
 //! vertices are refused ([`crate::Error::NonManifoldVertex`]).
 
 #[allow(unsafe_code)]
