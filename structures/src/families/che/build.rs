@@ -6,16 +6,17 @@
 //! Level 1's fast build ([`build_fast`]) is five passes. Measured pass by pass on the
 //! 1M-triangle torus, warm builds, median of 9 rounds in turns with OpenMesh's `add_face`
 //! build (`cargo run --release --example build_sweep -- 1000000 torus 9 all passes`, 2-core
-//! VM at load 16), in ns per face:
+//! VM at load 1, 2026-12-01; OpenMesh's build compiled here at -O3 without its assertions, as
+//! the lab's OpenMesh is), in ns per face:
 //!
 //! | pass | ns/face |
 //! |---|---|
-//! | copy `G[]`, check it finite | 1.6 + 0.65 |
-//! | copy `V[]` | 1.5 |
-//! | pair `O[]` ([`opposites_by_buckets`]) | 12.6 |
-//! | `VH[]` (Algorithm 3, [`vertex_half_edges_algorithm_3`]) | 2.4 |
-//! | one-fan walk ([`every_vertex_one_fan`]) | 4.1 |
-//! | whole build (OpenMesh: 170) | 22.1 |
+//! | copy `G[]`, check it finite | 1.2 + 0.6 |
+//! | copy `V[]` | 1.1 |
+//! | pair `O[]` ([`opposites_by_buckets`]) | 10.4 |
+//! | `VH[]` (Algorithm 3, [`vertex_half_edges_algorithm_3`]) | 2.0 |
+//! | one-fan walk ([`every_vertex_one_fan`]) | 3.2 |
+//! | whole build (OpenMesh: 72.9) | 18.9 |
 //!
 //! The pairing waits on its bucket walk: each step loads the node of the half-edge that
 //! joined the bucket before, and the twin of an edge between two strips of the torus arrives
@@ -38,21 +39,18 @@
 //! - `VH[]` kept inside the pairing loop (the first half-edge leaving each vertex, then the
 //!   boundary ones from `O[]`): slower, the added branch costs more than Algorithm 3's pass.
 //!
-//! So the construction target (0.1× OpenMesh, about 17 ns/face in that run) is not met: the
-//! pairing alone is 0.07×, and the copies and checks every level needs add 0.06×. Cold builds
+//! So the construction target (0.1× OpenMesh, 7.3 ns/face in that run) is not met: the
+//! pairing alone is 0.14×, and the copies and checks every level needs add 0.11×. Cold builds
 //! (memory returned to the kernel before each build) add about 28 ns/face here: 15.6k
 //! first-touch page faults per build (64 MB: `G[]`, `V[]`, `O[]` 12 bytes per face each, the
 //! pairing's nodes 24, `head` and `VH[]` 2 each), about 1.8 µs each on this VM; OpenMesh
 //! takes 16.1k. Halving the nodes would save about a fifth of that, but every `u32` layout
 //! measured made the warm pairing slower.
 //!
-//! The table's OpenMesh (170) is Debian's library with its compiled-in assertions. With the
-//! functions its build calls compiled here without them (the lab's OpenMesh since; see the
-//! fairness notes of the README), the same focused run of the two in turns
-//! (`cargo run --release --example build_sweep -- 1000000 torus 7 che-l1,openmesh`, load 11)
-//! gave OpenMesh 129.2 ns/face against 259.9 before, and che-l1 33.3 against 33.8: the ratio
-//! went from 0.13 to 0.26, and the target now asks for about half of what the passes above
-//! cost.
+//! Against Debian's OpenMesh, with its compiled-in assertions (170–260 ns/face in the lab's
+//! first measurements), the same passes came to 0.13× OpenMesh. Compiled without them,
+//! OpenMesh's build takes about 2.5 times less, and the target now asks for less than the
+//! pairing alone costs.
 
 use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
 use crate::core::error::{Error, Result};
