@@ -8,6 +8,8 @@ use glam::DVec3;
 mod buckets;
 mod fans;
 
+pub(crate) use buckets::bucket_step_budget;
+
 /// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.
 ///
 /// Face `j` is `indices[offsets[j]..offsets[j + 1]]`, its corners in order (counter-clockwise
@@ -280,7 +282,9 @@ impl Connectivity {
     /// order of its end vertices. An inconsistent pair is still stored as twins; a
     /// non-manifold edge is stored with no twin (all its corners map to it, `edge_corners`
     /// holds its first corner only), so that [`Connectivity::vertex_fans`] still works.
-    /// `stop_at_first` ends the analysis at the first problem (what constructions want).
+    /// `stop_at_first` ends the analysis at the first problem (what constructions want); the
+    /// connectivity it then returns is partial (corners past the problem have no edge) and is
+    /// only for reporting.
     ///
     /// A soup whose edges all have one corner, or two running opposite ways, is analysed by
     /// buckets in one pass without sorting (the module `buckets`); any other falls back to

@@ -23,7 +23,8 @@
 //! or repeated vertices, fewer than three corners) are not repaired: the input is a checked
 //! [`PolygonSoup`].
 //!
-//! Every step is a sort or a union-find over corners: O(c log c) for c corners.
+//! Every step is an edge analysis (see [`Connectivity`](crate::Connectivity): by sorting for
+//! the soups that need repair), a sort or a union-find over corners: O(c log c) for c corners.
 
 mod duplicate_faces;
 mod orient;

@@ -15,15 +15,27 @@
 //! 375 → 245 (OpenMesh's `add_face` build, 69–73, in both runs).
 //!
 //! At the first edge it cannot store (a third corner, or two corners the same way) it gives
-//! up, and the sorting analysis names the problem as it always has.
+//! up, and the sorting analysis names the problem as it always has. It gives up too when its
+//! buckets grow long ([`bucket_step_budget`]: a vertex of very high valence), and the sort
+//! does the work.
 
 use super::{Connectivity, PolygonSoup};
 
 /// No corner: the end of a bucket, or the missing second corner of a boundary edge.
 const NONE: u32 = u32::MAX;
 
+/// How many steps along their buckets a pass over `items` corners or half-edges may take
+/// before it gives up for a method that does not care about valences. A bucket holds the
+/// edges from its vertex to larger ones, so a vertex of valence k costs about k²/2 steps:
+/// about 1 per corner on a mesh of bounded valence, 5·10¹¹ on a fan of a million triangles
+/// around one vertex.
+pub(crate) const fn bucket_step_budget(items: usize) -> usize {
+    16 * items + 4096
+}
+
 /// [`Connectivity`] of a checked soup by buckets (see the module docs), or `None` when some
-/// edge has more than two corners or two corners running the same way.
+/// edge has more than two corners or two corners running the same way, or when the buckets
+/// take more than [`bucket_step_budget`] steps (a vertex of very high valence).
 pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity> {
     let nc = soup.num_corners();
     let indices = soup.indices();
@@ -35,6 +47,7 @@ pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity
     // step along a bucket is one load; a corner that closed an edge is never reached.
     let mut head = vec![NONE; soup.num_vertices()];
     let mut filed: Vec<[u32; 2]> = vec![[NONE; 2]; nc];
+    let mut steps_left = bucket_step_budget(nc);
     for (f, w) in soup.offsets().windows(2).enumerate() {
         let (first, end) = (w[0] as usize, w[1] as usize);
         for c in first..end {
@@ -64,6 +77,10 @@ pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity
                     break e;
                 }
                 at = link;
+                steps_left -= 1;
+                if steps_left == 0 {
+                    return None;
+                }
             };
             corner_edge.push(edge);
         }
@@ -124,6 +141,24 @@ mod tests {
             let e: Error = soup.connectivity().unwrap_err();
             assert_eq!(e.kind(), problem);
         }
+    }
+
+    #[test]
+    fn a_vertex_of_high_valence_is_left_to_the_sort() {
+        // A fan of 3000 quads around vertex 0: about 4.5M bucket steps, past the budget.
+        let k = 3000u32;
+        let positions = vec![glam::DVec3::ZERO; 2 * k as usize + 2];
+        let faces: Vec<[u32; 4]> = (0..k)
+            .map(|i| [0, 2 * i + 1, 2 * i + 2, 2 * i + 3])
+            .collect();
+        let soup = PolygonSoup::from_polygons(positions, &faces);
+        assert!((k as usize).pow(2) / 2 > bucket_step_budget(soup.num_corners()));
+        assert!(connectivity_by_buckets(&soup).is_none());
+        let (by_sorting, problems) = Connectivity::analyse_by_sorting(&soup, true);
+        assert!(problems.is_empty());
+        let c = soup.connectivity().expect("a fan of quads is a manifold");
+        assert_eq!(c.edge_corners, by_sorting.edge_corners);
+        assert_eq!(c.corner_edge, by_sorting.corner_edge);
     }
 
     proptest! {

@@ -35,7 +35,9 @@ impl Connectivity {
     /// Is every used vertex's star one fan? From one corner of each vertex, the walk turns
     /// across interior edges both ways until it comes back or meets the boundary, counting the
     /// corners it reaches; the walks reach all corners exactly when every vertex is one fan (a
-    /// walk stays in the fan it starts in). O(c) for c corners, each step three dependent
+    /// walk stays in the fan it starts in). A pair of the lenient analysis running one way
+    /// stops the walk where union-find joins the two corners, so there the walk may say
+    /// `false` for a vertex union-find counts as one fan, never `true` for one it does not. O(c) for c corners, each step three dependent
     /// reads, against union-find's O(c α(c)) with a per-corner forest.
     pub fn every_vertex_one_fan(&self, soup: &PolygonSoup) -> bool {
         let indices = soup.indices();
@@ -191,6 +193,23 @@ mod tests {
     }
 
     proptest! {
+        /// Random soups over few vertices, analysed leniently (non-manifold edges and pairs
+        /// running one way kept): the walk ends, and it never passes a vertex of several fans.
+        #[test]
+        fn the_walk_is_safe_on_the_lenient_analysis(
+            faces in prop::collection::vec(
+                prop::sample::subsequence((0u32..8).collect::<Vec<_>>(), 3..=5).prop_shuffle(),
+                0..12,
+            )
+        ) {
+            let soup = PolygonSoup::from_polygons(vec![glam::DVec3::ZERO; 8], &faces);
+            prop_assume!(soup.check().is_ok());
+            let (c, _) = Connectivity::analyse(&soup, false);
+            if c.every_vertex_one_fan(&soup) {
+                prop_assert!(c.vertex_fans(&soup).iter().all(|&n| n <= 1));
+            }
+        }
+
         /// Random subsets of a grid's cells: cells that meet only at a corner make vertices
         /// of two or more fans, open and closed fans both occur, vertices are relabelled.
         #[test]

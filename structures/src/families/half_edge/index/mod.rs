@@ -35,8 +35,9 @@
 //! | boundary curves | scan the half-edges for boundary ones, walk each loop | O(n) |
 //! | successor, predecessor | the half-edge in that face, then `next` / `prev` | O(1) |
 //!
-//! Construction: `soup.connectivity()` (one pass by buckets, see [`crate::Connectivity`]) and
-//! its fan walk, then linear; no hash maps. Non-manifold vertices are refused ([`crate::Error::NonManifoldVertex`]).
+//! Construction: `soup.connectivity()` (one pass by buckets, see [`crate::Connectivity`])
+//! and its fan walk, then linear; no hash maps. Non-manifold vertices are refused
+//! ([`crate::Error::NonManifoldVertex`]).
 
 use crate::core::error::Result;
 use crate::core::ids::{FaceId, VertexId};

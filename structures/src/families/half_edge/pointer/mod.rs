@@ -49,8 +49,8 @@
 //! The lecture's summary table gives the successor O(k) too; it assumes a stored predecessor
 //! instead of the record's `next` (see "Costs" in [`crate::families::half_edge`]).
 //!
-//! Construction: `soup.connectivity()` (one pass by buckets) and its fan walk, then linear. Non-manifold
-//! vertices are refused ([`crate::Error::NonManifoldVertex`]).
+//! Construction: `soup.connectivity()` (one pass by buckets) and its fan walk, then
+//! linear. Non-manifold vertices are refused ([`crate::Error::NonManifoldVertex`]).
 
 #[allow(unsafe_code)]
 mod links;
