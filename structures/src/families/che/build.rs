@@ -175,8 +175,8 @@ pub fn opposites_algorithm_1(v: &[u32]) -> Vec<i32> {
 ///
 /// A bucket holds the edges from its vertex to larger ones, so a vertex of valence k costs
 /// about k²/2 steps: nothing on a mesh of bounded valence, hours on a fan of a million
-/// triangles around one vertex. Past [`bucket_step_budget`] steps the pairing is finished by
-/// a map instead ([`opposites_by_map`], the same `O[]`).
+/// triangles around one vertex. Past 16 steps per half-edge the pairing is finished by
+/// a hash map of edges instead, which gives the same `O[]`.
 ///
 /// Returns `None` when `V[]` is not whole triangles or holds more half-edges or vertices than
 /// `i32` numbers (the chapter's `O[]` and `VH[]` are signed), when a triangle names a vertex
