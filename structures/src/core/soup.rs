@@ -8,6 +8,18 @@ use glam::DVec3;
 mod buckets;
 mod fans;
 
+/// Random soups of polygons over 8 vertices that pass [`PolygonSoup::check`], most of them
+/// bad: non-manifold edges, faces running both ways along an edge, polygons of 3 to 6
+/// corners, unused vertices. For the tests of the edge analysis and the fans.
+#[cfg(test)]
+fn random_soups() -> impl proptest::strategy::Strategy<Value = PolygonSoup> {
+    use proptest::prelude::*;
+    let face = prop::sample::subsequence((0u32..8).collect::<Vec<_>>(), 3..=6).prop_shuffle();
+    prop::collection::vec(face, 0..14)
+        .prop_map(|faces| PolygonSoup::from_polygons(vec![DVec3::ZERO; 8], &faces))
+        .prop_filter("a checked soup", |s| s.check().is_ok())
+}
+
 pub(crate) use buckets::bucket_step_budget;
 
 /// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.

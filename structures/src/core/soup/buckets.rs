@@ -162,17 +162,9 @@ mod tests {
     }
 
     proptest! {
-        /// Random soups of polygons over few vertices, mostly bad: non-manifold edges,
-        /// both orientations, polygons of 3 to 6 corners, unused vertices.
+        /// Random soups, most of them bad ([`super::super::random_soups`]).
         #[test]
-        fn buckets_agree_with_sorting_on_random_soups(
-            faces in prop::collection::vec(
-                prop::sample::subsequence((0u32..9).collect::<Vec<_>>(), 3..=6).prop_shuffle(),
-                0..14,
-            )
-        ) {
-            let soup = PolygonSoup::from_polygons(vec![glam::DVec3::ZERO; 9], &faces);
-            prop_assume!(soup.check().is_ok());
+        fn buckets_agree_with_sorting_on_random_soups(soup in super::super::random_soups()) {
             agrees_with_sorting(&soup)?;
         }
 

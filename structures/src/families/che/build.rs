@@ -198,12 +198,7 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
     let mut o: Vec<i32> = Vec::with_capacity(v.len());
     let mut steps_left = bucket_step_budget(v.len());
     for (t, corners) in v.chunks_exact(3).enumerate() {
-        let (a, b, c) = (corners[0], corners[1], corners[2]);
-        if a >= n || b >= n || c >= n || a == b || b == c || c == a {
-            return None;
-        }
-        for (i, (from, to)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
-            let he = (3 * t + i) as u32;
+        for (he, from, to) in triangle_sides(t, corners, n)? {
             let (smaller, larger) = (from.min(to), from.max(to));
             let leaves = (from > to) as u64;
             let mut at = head[smaller as usize];
@@ -236,6 +231,18 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
     Some(o)
 }
 
+/// The half-edges of triangle `t`, whose corners are `corners`, as (half-edge, start, end);
+/// `None` when the triangle names a vertex `>= n` or one vertex twice.
+#[inline(always)]
+fn triangle_sides(t: usize, corners: &[u32], n: u32) -> Option<[(u32, u32, u32); 3]> {
+    let (a, b, c) = (corners[0], corners[1], corners[2]);
+    if a >= n || b >= n || c >= n || a == b || b == c || c == a {
+        return None;
+    }
+    let he = 3 * t as u32;
+    Some([(he, a, b), (he + 1, b, c), (he + 2, c, a)])
+}
+
 /// [`opposites_by_buckets`]'s `O[]` and refusals through a hash map of edges, as Algorithm 1
 /// pairs them, for meshes with a vertex of high valence: O(n) expected whatever the valences,
 /// but slower than the buckets on a mesh of bounded valence (a map entry per edge, in no
@@ -246,12 +253,7 @@ fn opposites_by_map(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
     // The first half-edge of each edge, by its sorted end vertices.
     let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(v.len() / 2);
     for (t, corners) in v.chunks_exact(3).enumerate() {
-        let (a, b, c) = (corners[0], corners[1], corners[2]);
-        if a >= n || b >= n || c >= n || a == b || b == c || c == a {
-            return None;
-        }
-        for (i, (from, to)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
-            let he = (3 * t + i) as u32;
+        for (he, from, to) in triangle_sides(t, corners, n)? {
             match first.entry((from.min(to), from.max(to))) {
                 Entry::Vacant(slot) => {
                     slot.insert(he);
