@@ -299,8 +299,9 @@ impl Connectivity {
     /// only for reporting.
     ///
     /// A soup whose edges all have one corner, or two running opposite ways, is analysed by
-    /// buckets in one pass without sorting (the module `buckets`); any other falls back to
-    /// sorting the corners by vertex pair, which finds and orders the problems.
+    /// buckets in one pass without sorting (the module `buckets`), unless a vertex of very
+    /// high valence makes the buckets too long; any other falls back to sorting the corners by
+    /// vertex pair, which finds and orders the problems.
     pub fn analyse(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
         match buckets::connectivity_by_buckets(soup) {
             Some(connectivity) => (connectivity, Vec::new()),

@@ -37,8 +37,13 @@ impl Connectivity {
     /// corners it reaches; the walks reach all corners exactly when every vertex is one fan (a
     /// walk stays in the fan it starts in). A pair of the lenient analysis running one way
     /// stops the walk where union-find joins the two corners, so there the walk may say
-    /// `false` for a vertex union-find counts as one fan, never `true` for one it does not. O(c) for c corners, each step three dependent
-    /// reads, against union-find's O(c α(c)) with a per-corner forest.
+    /// `false` for a vertex union-find counts as one fan, never `true` for one it does not.
+    /// O(c) for c corners (each step reads the twin through `corner_edge` and `edge_corners`,
+    /// then the face's offsets), against union-find's O(c α(c)) with a per-corner forest.
+    ///
+    /// Every walk ends: `leaving` and `entering` are inverse one-to-one steps (a twin corner
+    /// is an involution, `next_corner` a permutation), so from `s` they trace a cycle back to
+    /// `s` or a path that ends at the boundary, never a loop that misses `s`.
     pub fn every_vertex_one_fan(&self, soup: &PolygonSoup) -> bool {
         let indices = soup.indices();
         let nc = indices.len();
@@ -74,18 +79,12 @@ impl Connectivity {
                 }
                 reached += 1;
                 c = n;
-                if reached > nc {
-                    return false;
-                }
             }
             if !closed {
                 let mut c = s;
                 while let Some(n) = entering(c) {
                     reached += 1;
                     c = n;
-                    if reached > nc {
-                        return false;
-                    }
                 }
             }
         }
