@@ -7,7 +7,7 @@ use crate::results::{Measurement, Results, Status, Subject};
 use crate::sections::Section;
 use crate::svg;
 use std::fmt::Write;
-use topolab_structures::{Family, Input, Operator, Workload};
+use topolab_structures::{Family, Input, Operator, Step, Workload};
 
 pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -109,6 +109,29 @@ pub fn render(r: &Results) -> String {
     h
 }
 
+/// One probe level for the Machine table: its load latency, its chain steps with arithmetic,
+/// its bandwidth.
+fn level_text(l: &crate::probe::Level) -> String {
+    let steps: Vec<String> = l
+        .step_ns
+        .iter()
+        .filter(|(s, _)| *s != Step::Load)
+        .map(|&(s, ns)| format!("{ns:.1} for {}", s.text()))
+        .collect();
+    let steps = if steps.is_empty() {
+        String::new()
+    } else {
+        format!(" (a chain step: {})", steps.join(", "))
+    };
+    format!(
+        "{} ({}): {:.1} ns per dependent load{steps}, {:.1} GB/s",
+        l.name,
+        bytes(l.bytes as f64),
+        l.load_ns,
+        l.read_bytes_per_s / 1e9
+    )
+}
+
 fn machine_section(h: &mut String, r: &Results) {
     let m = &r.machine;
     let p = &r.probe;
@@ -117,7 +140,7 @@ fn machine_section(h: &mut String, r: &Results) {
         "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>by working set (probe)</th><td class=l>{}</td></tr><tr><th class=l>timing</th><td class=l>median of repeated runs (at least {} per cell, until {:.2} s); {} sampled queries per kind; single-threaded; construction in the measuring thread's CPU time</td></tr></table>",
         esc(&m.cpu), m.cores, esc(&m.caches), esc(&m.memory), esc(&m.rustc), esc(&m.commit), esc(&m.date),
         p.read_bytes_per_s / 1e9, bytes(p.read_array_bytes as f64), p.chase_ns_per_hop, bytes(p.chase_array_bytes as f64),
-        p.levels.iter().map(|l| format!("{} ({}): {:.1} ns per dependent load, {:.1} GB/s", l.name, bytes(l.bytes as f64), l.load_ns, l.read_bytes_per_s / 1e9)).collect::<Vec<_>>().join("; "),
+        p.levels.iter().map(level_text).collect::<Vec<_>>().join("; "),
         3, r.settings.cell_budget_s, r.settings.samples
     );
     crate::phases::render(h, &r.phases);
@@ -343,6 +366,16 @@ pub(crate) fn limit_text(l: &Limit) -> String {
         ns(l.bandwidth_ns_per_item),
         ns(l.checksum_ns_per_item)
     );
+    if l.step != Step::Load && l.chain_ns_per_item > 0.0 {
+        let _ = write!(
+            t,
+            "; the chain's arithmetic, measured: a step of {} takes {:.2}× a plain load at the {} latency, so the chain alone takes {}",
+            l.step.text(),
+            l.chain_ns_per_item / l.latency_ns_per_item,
+            l.latency_level,
+            ns(l.chain_ns_per_item)
+        );
+    }
     if let Some(n) = &l.note {
         let _ = write!(t, "; not in the model: {n}");
     }

@@ -20,12 +20,17 @@
 //! The sweep also reads what the harness's checksum asks for: the end vertices of every edge
 //! it mixes in (an R10 of the structure: see [`checksum_keys`]). What the model leaves out
 //! (arithmetic on the chain, branches, the structure's own bookkeeping) is what "× limit"
-//! measures.
+//! measures. One part of it is measured beside the limit, not in it: the chain when each step
+//! also does the arithmetic the model declares ([`Step`]), at the probe's chase of that kind
+//! ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load made a step
+//! 1.97× a plain load's latency in L1 on the reference machine (2.9 against 1.5 ns), the
+//! half-edges' `h ^ 1` 1.2×. The limit counts plain loads, what the design must wait for
+//! whatever its arithmetic, and the Targets show a missed sweep against its chain too.
 
 use crate::kernels::Kernel;
 use crate::probe::Probe;
 use crate::results::{Results, Status, Subject};
-use topolab_structures::{Access, Operator, PolygonSoup, Unit};
+use topolab_structures::{Access, Operator, PolygonSoup, Step, Unit};
 
 /// The element counts a mesh's containers and a sweep's answers follow.
 #[derive(Copy, Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -148,6 +153,18 @@ pub struct Limit {
     pub latency_level: String,
     /// The checksum's arithmetic, ns per item: its terms at the probe's time per term.
     pub checksum_ns_per_item: f64,
+    /// Checksum terms per item (one per answer; one per edge for R10).
+    #[serde(default)]
+    pub checksum_terms_per_item: f64,
+    /// The work of each step of the chain, as the model declares it.
+    #[serde(default)]
+    pub step: Step,
+    /// The chain at the latency of a step doing that work, ns per item: the loads at the
+    /// probe's chase of that kind at `latency_level` ([`crate::probe::Level::step_ns`]). Not a
+    /// bound of the limit, which counts plain loads as the model declares them: shown beside
+    /// it, it measures what the arithmetic on the chain costs.
+    #[serde(default)]
+    pub chain_ns_per_item: f64,
     /// What the structure says the model leaves out, if it knows.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
@@ -217,7 +234,9 @@ pub fn limit(
     let loads = access.chain_per_query * q + access.chain_per_answer * answers;
     let latency_level = probe.level_for(read_by_queries / q)?;
     let latency_ns = loads * latency_level.load_ns;
-    let checksum_ns = checksum_terms(op, q, answers) * probe.checksum_ns;
+    let chain_ns = loads * latency_level.step_ns(access.step);
+    let terms = checksum_terms(op, q, answers);
+    let checksum_ns = terms * probe.checksum_ns;
     let (ns, bound) = [
         (bandwidth_ns, Bound::Bandwidth),
         (latency_ns, Bound::Latency),
@@ -238,6 +257,9 @@ pub fn limit(
         latency_ns_per_item: latency_ns / q,
         latency_level: latency_level.name.clone(),
         checksum_ns_per_item: checksum_ns / q,
+        checksum_terms_per_item: terms / q,
+        step: access.step,
+        chain_ns_per_item: chain_ns / q,
         note: access.note.map(str::to_string),
     })
 }
@@ -292,6 +314,12 @@ mod tests {
             bytes,
             read_bytes_per_s: gb * 1e9,
             load_ns: ns,
+            // A twin step a quarter slower than a plain load; a CHE corner step, twice.
+            step_ns: vec![
+                (Step::Load, ns),
+                (Step::Twin, 1.25 * ns),
+                (Step::Corner, 2.0 * ns),
+            ],
         };
         Probe {
             read_bytes_per_s: 10e9,
@@ -352,6 +380,25 @@ mod tests {
         assert!((l.bandwidth_ns_per_item - 2.8).abs() < 1e-9);
         // 6 checksum terms a vertex: 3 ns.
         assert!((l.checksum_ns_per_item - 3.0).abs() < 1e-9);
+        assert_eq!(l.checksum_terms_per_item, 6.0);
+        // Declared plain loads: the chain costs what the loads cost.
+        assert_eq!((l.step, l.chain_ns_per_item), (Step::Load, 12.0));
+        // The same loads declared as CHE corner steps: the limit counts them as loads still,
+        // the chain beside it at the corner step's latency.
+        let corner = limit(
+            &walk.stepping(Step::Corner),
+            None,
+            Operator::R00,
+            &TORUS,
+            1_000_000,
+            &probe(),
+        )
+        .unwrap();
+        assert_eq!(
+            (corner.ns_per_item, corner.step),
+            (l.ns_per_item, Step::Corner)
+        );
+        assert!((corner.chain_ns_per_item - 24.0).abs() < 1e-9, "{corner:?}");
         assert_eq!(
             (l.bound, l.ns_per_item),
             (Bound::Latency, l.latency_ns_per_item)

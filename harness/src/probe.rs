@@ -1,10 +1,14 @@
 //! The machine's physical limits, measured in the same run as the kernels: sequential read
-//! bandwidth and the latency of a dependent random access (a pointer chase), over the memory
-//! (the arrays of `--probe-mb`) and over working sets that fit each cache level.
+//! bandwidth and the latency of a dependent random access (a pointer chase, and the same chase
+//! with each kind of chain step's arithmetic, [`Step`]), over the memory (the arrays of
+//! `--probe-mb`) and over working sets that fit each cache level. The workers ([`Reader`],
+//! [`Chase`], [`Terms`]) also take turns with the sweeps of the Targets table, so a limit
+//! there follows the machine from round to round.
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
+use topolab_structures::Step;
 
 /// What the probe measured.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -36,6 +40,20 @@ pub struct Level {
     pub read_bytes_per_s: f64,
     /// Latency of one dependent load (a hop of a random cycle through it), ns.
     pub load_ns: f64,
+    /// Latency of one chain step of each kind of [`Step::ALL`] (the same cycle, each hop's
+    /// address computed by the step's work): [`Level::step_ns`].
+    pub step_ns: Vec<(Step, f64)>,
+}
+
+impl Level {
+    /// The latency of one chain step doing `step`'s work, ns (a plain load's for a kind not
+    /// measured).
+    pub fn step_ns(&self, step: Step) -> f64 {
+        self.step_ns
+            .iter()
+            .find(|(s, _)| *s == step)
+            .map_or(self.load_ns, |&(_, ns)| ns)
+    }
 }
 
 impl Probe {
@@ -56,16 +74,21 @@ pub fn measure(read_mb: usize, chase_mb: usize) -> Probe {
     let read_array_bytes = read_mb << 20;
     let chase_array_bytes = chase_mb << 20;
     let read_bytes_per_s = read_bandwidth(read_array_bytes);
-    let chase_ns_per_hop = load_latency(chase_array_bytes);
+    let memory_steps = chase_latencies(chase_array_bytes);
+    let chase_ns_per_hop = memory_steps[0].1;
     let mut levels: Vec<Level> = crate::machine::data_caches()
         .into_iter()
         .map(|(level, size)| (format!("L{level}"), size / 2))
         .filter(|&(_, bytes)| bytes < read_array_bytes.min(chase_array_bytes))
-        .map(|(name, bytes)| Level {
-            name,
-            bytes,
-            read_bytes_per_s: read_bandwidth(bytes),
-            load_ns: load_latency(bytes),
+        .map(|(name, bytes)| {
+            let step_ns = chase_latencies(bytes);
+            Level {
+                name,
+                bytes,
+                read_bytes_per_s: read_bandwidth(bytes),
+                load_ns: step_ns[0].1,
+                step_ns,
+            }
         })
         .collect();
     levels.push(Level {
@@ -73,6 +96,7 @@ pub fn measure(read_mb: usize, chase_mb: usize) -> Probe {
         bytes: read_array_bytes.max(chase_array_bytes),
         read_bytes_per_s,
         load_ns: chase_ns_per_hop,
+        step_ns: memory_steps,
     });
     Probe {
         read_bytes_per_s,
@@ -90,37 +114,113 @@ fn fastest(runs: usize, mut run: impl FnMut() -> f64) -> f64 {
     (0..runs).map(|_| run()).fold(f64::INFINITY, f64::min)
 }
 
+/// Nanoseconds per unit of the fastest of `runs` runs of `work`, which returns the units it did.
+fn fastest_ns(runs: usize, mut work: impl FnMut() -> usize) -> f64 {
+    fastest(runs, || {
+        let t = Instant::now();
+        let units = work();
+        t.elapsed().as_nanos() as f64 / units.max(1) as f64
+    })
+}
+
 /// Nanoseconds per checksum term over 4096 answers in L1, fastest of 31 runs of 64k terms.
 fn checksum_term_ns() -> f64 {
-    let answers: Vec<u32> = (0..4096u32).map(|i| i.wrapping_mul(0x9E37_79B9)).collect();
-    let passes = 16;
-    fastest(31, || {
-        let t = Instant::now();
-        let mut sum = 0u64;
-        for _ in 0..passes {
-            for (i, &w) in std::hint::black_box(&answers).iter().enumerate() {
-                sum = sum.wrapping_add(crate::checksum::mix(i as u64, w as u64));
-            }
-        }
-        std::hint::black_box(sum);
-        t.elapsed().as_nanos() as f64 / (passes * answers.len()) as f64
-    })
+    let terms = Terms::new();
+    fastest_ns(31, || terms.run())
 }
 
 /// Bytes per second of a sequential read of `bytes` (rounded down to 32 bytes): the fastest of
 /// three reads of a memory-sized array, or of fifteen runs of at least 4 MiB of reads of a
 /// cache-sized one (read many times over).
 fn read_bandwidth(bytes: usize) -> f64 {
-    let words = (bytes / 8).max(4);
-    let data: Vec<u64> = (0..words as u64).collect();
-    let passes = ((4usize << 20) / (words * 8)).max(1);
+    let reader = Reader::new(bytes);
     let runs = if bytes >= 64 << 20 { 3 } else { 15 };
-    let best = fastest(runs, || {
-        let t = Instant::now();
-        // Four independent sums so the adds are not the bottleneck.
+    1e9 / fastest_ns(runs, || reader.run())
+}
+
+/// Nanoseconds per hop of a chase through `bytes` for every kind of step, [`Step::ALL`]'s
+/// order (the plain load first), each the fastest of nine runs of 64k to 128k hops.
+fn chase_latencies(bytes: usize) -> Vec<(Step, f64)> {
+    let next = Chase::cycle(bytes);
+    Step::ALL
+        .into_iter()
+        .map(|step| {
+            let mut chase = Chase::through(&next, step);
+            (step, fastest_ns(9, || chase.run()))
+        })
+        .collect()
+}
+
+/// The checksum's work per answer, as a sweep does it ([`crate::checksum::mix`] and the sum)
+/// over 4096 answers in L1, 16 passes a run: the probe's `checksum_ns`, and the Targets' turn
+/// that measures it again in every round.
+pub struct Terms {
+    answers: Vec<u32>,
+    passes: usize,
+}
+
+impl Terms {
+    /// The answers, 4096 of them, 16 passes a run.
+    pub fn new() -> Self {
+        Self::with_passes(16)
+    }
+
+    /// The same answers, `passes` passes a run (a longer run for a turn beside a sweep).
+    pub fn with_passes(passes: usize) -> Self {
+        Self {
+            answers: (0..4096u32).map(|i| i.wrapping_mul(0x9E37_79B9)).collect(),
+            passes: passes.max(1),
+        }
+    }
+
+    /// One run: the terms it computed.
+    pub fn run(&self) -> usize {
+        let mut sum = 0u64;
+        for _ in 0..self.passes {
+            for (i, &w) in std::hint::black_box(&self.answers).iter().enumerate() {
+                sum = sum.wrapping_add(crate::checksum::mix(i as u64, w as u64));
+            }
+        }
+        std::hint::black_box(sum);
+        self.passes * self.answers.len()
+    }
+}
+
+impl Default for Terms {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// A sequential read of a working set: four independent sums over `u64` words (so the adds are
+/// not the bottleneck), the set read over and over for at least 4 MiB. The probe's bandwidth,
+/// and the Targets' turn that measures it again in every round.
+pub struct Reader {
+    data: Vec<u64>,
+    passes: usize,
+}
+
+impl Reader {
+    /// A reader of `bytes` (rounded down to 32, at least 32), at least 4 MiB a run.
+    pub fn new(bytes: usize) -> Self {
+        Self::reading(bytes, 4 << 20)
+    }
+
+    /// A reader of `bytes` that reads at least `per_run` bytes a run (a longer run for a turn
+    /// beside a sweep).
+    pub fn reading(bytes: usize, per_run: usize) -> Self {
+        let words = (bytes / 8).max(4);
+        Self {
+            data: (0..words as u64).collect(),
+            passes: (per_run / (words * 8)).max(1),
+        }
+    }
+
+    /// One run: the bytes it read.
+    pub fn run(&self) -> usize {
         let mut s = [0u64; 4];
-        for _ in 0..passes {
-            for c in std::hint::black_box(&data).chunks_exact(4) {
+        for _ in 0..self.passes {
+            for c in std::hint::black_box(&self.data).chunks_exact(4) {
                 s[0] = s[0].wrapping_add(c[0]);
                 s[1] = s[1].wrapping_add(c[1]);
                 s[2] = s[2].wrapping_add(c[2]);
@@ -128,42 +228,99 @@ fn read_bandwidth(bytes: usize) -> f64 {
             }
         }
         std::hint::black_box(s);
-        t.elapsed().as_secs_f64()
-    });
-    (passes * words * 8) as f64 / best
+        self.passes * self.data.len() * 8
+    }
 }
 
-/// Nanoseconds per hop of a random cycle through `bytes` of `u32` indices, fastest of nine runs
-/// of 64k to 128k hops: each load's address is the value of the one before, so nothing
-/// overlaps.
-fn load_latency(bytes: usize) -> f64 {
-    let n = (bytes / 4).max(2);
-    // Sattolo's algorithm: one cycle through every slot.
-    let mut next: Vec<u32> = (0..n as u32).collect();
-    let mut rng = ChaCha8Rng::seed_from_u64(42);
-    for i in (1..n).rev() {
-        let j = rng.random_range(0..i);
-        next.swap(i, j);
+/// A dependent random walk through `bytes` of `u32` indices: one cycle through every slot
+/// (Sattolo's algorithm), each load's address computed from the value of the one before by
+/// `step`'s work ([`Step::address`], the structures' own arithmetic), so nothing overlaps. The
+/// probe's load latency (a plain load) and the latency of a chain step of each kind, and the
+/// Targets' turns that measure them again in every round.
+pub struct Chase {
+    /// `slots[step.address(c)]` is the slot after `c` on the cycle.
+    slots: Vec<u32>,
+    step: Step,
+    at: u32,
+    hops: usize,
+}
+
+impl Chase {
+    /// A chase through `bytes` (rounded down to 24 bytes, a multiple of six slots so that
+    /// every step's address is a bijection on them; at least 24).
+    pub fn new(bytes: usize, step: Step) -> Self {
+        Self::through(&Self::cycle(bytes), step)
     }
-    // Round the cycle untimed, so the timed hops find the working set where it lives.
-    let mut at = 0u32;
-    for _ in 0..n.min(1 << 20) {
-        at = next[at as usize];
-    }
-    let hops = (2 * n).clamp(1 << 16, 1 << 17);
-    let best = fastest(9, || {
-        let t = Instant::now();
-        for _ in 0..hops {
-            at = next[at as usize];
+
+    /// A random cycle through the slots of `bytes` (see [`Chase::new`]): `next[c]` is the slot
+    /// after `c`.
+    pub fn cycle(bytes: usize) -> Vec<u32> {
+        let n = (bytes / 4 / 6).max(1) * 6;
+        let mut next: Vec<u32> = (0..n as u32).collect();
+        let mut rng = ChaCha8Rng::seed_from_u64(42);
+        for i in (1..n).rev() {
+            let j = rng.random_range(0..i);
+            next.swap(i, j);
         }
-        t.elapsed().as_nanos() as f64 / hops as f64
-    });
-    std::hint::black_box(at);
-    best
+        next
+    }
+
+    /// The chase of the cycle `next` ([`Chase::cycle`]) whose steps do `step`'s work, walked
+    /// once round untimed (at most 2^20 hops) so the timed hops find it where it lives.
+    pub fn through(next: &[u32], step: Step) -> Self {
+        let n = next.len();
+        let mut slots = vec![0u32; n];
+        for (c, &after) in next.iter().enumerate() {
+            slots[step.address(c as u32) as usize] = after;
+        }
+        let mut chase = Self {
+            slots,
+            step,
+            at: 0,
+            hops: (2 * n).clamp(1 << 16, 1 << 17),
+        };
+        chase.walk(n.min(1 << 20));
+        chase
+    }
+
+    /// The same chase, `hops` hops a run (a longer run for a turn beside a sweep).
+    pub fn hopping(self, hops: usize) -> Self {
+        Self {
+            hops: hops.max(1),
+            ..self
+        }
+    }
+
+    /// One run: the hops it made.
+    pub fn run(&mut self) -> usize {
+        self.walk(self.hops);
+        self.hops
+    }
+
+    /// `hops` steps from where the last run stopped.
+    fn walk(&mut self, hops: usize) {
+        // One loop per kind, so the step's work is all that differs between them.
+        self.at = match self.step {
+            Step::Load => hop(&self.slots, self.at, hops, |h| Step::Load.address(h)),
+            Step::Twin => hop(&self.slots, self.at, hops, |h| Step::Twin.address(h)),
+            Step::Corner => hop(&self.slots, self.at, hops, |h| Step::Corner.address(h)),
+        };
+    }
+}
+
+/// `hops` steps of `at ← slots[address(at)]`.
+#[inline(always)]
+fn hop(slots: &[u32], mut at: u32, hops: usize, address: impl Fn(u32) -> u32) -> u32 {
+    for _ in 0..hops {
+        at = slots[address(at) as usize];
+    }
+    std::hint::black_box(at)
 }
 
 #[cfg(test)]
 mod tests {
+    use topolab_structures::Step;
+
     #[test]
     fn a_small_probe_gives_positive_numbers_by_level() {
         let p = super::measure(8, 8);
@@ -178,9 +335,37 @@ mod tests {
             assert!(l.read_bytes_per_s > 1e8 && l.load_ns > 0.0, "{l:?}");
         }
         assert!(p.checksum_ns > 0.0 && p.checksum_ns < 1e3, "{p:?}");
+        // Every level times every kind of chain step, a plain load as its load latency.
+        for l in &p.levels {
+            let kinds: Vec<Step> = l.step_ns.iter().map(|s| s.0).collect();
+            assert_eq!(kinds, Step::ALL, "{l:?}");
+            assert!(l.step_ns.iter().all(|s| s.1 > 0.0 && s.1.is_finite()));
+            assert_eq!(l.step_ns(Step::Load), l.load_ns);
+        }
         // A working set goes to the smallest level that holds it, the memory beyond.
         assert_eq!(p.level_for(1.0), p.levels.first());
         assert_eq!(p.level_for(1e15), Some(last));
         assert_eq!(p.level_for((8 << 20) as f64), Some(last));
+    }
+
+    /// Every kind of step walks one cycle through every slot: the chase's loads are all
+    /// dependent and its working set is the one asked for.
+    #[test]
+    fn each_chase_is_one_cycle_through_every_slot() {
+        for bytes in [24, 100, 6000] {
+            let next = super::Chase::cycle(bytes);
+            assert_eq!(next.len() % 6, 0);
+            for step in Step::ALL {
+                let chase = super::Chase::through(&next, step);
+                let (mut at, mut seen) = (0u32, vec![false; next.len()]);
+                for _ in 0..next.len() {
+                    assert!(!seen[at as usize], "{step:?} revisits {at} early");
+                    seen[at as usize] = true;
+                    at = chase.slots[step.address(at) as usize];
+                }
+                assert_eq!(at, 0, "{step:?}: back at the start after every slot");
+                assert!(seen.iter().all(|&s| s));
+            }
+        }
     }
 }

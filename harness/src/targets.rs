@@ -9,7 +9,15 @@
 //! round gives one ratio, the table shows their median and their spread (the smallest and the
 //! largest), and a load change hits both sides of a round alike. A target against a limit
 //! (the vertex 1-ring sweep of the half-edge family against its access model, see
-//! [`crate::limit`]) divides each round of the sweep by the cell's limit.
+//! [`crate::limit`]) takes turns with the probe ([`with_probe`]: its read, its chases and its
+//! checksum arithmetic) and divides each round of the sweep by the limit of that round, so the
+//! limit follows the machine from round to round. Over six focused runs on one binary
+//! (`topolab report --sections targets --sizes 1000000 --meshes torus`, 2026-12-02, load 1),
+//! che-l2's R00 read 1.88–2.85× its limit with the latency and checksum bounds of the probe at
+//! the start of the run and 2.18–2.34× with them measured in each round, the index half-edge
+//! 0.80–1.21× and 0.88–1.06×, OpenMesh 1.50–2.31× and 1.79–2.03× (both from the same rounds).
+//! A missed limit also shows the sweep against its chain at its own step's latency
+//! ([`measured_chain`]): che-l2 1.11–1.28× in those runs.
 //!
 //! The runs are the size sweep's own: the harness kernels ([`crate::kernels::run`],
 //! [`crate::kernels::run_workload`]), a baseline's native loops where it has them
@@ -23,12 +31,13 @@ use crate::html::{esc, largest, limit_text, times_limit};
 use crate::kernels::{run, run_workload, Kernel, Queries, Workload, WorkloadBuffers};
 use crate::limit::Limit;
 use crate::measure::MemoryMeter;
+use crate::probe::{Chase, Probe, Reader, Terms};
 use crate::results::{Measurement, Results, Status, Subject};
 use crate::timing::median;
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_structures::algorithms::changing::Changing;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup, Step};
 
 /// Timed rounds of every target, after one warm-up round. With 7, the median of one run
 /// moved by more than the margins it was judged on: on one binary, seven runs of the che-l2 /
@@ -332,9 +341,10 @@ impl Turns {
 }
 
 /// The ratio a target measured in turns: per round, `structure`'s run over `against`'s. Against
-/// its limit (the size sweep's cell's, `limit`), over the limit of that round: its bandwidth
-/// bound at the bandwidth the probe's read measured in that round (ns per byte), its latency
-/// and checksum bounds as the run's probe measured them.
+/// its limit (the size sweep's cell's, `limit`), over the limit of that round: its bandwidth,
+/// latency and checksum bounds at the bandwidth, load latency and time per checksum term the
+/// probe's turns measured in that round ([`with_probe`]; the run's probe's, for rounds
+/// measured without the chase and the checksum turns).
 pub fn measured(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Option<Spread> {
     let mut of_cell = turns.iter().filter(|x| x.cell == t.cell);
     match t.against {
@@ -343,19 +353,48 @@ pub fn measured(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Option<Sp
         }
         Against::Limit => {
             let l = limit?;
-            let (runs, read) =
-                of_cell.find_map(|x| Some((x.runs(t.structure)?, x.runs(PROBE)?)))?;
-            if runs.len() != read.len() {
-                return None;
-            }
-            let limit = |ns_per_byte: f64| {
-                (l.bytes_per_item * ns_per_byte)
-                    .max(l.latency_ns_per_item)
-                    .max(l.checksum_ns_per_item)
-            };
-            Spread::of(runs.iter().zip(read).map(|(ns, &b)| ns / limit(b)))
+            let x = of_cell.find(|x| x.runs(t.structure).is_some() && x.runs(PROBE).is_some())?;
+            let runs = x.runs(t.structure)?;
+            let round = |name, i: usize| x.runs(name).and_then(|r| r.get(i).copied());
+            let limits: Option<Vec<f64>> = (0..runs.len())
+                .map(|i| {
+                    let latency = round(PROBE_LOAD, i)
+                        .map_or(l.latency_ns_per_item, |ns| l.loads_per_item * ns);
+                    let checksum = round(PROBE_CHECKSUM, i)
+                        .map_or(l.checksum_ns_per_item, |ns| l.checksum_terms_per_item * ns);
+                    Some(
+                        (l.bytes_per_item * round(PROBE, i)?)
+                            .max(latency)
+                            .max(checksum),
+                    )
+                })
+                .collect();
+            Spread::of(runs.iter().zip(limits?).map(|(ns, limit)| ns / limit))
         }
     }
+}
+
+/// A target against its limit, against its chain instead: per round, the sweep over its
+/// chain's dependent loads at the latency of a step doing the chain's work
+/// ([`Limit::step`]), as the probe's chase of that kind measured it in the same round. What it
+/// leaves of "× limit" is the work off the chain; `None` without those turns.
+pub fn measured_chain(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Option<Spread> {
+    let l = limit.filter(|l| t.against == Against::Limit && l.loads_per_item > 0.0)?;
+    let chase = if l.step == Step::Load {
+        PROBE_LOAD
+    } else {
+        PROBE_STEP
+    };
+    turns
+        .iter()
+        .filter(|x| x.cell == t.cell)
+        .find_map(|x| Spread::of_ratios(x.runs(t.structure)?, x.runs(chase)?))
+        .map(|s| Spread {
+            median: s.median / l.loads_per_item,
+            min: s.min / l.loads_per_item,
+            max: s.max / l.loads_per_item,
+            ..s
+        })
 }
 
 /// Times one run in the measuring thread's CPU time when the meter knows it
@@ -498,66 +537,76 @@ pub fn pair<A: MeshTopology, B: MeshTopology>(
     Ok(out)
 }
 
-/// Times `A` on `cells` taking turns with the probe's read of `read_bytes` (the working set of
-/// its limit's bandwidth bound): a structure held to its limit.
+/// What the probe measures again in every round beside a structure held to its limit, so that
+/// the limit of each round is the machine's in that round.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct ProbeTurns {
+    /// The working set of the limit's bandwidth bound: the read's ([`PROBE`]).
+    pub read_bytes: usize,
+    /// The working set of its latency bound: the chases' ([`PROBE_LOAD`], [`PROBE_STEP`]).
+    pub chase_bytes: usize,
+    /// The work of the chain's steps, as the access model declares it: the kind of the
+    /// second chase ([`PROBE_STEP`]; none for a plain load, which the first chase times).
+    pub step: Step,
+}
+
+/// The probe's plain chase in the rounds of a target against its limit: ns per dependent load
+/// at the latency bound's working set ([`crate::probe::Chase`]).
+pub const PROBE_LOAD: &str = "probe-load";
+/// The probe's chase whose steps do the chain's work ([`ProbeTurns::step`]): ns per step.
+pub const PROBE_STEP: &str = "probe-step";
+/// The probe's checksum arithmetic ([`crate::probe::Terms`]): ns per term.
+pub const PROBE_CHECKSUM: &str = "probe-checksum";
+
+/// Times `A` on `cells` taking turns with the probe ([`ProbeTurns`]): its read, its chases and
+/// its checksum arithmetic, each timed by a [`Stopwatch`] as the sweep is: a structure held to
+/// its limit.
 pub fn with_probe<A: MeshTopology>(
     mesh: &str,
     soup: &PolygonSoup,
     cells: &[Cell],
-    read_bytes: usize,
+    probe: ProbeTurns,
     meter: &dyn MemoryMeter,
 ) -> Result<Vec<Turns>, String> {
     let mut a = Built::<A>::new(soup)?;
-    let reader = Reader::new(read_bytes);
-    let names = [A::NAME, PROBE];
+    // Each turn a few milliseconds long, as a sweep's run of a large mesh is: a run of the
+    // probe's own length (a tenth of a millisecond) read 0.45–0.92 of the index half-edge's
+    // limit from round to round, one interruption being most of a run.
+    let reader = Reader::reading(probe.read_bytes, 256 << 20);
+    let cycle = Chase::cycle(probe.chase_bytes);
+    let chase = |step| Chase::through(&cycle, step).hopping(1 << 22);
+    let mut load = chase(Step::Load);
+    let mut step = (probe.step != Step::Load).then(|| chase(probe.step));
+    let terms = Terms::with_passes(1024);
+    let mut names = vec![A::NAME, PROBE, PROBE_LOAD];
+    names.extend(step.is_some().then_some(PROBE_STEP));
+    names.push(PROBE_CHECKSUM);
+    let timed = |work: &mut dyn FnMut() -> usize| {
+        let watch = Stopwatch::start(meter);
+        let units = work();
+        Run {
+            ns: watch.ns() / units.max(1) as f64,
+            answer: Answer::Probe,
+        }
+    };
     let mut out = Vec::new();
     for &cell in cells {
         let start = Instant::now();
-        let ns = take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
-            0 => a.run(cell, meter),
-            _ => Ok(reader.run(meter)),
+        let ns = take_turns(cell.warm_up(), cell.rounds(), &names, |i| {
+            Ok(match names[i] {
+                PROBE => timed(&mut || reader.run()),
+                PROBE_LOAD => timed(&mut || load.run()),
+                PROBE_STEP => match step.as_mut() {
+                    Some(chase) => timed(&mut || chase.run()),
+                    None => return Err("no chase of the chain's step".into()),
+                },
+                PROBE_CHECKSUM => timed(&mut || terms.run()),
+                _ => return a.run(cell, meter),
+            })
         })?;
         out.push(turns(cell, mesh, soup, &names, ns, start));
     }
     Ok(out)
-}
-
-/// A sequential read of a working set, as the probe measures bandwidth ([`crate::probe`]):
-/// four independent sums over `u64` words, the set read over and over for at least 4 MiB.
-pub struct Reader {
-    data: Vec<u64>,
-    passes: usize,
-}
-
-impl Reader {
-    /// A reader of `bytes` (at least 32).
-    pub fn new(bytes: usize) -> Self {
-        let words = (bytes / 8).max(4);
-        Self {
-            data: (0..words as u64).collect(),
-            passes: ((4usize << 20) / (words * 8)).max(1),
-        }
-    }
-
-    /// One read, timed by a [`Stopwatch`] on `meter`: ns per byte.
-    pub fn run(&self, meter: &dyn MemoryMeter) -> Run {
-        let watch = Stopwatch::start(meter);
-        let mut s = [0u64; 4];
-        for _ in 0..self.passes {
-            for c in std::hint::black_box(&self.data).chunks_exact(4) {
-                s[0] = s[0].wrapping_add(c[0]);
-                s[1] = s[1].wrapping_add(c[1]);
-                s[2] = s[2].wrapping_add(c[2]);
-                s[3] = s[3].wrapping_add(c[3]);
-            }
-        }
-        std::hint::black_box(s);
-        let ns = watch.ns();
-        Run {
-            ns: ns / (self.passes * self.data.len() * 8) as f64,
-            answer: Answer::Probe,
-        }
-    }
 }
 
 /// The [`Turns`] of `cell`'s runs `ns`, timed since `start`.
@@ -655,6 +704,46 @@ fn versus_text(measurements: &[Measurement], mesh: &str, t: &Target, b: &str) ->
     ))
 }
 
+/// Why a sweep misses its limit, measured: how the limit was set ([`limit_text`]), the sweep
+/// against its chain at the latency of its own step in the same rounds ([`measured_chain`]),
+/// and its chain at every level's latency of the run's probe beside the sweep's median time in
+/// turns, which shows where the chain's loads would have to come from to take that long.
+fn missed_limit_text(turns: &[Turns], t: &Target, l: &Limit, probe: &Probe) -> String {
+    let mut text = limit_text(l);
+    if let Some(c) = measured_chain(turns, t, Some(l)) {
+        let _ = write!(
+            text,
+            "; against its chain at the step latency measured in each round ({} steps of {}): {:.2}× in turns ({:.2}–{:.2})",
+            l.loads_per_item,
+            l.step.text(),
+            c.median,
+            c.min,
+            c.max
+        );
+    }
+    let sweep = turns
+        .iter()
+        .filter(|x| x.cell == t.cell)
+        .find_map(|x| Spread::of(x.runs(t.structure)?.iter().copied()));
+    if let (Some(s), true) = (sweep, l.loads_per_item > 0.0) {
+        let levels: Vec<String> = probe
+            .levels
+            .iter()
+            .map(|v| {
+                let ns = l.loads_per_item * v.step_ns(l.step);
+                format!("{} {ns:.1} ns", v.name)
+            })
+            .collect();
+        let _ = write!(
+            text,
+            "; the sweep took {:.1} ns per element (median in turns), its chain at each level's latency: {}",
+            s.median,
+            levels.join(", ")
+        );
+    }
+    text
+}
+
 /// The table cell's class for a "met" column of "yes", "no" or "–".
 fn class_of(met: &str) -> &'static str {
     match met {
@@ -690,7 +779,7 @@ pub fn render(h: &mut String, r: &Results) {
         .collect();
     let _ = write!(
         h,
-        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe's sequential read of the working set that sets the limit's bandwidth bound, and each round's sweep is divided by the limit at that round's bandwidth (the latency and checksum bounds are the run's probe's). <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
+        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe: its sequential read of the working set that sets the limit's bandwidth bound, its chase through the working set that sets the latency bound (plain loads, and steps doing the chain's own arithmetic), and its checksum arithmetic; each round's sweep is divided by the limit at the bandwidth, load latency and time per term of that round. <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
     );
     for t in TARGETS.iter().filter(|t| ran(t.structure)) {
         let against = match t.against {
@@ -731,7 +820,9 @@ pub fn render(h: &mut String, r: &Results) {
             })
         };
         let why = match (t.against, limit, reason(t, met)) {
-            (Against::Limit, Some(l), _) if met == "no" => esc(&limit_text(l)),
+            (Against::Limit, Some(l), _) if met == "no" => {
+                esc(&missed_limit_text(&turns, t, l, &r.probe))
+            }
             (_, _, Some(measured)) => esc(measured),
             (Against::Structure(b), _, _) if met == "no" => {
                 esc(&versus_text(&r.measurements, mesh, t, b).unwrap_or_default())
@@ -927,31 +1018,83 @@ mod tests {
             against: Against::Limit,
             ..pair_target(Cell::R00Sweep)
         };
-        let turns = with_probe::<CheL2>("t", &soup, &[Cell::R00Sweep], 1 << 14, &Wall).unwrap();
-        assert_eq!(turns[0].structures, ["che-l2", PROBE]);
-        assert_eq!(measured(&turns, &target, None), None);
-        let read = turns[0].runs(PROBE).unwrap();
-        assert!(
-            read.iter().all(|&ns| ns > 0.0 && ns.is_finite()),
-            "{read:?}"
+        let probe = ProbeTurns {
+            read_bytes: 1 << 14,
+            chase_bytes: 1 << 13,
+            step: Step::Corner,
+        };
+        let turns = with_probe::<CheL2>("t", &soup, &[Cell::R00Sweep], probe, &Wall).unwrap();
+        assert_eq!(
+            turns[0].structures,
+            ["che-l2", PROBE, PROBE_LOAD, PROBE_STEP, PROBE_CHECKSUM]
         );
-        // A bandwidth bound: each round's sweep over its bytes at that round's read.
-        let mut l = limit_of(1000.0, 0.0, 0.0);
+        assert_eq!(measured(&turns, &target, None), None);
+        let probe_runs = |name| {
+            let r = turns[0].runs(name).unwrap();
+            assert!(
+                r.iter().all(|&ns| ns > 0.0 && ns.is_finite()),
+                "{name}: {r:?}"
+            );
+            assert_eq!(r.len(), ROUNDS);
+            r
+        };
+        let (read, load, step, terms) = (
+            probe_runs(PROBE),
+            probe_runs(PROBE_LOAD),
+            probe_runs(PROBE_STEP),
+            probe_runs(PROBE_CHECKSUM),
+        );
         let runs = turns[0].runs("che-l2").unwrap();
-        let mut expected: Vec<f64> = runs
-            .iter()
-            .zip(read)
-            .map(|(a, b)| a / (1000.0 * b))
-            .collect();
-        expected.sort_by(f64::total_cmp);
-        let got = measured(&turns, &target, Some(&l)).unwrap();
-        assert_eq!(got.median, median(&expected));
-        // A latency bound above every round's bandwidth bound: the same every round.
-        l.latency_ns_per_item = 1e12;
-        let mut sorted = runs.to_vec();
-        sorted.sort_by(f64::total_cmp);
-        let got = measured(&turns, &target, Some(&l)).unwrap();
-        assert_eq!(got.median, median(&sorted) / 1e12);
+        // Each round's sweep over that round's limit, the largest of its three bounds.
+        let expect = |l: &Limit, bound: &dyn Fn(usize) -> f64| {
+            let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / bound(i)).collect();
+            v.sort_by(f64::total_cmp);
+            assert_eq!(
+                measured(&turns, &target, Some(l)).unwrap().median,
+                median(&v)
+            );
+        };
+        // A bandwidth bound: the bytes at that round's read.
+        let mut l = limit_of(1000.0, 0.0, 0.0);
+        expect(&l, &|i| 1000.0 * read[i]);
+        // A latency bound far above it: the loads at that round's chase, not the run's probe's.
+        (l.loads_per_item, l.latency_ns_per_item) = (1e9, 1.0);
+        expect(&l, &|i| 1e9 * load[i]);
+        // A checksum bound above both: the terms at that round's time per term.
+        (l.checksum_terms_per_item, l.checksum_ns_per_item) = (1e12, 1.0);
+        expect(&l, &|i| 1e12 * terms[i]);
+        // Rounds measured without the chase and the checksum turns take the run's probe's.
+        let mut old = turns.clone();
+        old[0].structures.truncate(2);
+        old[0].ns_per_item.truncate(2);
+        (l.checksum_terms_per_item, l.checksum_ns_per_item) = (0.0, 0.0);
+        l.latency_ns_per_item = 1e6;
+        let mut v: Vec<f64> = runs.iter().map(|r| r / 1e6).collect();
+        v.sort_by(f64::total_cmp);
+        assert_eq!(
+            measured(&old, &target, Some(&l)).unwrap().median,
+            median(&v)
+        );
+        // Against its chain: the loads at that round's chase of the chain's own step.
+        l.step = Step::Corner;
+        l.loads_per_item = 3.0;
+        let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / (3.0 * step[i])).collect();
+        v.sort_by(f64::total_cmp);
+        let chain = measured_chain(&turns, &target, Some(&l)).unwrap();
+        assert!(
+            (chain.median - median(&v)).abs() <= 1e-12 * chain.median,
+            "{chain:?}"
+        );
+        // A plain load's chain is the plain chase; no chain without its turns.
+        l.step = Step::Load;
+        let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / (3.0 * load[i])).collect();
+        v.sort_by(f64::total_cmp);
+        let chain = measured_chain(&turns, &target, Some(&l)).unwrap();
+        assert!(
+            (chain.median - median(&v)).abs() <= 1e-12 * chain.median,
+            "{chain:?}"
+        );
+        assert_eq!(measured_chain(&old, &target, Some(&l)), None);
     }
 
     #[test]
@@ -969,6 +1112,73 @@ mod tests {
         for pass in ["G[]", "V[]", "O[]", "VH[]", "one-fan walk", "OpenMesh"] {
             assert!(CHE_L1_CONSTRUCTION.contains(pass), "{pass}");
         }
+    }
+
+    #[test]
+    fn a_missed_limit_says_how_far_the_sweep_is_from_its_chain() {
+        let target = Target {
+            against: Against::Limit,
+            ..pair_target(Cell::R00Sweep)
+        };
+        let names = ["che-l2", PROBE, PROBE_LOAD, PROBE_STEP, PROBE_CHECKSUM];
+        let turns = vec![Turns {
+            cell: Cell::R00Sweep,
+            mesh: "t".into(),
+            items: 100,
+            structures: names.iter().map(|s| s.to_string()).collect(),
+            // The sweep 9, 12 and 15 ns; a corner step 2 ns, then 2, then 2.5.
+            ns_per_item: vec![
+                vec![9.0, 12.0, 15.0],
+                vec![0.01; 3],
+                vec![1.0; 3],
+                vec![2.0, 2.0, 2.5],
+                vec![0.5; 3],
+            ],
+            warm_up: 1,
+            seconds: 1.0,
+        }];
+        let mut l = limit_of(52.0, 3.0, 3.0);
+        (l.loads_per_item, l.step, l.chain_ns_per_item) = (3.0, Step::Corner, 6.0);
+        let level = |name: &str, load: f64, corner: f64| crate::probe::Level {
+            name: name.into(),
+            bytes: 1 << 14,
+            read_bytes_per_s: 1e11,
+            load_ns: load,
+            step_ns: vec![(Step::Load, load), (Step::Corner, corner)],
+        };
+        let probe = Probe {
+            read_bytes_per_s: 1e10,
+            read_array_bytes: 1 << 20,
+            chase_ns_per_hop: 100.0,
+            chase_array_bytes: 1 << 20,
+            levels: vec![level("L1", 1.0, 2.0), level("memory", 100.0, 101.0)],
+            checksum_ns: 0.5,
+        };
+        let text = missed_limit_text(&turns, &target, &l, &probe);
+        // Per round 9 / 6, 12 / 6, 15 / 7.5: a median of 2, from 1.5 to 2.
+        assert!(
+            text.contains(
+                "3 steps of the CHE's prev(h), then the load): 2.00× in turns (1.50–2.00)"
+            ),
+            "{text}"
+        );
+        assert!(
+            text.contains("the sweep took 12.0 ns per element"),
+            "{text}"
+        );
+        assert!(text.contains("L1 6.0 ns, memory 303.0 ns"), "{text}");
+        // The chain measured once, beside the limit.
+        assert!(
+            text.contains(
+                "takes 2.00× a plain load at the L1 latency, so the chain alone takes 6.0 ns"
+            ),
+            "{text}"
+        );
+        // Without the probe's chases nothing is said of the chain in turns.
+        let mut old = turns.clone();
+        old[0].structures.truncate(2);
+        old[0].ns_per_item.truncate(2);
+        assert!(!missed_limit_text(&old, &target, &l, &probe).contains("against its chain"));
     }
 
     #[test]
@@ -1026,6 +1236,9 @@ mod tests {
             latency_ns_per_item: latency,
             latency_level: "L1".into(),
             checksum_ns_per_item: checksum,
+            checksum_terms_per_item: 0.0,
+            step: Step::Load,
+            chain_ns_per_item: 0.0,
             note: None,
         }
     }

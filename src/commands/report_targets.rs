@@ -12,7 +12,7 @@ use std::time::Instant;
 use topolab_harness::changing::{mesh_checksum, MeshChecksum};
 use topolab_harness::probe::Probe;
 use topolab_harness::results::Measurement;
-use topolab_harness::targets::{self, take_turns, Answer, Cell, Run, Stopwatch, Turns};
+use topolab_harness::targets::{self, take_turns, Answer, Cell, ProbeTurns, Run, Stopwatch, Turns};
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::registry::{StructureVisitor, Structures};
 use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
@@ -22,8 +22,8 @@ struct Case<'a> {
     mesh: &'a str,
     soup: &'a PolygonSoup,
     cells: &'a [Cell],
-    /// The working set the probe's read takes turns with, for a structure held to its limit.
-    read_bytes: usize,
+    /// What the probe measures in turns with a structure held to its limit.
+    probe: Option<ProbeTurns>,
 }
 
 /// Visits a group's first structure, then its second (or times the first with the probe).
@@ -40,7 +40,8 @@ impl<X: Structures> StructureVisitor for First<'_, X> {
         let b = match self.second {
             Some(targets::PROBE) | None => {
                 let meter = &crate::ALLOCATOR;
-                return targets::with_probe::<A>(c.mesh, c.soup, c.cells, c.read_bytes, meter);
+                let probe = c.probe.ok_or("no limit to take turns with")?;
+                return targets::with_probe::<A>(c.mesh, c.soup, c.cells, probe, meter);
             }
             Some(b) => b,
         };
@@ -145,19 +146,28 @@ pub fn measure<X: Structures>(
             .cells
             .iter()
             .partition(|c| matches!(c, Cell::Changing(_)));
-        // The working set of the bandwidth bound of the limit of the group's sweep.
-        let read_bytes = (group.structures.get(1) == Some(&targets::PROBE))
+        // The working sets of the bandwidth and latency bounds of the limit of the group's
+        // sweep, and the work of its chain's steps.
+        let held_to_limit = group.structures.get(1) == Some(&targets::PROBE);
+        let probe_turns = held_to_limit
             .then(|| {
                 let m = targets::sequential(measurements, mesh, group.structures[0], built[0])?;
-                let level = &m.limit.as_ref()?.bandwidth_level;
-                probe
-                    .levels
-                    .iter()
-                    .find(|l| &l.name == level)
-                    .map(|l| l.bytes)
+                let l = m.limit.as_ref()?;
+                let bytes = |level: &str| {
+                    probe
+                        .levels
+                        .iter()
+                        .find(|x| x.name == level)
+                        .map(|x| x.bytes)
+                };
+                Some(ProbeTurns {
+                    read_bytes: bytes(&l.bandwidth_level)?,
+                    chase_bytes: bytes(&l.latency_level)?,
+                    step: l.step,
+                })
             })
             .flatten();
-        if group.structures.get(1) == Some(&targets::PROBE) && read_bytes.is_none() {
+        if held_to_limit && probe_turns.is_none() {
             notes.push(format!(
                 "Targets: {} has no limit on {mesh}, so it is not held to one.",
                 group.structures[0]
@@ -169,7 +179,7 @@ pub fn measure<X: Structures>(
                 mesh,
                 soup,
                 cells: &built,
-                read_bytes: read_bytes.unwrap_or(0),
+                probe: probe_turns,
             };
             let first = First::<X> {
                 second: group.structures.get(1).copied(),

@@ -14,7 +14,7 @@
 //! [`MeshTopology::access`]: topolab_structures::MeshTopology::access
 //! [`MeshTopology::native`]: topolab_structures::MeshTopology::native
 
-use topolab_structures::{Access, Container, Operator, Read, Unit};
+use topolab_structures::{Access, Container, Operator, Read, Step, Unit};
 
 const VERTICES: Container = Container::new("vertices", Unit::Vertex, 4.0);
 const FACES: Container = Container::new("faces", Unit::Face, 4.0);
@@ -37,6 +37,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             0.0,
             1.0,
         )
+        .stepping(Step::Twin)
         .noting(CIRCULATOR),
         Operator::R01 => Access::new(
             const {
@@ -48,6 +49,7 @@ pub(super) fn model(op: Operator) -> Option<Access> {
             0.0,
             1.0,
         )
+        .stepping(Step::Twin)
         .noting(CIRCULATOR),
         // The to-vertices of both halfedges.
         Operator::R10 => Access::new(

@@ -62,7 +62,7 @@ use self::core::error;
 /// `glam::DVec3`), re-exported so that a structure outside the lab uses the same version.
 pub use glam;
 
-pub use self::core::access::{Access, Container, Read, Unit};
+pub use self::core::access::{Access, Container, Read, Step, Unit};
 pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::edit::{Deletion, EditOp, MeshEdit, Refusal};
 pub use self::core::error::{Error, Format, Location, Result};

@@ -10,8 +10,10 @@
 //! Amounts are per query and per answer (the answers a query reports: the k of an O(k)
 //! relation), so one model serves every mesh. They count what the structure's code reads for a
 //! triangle mesh, the meshes the report measures; a container read whole by each query (a scan)
-//! is declared as such. Arithmetic, branches and the harness's checksum are not in the model
-//! (the harness adds the reads of the edge keys its checksum asks for; see the report).
+//! is declared as such. The model names the work a step of the chain does between its loads
+//! ([`Step`]: `h ^ 1`, the CHE's `prev`), which the report times as a chase of its own beside
+//! the limit; other arithmetic, branches and the harness's checksum are not in the model (the
+//! harness adds the reads of the edge keys its checksum asks for; see the report).
 
 /// How a container's size follows the mesh: one element per vertex, edge, face, corner (a
 /// face's side: the CHE's half-edges, three per triangle) or half-edge (two per edge, the
@@ -111,6 +113,52 @@ impl Read {
     }
 }
 
+/// The work a step of the chain does between one dependent load and the address of the next,
+/// as the structure's code computes it: the probe times a chase of each kind
+/// (`topolab_harness::probe`), so a chain's steps are priced as measured, arithmetic included.
+#[derive(
+    Copy, Clone, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "kebab-case")]
+pub enum Step {
+    /// The loaded value is the next address (a pointer, or an index used as it is), or the
+    /// model knows no arithmetic between the loads.
+    #[default]
+    Load,
+    /// A half-edge's twin, `h ^ 1`, before the load: `next[h ^ 1]` (the index half-edge,
+    /// OpenMesh).
+    Twin,
+    /// The CHE's `prev(h)` (a divisibility test and a conditional move, [`crate::che::prev`])
+    /// before the load: `O[prev(h)]`.
+    Corner,
+}
+
+impl Step {
+    /// Every kind, the plain load first.
+    pub const ALL: [Step; 3] = [Step::Load, Step::Twin, Step::Corner];
+
+    /// The address a step loads from, given the value the load before it returned: the
+    /// structure's own arithmetic (a bijection on `0..n` for `n` a multiple of 6, so a chase
+    /// built through it is one cycle).
+    #[inline(always)]
+    pub fn address(self, h: u32) -> u32 {
+        match self {
+            Step::Load => h,
+            Step::Twin => h ^ 1,
+            Step::Corner => crate::che::prev(crate::HalfEdgeId(h)).0,
+        }
+    }
+
+    /// How the report names it.
+    pub fn text(self) -> &'static str {
+        match self {
+            Step::Load => "a plain load",
+            Step::Twin => "h ^ 1, then the load",
+            Step::Corner => "the CHE's prev(h), then the load",
+        }
+    }
+}
+
 /// The access model of one operator: see the module docs.
 #[derive(Copy, Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Access {
@@ -120,6 +168,8 @@ pub struct Access {
     pub chain_per_query: f64,
     /// Dependent loads on the chain per answer (one per step of a fan walk).
     pub chain_per_answer: f64,
+    /// The work of each step of the chain (a plain load unless declared).
+    pub step: Step,
     /// What the code does that the model leaves out and that bounds it instead, when the
     /// structure knows (shown with the limit).
     pub note: Option<&'static str>,
@@ -132,8 +182,14 @@ impl Access {
             reads,
             chain_per_query,
             chain_per_answer,
+            step: Step::Load,
             note: None,
         }
+    }
+
+    /// The same model whose chain steps each do `step`'s work before their load.
+    pub const fn stepping(self, step: Step) -> Self {
+        Self { step, ..self }
     }
 
     /// The same model with `note` (what it leaves out).

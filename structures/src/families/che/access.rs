@@ -10,7 +10,7 @@
 //!
 //! [`MeshTopology::access`]: crate::MeshTopology::access
 
-use crate::core::access::{Access, Container, Read, Unit};
+use crate::core::access::{Access, Container, Read, Step, Unit};
 use crate::core::topology::Operator;
 
 const V: Container = Container::new("V", Unit::Corner, 4.0);
@@ -156,12 +156,14 @@ fn level2(level: u8, op: Operator) -> Option<Access> {
             0.0,
             0.5,
         )
+        .stepping(Step::Corner)
         .noting(TWO_ENDS),
         Operator::R01 | Operator::R02 => Access::new(
             const { &[Read::new(VH, 4.0, 0.0), Read::new(O, 0.0, 4.0)] },
             0.0,
             0.5,
         )
+        .stepping(Step::Corner)
         .noting(TWO_ENDS),
         // O[VH[v]] < 0.
         Operator::BoundaryVertex => Access::new(

@@ -11,7 +11,7 @@
 //!
 //! [`MeshTopology::access`]: crate::MeshTopology::access
 
-use crate::core::access::{Access, Container, Read, Unit};
+use crate::core::access::{Access, Container, Read, Step, Unit};
 use crate::core::topology::Operator;
 
 /// Both storages' boundary curves also look each boundary half-edge up by binary search among
@@ -45,12 +45,14 @@ pub(crate) fn index(op: Operator) -> Option<Access> {
             },
             0.0,
             1.0,
-        ),
+        )
+        .stepping(Step::Twin),
         Operator::R01 => Access::new(
             const { &[Read::new(VH, 4.0, 0.0), Read::new(NEXT, 0.0, 4.0)] },
             0.0,
             1.0,
-        ),
+        )
+        .stepping(Step::Twin),
         Operator::R02 => Access::new(
             const {
                 &[
@@ -61,7 +63,8 @@ pub(crate) fn index(op: Operator) -> Option<Access> {
             },
             0.0,
             1.0,
-        ),
+        )
+        .stepping(Step::Twin),
         // vertex[2e], vertex[2e + 1]: independent.
         Operator::R10 => Access::new(const { &[Read::new(VERTEX, 8.0, 0.0)] }, 0.0, 0.0),
         // Per side with a face: next(side), then the face's three half-edges by `next`.
