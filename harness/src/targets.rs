@@ -744,6 +744,18 @@ fn missed_limit_text(turns: &[Turns], t: &Target, l: &Limit, probe: &Probe) -> S
     text
 }
 
+/// A ratio as the table shows it beside its goal: two decimals, three where two would read as
+/// the goal itself while the ratio is not (1.2016 missing a goal of 1.2 reads 1.202×, not
+/// 1.20×, beside its "no").
+fn against_goal(ratio: f64, goal: f64) -> String {
+    let two = format!("{ratio:.2}");
+    if ratio != goal && two == format!("{goal:.2}") {
+        format!("{ratio:.3}×")
+    } else {
+        format!("{two}×")
+    }
+}
+
 /// The table cell's class for a "met" column of "yes", "no" or "–".
 fn class_of(met: &str) -> &'static str {
     match met {
@@ -803,7 +815,7 @@ pub fn render(h: &mut String, r: &Results) {
         let spread = measured(&turns, t, limit);
         let (value, range, rounds, met) = match spread {
             Some(s) => (
-                format!("{:.2}×", s.median),
+                against_goal(s.median, t.goal),
                 format!("{:.2}–{:.2}", s.min, s.max),
                 s.rounds.to_string(),
                 if s.median <= t.goal { "yes" } else { "no" },
@@ -852,7 +864,10 @@ pub fn render(h: &mut String, r: &Results) {
     // the run's largest torus there: its row shows the median of their per-round ratios.
     for row in crate::decimate::targets(&r.decimate) {
         let (value, met) = match row.value {
-            Some(v) => (format!("{v:.2}×"), if v <= row.goal { "yes" } else { "no" }),
+            Some(v) => (
+                against_goal(v, row.goal),
+                if v <= row.goal { "yes" } else { "no" },
+            ),
             None => ("not measured".into(), "–"),
         };
         let (range, rounds) = match row.spread {
@@ -1075,25 +1090,20 @@ mod tests {
             measured(&old, &target, Some(&l)).unwrap().median,
             median(&v)
         );
-        // Against its chain: the loads at that round's chase of the chain's own step.
-        l.step = Step::Corner;
+        // Against its chain: the loads at that round's chase of the chain's own step; a plain
+        // load's chain is the plain chase.
         l.loads_per_item = 3.0;
-        let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / (3.0 * step[i])).collect();
-        v.sort_by(f64::total_cmp);
-        let chain = measured_chain(&turns, &target, Some(&l)).unwrap();
-        assert!(
-            (chain.median - median(&v)).abs() <= 1e-12 * chain.median,
-            "{chain:?}"
-        );
-        // A plain load's chain is the plain chase; no chain without its turns.
-        l.step = Step::Load;
-        let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / (3.0 * load[i])).collect();
-        v.sort_by(f64::total_cmp);
-        let chain = measured_chain(&turns, &target, Some(&l)).unwrap();
-        assert!(
-            (chain.median - median(&v)).abs() <= 1e-12 * chain.median,
-            "{chain:?}"
-        );
+        for (kind, chase) in [(Step::Corner, step), (Step::Load, load)] {
+            l.step = kind;
+            let mut v: Vec<f64> = (0..ROUNDS).map(|i| runs[i] / (3.0 * chase[i])).collect();
+            v.sort_by(f64::total_cmp);
+            let chain = measured_chain(&turns, &target, Some(&l)).unwrap();
+            assert!(
+                (chain.median - median(&v)).abs() <= 1e-12 * chain.median,
+                "{kind:?}: {chain:?}"
+            );
+        }
+        // No chain without its turns.
         assert_eq!(measured_chain(&old, &target, Some(&l)), None);
     }
 
@@ -1112,6 +1122,15 @@ mod tests {
         for pass in ["G[]", "V[]", "O[]", "VH[]", "one-fan walk", "OpenMesh"] {
             assert!(CHE_L1_CONSTRUCTION.contains(pass), "{pass}");
         }
+    }
+
+    #[test]
+    fn a_ratio_beside_its_goal_never_rounds_to_it() {
+        assert_eq!(against_goal(1.2016, 1.2), "1.202×");
+        assert_eq!(against_goal(1.1996, 1.2), "1.200×");
+        assert_eq!(against_goal(1.2, 1.2), "1.20×");
+        assert_eq!(against_goal(1.27, 1.2), "1.27×");
+        assert_eq!(against_goal(0.6449, 0.6), "0.64×");
     }
 
     #[test]
