@@ -46,6 +46,23 @@ pub struct Level {
 }
 
 impl Level {
+    /// A level of `bytes` read at `gb` GB/s whose loads take `load_ns`, a twin step 1.25 times
+    /// as long and a CHE corner step twice: the machines of the tests.
+    #[cfg(test)]
+    pub(crate) fn for_tests(name: &str, bytes: usize, gb: f64, load_ns: f64) -> Self {
+        Self {
+            name: name.into(),
+            bytes,
+            read_bytes_per_s: gb * 1e9,
+            load_ns,
+            step_ns: vec![
+                (Step::Load, load_ns),
+                (Step::Twin, 1.25 * load_ns),
+                (Step::Corner, 2.0 * load_ns),
+            ],
+        }
+    }
+
     /// The latency of one chain step doing `step`'s work, ns (a plain load's for a kind not
     /// measured).
     pub fn step_ns(&self, step: Step) -> f64 {
@@ -57,6 +74,11 @@ impl Level {
 }
 
 impl Probe {
+    /// The level called `name` (`L1`, `L2`, `L3`, `memory`), if the probe measured it.
+    pub fn level(&self, name: &str) -> Option<&Level> {
+        self.levels.iter().find(|l| l.name == name)
+    }
+
     /// The level that holds a working set of `bytes`: the smallest one at least that large,
     /// the largest one (memory) beyond. `None` only for a probe without levels.
     pub fn level_for(&self, bytes: f64) -> Option<&Level> {
@@ -141,11 +163,11 @@ fn read_bandwidth(bytes: usize) -> f64 {
 /// Nanoseconds per hop of a chase through `bytes` for every kind of step, [`Step::ALL`]'s
 /// order (the plain load first), each the fastest of nine runs of 64k to 128k hops.
 fn chase_latencies(bytes: usize) -> Vec<(Step, f64)> {
-    let next = Chase::cycle(bytes);
+    let cycle = Cycle::new(bytes);
     Step::ALL
         .into_iter()
         .map(|step| {
-            let mut chase = Chase::through(&next, step);
+            let mut chase = Chase::through(&cycle, step);
             (step, fastest_ns(9, || chase.run()))
         })
         .collect()
@@ -233,7 +255,7 @@ impl Reader {
 }
 
 /// A dependent random walk through `bytes` of `u32` indices: one cycle through every slot
-/// (Sattolo's algorithm), each load's address computed from the value of the one before by
+/// ([`Cycle`]), each load's address computed from the value of the one before by
 /// `step`'s work ([`Step::address`], the structures' own arithmetic), so nothing overlaps. The
 /// probe's load latency (a plain load) and the latency of a chain step of each kind, and the
 /// Targets' turns that measure them again in every round.
@@ -245,16 +267,17 @@ pub struct Chase {
     hops: usize,
 }
 
-impl Chase {
-    /// A chase through `bytes` (rounded down to 24 bytes, a multiple of six slots so that
-    /// every step's address is a bijection on them; at least 24).
-    pub fn new(bytes: usize, step: Step) -> Self {
-        Self::through(&Self::cycle(bytes), step)
-    }
+/// A random cycle through the `u32` slots of a working set, in as many slots as every kind of
+/// [`Step`] needs to be a bijection on them (a multiple of six): what a [`Chase`] walks.
+pub struct Cycle {
+    /// `next[c]` is the slot after `c`.
+    next: Vec<u32>,
+}
 
-    /// A random cycle through the slots of `bytes` (see [`Chase::new`]): `next[c]` is the slot
-    /// after `c`.
-    pub fn cycle(bytes: usize) -> Vec<u32> {
+impl Cycle {
+    /// A cycle through `bytes` (rounded down to 24 bytes, at least 24), by Sattolo's algorithm
+    /// with a fixed seed.
+    pub fn new(bytes: usize) -> Self {
         let n = (bytes / 4 / 6).max(1) * 6;
         let mut next: Vec<u32> = (0..n as u32).collect();
         let mut rng = ChaCha8Rng::seed_from_u64(42);
@@ -262,15 +285,27 @@ impl Chase {
             let j = rng.random_range(0..i);
             next.swap(i, j);
         }
-        next
+        Self { next }
     }
 
-    /// The chase of the cycle `next` ([`Chase::cycle`]) whose steps do `step`'s work, walked
-    /// once round untimed (at most 2^20 hops) so the timed hops find it where it lives.
-    pub fn through(next: &[u32], step: Step) -> Self {
-        let n = next.len();
+    /// Its slots.
+    pub fn len(&self) -> usize {
+        self.next.len()
+    }
+
+    /// Whether it has none (never: at least six).
+    pub fn is_empty(&self) -> bool {
+        self.next.is_empty()
+    }
+}
+
+impl Chase {
+    /// The chase of `cycle` whose steps do `step`'s work, 64k to 128k hops a run, walked once
+    /// round untimed (at most 2^20 hops) so the timed hops find it where it lives.
+    pub fn through(cycle: &Cycle, step: Step) -> Self {
+        let n = cycle.len();
         let mut slots = vec![0u32; n];
-        for (c, &after) in next.iter().enumerate() {
+        for (c, &after) in cycle.next.iter().enumerate() {
             slots[step.address(c as u32) as usize] = after;
         }
         let mut chase = Self {
@@ -340,7 +375,6 @@ mod tests {
             let kinds: Vec<Step> = l.step_ns.iter().map(|s| s.0).collect();
             assert_eq!(kinds, Step::ALL, "{l:?}");
             assert!(l.step_ns.iter().all(|s| s.1 > 0.0 && s.1.is_finite()));
-            assert_eq!(l.step_ns(Step::Load), l.load_ns);
         }
         // A working set goes to the smallest level that holds it, the memory beyond.
         assert_eq!(p.level_for(1.0), p.levels.first());
@@ -348,22 +382,32 @@ mod tests {
         assert_eq!(p.level_for((8 << 20) as f64), Some(last));
     }
 
-    /// Every kind of step walks one cycle through every slot: the chase's loads are all
-    /// dependent and its working set is the one asked for.
+    /// Every kind of step walks one cycle through every slot, as a run walks it: the chase's
+    /// loads are all dependent and its working set is the one asked for.
     #[test]
     fn each_chase_is_one_cycle_through_every_slot() {
-        for bytes in [24, 100, 6000] {
-            let next = super::Chase::cycle(bytes);
-            assert_eq!(next.len() % 6, 0);
+        for bytes in [0, 24, 100, 6000] {
+            let cycle = super::Cycle::new(bytes);
+            let n = cycle.len();
+            assert!(n >= 6 && n.is_multiple_of(6), "{n}");
             for step in Step::ALL {
-                let chase = super::Chase::through(&next, step);
-                let (mut at, mut seen) = (0u32, vec![false; next.len()]);
-                for _ in 0..next.len() {
-                    assert!(!seen[at as usize], "{step:?} revisits {at} early");
-                    seen[at as usize] = true;
-                    at = chase.slots[step.address(at) as usize];
+                let mut chase = super::Chase::through(&cycle, step).hopping(1);
+                // Where the untimed round left it.
+                let start = chase.at;
+                let mut seen = vec![false; n];
+                for _ in 0..n {
+                    assert!(
+                        !seen[chase.at as usize],
+                        "{step:?} revisits {} early",
+                        chase.at
+                    );
+                    seen[chase.at as usize] = true;
+                    assert_eq!(chase.run(), 1);
                 }
-                assert_eq!(at, 0, "{step:?}: back at the start after every slot");
+                assert_eq!(
+                    chase.at, start,
+                    "{step:?}: back at the start after every slot"
+                );
                 assert!(seen.iter().all(|&s| s));
             }
         }

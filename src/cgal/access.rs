@@ -30,7 +30,7 @@
 //! [`MeshTopology::access`]: topolab_structures::MeshTopology::access
 //! [`MeshTopology::native`]: topolab_structures::MeshTopology::native
 
-use topolab_structures::{Access, Container, Operator, Read, Step, Unit};
+use topolab_structures::{Access, Container, Operator, Read, Unit};
 
 /// What CGAL's circulators do that the models leave out.
 const CIRCULATOR: &str = "CGAL's circulator ranges also count windings to tell the first halfedge from the end (work the model leaves out)";
@@ -58,7 +58,6 @@ pub(super) fn surface_mesh(op: Operator) -> Option<Access> {
             0.0,
             1.0,
         )
-        .stepping(Step::Twin)
         .noting(CIRCULATOR),
         Operator::R01 => Access::new(
             const {
@@ -70,7 +69,6 @@ pub(super) fn surface_mesh(op: Operator) -> Option<Access> {
             0.0,
             1.0,
         )
-        .stepping(Step::Twin)
         .noting(CIRCULATOR),
         // Per step next(h) and face(h).
         Operator::R02 => Access::new(
@@ -83,7 +81,6 @@ pub(super) fn surface_mesh(op: Operator) -> Option<Access> {
             0.0,
             1.0,
         )
-        .stepping(Step::Twin)
         .noting(CIRCULATOR),
         // The targets of halfedges 2e and 2e + 1.
         Operator::R10 => Access::new(

@@ -146,25 +146,12 @@ pub fn measure<X: Structures>(
             .cells
             .iter()
             .partition(|c| matches!(c, Cell::Changing(_)));
-        // The working sets of the bandwidth and latency bounds of the limit of the group's
-        // sweep, and the work of its chain's steps.
+        // What the probe measures in turns beside the group's sweep, from its limit.
         let held_to_limit = group.structures.get(1) == Some(&targets::PROBE);
         let probe_turns = held_to_limit
             .then(|| {
                 let m = targets::sequential(measurements, mesh, group.structures[0], built[0])?;
-                let l = m.limit.as_ref()?;
-                let bytes = |level: &str| {
-                    probe
-                        .levels
-                        .iter()
-                        .find(|x| x.name == level)
-                        .map(|x| x.bytes)
-                };
-                Some(ProbeTurns {
-                    read_bytes: bytes(&l.bandwidth_level)?,
-                    chase_bytes: bytes(&l.latency_level)?,
-                    step: l.step,
-                })
+                ProbeTurns::for_limit(m.limit.as_ref()?, probe)
             })
             .flatten();
         if held_to_limit && probe_turns.is_none() {

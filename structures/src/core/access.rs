@@ -126,10 +126,12 @@ pub enum Step {
     #[default]
     Load,
     /// A half-edge's twin, `h ^ 1`, before the load: `next[h ^ 1]` (the index half-edge,
-    /// OpenMesh).
+    /// OpenMesh). CGAL's `Surface_mesh` writes its opposite as a choice, `(h & 1) ? h - 1 :
+    /// h + 1`, whose compiled form was not read: it is declared a plain load.
     Twin,
-    /// The CHE's `prev(h)` (a divisibility test and a conditional move, [`crate::che::prev`])
-    /// before the load: `O[prev(h)]`.
+    /// The CHE's `prev(h)` or `next(h)` (a divisibility test and a conditional move,
+    /// [`crate::che::prev`], [`crate::che::next`]) between two loads: the forward walk's
+    /// `O[prev(h)]`, the backward walk's `O[next(b)]`. The probe times the forward one.
     Corner,
 }
 

@@ -94,27 +94,36 @@ fn with_opposites(op: Operator) -> Option<Access> {
 /// per answer on the chain.
 fn level1(op: Operator) -> Option<Access> {
     match op {
-        Operator::R00 => Some(Access::new(
-            const {
-                &[
-                    Read::scan(V, 0.5),
-                    Read::new(V, 0.0, 4.0),
-                    Read::new(O, 0.0, 8.0),
-                ]
-            },
-            0.0,
-            2.0,
-        )),
-        Operator::R01 => Some(Access::new(
-            const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 12.0)] },
-            0.0,
-            2.0,
-        )),
-        Operator::R02 => Some(Access::new(
-            const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 8.0)] },
-            0.0,
-            2.0,
-        )),
+        Operator::R00 => Some(
+            Access::new(
+                const {
+                    &[
+                        Read::scan(V, 0.5),
+                        Read::new(V, 0.0, 4.0),
+                        Read::new(O, 0.0, 8.0),
+                    ]
+                },
+                0.0,
+                2.0,
+            )
+            .stepping(Step::Corner),
+        ),
+        Operator::R01 => Some(
+            Access::new(
+                const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 12.0)] },
+                0.0,
+                2.0,
+            )
+            .stepping(Step::Corner),
+        ),
+        Operator::R02 => Some(
+            Access::new(
+                const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 8.0)] },
+                0.0,
+                2.0,
+            )
+            .stepping(Step::Corner),
+        ),
         // The whole star walked for one answer: 2 · 6 `O[]` loads at valence 6.
         Operator::BoundaryVertex => Some(Access::new(
             const { &[Read::scan(V, 0.5), Read::new(O, 48.0, 0.0)] },
