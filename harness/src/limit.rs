@@ -26,7 +26,7 @@
 //! before each `O[]` load made a step 2.0 times a plain load's latency in L1 (2.71 against
 //! 1.35 ns), the half-edges' `h ^ 1` 1.2 times (1.62 ns). Neither is a floor: both count one
 //! query's chain after another, and a processor can overlap the chains of consecutive queries
-//! (the index half-edge ran 0.72 times its chain in that run's Targets turns). The limit
+//! (the index half-edge ran 0.81 times its chain in that run's Targets turns). The limit
 //! counts plain loads, as the model declares them, and the Targets show each sweep held to
 //! its limit whose steps do arithmetic against its chain too.
 
