@@ -94,36 +94,21 @@ fn with_opposites(op: Operator) -> Option<Access> {
 /// per answer on the chain.
 fn level1(op: Operator) -> Option<Access> {
     match op {
-        Operator::R00 => Some(
-            Access::new(
-                const {
-                    &[
-                        Read::scan(V, 0.5),
-                        Read::new(V, 0.0, 4.0),
-                        Read::new(O, 0.0, 8.0),
-                    ]
-                },
-                0.0,
-                2.0,
-            )
-            .stepping(Step::Corner),
-        ),
-        Operator::R01 => Some(
-            Access::new(
-                const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 12.0)] },
-                0.0,
-                2.0,
-            )
-            .stepping(Step::Corner),
-        ),
-        Operator::R02 => Some(
-            Access::new(
-                const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 8.0)] },
-                0.0,
-                2.0,
-            )
-            .stepping(Step::Corner),
-        ),
+        Operator::R00 => Some(level1_star(
+            const {
+                &[
+                    Read::scan(V, 0.5),
+                    Read::new(V, 0.0, 4.0),
+                    Read::new(O, 0.0, 8.0),
+                ]
+            },
+        )),
+        Operator::R01 => Some(level1_star(
+            const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 12.0)] },
+        )),
+        Operator::R02 => Some(level1_star(
+            const { &[Read::scan(V, 0.5), Read::new(O, 0.0, 8.0)] },
+        )),
         // The whole star walked for one answer: 2 · 6 `O[]` loads at valence 6.
         Operator::BoundaryVertex => Some(Access::new(
             const { &[Read::scan(V, 0.5), Read::new(O, 48.0, 0.0)] },
@@ -133,6 +118,12 @@ fn level1(op: Operator) -> Option<Access> {
         Operator::BoundaryCurves => Some(boundary_walk_after_scan()),
         _ => with_opposites(op),
     }
+}
+
+/// A level-1 vertex star reading `reads`: two `O[]` loads per answer on the chain, each step
+/// a CHE corner step (`next(O[h])` back to the boundary, then `O[prev(h)]`).
+const fn level1_star(reads: &'static [Read]) -> Access {
+    Access::new(reads, 0.0, 2.0).stepping(Step::Corner)
 }
 
 /// The boundary curves of levels 1 and 2 (§4.6): a scan of `O[]` for boundary half-edges, then
