@@ -1,11 +1,22 @@
-//! Build script of the `topolab` package: finds the C++ baselines, compiles their C API shims
-//! with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our release code), links them,
-//! and sets a cfg per baseline:
+//! Build script of the `topolab` package: compiles the C++ baselines and their C API shims with
+//! the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our release code), links them, and
+//! sets a cfg per baseline:
 //!
-//! | baseline | shim | links | cfg | off switch |
+//! | baseline | compiled here | links | cfg | off switch |
 //! |---|---|---|---|---|
-//! | OpenMesh | `openmesh/shim.cpp`, `openmesh/decimate.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
+//! | OpenMesh | its Core and the Decimater's `Observer.cc` from the pinned source tree (static), `openmesh/*.cpp` | nothing more | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
 //! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//!
+//! OpenMesh is compiled from its own source, not linked from a system package: Debian's
+//! `libopenmesh` is built without `-DNDEBUG`, so every handle step and status lookup of its
+//! compiled functions ran an assertion. The source is PyPI's `openmesh` sdist, pinned by
+//! version and sha256 in `third_party/sources.toml` and unpacked into the git-ignored
+//! `third_party/openmesh/` by `third_party/fetch.py` (which `.ci/install-deps` runs; a build
+//! script does not use the network); `TOPOLAB_OPENMESH_SOURCE` may name another OpenMesh
+//! source tree (the folder holding `src/OpenMesh/Core`). Its `.cc` files are compiled with the
+//! code-generation flags of OpenMesh's own CMake Release build (see [`openmesh_library`]) into
+//! a static library, and its headers come from the same tree. The crate gets a description
+//! of that build in `TOPOLAB_OPENMESH_BUILD` (the report's machine table shows it).
 //!
 //! A missing baseline (or one switched off, to simulate that) is left out with a warning that
 //! says how to get it; the package builds without it.
@@ -17,12 +28,25 @@
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-/// How a user gets OpenMesh; printed wherever it is missing.
-const OPENMESH_HOW_TO_GET: &str = "install it with `apt-get install libopenmesh-dev` \
-(Debian/Ubuntu) or `bash .ci/install-deps`, then rebuild";
+/// How a user gets OpenMesh's source; printed wherever it is missing.
+const OPENMESH_HOW_TO_GET: &str = "fetch the pinned source (PyPI openmesh's sdist, \
+third_party/sources.toml) with `bash .ci/install-deps` or `python3 third_party/fetch.py`, or set \
+TOPOLAB_OPENMESH_SOURCE to an OpenMesh source tree (the folder holding src/OpenMesh/Core), \
+then rebuild";
 /// How a user gets CGAL.
 const CGAL_HOW_TO_GET: &str = "install it with `apt-get install libcgal-dev` (Debian/Ubuntu) \
 or `bash .ci/install-deps`, then rebuild";
+
+/// Where `third_party/fetch.py` unpacks OpenMesh's source, relative to the package.
+const OPENMESH_SOURCE: &str = "third_party/openmesh";
+/// The variable that points the build at another OpenMesh source tree.
+const OPENMESH_SOURCE_VARIABLE: &str = "TOPOLAB_OPENMESH_SOURCE";
+/// The stamp `third_party/fetch.py` writes into the folder it unpacked: the package it came
+/// from (`client`, `package`, `version`, `sha256` lines).
+const OPENMESH_STAMP: &str = ".topolab-source";
+/// The Tools sources the report's Decimater needs: `BaseDecimaterT` keeps an `Observer`,
+/// whose out-of-line members are here. The rest of OpenMeshTools is not used.
+const OPENMESH_TOOLS_UNITS: [&str; 1] = ["src/OpenMesh/Tools/Decimater/Observer.cc"];
 
 /// The translation units of CGAL's shim, the slowest first (so the pool starts it first).
 const CGAL_UNITS: [&str; 4] = [
@@ -32,24 +56,30 @@ const CGAL_UNITS: [&str; 4] = [
     "cgal/shim.cpp",
 ];
 
+/// The translation units of OpenMesh's shim: building, queries and workloads; the
+/// Decimater; `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
+const OPENMESH_SHIM_UNITS: [&str; 3] = [
+    "openmesh/shim.cpp",
+    "openmesh/decimate.cpp",
+    "openmesh/edit.cpp",
+];
 // --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
-/// OpenMesh's `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
-const OPENMESH_EDIT_UNITS: &[&str] = &["openmesh/edit.cpp"];
 /// CGAL's changing workloads and editing operations (behind `cgal/edit.h`), one unit per class.
 const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
 // --- end of issue 18's block ---
 
-/// One shim library: its compiler settings, sources, and what linking it needs.
+/// One static library compiled here (a shim, or OpenMesh itself): its compiler settings,
+/// sources, and what linking it needs.
 struct Shim {
     /// The static library's name.
     library: &'static str,
     /// Compiler settings shared by its sources.
     build: cc::Build,
-    sources: Vec<&'static str>,
-    /// Libraries to link (`cargo::rustc-link-lib=dylib=...`).
+    sources: Vec<PathBuf>,
+    /// System libraries to link (`cargo::rustc-link-lib=dylib=...`).
     links: Vec<&'static str>,
-    /// The cfg it sets.
-    cfg: &'static str,
+    /// The cfg it sets, if any (OpenMesh's library leaves that to its shim).
+    cfg: Option<&'static str>,
 }
 
 fn main() {
@@ -59,13 +89,10 @@ fn main() {
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
+    println!("cargo::rerun-if-env-changed={OPENMESH_SOURCE_VARIABLE}");
+    // The libraries in the order their sources are compiled (CGAL's first: the slowest) and
+    // linked (each shim before the library it calls).
     let mut shims = Vec::new();
-    if switched_off("TOPOLAB_NO_OPENMESH", "the OpenMesh baseline") {
-    } else if let Some(include_dirs) = find_openmesh() {
-        shims.push(openmesh_shim(&include_dirs));
-    } else {
-        println!("cargo::warning=OpenMesh not found, building without the OpenMesh baseline: {OPENMESH_HOW_TO_GET}");
-    }
     if switched_off("TOPOLAB_NO_CGAL", "the CGAL baselines") {
     } else if let Some(include_dir) = find_cgal() {
         shims.push(cgal_shim(&include_dir));
@@ -73,6 +100,22 @@ fn main() {
         println!(
             "cargo::warning=CGAL not found, building without the CGAL baselines: {CGAL_HOW_TO_GET}"
         );
+    }
+    if switched_off("TOPOLAB_NO_OPENMESH", "the OpenMesh baseline") {
+    } else {
+        match find_openmesh() {
+            Ok(source) => {
+                shims.push(openmesh_shim(&source));
+                shims.push(openmesh_library(&source));
+                println!(
+                    "cargo::rustc-env=TOPOLAB_OPENMESH_BUILD={}",
+                    openmesh_description(&source)
+                );
+            }
+            Err(missing) => println!(
+                "cargo::warning=OpenMesh's source not found ({missing}), building without the OpenMesh baseline: {OPENMESH_HOW_TO_GET}"
+            ),
+        }
     }
     let objects = compile_in_parallel(&shims);
     for (shim, objects) in shims.iter().zip(objects) {
@@ -83,7 +126,9 @@ fn main() {
         for link in &shim.links {
             println!("cargo::rustc-link-lib=dylib={link}");
         }
-        println!("cargo::rustc-cfg={}", shim.cfg);
+        if let Some(cfg) = shim.cfg {
+            println!("cargo::rustc-cfg={cfg}");
+        }
     }
 }
 
@@ -101,11 +146,11 @@ fn switched_off(variable: &str, what: &str) -> bool {
 /// count at a time; returns the object files per shim, in `shims` order. Panics (failing the
 /// build with the compiler's message) when a source does not compile.
 fn compile_in_parallel(shims: &[Shim]) -> Vec<Vec<PathBuf>> {
-    let queue: Mutex<Vec<(usize, &'static str)>> = Mutex::new(
+    let queue: Mutex<Vec<(usize, &Path)>> = Mutex::new(
         shims
             .iter()
             .enumerate()
-            .flat_map(|(i, s)| s.sources.iter().map(move |&f| (i, f)))
+            .flat_map(|(i, s)| s.sources.iter().map(move |f| (i, f.as_path())))
             .rev()
             .collect(),
     );
@@ -129,65 +174,169 @@ fn compile_in_parallel(shims: &[Shim]) -> Vec<Vec<PathBuf>> {
     results.into_inner().expect("results")
 }
 
-/// The include directories of OpenMesh when its headers and `libOpenMeshCore` are installed:
-/// from pkg-config (which also tells cargo where to link), else from the Debian layout.
-fn find_openmesh() -> Option<Vec<PathBuf>> {
-    let header = "OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh";
-    // The libraries to link are openmesh_shim's (pkg-config's list is not used).
-    if let Ok(lib) = pkg_config::Config::new()
-        .cargo_metadata(false)
-        .env_metadata(true)
-        .probe("openmesh")
-    {
-        let mut dirs = lib.include_paths.clone();
-        dirs.push(PathBuf::from("/usr/include"));
-        if dirs.iter().any(|d| d.join(header).exists()) {
-            for dir in &lib.link_paths {
-                println!("cargo::rustc-link-search=native={}", dir.display());
-            }
-            return Some(lib.include_paths);
-        }
-    }
-    let system = Path::new("/usr/include");
-    watch_for(&[system.to_path_buf()], header);
-    let library = [
-        "/usr/lib/x86_64-linux-gnu",
-        "/usr/lib64",
-        "/usr/lib",
-        "/usr/local/lib",
-    ]
-    .iter()
-    .find(|d| Path::new(d).join("libOpenMeshCore.so").exists())?;
-    if !system.join(header).exists() {
-        return None;
-    }
-    println!("cargo::rustc-link-search=native={library}");
-    Some(Vec::new())
+/// An OpenMesh source tree: the folder holding `src/OpenMesh/Core`.
+struct OpenMeshSource {
+    root: PathBuf,
+    /// Whether it is the fetched tree (else `TOPOLAB_OPENMESH_SOURCE`'s).
+    fetched: bool,
 }
 
-fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
+/// The OpenMesh source tree to compile: `TOPOLAB_OPENMESH_SOURCE` if set (relative to the
+/// package), else `third_party/openmesh`; or why there is none.
+fn find_openmesh() -> Result<OpenMeshSource, String> {
+    let package = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").unwrap_or_default());
+    let (root, fetched) = match std::env::var_os(OPENMESH_SOURCE_VARIABLE) {
+        Some(dir) if !dir.is_empty() => (package.join(dir), false),
+        _ => (package.join(OPENMESH_SOURCE), true),
+    };
+    // Rerun when the tree changes (cargo scans a folder's files) or appears (its parent
+    // changes); never a path that does not exist (see `watch_for`), nor a folder further up,
+    // which cargo would scan whole.
+    if let Some(watched) = [root.as_path(), root.parent().unwrap_or(&root)]
+        .into_iter()
+        .find(|d| d.is_dir())
+    {
+        println!("cargo::rerun-if-changed={}", watched.display());
+    }
+    let probe = "src/OpenMesh/Core/Mesh/PolyConnectivity.cc";
+    if !root.join(probe).is_file() {
+        let by = if fetched {
+            String::new()
+        } else {
+            format!(", {OPENMESH_SOURCE_VARIABLE}")
+        };
+        return Err(format!("no {probe} in {}{by}", root.display()));
+    }
+    Ok(OpenMeshSource { root, fetched })
+}
+
+/// The `.cc` files under `dir`, recursively, sorted (so the build is the same on every
+/// machine).
+fn cc_files(dir: &Path) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        let Ok(entries) = std::fs::read_dir(&folder) else {
+            continue;
+        };
+        for path in entries.filter_map(|e| e.ok()).map(|e| e.path()) {
+            if path.is_dir() {
+                folders.push(path);
+            } else if path.extension().is_some_and(|e| e == "cc") {
+                found.push(path);
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+/// OpenMesh's library, compiled as its own CMake Release build compiles it (OpenMesh's
+/// `CMakeLists.txt`: C++11 with GNU extensions, `CMAKE_CXX_STANDARD 11`; CMake's Release flags
+/// `-O3 -DNDEBUG`; `cmake-library/VCI/VCICompiler.cmake`: `-DNDEBUG`, `-DINCLUDE_TEMPLATES`;
+/// position-independent, as PyPI's openmesh builds it), and static, as PyPI's openmesh links
+/// it (`OpenMeshCoreStatic`). Its warning flags are left out, so that the warnings of its
+/// code are not printed as ours; they do not change the code. The sources: every `.cc` of
+/// its Core (the `OpenMeshCore` library: the mesh kernel and connectivity, its I/O, streams
+/// and properties), and of its Tools only what the report's Decimater calls.
+fn openmesh_library(source: &OpenMeshSource) -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .cpp(true)
+        .include(source.root.join("src"))
+        .std("gnu++11")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .define("INCLUDE_TEMPLATES", None)
+        .pic(true)
+        .warnings(false);
+    let mut sources = cc_files(&source.root.join("src/OpenMesh/Core"));
+    sources.extend(OPENMESH_TOOLS_UNITS.iter().map(|f| source.root.join(f)));
+    Shim {
+        library: "topolab_openmesh",
+        build,
+        sources,
+        links: Vec::new(),
+        cfg: None,
+    }
+}
+
+/// What the report says of the OpenMesh it measures: its version (`OM_VERSION` of its
+/// `config.h`), where its source came from, and how it was compiled here.
+fn openmesh_description(source: &OpenMeshSource) -> String {
+    let config = source.root.join("src/OpenMesh/Core/System/config.h");
+    let version = std::fs::read_to_string(config)
+        .ok()
+        .and_then(|text| om_version(&text))
+        .unwrap_or_else(|| "(version unknown)".into());
+    let stamp = std::fs::read_to_string(source.root.join(OPENMESH_STAMP)).unwrap_or_default();
+    let field = |key: &str| {
+        stamp.lines().find_map(|line| {
+            let (k, v) = line.split_once('=')?;
+            (k.trim() == key).then(|| v.trim().trim_matches('"').to_string())
+        })
+    };
+    let origin = match (
+        field("client").as_deref(),
+        field("package"),
+        field("version"),
+    ) {
+        (Some("pip"), Some(package), Some(v)) => format!("PyPI {package} {v}'s source"),
+        (Some(client), Some(package), Some(v)) => format!("{client} {package} {v}'s source"),
+        _ if source.fetched => format!("the source in {OPENMESH_SOURCE}"),
+        _ => format!(
+            "the source tree {} ({OPENMESH_SOURCE_VARIABLE})",
+            source.root.display()
+        ),
+    };
+    format!(
+        "OpenMesh {version}, compiled here from {origin}: its Core and the Decimater's \
+         Observer as a static library, -std=gnu++11 -O3 -DNDEBUG (its CMake Release build's \
+         flags)"
+    )
+}
+
+/// The version `major.minor.patch` of `#define OM_VERSION 0x90100` in OpenMesh's `config.h`
+/// (one hex digit of major, two each of minor and patch, as its `OM_GET_*` macros read it).
+fn om_version(config_h: &str) -> Option<String> {
+    let hex = config_h.lines().find_map(|line| {
+        let mut words = line.split_whitespace();
+        (words.next()? == "#define" && words.next()? == "OM_VERSION")
+            .then(|| words.next())
+            .flatten()
+    })?;
+    let v = u32::from_str_radix(hex.strip_prefix("0x")?, 16).ok()?;
+    Some(format!(
+        "{}.{}.{}",
+        (v & 0xf0000) >> 16,
+        (v & 0x0ff00) >> 8,
+        v & 0xff
+    ))
+}
+
+/// The shim over OpenMesh, compiled against the headers of the same source tree. They are a
+/// system include folder for the compiler, as an installed OpenMesh's would be: warnings are
+/// reported of our code, not of OpenMesh's headers.
+fn openmesh_shim(source: &OpenMeshSource) -> Shim {
     let mut build = cc::Build::new();
     build
         .cpp(true)
         .include("openmesh")
-        .includes(include_dirs)
+        .flag("-isystem")
+        .flag(source.root.join("src").display().to_string())
         .std("c++17")
         .opt_level(3)
         .define("NDEBUG", None)
-        // One known warning inside OpenMesh's Property.hh, not in our code.
+        // One known warning inside OpenMesh's Property.hh (PropertyT::push_back), reported at
+        // the standard library's line it inlines into, not in our code.
         .flag_if_supported("-Wno-maybe-uninitialized")
         .warnings(true);
     Shim {
         library: "topolab_openmesh_shim",
         build,
-        sources: [
-            &["openmesh/shim.cpp", "openmesh/decimate.cpp"][..],
-            OPENMESH_EDIT_UNITS,
-        ]
-        .concat(),
-        // OpenMeshTools: the Decimater's observer (openmesh/decimate.cpp).
-        links: vec!["OpenMeshCore", "OpenMeshTools"],
-        cfg: "has_openmesh",
+        sources: OPENMESH_SHIM_UNITS.iter().map(PathBuf::from).collect(),
+        links: Vec::new(),
+        cfg: Some("has_openmesh"),
     }
 }
 
@@ -247,10 +396,14 @@ fn cgal_shim(include_dir: &Path) -> Shim {
     Shim {
         library: "topolab_cgal_shim",
         build,
-        sources: [&sources[..], CGAL_EDIT_UNITS].concat(),
+        sources: [&sources[..], CGAL_EDIT_UNITS]
+            .concat()
+            .into_iter()
+            .map(PathBuf::from)
+            .collect(),
         // The hull's Exact_predicates_inexact_constructions_kernel falls back to GMP's exact
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],
-        cfg: "has_cgal",
+        cfg: Some("has_cgal"),
     }
 }

@@ -37,11 +37,21 @@ mod foreign;
 pub mod openmesh;
 pub mod registry;
 
-/// What to do when the OpenMesh baseline is not compiled in (OpenMesh was missing at build
-/// time, or `TOPOLAB_NO_OPENMESH=1` was set).
-pub const OPENMESH_MISSING: &str = "the OpenMesh baseline is not compiled in: install OpenMesh \
-(`apt-get install libopenmesh-dev` on Debian/Ubuntu, or `bash .ci/install-deps`), unset \
-TOPOLAB_NO_OPENMESH, and rebuild";
+/// What to do when the OpenMesh baseline is not compiled in (OpenMesh's source was missing at
+/// build time, or `TOPOLAB_NO_OPENMESH=1` was set).
+pub const OPENMESH_MISSING: &str = "the OpenMesh baseline is not compiled in: fetch OpenMesh's \
+pinned source (`bash .ci/install-deps`, or `python3 third_party/fetch.py`; build.rs compiles \
+it), unset TOPOLAB_NO_OPENMESH, and rebuild";
+
+/// The OpenMesh this build measures: its version, where its source came from and how
+/// `build.rs` compiled it (e.g. `OpenMesh 9.1.0, compiled here from PyPI openmesh 1.2.1's
+/// source: ...`); `None` when the baseline is not compiled in.
+pub const OPENMESH_BUILD: Option<&str> = if HAS_OPENMESH {
+    option_env!("TOPOLAB_OPENMESH_BUILD")
+} else {
+    // Not a variable of someone's shell that happens to have the name.
+    None
+};
 
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
