@@ -10,15 +10,14 @@
 //! valgrind --tool=callgrind --toggle-collect=topolab_om_changing \
 //!     target/release/examples/openmesh_profile sqrt3 65536      # or collapse
 //! valgrind --tool=callgrind --toggle-collect='*timed_decimation*' \
-//!     target/release/examples/openmesh_profile decimate 16384   # or decimate-shipped
+//!     target/release/examples/openmesh_profile decimate 16384
 //! callgrind_annotate --inclusive=yes callgrind.out.<pid>
 //! ```
 //!
 //! `--toggle-collect` counts only inside the named call: the build (`add_vertex` and
 //! `add_face` per element, as the report's construction), the workload alone, or the
 //! Decimater's `initialize()` and `decimate_to_faces()` to 10% of the faces (what the report's
-//! decimation section times; `decimate-shipped` runs it on the mesh type as Debian's library
-//! compiles it, which the report does not).
+//! decimation section times).
 
 #[cfg(not(has_openmesh))]
 fn main() -> std::process::ExitCode {
@@ -35,7 +34,7 @@ fn main() -> std::process::ExitCode {
     let mut args = std::env::args().skip(1);
     let kernel = args.next();
     let triangles = args.next().map(|a| a.parse::<usize>());
-    const KERNELS: [&str; 5] = ["build", "sqrt3", "collapse", "decimate", "decimate-shipped"];
+    const KERNELS: [&str; 4] = ["build", "sqrt3", "collapse", "decimate"];
     let (kernel, triangles) = match (kernel.as_deref(), triangles) {
         (Some(k), None) if KERNELS.contains(&k) => (k.to_string(), 65_536),
         (Some(k), Some(Ok(n))) if KERNELS.contains(&k) && n >= 18 => (k.to_string(), n),
@@ -48,15 +47,12 @@ fn main() -> std::process::ExitCode {
         }
     };
     let soup = meshes::torus_with_triangles(triangles);
-    if kernel.starts_with("decimate") {
+    if kernel == "decimate" {
         // The report's decimation: to 10% of the faces, the whole of it in C++.
         let target = soup.num_faces() / 10;
-        let got = if kernel == "decimate" {
-            topolab::native_decimate::NativeDecimater::OpenMesh.decimate(&soup, target)
-        } else {
-            topolab::native_decimate::decimate_openmesh_shipped(&soup, target)
-        }
-        .expect("decimates");
+        let got = topolab::native_decimate::NativeDecimater::OpenMesh
+            .decimate(&soup, target)
+            .expect("decimates");
         println!(
             "{kernel} on a torus of {} faces to {target}: {} vertices, {} faces after, {:.3} s",
             soup.num_faces(),

@@ -5,7 +5,8 @@
 //
 // Each operation first checks everything that could make it refuse, with OpenMesh's handles
 // and circulators, and only then calls OpenMesh, so that a refused edit writes nothing and
-// OpenMesh never reaches one of its assertions (flip asserts is_flip_ok; collapse and
+// OpenMesh is never called outside its preconditions (flip only asserts is_flip_ok, and the
+// assertion is compiled out of OpenMesh's release build, which build.rs makes; collapse and
 // vertex_split trust their caller). The checks are the lab's rules (the ones the half-edge
 // family enforces, structures/src/families/half_edge/edit/euler.rs) plus OpenMesh's own
 // predicates where it has one (is_flip_ok, is_collapse_ok), called as well: where the two

@@ -5,8 +5,9 @@
  * Besides shim.h's statuses an edit may return TOPOLAB_OM_EDIT_REFUSED with *refusal set to
  * one of the TOPOLAB_OM_REFUSAL_ codes (topolab's Refusal, in its order): the edit was checked
  * against OpenMesh's preconditions (is_flip_ok, is_collapse_ok, add_face's manifold rules)
- * and the lab's own, before any write, so a refused edit changes nothing and OpenMesh never
- * reaches one of its assertions. Ids out of range are refused (NO_SUCH_ELEMENT) here too.
+ * and the lab's own, before any write, so a refused edit changes nothing and OpenMesh is never
+ * called outside its preconditions (which its release build does not check). Ids out of range
+ * are refused (NO_SUCH_ELEMENT) here too.
  *
  * The first edit requests OpenMesh's status attributes (its deletion marks) once. Deleted
  * elements keep their slots until topolab_om_edit_garbage_collection. */

@@ -327,27 +327,6 @@ template <class M> void changing(M &m, int workload) {
   }
 }
 
-// Whether two meshes have the same elements linked the same way and the same positions.
-template <class A, class B> bool same_links(const A &a, const B &b) {
-  if (a.n_vertices() != b.n_vertices() || a.n_halfedges() != b.n_halfedges() ||
-      a.n_faces() != b.n_faces())
-    return false;
-  for (size_t i = 0; i < a.n_halfedges(); ++i) {
-    const HH h{int(i)};
-    if (a.to_vertex_handle(h) != b.to_vertex_handle(h) ||
-        a.next_halfedge_handle(h) != b.next_halfedge_handle(h) ||
-        a.face_handle(h) != b.face_handle(h))
-      return false;
-  }
-  for (size_t i = 0; i < a.n_vertices(); ++i) {
-    const VH v{int(i)};
-    if (a.halfedge_handle(v) != b.halfedge_handle(v) || a.point(v) != b.point(v)) return false;
-  }
-  for (size_t i = 0; i < a.n_faces(); ++i)
-    if (a.halfedge_handle(FH(int(i))) != b.halfedge_handle(FH(int(i)))) return false;
-  return true;
-}
-
 }  // namespace
 
 namespace {
@@ -617,48 +596,6 @@ int topolab_om_changing(topolab_om_mesh *mesh, int workload) noexcept {
   if (workload != 0 && workload != 1) return TOPOLAB_OM_UNKNOWN_CODE;
   return guard([&] {
     changing(*mesh->tri, workload);
-    return TOPOLAB_OM_OK;
-  });
-}
-
-// Builds the soup with the lab's mesh types (mesh.h's overrides) and with the library's own
-// operations, and for triangles runs each changing workload on fresh builds of both: *agree = 1
-// when every result has the same links, element for element (or both refused the same face).
-int topolab_om_overrides_agree(const double *xyz, uint32_t vertices, const uint32_t *indices,
-                               const uint32_t *offsets, uint32_t faces, int triangles,
-                               int *agree) noexcept {
-  return guard([&] {
-    const auto compare = [&](auto ours, auto shipped) {
-      uint32_t failed_ours = UINT32_MAX, failed_shipped = UINT32_MAX;
-      const bool built_ours = fill(*ours, xyz, vertices, indices, offsets, faces, 0, &failed_ours);
-      const bool built_shipped =
-          fill(*shipped, xyz, vertices, indices, offsets, faces, 0, &failed_shipped);
-      if (built_ours != built_shipped || failed_ours != failed_shipped) return false;
-      return !built_ours || same_links(*ours, *shipped);
-    };
-    bool same;
-    if (triangles) {
-      same = compare(std::make_unique<Tri>(), std::make_unique<ShippedTri>());
-      for (int workload = 0; workload < 2 && same; ++workload) {
-        auto ours = std::make_unique<Tri>();
-        auto shipped = std::make_unique<ShippedTri>();
-        uint32_t failed = 0;
-        if (!fill(*ours, xyz, vertices, indices, offsets, faces, 0, &failed) ||
-            !fill(*shipped, xyz, vertices, indices, offsets, faces, 0, &failed))
-          break;  // refused alike (compared above)
-        for (auto *m : {static_cast<ShippedTri *>(ours.get()), shipped.get()}) {
-          m->request_vertex_status();
-          m->request_edge_status();
-          m->request_face_status();
-        }
-        changing(*ours, workload);
-        changing(*shipped, workload);
-        same = same_links(*ours, *shipped);
-      }
-    } else {
-      same = compare(std::make_unique<Poly>(), std::make_unique<ShippedPoly>());
-    }
-    *agree = same ? 1 : 0;
     return TOPOLAB_OM_OK;
   });
 }

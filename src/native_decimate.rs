@@ -67,10 +67,6 @@ macro_rules! decimate_functions {
 decimate_functions! {
     #[cfg(has_openmesh)]
     fn topolab_om_decimate;
-    // OpenMesh's Decimater with the library's own functions as Debian compiles them (with
-    // their assertions): see `decimate_openmesh_shipped`.
-    #[cfg(has_openmesh)]
-    fn topolab_om_decimate_shipped;
     #[cfg(has_cgal_decimate)]
     fn topolab_cgal_decimate;
 }
@@ -123,24 +119,6 @@ impl NativeDecimater {
         };
         run(self.name(), function, library, call, soup, target)
     }
-}
-
-/// OpenMesh's Decimater on the mesh type as Debian's library compiles it, every call into the
-/// library its own (`topolab_om_decimate_shipped`; the report's [`NativeDecimater::OpenMesh`]
-/// compiles those functions in release, `openmesh/decimate.cpp`): for the test that both give
-/// the same mesh, and for measuring what the library's build costs
-/// (`examples/openmesh_profile.rs`). The report never runs it.
-#[cfg(has_openmesh)]
-#[doc(hidden)]
-pub fn decimate_openmesh_shipped(soup: &PolygonSoup, target: usize) -> Result<NativeDecimation> {
-    run(
-        "openmesh",
-        topolab_om_decimate_shipped,
-        "OpenMesh",
-        "topolab_om_decimate_shipped",
-        soup,
-        target,
-    )
 }
 
 /// Runs the C decimater `function` (`call` in `library`, reported as `name`) on `soup`.
@@ -208,39 +186,6 @@ fn run(
 mod tests {
     use super::*;
     use topolab_structures::meshes;
-
-    /// The report's OpenMesh decimater replaces every function of the library the Decimater
-    /// calls (`is_collapse_ok`, `find_halfedge`, `valence`, `collapse`; compiled by Debian
-    /// with assertions) by the same algorithm compiled here (`openmesh/decimate.cpp`,
-    /// `openmesh/mesh.h`), and builds and compacts with mesh.h's `add_face` and
-    /// `garbage_collection`: the Decimater must then make exactly the same choices and leave
-    /// the same links, so both give the same mesh, position for position and triangle for
-    /// triangle, against the library's own functions on the other side.
-    #[cfg(has_openmesh)]
-    #[test]
-    fn openmesh_decimates_the_same_with_the_library_calls_compiled_here() {
-        for (soup, target) in [
-            (meshes::torus(40, 20), 160),
-            (meshes::torus(64, 32), 400),
-            (meshes::sphere(24, 16), 60),
-            // Open: the boundary tests of is_collapse_ok decide.
-            (meshes::grid(24, 24, true), 200),
-            (meshes::perturb(&meshes::torus(48, 24), 0.01, 7), 300),
-            // As far as the Decimater goes (a target below what the topology allows): the link
-            // condition refuses most collapses, and on the sphere's last tetrahedron the test
-            // of is_collapse_legal for joined apexes of valence 3 refuses the rest.
-            (meshes::sphere(12, 8), 2),
-            (meshes::torus(12, 8), 2),
-        ] {
-            let ours = NativeDecimater::OpenMesh
-                .decimate(&soup, target)
-                .expect("decimates");
-            let shipped = decimate_openmesh_shipped(&soup, target).expect("decimates");
-            assert!(ours.result.num_faces() < soup.num_faces());
-            assert_eq!(ours.result.positions, shipped.result.positions);
-            assert_eq!(ours.result.indices(), shipped.result.indices());
-        }
-    }
 
     #[test]
     fn each_available_decimater_reaches_about_the_target_on_a_torus() {

@@ -3,7 +3,11 @@
 //! [OpenMesh](https://www.graphics.rwth-aachen.de/software/openmesh/) is the halfedge library
 //! graphics engineers compare against. [`OpenMesh`] wraps a `TriMesh_ArrayKernelT` (triangle
 //! input) or `PolyMesh_ArrayKernelT` (polygon input) with double-precision points, built and
-//! queried through the C API of `openmesh/shim.h`. This module holds the `unsafe` calls of its
+//! queried through the C API of `openmesh/shim.h`. The library is OpenMesh itself, compiled by
+//! `build.rs` from its pinned source (PyPI `openmesh`'s sdist, fetched into `third_party/openmesh/`
+//! by `third_party/fetch.py`) with its Release flags, `-O3 -DNDEBUG`, into a static library;
+//! the shim calls its own functions ([`crate::OPENMESH_BUILD`] says which version and how it
+//! was built, as the report's machine table does). This module holds the `unsafe` calls of its
 //! FFI (the callbacks from C++ are in the `foreign` module it shares with the `cgal` module; the
 //! lab's only other `unsafe` module is the pointer half-edge's `links`, where real pointers
 //! are the point); everything it exports is safe.
@@ -143,18 +147,6 @@ mod ffi {
         pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
         pub fn topolab_om_prepare_changing(mesh: *mut RawMesh) -> i32;
         pub fn topolab_om_changing(mesh: *mut RawMesh, workload: i32) -> i32;
-        /// Builds with the lab's mesh types and with the library's own operations (and runs
-        /// the changing workloads on both): `*agree` = 1 when the results are linked alike.
-        #[cfg(test)]
-        pub fn topolab_om_overrides_agree(
-            xyz: *const f64,
-            vertices: u32,
-            indices: *const u32,
-            offsets: *const u32,
-            faces: u32,
-            triangles: i32,
-            agree: *mut i32,
-        ) -> i32;
     }
 }
 
@@ -637,80 +629,5 @@ impl NativeKernels<OpenMesh> for Kernels {
 
     fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Option<Result<f64>> {
         Some(mesh.native_workload(workload))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use topolab_structures::meshes;
-
-    /// Whether the lab's OpenMesh types (openmesh/mesh.h: add_face, split, flip and is_flip_ok
-    /// compiled here without assertions) build and change `soup` exactly as the library's own
-    /// functions do.
-    fn overrides_agree(soup: &PolygonSoup) -> bool {
-        soup.check().expect("a valid soup");
-        let mut agree = -1;
-        // SAFETY: `check` guarantees every index < vertex count and every face >= 3 corners;
-        // positions are 3 contiguous f64 each; offsets has faces + 1 entries; `agree` is a
-        // valid out-pointer.
-        let code = unsafe {
-            ffi::topolab_om_overrides_agree(
-                soup.positions.as_ptr().cast::<f64>(),
-                soup.num_vertices() as u32,
-                soup.indices().as_ptr(),
-                soup.offsets().as_ptr(),
-                soup.num_faces() as u32,
-                soup.is_triangle_mesh() as i32,
-                &mut agree,
-            )
-        };
-        status("topolab_om_overrides_agree", code).expect("runs");
-        agree == 1
-    }
-
-    /// The faces of `soup` in another order (a stride coprime with their number), so that
-    /// add_face joins separate patches and relinks them.
-    fn shuffled(soup: &PolygonSoup) -> PolygonSoup {
-        let n = soup.num_faces();
-        let stride = (1..n)
-            .rev()
-            .find(|s| gcd(*s, n) == 1 && *s > n / 3)
-            .unwrap_or(1);
-        let faces: Vec<Vec<u32>> = (0..n).map(|i| soup.face(i * stride % n).to_vec()).collect();
-        PolygonSoup::from_polygons(soup.positions.clone(), &faces)
-    }
-
-    fn gcd(a: usize, b: usize) -> usize {
-        if b == 0 {
-            a
-        } else {
-            gcd(b, a % b)
-        }
-    }
-
-    #[test]
-    fn the_overridden_operations_build_and_change_meshes_as_the_library_does() {
-        for (name, soup) in [
-            ("torus", meshes::torus(24, 12)),
-            ("open grid", meshes::grid(12, 9, true)),
-            ("sphere", meshes::sphere(10, 12)),
-            ("shuffled grid", shuffled(&meshes::grid(16, 11, true))),
-            ("shuffled torus", shuffled(&meshes::torus(20, 14))),
-            ("quads", meshes::grid(8, 6, false)),
-            ("shuffled quads", shuffled(&meshes::grid(9, 7, false))),
-            ("mixed polygons", meshes::mixed_grid(300)),
-        ] {
-            assert!(overrides_agree(&soup), "{name}: the overrides disagree");
-        }
-    }
-
-    #[test]
-    fn the_overridden_add_face_refuses_what_the_library_refuses() {
-        // Three triangles on one edge: the third is refused, by both, at the same face.
-        let positions = (0..5).map(|i| glam::DVec3::new(i as f64, (i * i) as f64, 0.0));
-        let soup =
-            PolygonSoup::from_polygons(positions.collect(), &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]);
-        assert!(overrides_agree(&soup));
     }
 }

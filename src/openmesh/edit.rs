@@ -14,7 +14,8 @@
 //! where its deletion marks live ([`Deletion::Marked`](topolab_structures::Deletion::Marked), OpenMesh's choice).
 //!
 //! Every check runs in C++ before OpenMesh is called, so a refused edit changes nothing and
-//! OpenMesh never reaches an assertion: the lab's rules (an oriented manifold with one fan per
+//! OpenMesh is never called outside its preconditions (its own checks of them are assertions,
+//! compiled out of the release build `build.rs` makes): the lab's rules (an oriented manifold with one fan per
 //! vertex after every edit; pmp's `is_collapse_ok`, which adds the tetrahedron test to
 //! OpenMesh's) and OpenMesh's own predicates. Where OpenMesh allows more than the lab (a face
 //! making a second fan at a vertex, a deletion splitting a vertex's fan, the collapse that
