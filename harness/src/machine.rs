@@ -1,5 +1,5 @@
 //! Facts about the machine and build that results must carry: CPU, cores, caches, compiler,
-//! commit, date.
+//! the OpenMesh baseline's build, commit, date.
 
 use std::process::Command;
 
@@ -16,6 +16,9 @@ pub struct Machine {
     pub memory: String,
     /// `rustc --version`.
     pub rustc: String,
+    /// The OpenMesh the run measured: its version, where its source came from and how it was
+    /// compiled; or why the build has none.
+    pub openmesh: String,
     /// `git rev-parse --short HEAD` (plus `-dirty` with uncommitted changes).
     pub commit: String,
     /// UTC date and time of the run.
@@ -76,8 +79,9 @@ fn cache_bytes(size: &str) -> Option<usize> {
     })
 }
 
-/// Reads the facts (anything unreadable is "unknown").
-pub fn facts() -> Machine {
+/// Reads the facts (anything unreadable is "unknown"); `openmesh` is what the build says of its
+/// OpenMesh ([`Machine::openmesh`]).
+pub fn facts(openmesh: &str) -> Machine {
     let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
     let cpu = cpuinfo
         .lines()
@@ -123,6 +127,7 @@ pub fn facts() -> Machine {
         },
         memory,
         rustc: run("rustc", &["--version"]).unwrap_or_else(|| "unknown".into()),
+        openmesh: openmesh.to_string(),
         commit,
         date: run("date", &["-u", "+%Y-%m-%d %H:%M UTC"]).unwrap_or_else(|| "unknown".into()),
         os: run("uname", &["-sr"]).unwrap_or_else(|| "unknown".into()),

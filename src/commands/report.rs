@@ -215,7 +215,12 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     );
     let mut results = Results {
         format_version: FORMAT_VERSION,
-        machine: machine::facts(),
+        machine: machine::facts(
+            crate::OPENMESH_BUILD
+                .map(str::to_string)
+                .unwrap_or_else(|| format!("not in this build: {}", crate::OPENMESH_MISSING))
+                .as_str(),
+        ),
         probe,
         settings: Settings {
             quick,
