@@ -9,14 +9,13 @@
 //! the Targets row's ratio is the median of per-round ratios with its spread; above
 //! [`MAX_FACES`] only that pair runs there.
 //!
-//! Cost: Debian's OpenMesh 9.0 library is compiled with its assertions on, and the functions
-//! the Decimater calls (its legality test, `collapse`) live in that library;
-//! `openmesh/decimate.cpp` compiles the same algorithm in release (see there, with the
-//! callgrind counts), with the same result mesh: the legality test made OpenMesh about 4×
-//! faster here, `collapse` then about a fifth (torus-1M, 7.9 → 6.2 s, medians of nine turns
-//! each). Measured in the thread's CPU time on the 2-core machine under a load of about 1
-//! (three runs of `topolab report --sections decimate --meshes torus --sizes
-//! 16384,65536,1000000`, medians), per removed face: index-half-edge 0.5 µs (16k torus),
+//! Cost: OpenMesh's Decimater and the library functions it calls (its legality test,
+//! `collapse`) are OpenMesh's own, compiled from its source at `-O3 -DNDEBUG` by `build.rs`
+//! (Debian's library, compiled with its assertions, spent most of the Decimater's
+//! instructions in them). Measured in the thread's CPU time on the 2-core machine under a load
+//! of about 1 (three runs of `topolab report --sections decimate --meshes torus --sizes
+//! 16384,65536,1000000`, medians, with copies of those library functions compiled in release
+//! instead of the library), per removed face: index-half-edge 0.5 µs (16k torus),
 //! 1.1 µs (64k), 2.3 µs (1M); OpenMesh 3.2, 3.5, 6.7 µs; CGAL 5.3 and 7.2 µs (the small tori
 //! vary by up to 2× from run to run). The 1M torus's turns take about 25 s of CPU, the whole
 //! section about 40 s. CGAL stays below [`MAX_FACES`] (its
@@ -313,7 +312,7 @@ fn per_removed_face(rows: &[DecimateRow]) -> Option<String> {
         return None;
     }
     Some(format!(
-        "Decimation, the thread's CPU time per removed face on the largest torus each decimater ran: {}. OpenMesh's Decimater runs with the library functions it calls (TriConnectivity::is_collapse_ok, PolyConnectivity::find_halfedge, valence and collapse) compiled in release by the report's shim: Debian's OpenMesh 9.0 library is built with its assertions, each property access building and comparing two type-name strings and each handle step calling is_valid_handle out of line, which took 90% of the Decimater's instructions (callgrind, 16k torus: 2.71 G as shipped, 0.28 G so, the same result mesh); what remains is its design, a legality test for every outgoing half-edge of every vertex it heaps again (about 42 per collapse; the lab's decimater tests a candidate when it leaves the heap). CGAL's edge_collapse builds an Edge_profile, with vectors allocated each time, for every cost and placement it computes, and gathers each collapse's edges in a std::set: about a third of its instructions are malloc, free and the tree, none of it a setting of the report's.",
+        "Decimation, the thread's CPU time per removed face on the largest torus each decimater ran: {}. OpenMesh's Decimater runs with the library functions it calls (TriConnectivity::is_collapse_ok, PolyConnectivity::find_halfedge, valence and collapse) compiled in release, OpenMesh built from its source (see Machine): Debian's OpenMesh 9.0 library is built with its assertions, each property access building and comparing two type-name strings and each handle step calling is_valid_handle out of line, which took 90% of the Decimater's instructions (callgrind, 16k torus); what remains is its design, a legality test for every outgoing half-edge of every vertex it heaps again (about 42 per collapse; the lab's decimater tests a candidate when it leaves the heap). CGAL's edge_collapse builds an Edge_profile, with vectors allocated each time, for every cost and placement it computes, and gathers each collapse's edges in a std::set: about a third of its instructions are malloc, free and the tree, none of it a setting of the report's.",
         times.join(", ")
     ))
 }
