@@ -6,6 +6,7 @@
 //! |---|---|---|---|---|
 //! | OpenMesh | `openmesh/shim.cpp`, `openmesh/decimate.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
 //! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//! | the C++ heap counting, with either | `heap/heap.cpp` (global `operator new` and `delete`) | | `has_cpp_heap` | both of the above |
 //!
 //! A missing baseline (or one switched off, to simulate that) is left out with a warning that
 //! says how to get it; the package builds without it.
@@ -39,7 +40,8 @@ const OPENMESH_EDIT_UNITS: &[&str] = &["openmesh/edit.cpp"];
 const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
 // --- end of issue 18's block ---
 
-/// One shim library: its compiler settings, sources, and what linking it needs.
+/// One C++ library of the build (a baseline's shim, or the heap counting): its compiler
+/// settings, sources, and what linking it needs.
 struct Shim {
     /// The static library's name.
     library: &'static str,
@@ -56,9 +58,11 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_openmesh)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal_decimate)");
+    println!("cargo::rustc-check-cfg=cfg(has_cpp_heap)");
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
+    println!("cargo::rerun-if-changed=heap");
     let mut shims = Vec::new();
     if switched_off("TOPOLAB_NO_OPENMESH", "the OpenMesh baseline") {
     } else if let Some(include_dirs) = find_openmesh() {
@@ -73,6 +77,9 @@ fn main() {
         println!(
             "cargo::warning=CGAL not found, building without the CGAL baselines: {CGAL_HOW_TO_GET}"
         );
+    }
+    if !shims.is_empty() {
+        shims.push(heap_library());
     }
     let objects = compile_in_parallel(&shims);
     for (shim, objects) in shims.iter().zip(objects) {
@@ -188,6 +195,28 @@ fn openmesh_shim(include_dirs: &[PathBuf]) -> Shim {
         // OpenMeshTools: the Decimater's observer (openmesh/decimate.cpp).
         links: vec!["OpenMeshCore", "OpenMeshTools"],
         cfg: "has_openmesh",
+    }
+}
+
+/// The C++ side of the heap counting (`heap/heap.cpp`: the global `operator new` and `delete`,
+/// counting like `src/alloc.rs`), linked whenever a baseline is: a library of its own, because a
+/// program defines those functions once and each baseline's shim is a separate library. Last in
+/// the list, so that it follows the shims that call `operator new` on the linker's line.
+fn heap_library() -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .cpp(true)
+        .include("heap")
+        .std("c++17")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .warnings(true);
+    Shim {
+        library: "topolab_heap",
+        build,
+        sources: vec!["heap/heap.cpp"],
+        links: Vec::new(),
+        cfg: "has_cpp_heap",
     }
 }
 
