@@ -96,14 +96,7 @@ pub fn section(h: &mut String, r: &Results) {
         });
         let fam = if refused_torus { "grid" } else { "torus" };
         let build = cell(r, &s.name, Subject::Construction, Kernel::Construction, fam);
-        let bytes = build.and_then(|m| {
-            let per = |b: u64| b as f64 / m.triangles.max(1) as f64;
-            match m.bytes {
-                // A C++ baseline allocates outside the counting allocator: its own measurement.
-                Some(0) => m.declared_bytes.map(per),
-                b => b.map(per),
-            }
-        });
+        let bytes = build.and_then(|m| m.bytes.map(|b| b as f64 / m.triangles.max(1) as f64));
         let r00 = cell(
             r,
             &s.name,
