@@ -6,6 +6,7 @@
 //! |---|---|---|---|---|
 //! | OpenMesh | its Core and the Decimater's `Observer.cc` from the pinned source tree (static), `openmesh/*.cpp` | nothing more | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
 //! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//! | the C++ heap counting, with either | `heap/heap.cpp` (global `operator new` and `delete`) | | `has_cpp_heap` | both of the above |
 //!
 //! OpenMesh is compiled from its own source, not linked from a system package: Debian's
 //! `libopenmesh` is built without `-DNDEBUG`, so every handle step and status lookup of its
@@ -68,8 +69,8 @@ const OPENMESH_SHIM_UNITS: [&str; 3] = [
 const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
 // --- end of issue 18's block ---
 
-/// One static library compiled here (a shim, or OpenMesh itself): its compiler settings,
-/// sources, and what linking it needs.
+/// One static library compiled here (a shim, OpenMesh itself, or the heap counting): its
+/// compiler settings, sources, and what linking it needs.
 struct Shim {
     /// The static library's name.
     library: &'static str,
@@ -86,12 +87,15 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_openmesh)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal_decimate)");
+    println!("cargo::rustc-check-cfg=cfg(has_cpp_heap)");
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
+    println!("cargo::rerun-if-changed=heap");
     println!("cargo::rerun-if-env-changed={OPENMESH_SOURCE_VARIABLE}");
     // The libraries in the order their sources are compiled (CGAL's first: the slowest) and
-    // linked (each shim before the library it calls).
+    // linked (each shim before the library it calls; the heap counting, which every C++ unit
+    // calls through operator new, last).
     let mut shims = Vec::new();
     if switched_off("TOPOLAB_NO_CGAL", "the CGAL baselines") {
     } else if let Some(include_dir) = find_cgal() {
@@ -116,6 +120,9 @@ fn main() {
                 "cargo::warning=OpenMesh's source not found ({missing}), building without the OpenMesh baseline: {OPENMESH_HOW_TO_GET}"
             ),
         }
+    }
+    if !shims.is_empty() {
+        shims.push(heap_library());
     }
     let objects = compile_in_parallel(&shims);
     for (shim, objects) in shims.iter().zip(objects) {
@@ -337,6 +344,28 @@ fn openmesh_shim(source: &OpenMeshSource) -> Shim {
         sources: OPENMESH_SHIM_UNITS.iter().map(PathBuf::from).collect(),
         links: Vec::new(),
         cfg: Some("has_openmesh"),
+    }
+}
+
+/// The C++ side of the heap counting (`heap/heap.cpp`: the global `operator new` and `delete`,
+/// counting like `src/alloc.rs`), linked whenever a baseline is: a library of its own, because a
+/// program defines those functions once and each baseline's shim is a separate library. Last in
+/// the list, so that it follows the shims that call `operator new` on the linker's line.
+fn heap_library() -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .cpp(true)
+        .include("heap")
+        .std("c++17")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .warnings(true);
+    Shim {
+        library: "topolab_heap",
+        build,
+        sources: vec!["heap/heap.cpp"],
+        links: Vec::new(),
+        cfg: Some("has_cpp_heap"),
     }
 }
 

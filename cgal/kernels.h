@@ -19,6 +19,7 @@
 //     bool is_boundary_vertex(vertex_descriptor);             // incident to a boundary edge
 //     const Point &point(vertex_descriptor);
 //     bool cgal_is_valid();                                   // the structure's is_valid()
+//     uint64_t declared_bytes();                              // its records, by their numbers
 //   };
 
 #ifndef TOPOLAB_CGAL_KERNELS_H
@@ -52,6 +53,7 @@ template <class Adapter> class CgalMesh final : public Mesh {
 
   void *native() override { return a_.native(); }
   void renumber() override { a_.renumber(); }
+  uint64_t declared_bytes() const override { return a_.declared_bytes(); }
 
   void summary(uint32_t *out) const override {
     out[0] = a_.num_vertices();

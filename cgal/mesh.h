@@ -1,13 +1,11 @@
 // What the translation units of the CGAL shim share, without any CGAL header (so that
 // shim.cpp, the C API, compiles in a moment): the mesh interface each structure implements,
-// the harness's checksum functions, the heap measurement and the exception wall.
+// the harness's checksum functions and the exception wall.
 
 #ifndef TOPOLAB_CGAL_MESH_H
 #define TOPOLAB_CGAL_MESH_H
 
 #include "shim.h"
-
-#include <malloc.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -32,12 +30,6 @@ static_assert(mix(3, 5) == 0x40159a6e5620edf9ULL, "mix differs from harness/src/
 
 constexpr uint64_t edge_key(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
-}
-
-// Bytes the allocator hands out now: small chunks plus mmapped large ones.
-inline size_t heap_in_use() {
-  const struct mallinfo2 info = mallinfo2();
-  return info.uordblks + info.hblkhd;
 }
 
 // The face list of topolab_cgal_build.
@@ -80,13 +72,13 @@ struct topolab_cgal_mesh {
   // the Surface_mesh itself, or the Polyhedron_3 with its id tables (polyhedron::Adapter of
   // polyhedron.h: an edit keeps the tables).
   virtual void *native() = 0;
-  // Called after those changed it wholesale (the changing workloads, the garbage collection):
-  // the Polyhedron's id tables are built again in list order (its erased elements leave the
-  // lists at once); a Surface_mesh's indices are its own.
+  // Called after building (topolab_cgal_finish, outside the timed build) and after those
+  // changed it wholesale (the changing workloads, the garbage collection): the Polyhedron's
+  // id tables are built in list order (its erased elements leave the lists at once); a
+  // Surface_mesh's indices are its own.
   virtual void renumber() = 0;
-
-  // mallinfo2 growth while building, set by topolab_cgal_build.
-  uint64_t heap_bytes = 0;
+  // Bytes its records take by their numbers, with the lab's tables (topolab_cgal_heap_bytes).
+  virtual uint64_t declared_bytes() const = 0;
 };
 
 namespace topolab_cgal {

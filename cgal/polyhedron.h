@@ -94,6 +94,15 @@ struct Adapter {
     return mesh.is_valid(/*verbose=*/false, /*level=*/0);
   }
 
+  // The list nodes by their numbers (CGAL's items with their list links and ids; halfedges
+  // come in pairs, one block each), and the tables by their capacities.
+  uint64_t declared_bytes() const {
+    return mesh.size_of_vertices() * sizeof(HDS::Vertex) +
+           mesh.size_of_halfedges() * sizeof(HDS::Halfedge) +
+           mesh.size_of_facets() * sizeof(HDS::Face) + vertices.capacity() * sizeof(VH) +
+           facets.capacity() * sizeof(FH) + edges.capacity() * sizeof(HH);
+  }
+
   bool is_dead_vertex(uint32_t i) const { return vertices[i] == dead_vertex; }
   bool is_dead_edge(uint32_t e) const { return edges[e] == dead_halfedge; }
   bool is_dead_facet(uint32_t i) const { return facets[i] == dead_facet; }

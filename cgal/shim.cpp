@@ -34,15 +34,19 @@ int topolab_cgal_build(int structure, const double *xyz, uint32_t vertices,
     if (structure != TOPOLAB_CGAL_SURFACE_MESH && structure != TOPOLAB_CGAL_POLYHEDRON)
       return TOPOLAB_CGAL_UNKNOWN_CODE;
     const topolab_cgal::Input input{xyz, vertices, indices, offsets, faces, edges_hint};
-    const size_t before = topolab_cgal::heap_in_use();
     std::unique_ptr<topolab_cgal::Mesh> mesh =
         structure == TOPOLAB_CGAL_SURFACE_MESH
             ? topolab_cgal::build_surface_mesh(input, failed_face)
             : topolab_cgal::build_polyhedron(input, failed_face);
     if (!mesh) return TOPOLAB_CGAL_REFUSED;
-    const size_t after = topolab_cgal::heap_in_use();
-    mesh->heap_bytes = after > before ? after - before : 0;
     *out = mesh.release();
+    return TOPOLAB_CGAL_OK;
+  });
+}
+
+int topolab_cgal_finish(topolab_cgal_mesh *mesh) noexcept {
+  return guard([&] {
+    mesh->renumber();
     return TOPOLAB_CGAL_OK;
   });
 }
@@ -51,7 +55,7 @@ void topolab_cgal_free(topolab_cgal_mesh *mesh) noexcept { delete mesh; }
 
 int topolab_cgal_heap_bytes(const topolab_cgal_mesh *mesh, uint64_t *out) noexcept {
   return guard([&] {
-    *out = mesh->heap_bytes;
+    *out = mesh->declared_bytes();
     return TOPOLAB_CGAL_OK;
   });
 }

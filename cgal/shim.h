@@ -59,21 +59,26 @@ typedef void (*topolab_cgal_emit)(void *context, uint32_t index);
 /* Called when a boundary curve is complete. */
 typedef void (*topolab_cgal_end_curve)(void *context);
 
-/* Builds `structure` from a face list into *out, the way CGAL's documentation builds one:
- * Surface_mesh by reserve + add_vertex + add_face; Polyhedron_3 by
- * Polyhedron_incremental_builder_3 (begin_surface with the counts, add_vertex, add_facet).
- * `xyz` holds 3 doubles per vertex, face j is indices[offsets[j]..offsets[j+1]]; `edges_hint`
- * goes to the reservation. TOPOLAB_CGAL_REFUSED with *failed_face = j when face j is refused.
- * The mesh's heap bytes are measured around the build (glibc mallinfo2). */
+/* Builds `structure` from a face list into *out, the way CGAL's documentation builds one, and does
+ * nothing else (callers time it): Surface_mesh by reserve + add_vertex + add_face; Polyhedron_3
+ * by Polyhedron_incremental_builder_3 (begin_surface with the counts, add_vertex, add_facet).
+ * `xyz` holds 3 doubles per vertex, face j is indices[offsets[j]..offsets[j+1]]; `vertices`,
+ * `edges_hint` and `faces` go to the reservation. TOPOLAB_CGAL_REFUSED with *failed_face = j
+ * when face j is refused. The mesh answers queries after topolab_cgal_finish. */
 int topolab_cgal_build(int structure, const double *xyz, uint32_t vertices,
                        const uint32_t *indices, const uint32_t *offsets, uint32_t faces,
                        uint32_t edges_hint, topolab_cgal_mesh **out,
                        uint32_t *failed_face) TOPOLAB_CGAL_NOEXCEPT;
+/* What the lab adds to a mesh of topolab_cgal_build for its queries, outside the timed build:
+ * the Polyhedron_3's ids and tables from id to handle (nothing for a Surface_mesh, whose
+ * indices are the ids). */
+int topolab_cgal_finish(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;
 /* Frees a mesh from topolab_cgal_build. NULL is allowed. */
 void topolab_cgal_free(topolab_cgal_mesh *mesh) TOPOLAB_CGAL_NOEXCEPT;
 
-/* Heap bytes the mesh took when it was built (mallinfo2 before and after; process-wide, so
- * exact only when no other thread allocates meanwhile). */
+/* Bytes the mesh's records take by their numbers (and the Polyhedron_3's id tables by their
+ * capacities); see src/cgal.rs. The blocks it really takes are counted by heap/heap.h's
+ * counter. */
 int topolab_cgal_heap_bytes(const topolab_cgal_mesh *mesh, uint64_t *out) TOPOLAB_CGAL_NOEXCEPT;
 /* out = {vertices, edges, faces}. */
 int topolab_cgal_summary(const topolab_cgal_mesh *mesh, uint32_t *out) TOPOLAB_CGAL_NOEXCEPT;

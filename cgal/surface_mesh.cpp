@@ -46,6 +46,16 @@ struct SurfaceMeshAdapter {
   bool cgal_is_valid() const { return mesh.is_valid(/*verbose=*/false); }
   // Surface_mesh's indices are the ids, changed or not.
   void renumber() {}
+  // Its property arrays by their lengths, laid out as its connectivity is: per vertex a point
+  // and a halfedge, per halfedge its face, target vertex, next and prev, per face a halfedge,
+  // and a removed flag of one bit (a vector<bool>) per vertex, edge and face.
+  uint64_t declared_bytes() const {
+    const uint64_t v = mesh.num_vertices(), h = mesh.num_halfedges(), e = mesh.num_edges(),
+                   f = mesh.num_faces();
+    const auto bits = [](uint64_t n) { return (n + 7) / 8; };
+    return v * (sizeof(Point) + sizeof(HI)) + h * (sizeof(FI) + sizeof(VI) + 2 * sizeof(HI)) +
+           f * sizeof(HI) + bits(v) + bits(e) + bits(f);
+  }
 };
 
 }  // namespace

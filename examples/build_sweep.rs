@@ -22,22 +22,38 @@
 //! OpenMesh's: what each pass costs, and what the target leaves for them (0.1× OpenMesh).
 
 use topolab::alloc::{keep_freed_memory, minor_faults, release_free_memory, thread_cpu_ns};
+use topolab_harness::measure::Builder;
 use topolab_structures::{
-    che, meshes, CheL1, CheL2, CheL3, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup,
+    che, meshes, CheL1, CheL2, CheL3, Constructed, IndexHalfEdge, MeshTopology, PointerHalfEdge,
+    PolygonSoup,
 };
 
-/// One build of a structure from `soup`; returns its number of faces (the check that the
-/// build is whole).
-type Build = fn(&PolygonSoup) -> usize;
+/// One build, as the report times it.
+struct Timed {
+    /// Thread CPU time of the construction alone: the baseline's own (its lab checks come
+    /// before), without finishing or dropping the structure.
+    ns: u64,
+    /// Minor page faults in that time.
+    faults: u64,
+    /// Faces of the structure built (the check that the build is whole).
+    faces: usize,
+}
 
-fn build<M: MeshTopology>(soup: &PolygonSoup) -> usize {
-    // The baseline's own construction when it has one, as the report times it.
-    if let Some(built) = M::native().and_then(|k| k.construction(soup)) {
-        return built.expect("native construction").num_faces();
-    }
-    M::from_soup(soup)
+/// One build of a structure from `soup`.
+type Build = fn(&PolygonSoup) -> Timed;
+
+fn build<M: MeshTopology>(soup: &PolygonSoup) -> Timed {
+    let builder = Builder::<M>::new(soup).expect("the generated meshes are manifold");
+    let first = minor_faults().unwrap_or(0);
+    let start = thread_cpu_ns().expect("thread CPU clock");
+    let built = std::hint::black_box(builder.build());
+    let ns = thread_cpu_ns().expect("thread CPU clock") - start;
+    let faults = minor_faults().unwrap_or(0) - first;
+    let faces = built
+        .and_then(Constructed::finish)
         .expect("the generated meshes are manifold")
-        .num_faces()
+        .num_faces();
+    Timed { ns, faults, faces }
 }
 
 fn median(mut xs: Vec<f64>) -> f64 {
@@ -101,7 +117,11 @@ fn main() {
     );
     // One build each to warm up (and to leave the freed pages the timed builds reuse).
     for (name, b) in &all {
-        assert_eq!(b(&soup), soup.num_faces(), "{name} built another mesh");
+        assert_eq!(
+            b(&soup).faces,
+            soup.num_faces(),
+            "{name} built another mesh"
+        );
     }
     let mut times = vec![Vec::new(); all.len()];
     let mut faults = vec![Vec::new(); all.len()];
@@ -110,13 +130,10 @@ fn main() {
             if cold {
                 release_free_memory();
             }
-            let first = minor_faults().unwrap_or(0);
-            let start = thread_cpu_ns().expect("thread CPU clock");
-            let faces = std::hint::black_box(b(&soup));
-            let ns = thread_cpu_ns().expect("thread CPU clock") - start;
-            faults[s].push((minor_faults().unwrap_or(0) - first) as f64);
-            assert_eq!(faces, soup.num_faces());
-            times[s].push(ns as f64 / faces as f64);
+            let t = b(&soup);
+            faults[s].push(t.faults as f64);
+            assert_eq!(t.faces, soup.num_faces());
+            times[s].push(t.ns as f64 / t.faces as f64);
         }
     }
     println!("{:<28}{:>12}", "page faults per build", "median");
@@ -186,13 +203,9 @@ fn passes(soup: &PolygonSoup, rounds: usize) {
         assert!(finite && one_fan, "the generated meshes are manifold");
         drop((g, v, o, vh));
         t.push(t.iter().sum());
-        t.push(time(&mut || {
-            std::hint::black_box(build::<CheL1>(soup));
-        }));
+        t.push(build::<CheL1>(soup).ns as f64 / faces);
         #[cfg(has_openmesh)]
-        t.push(time(&mut || {
-            std::hint::black_box(build::<topolab::openmesh::OpenMesh>(soup));
-        }));
+        t.push(build::<topolab::openmesh::OpenMesh>(soup).ns as f64 / faces);
         if round > 0 {
             for ((_, times), x) in rows.iter_mut().zip(t) {
                 times.push(x);

@@ -76,7 +76,6 @@ template <class F> int guard(F &&body) noexcept {
 struct topolab_om_mesh {
   std::unique_ptr<topolab_om::Tri> tri;    // set for triangle input
   std::unique_ptr<topolab_om::Poly> poly;  // set for polygon input
-  uint64_t heap_bytes = 0;                 // mallinfo2 growth while building
   bool normals_requested = false;
   // The status attributes (OpenMesh's deletion marks) requested by the first edit (edit.cpp).
   bool edit_status_requested = false;

@@ -4,8 +4,6 @@
 
 #include "mesh.h"
 
-#include <malloc.h>
-
 #include <cmath>
 #include <ios>
 #include <memory>
@@ -36,10 +34,30 @@ constexpr uint64_t edge_key(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
 }
 
-// Bytes the allocator hands out now: small chunks plus mmapped large ones.
-size_t heap_in_use() {
-  const struct mallinfo2 info = mallinfo2();
-  return info.uordblks + info.hblkhd;
+// What the mesh's containers hold by their lengths: the array kernel's records (a vertex's
+// outgoing halfedge; an edge's two halfedges, each to-vertex, next, prev and face; a face's
+// halfedge), the traits' data item of every element (an empty struct of one byte with
+// OpenMesh's default traits, stored all the same), and the elements of every property whose
+// element size OpenMesh knows (the positions, and what a workload or an edit requested:
+// normals, status). The data items are the only properties whose size it does not know.
+template <class M> uint64_t declared_bytes(const M &m) {
+  uint64_t bytes = m.n_vertices() * (sizeof(OpenMesh::ArrayItems::Vertex) +
+                                     sizeof(typename M::VertexData)) +
+                   m.n_halfedges() * sizeof(typename M::HalfedgeData) +
+                   m.n_edges() * (sizeof(OpenMesh::ArrayItems::Edge) +
+                                  sizeof(typename M::EdgeData)) +
+                   m.n_faces() * (sizeof(OpenMesh::ArrayItems::Face) +
+                                  sizeof(typename M::FaceData));
+  const auto add = [&](auto begin, auto end) {
+    for (auto p = begin; p != end; ++p)
+      if (*p != nullptr && (*p)->element_size() != OpenMesh::BaseProperty::UnknownSize)
+        bytes += (*p)->n_elements() * (*p)->element_size();
+  };
+  add(m.vprops_begin(), m.vprops_end());
+  add(m.hprops_begin(), m.hprops_end());
+  add(m.eprops_begin(), m.eprops_end());
+  add(m.fprops_begin(), m.fprops_end());
+  return bytes;
 }
 
 // How an answer enters a checksum: vertices and faces by index, edges by their end vertices.
@@ -339,7 +357,6 @@ int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indic
                      const uint32_t *offsets, uint32_t faces, int triangles, uint32_t edges_hint,
                      topolab_om_mesh **out, uint32_t *failed_face) noexcept {
   return guard([&] {
-    const size_t before = heap_in_use();
     auto mesh = std::make_unique<topolab_om_mesh>();
     bool ok;
     if (triangles) {
@@ -350,8 +367,6 @@ int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indic
       ok = fill(*mesh->poly, xyz, vertices, indices, offsets, faces, edges_hint, failed_face);
     }
     if (!ok) return TOPOLAB_OM_REFUSED;
-    const size_t after = heap_in_use();
-    mesh->heap_bytes = after > before ? after - before : 0;
     *out = mesh.release();
     return TOPOLAB_OM_OK;
   });
@@ -361,7 +376,7 @@ void topolab_om_free(topolab_om_mesh *mesh) noexcept { delete mesh; }
 
 int topolab_om_heap_bytes(const topolab_om_mesh *mesh, uint64_t *out) noexcept {
   return guard([&] {
-    *out = mesh->heap_bytes;
+    *out = with_mesh(mesh, [](const auto &m) { return declared_bytes(m); });
     return TOPOLAB_OM_OK;
   });
 }

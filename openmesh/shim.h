@@ -47,10 +47,11 @@ typedef void (*topolab_om_emit)(void *context, uint32_t index);
 /* Called when a boundary curve is complete. */
 typedef void (*topolab_om_end_curve)(void *context);
 
-/* Builds a mesh from a face list with reserve + add_vertex + add_face into *out: `xyz` holds 3
- * doubles per vertex, face j is indices[offsets[j]..offsets[j+1]]. `triangles` != 0 chooses
- * TriMesh. `edges_hint` is passed to reserve(). TOPOLAB_OM_REFUSED with *failed_face = j when
- * add_face refuses face j. The first call of the process (from any thread) also does the
+/* Builds a mesh from a face list with reserve + add_vertex + add_face into *out, and does nothing
+ * else (callers time it): `xyz` holds 3 doubles per vertex, face j is
+ * indices[offsets[j]..offsets[j+1]]. `triangles` != 0 chooses TriMesh. `vertices`,
+ * `edges_hint` and `faces` are passed to reserve(). TOPOLAB_OM_REFUSED with *failed_face = j
+ * when add_face refuses face j. The first call of the process (from any thread) also does the
  * shim's one-time, process-wide set-up: OpenMesh's error stream is connected and disabled. */
 int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indices,
                      const uint32_t *offsets, uint32_t faces, int triangles, uint32_t edges_hint,
@@ -58,8 +59,9 @@ int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indic
 /* Frees a mesh from topolab_om_build. NULL is allowed. */
 void topolab_om_free(topolab_om_mesh *mesh) TOPOLAB_OM_NOEXCEPT;
 
-/* Heap bytes the mesh took when it was built (glibc mallinfo2 before and after; process-wide,
- * so exact only when no other thread allocates meanwhile). */
+/* Bytes the mesh's containers hold by their lengths: the array kernel's vertex, edge and face
+ * records and every property's elements (OpenMesh's BaseProperty::size_of). The blocks it
+ * really takes are counted by heap/heap.h's counter. */
 int topolab_om_heap_bytes(const topolab_om_mesh *mesh, uint64_t *out) TOPOLAB_OM_NOEXCEPT;
 /* out = {1 for a TriMesh else 0, vertices, edges, faces}. */
 int topolab_om_summary(const topolab_om_mesh *mesh, uint32_t *out) TOPOLAB_OM_NOEXCEPT;

@@ -32,12 +32,19 @@
 //!   `polygon_soup_to_polygon_mesh` ignores a refused face outside debug builds (its check is an
 //!   assertion). Ids come from `Polyhedron_items_with_id_3`, set after building.
 //!
+//! Both are told the exact vertex, edge and face counts, from the lab's checks and edge
+//! analysis before the clock (`NativeKernels::admit`); the timed construction is
+//! [`Cgal::construct`], the library's calls alone. The `Polyhedron_3`'s ids and tables (the lab's
+//! way in from an id, not CGAL's) are made after the clock, when the mesh is finished for its
+//! queries (`Constructed::finish`), and every mesh is freed after the clock.
+//!
 //! Ids: vertex i of the input is CGAL's vertex i and face j its face j (both keep insertion
 //! order); edge e is the edge with halfedges 2e and 2e + 1 (Surface_mesh's own numbering; for
 //! the Polyhedron, the ids the shim gives in list order).
 //!
-//! What each stores (64-bit, as `mallinfo2` measures it; Table 4.1 and the memory section of
-//! the report show the measured bytes):
+//! What each stores (64-bit; [`MeshTopology::heap_bytes`] adds these up, and the memory section
+//! of the report shows them beside the blocks the counting allocator measured, see
+//! `crate::alloc`):
 //!
 //! | | `Surface_mesh` | `Polyhedron_3` with ids |
 //! |---|---|---|
@@ -76,20 +83,21 @@
 //! CGAL reports reaches the wall instead of aborting), is done once per process, thread-safely
 //! (a function-local static); the builder writes nothing with `verbose` off. Meshes are
 //! independent, so threads may build and query meshes in parallel (`tests/cgal_threads.rs`,
-//! and `.ci/repeat-baseline-tests` in CI). The heap measurement (`mallinfo2`) is
-//! process-wide: exact only when no other thread allocates meanwhile.
+//! and `.ci/repeat-baseline-tests` in CI). CGAL's heap is counted per thread like Rust's, by
+//! the lab's global `operator new` (`heap/heap.cpp`), so threads do not disturb each other's
+//! measurements either.
 //!
 //! [`hull::convex_hull_3`] runs `CGAL::convex_hull_3` (quickhull,
 //! `Exact_predicates_inexact_constructions_kernel`) for the report's hull section.
 
-use crate::foreign::{self, check_open_fans, operator_code, refusal, workload_code};
+use crate::foreign::{self, operator_code, refusal, workload_code};
 use glam::DVec3;
 use std::fmt::Write;
 use std::marker::PhantomData;
 use std::ptr::NonNull;
 use topolab_structures::{
-    Access, BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Input, MeshTopology,
-    NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
+    Access, BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId,
+    Input, MeshTopology, NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
 };
 
 mod access;
@@ -129,6 +137,7 @@ mod ffi {
             out: *mut *mut RawMesh,
             failed_face: *mut u32,
         ) -> i32;
+        pub fn topolab_cgal_finish(mesh: *mut RawMesh) -> i32;
         pub fn topolab_cgal_free(mesh: *mut RawMesh);
         pub fn topolab_cgal_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
         pub fn topolab_cgal_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
@@ -281,30 +290,30 @@ impl<S: CgalStructure> std::fmt::Debug for Cgal<S> {
 }
 
 impl<S: CgalStructure> Cgal<S> {
-    /// CGAL's own construction (see the module docs), in one C++ call; `edges_hint` goes to
-    /// the reservation.
+    /// CGAL's own construction (see the module docs) from the facts' counts, in one C++ call
+    /// and nothing else (the harness times it). The mesh answers queries after
+    /// [`Constructed::finish`], which gives a `Polyhedron_3` its id tables and reads the
+    /// counts.
     ///
-    /// Only [`PolygonSoup::check`] runs first (so every index is in range). A face CGAL
-    /// refuses is reported with the lab's error for it (the edge analysis of
+    /// A face CGAL refuses is reported with the lab's error for it (the edge analysis of
     /// [`PolygonSoup::connectivity`] or the non-manifold vertex it touches).
-    /// [`MeshTopology::from_soup`] checks the soup fully first, like every structure.
-    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
-        soup.check()?;
+    pub fn construct(facts: &BuildFacts<'_>) -> Result<Constructed<Self>> {
+        let soup = facts.soup();
         let mut failed_face = u32::MAX;
         let mut raw = std::ptr::null_mut();
-        // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
-        // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
-        // asserted in `foreign`); offsets has faces + 1 entries; both out-pointers are valid.
-        // The C++ side copies everything it keeps.
+        // SAFETY: `facts` holds a soup that passed `check`: every index < vertex count, every
+        // face >= 3 corners, and counts that fit u32; positions are 3 contiguous f64 each
+        // (DVec3 is repr(C), size asserted in `foreign`); offsets has faces + 1 entries; both
+        // out-pointers are valid. The C++ side copies everything it keeps.
         let code = unsafe {
             ffi::topolab_cgal_build(
                 S::CODE,
                 soup.positions.as_ptr().cast::<f64>(),
-                soup.num_vertices() as u32,
+                facts.vertices(),
                 soup.indices().as_ptr(),
                 soup.offsets().as_ptr(),
-                soup.num_faces() as u32,
-                edges_hint.min(u32::MAX as usize) as u32,
+                facts.faces(),
+                facts.edges(),
                 &mut raw,
                 &mut failed_face,
             )
@@ -316,21 +325,32 @@ impl<S: CgalStructure> Cgal<S> {
         let Some(raw) = NonNull::new(raw) else {
             return status("topolab_cgal_build", foreign::EXCEPTION).map(|_| unreachable!());
         };
-        // Owned from here on: dropped (freed) if the summary below fails.
-        let mut mesh = Self {
+        // Owned from here on (freed when dropped); no id is in range until `finish`.
+        let mesh = Self {
             raw,
             vertices: 0,
             edges: 0,
             faces: 0,
             class: PhantomData,
         };
-        let mut summary = [0u32; 3];
-        // SAFETY: `raw` is a live mesh just built; `summary` has the 3 slots the shim fills.
-        status("topolab_cgal_summary", unsafe {
-            ffi::topolab_cgal_summary(raw.as_ptr(), summary.as_mut_ptr())
+        Ok(Constructed::new(mesh, Self::finish))
+    }
+
+    /// The finishing step of [`Cgal::construct`]: the lab's ids (`topolab_cgal_finish`), then
+    /// the counts, which the wrapper keeps to check ids without an FFI call.
+    fn finish(&mut self) -> Result<()> {
+        // SAFETY: `raw` is live and exclusively borrowed.
+        status("topolab_cgal_finish", unsafe {
+            ffi::topolab_cgal_finish(self.raw.as_ptr())
         })?;
-        [mesh.vertices, mesh.edges, mesh.faces] = summary;
-        Ok(mesh)
+        self.refresh_counts()
+    }
+
+    /// [`Cgal::construct`] and its finishing step in one, with `edges_hint` edges reserved,
+    /// after [`PolygonSoup::check`] only: the checks of [`MeshTopology::from_soup`], which
+    /// every structure makes, are left to CGAL.
+    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
+        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish()
     }
 
     /// The checksum of operator `op` over every element, computed by one C++ loop with CGAL's
@@ -520,9 +540,7 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
     }
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        let connectivity = soup.connectivity()?;
-        check_open_fans(soup, &connectivity)?;
-        Self::build_native(soup, connectivity.num_edges())
+        Self::construct(&foreign::admit(soup)?)?.finish()
     }
 
     fn num_vertices(&self) -> usize {
@@ -628,8 +646,9 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
         Err(Error::invariant(S::NAME, message))
     }
 
-    /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
-    /// no other thread allocates during construction.
+    /// What CGAL's records hold by their numbers (`topolab_cgal_heap_bytes`; see the module
+    /// docs), with the `Polyhedron_3`'s id tables; the counting allocator measures the blocks
+    /// it really holds.
     fn heap_bytes(&self) -> usize {
         let mut out = 0;
         // SAFETY: `raw` is live; `out` is a valid out-pointer.
@@ -655,9 +674,12 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
 struct Kernels;
 
 impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
-    fn construction(&self, soup: &PolygonSoup) -> Option<Result<Cgal<S>>> {
-        // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
-        Some(Cgal::build_native(soup, soup.num_corners() / 2))
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
+        foreign::admit(soup)
+    }
+
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<Cgal<S>>> {
+        Cgal::construct(facts)
     }
 
     fn sweep(&self, mesh: &Cgal<S>, op: Operator) -> Option<Result<u64>> {

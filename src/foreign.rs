@@ -17,7 +17,8 @@ use std::ffi::c_void;
 use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use topolab_structures::{
-    BoundaryCurves, Connectivity, EdgeId, Error, Operator, PolygonSoup, Result, Workload,
+    BoundaryCurves, BuildFacts, Connectivity, EdgeId, Error, Operator, PolygonSoup, Result,
+    Workload,
 };
 
 // Positions go to C++ as 3 doubles per vertex, without a copy.
@@ -191,6 +192,17 @@ pub(crate) fn refusal(soup: &PolygonSoup, face: usize, what: &str) -> Error {
             soup.face(face)
         )),
     }
+}
+
+/// The lab's checks of `soup` before a halfedge library builds it, and what its construction is
+/// told (`NativeKernels::admit` of every baseline): the lab's edge analysis refuses what every
+/// structure refuses, [`check_open_fans`] what these libraries refuse in some face orders
+/// only, and the analysis's edge count, exact for any soup it accepts, is what the library
+/// reserves for.
+pub(crate) fn admit(soup: &PolygonSoup) -> Result<BuildFacts<'_>> {
+    let connectivity = soup.connectivity()?;
+    check_open_fans(soup, &connectivity)?;
+    BuildFacts::new(soup, connectivity.num_edges())
 }
 
 /// The halfedge libraries (OpenMesh, CGAL's Surface_mesh and Polyhedron_3) store a vertex

@@ -76,8 +76,8 @@ fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
 /// command will do with it. Refused (exit code 2) before it is read or generated when its ids
 /// or the memory of reading it, generating it and running `work` on it would not fit
 /// ([`crate::limits`]: `work` is measured on a sample mesh and scaled to this one's corners;
-/// it returns bytes to add to its measured peak, usually 0: a heap outside Rust's allocator,
-/// [`limits::outside_rust`], or a text's growth, [`limits::growing_text`]).
+/// it returns bytes to add to its measured peak, usually 0: a text's growth,
+/// [`limits::growing_text`]).
 pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<PolygonSoup, Failure> {
     let path = Path::new(spec);
     if path.exists() {
@@ -114,8 +114,8 @@ fn admit_work(
     if size.corners <= sample_corners {
         return Ok(());
     }
-    let (outside, peak) = limits::peak_of(|| work(&sample));
-    let work = limits::scale(peak + outside, sample_corners, size.corners);
+    let (extra, peak) = limits::peak_of(|| work(&sample));
+    let work = limits::scale(peak + extra, sample_corners, size.corners);
     limits::admit(spec, base.saturating_add(work))
 }
 

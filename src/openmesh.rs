@@ -19,8 +19,9 @@
 //! behind an unsynchronised flag, then silenced so that `add_face`'s refusals become typed
 //! errors), is set up exactly once per process, thread-safely, inside that guard; meshes are
 //! independent, so threads may build and query meshes in parallel
-//! (`tests/openmesh_threads.rs`, and `.ci/repeat-baseline-tests` in CI). The heap measurement
-//! (`mallinfo2`) is process-wide: exact only when no other thread allocates meanwhile.
+//! (`tests/openmesh_threads.rs`, and `.ci/repeat-baseline-tests` in CI). OpenMesh's heap is
+//! counted per thread like Rust's, by the lab's global `operator new` (`heap/heap.cpp`, see
+//! `crate::alloc`), so threads do not disturb each other's measurements either.
 //!
 //! What OpenMesh's array kernel stores (4-byte handles):
 //!
@@ -29,6 +30,7 @@
 //! | per vertex: position (3 × f64), one outgoing halfedge | 28 |
 //! | per halfedge: to-vertex, next, prev, face (the opposite of `h` is `h ^ 1`, its edge `h / 2`) | 16 (32 per edge) |
 //! | per face: one of its halfedges | 4 |
+//! | per vertex, halfedge, edge and face: the traits' data item (an empty struct with the default traits, stored all the same) | 1 |
 //!
 //! Ids: vertex i of the input is OpenMesh's vertex i and face j its face j (OpenMesh keeps
 //! insertion order); `EdgeId` is OpenMesh's edge index (edges are created by `add_face`).
@@ -50,7 +52,10 @@
 //! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
 //! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
 //! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
-//! `workload_code`, shared with the CGAL shim).
+//! `workload_code`, shared with the CGAL shim). The construction it times is
+//! [`OpenMesh::construct`], the one C++ call of `reserve`, `add_vertex` and `add_face`: the
+//! lab's checks and the exact edge count for `reserve` come before the clock
+//! (`NativeKernels::admit`), reading the mesh's counts and freeing it after.
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
@@ -59,13 +64,13 @@
 //! [`Error::NonManifoldVertex`] (OpenMesh's `add_face` refuses it too, "complex vertex"), a
 //! case [`Capabilities::non_manifold_vertices`] cannot express.
 
-use crate::foreign::{self, check_open_fans, operator_code, refusal, workload_code};
+use crate::foreign::{self, operator_code, refusal, workload_code};
 use std::fmt::Write;
 use std::ptr::NonNull;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Input, MeshTopology, NativeKernels,
-    Operator, PolygonSoup, Result, VertexId, Workload,
+    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId, Input,
+    MeshTopology, NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -191,31 +196,31 @@ impl std::fmt::Debug for OpenMesh {
 }
 
 impl OpenMesh {
-    /// OpenMesh's own construction, as its documentation does it: `reserve`, then `add_vertex`
-    /// per vertex and `add_face` per face, in one C++ call. `edges_hint` goes to `reserve`.
+    /// OpenMesh's own construction, as its documentation does it: `reserve` with the facts'
+    /// counts, then `add_vertex` per vertex and `add_face` per face, in one C++ call and
+    /// nothing else (the harness times it). The mesh answers queries after
+    /// [`Constructed::finish`], which reads its counts.
     ///
-    /// Only [`PolygonSoup::check`] runs first (so every index is in range). A face that
-    /// `add_face` refuses is reported with the lab's error for it (the edge analysis of
-    /// [`PolygonSoup::connectivity`] or the non-manifold vertex it touches).
-    /// [`MeshTopology::from_soup`] checks the soup fully first, like every structure.
-    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
-        soup.check()?;
+    /// A face that `add_face` refuses is reported with the lab's error for it (the edge
+    /// analysis of [`PolygonSoup::connectivity`] or the non-manifold vertex it touches).
+    pub fn construct(facts: &BuildFacts<'_>) -> Result<Constructed<Self>> {
+        let soup = facts.soup();
         let mut failed_face = u32::MAX;
         let mut raw = std::ptr::null_mut();
-        // SAFETY: `check` guarantees every index < vertex count, every face >= 3 corners, and
-        // counts that fit u32; positions are 3 contiguous f64 each (DVec3 is repr(C), size
-        // asserted above); offsets has faces + 1 entries; a TriMesh is asked for only when
-        // every face is a triangle; both out-pointers are valid. The C++ side copies
-        // everything it keeps.
+        // SAFETY: `facts` holds a soup that passed `check`: every index < vertex count, every
+        // face >= 3 corners, and counts that fit u32; positions are 3 contiguous f64 each
+        // (DVec3 is repr(C), size asserted in `foreign`); offsets has faces + 1 entries; a
+        // TriMesh is asked for only when every face is a triangle; both out-pointers are
+        // valid. The C++ side copies everything it keeps.
         let code = unsafe {
             ffi::topolab_om_build(
                 soup.positions.as_ptr().cast::<f64>(),
-                soup.num_vertices() as u32,
+                facts.vertices(),
                 soup.indices().as_ptr(),
                 soup.offsets().as_ptr(),
-                soup.num_faces() as u32,
+                facts.faces(),
                 soup.is_triangle_mesh() as i32,
-                edges_hint.min(u32::MAX as usize) as u32,
+                facts.edges(),
                 &mut raw,
                 &mut failed_face,
             )
@@ -227,23 +232,36 @@ impl OpenMesh {
         let Some(raw) = NonNull::new(raw) else {
             return status("topolab_om_build", foreign::EXCEPTION).map(|_| unreachable!());
         };
-        // Owned from here on: dropped (freed) if the summary below fails.
-        let mut mesh = Self {
+        // Owned from here on (freed when dropped); no id is in range until `finish`.
+        let mesh = Self {
             raw,
             trimesh: false,
             vertices: 0,
             edges: 0,
             faces: 0,
         };
+        Ok(Constructed::new(mesh, Self::read_counts))
+    }
+
+    /// Reads the kind and counts of the mesh, which the wrapper keeps to check ids without an
+    /// FFI call (after building and after a change).
+    fn read_counts(&mut self) -> Result<()> {
         let mut summary = [0u32; 4];
-        // SAFETY: `raw` is a live mesh just built; `summary` has the 4 slots the shim fills.
+        // SAFETY: `raw` is live; `summary` has the 4 slots the shim fills.
         status("topolab_om_summary", unsafe {
-            ffi::topolab_om_summary(raw.as_ptr(), summary.as_mut_ptr())
+            ffi::topolab_om_summary(self.raw.as_ptr(), summary.as_mut_ptr())
         })?;
         let [trimesh, vertices, edges, faces] = summary;
-        mesh.trimesh = trimesh != 0;
-        (mesh.vertices, mesh.edges, mesh.faces) = (vertices, edges, faces);
-        Ok(mesh)
+        self.trimesh = trimesh != 0;
+        (self.vertices, self.edges, self.faces) = (vertices, edges, faces);
+        Ok(())
+    }
+
+    /// [`OpenMesh::construct`] and its finishing step in one, with `edges_hint` edges
+    /// reserved, after [`PolygonSoup::check`] only: the checks of
+    /// [`MeshTopology::from_soup`], which every structure makes, are left to the library.
+    pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
+        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish()
     }
 
     /// `true` for a TriMesh (triangle input), `false` for a PolyMesh.
@@ -345,13 +363,7 @@ impl OpenMesh {
         // SAFETY: `raw` is live and exclusively borrowed; the shim checks the code.
         let code = unsafe { ffi::topolab_om_changing(self.raw.as_ptr(), code) };
         status("topolab_om_changing", code)?;
-        let mut summary = [0u32; 4];
-        // SAFETY: `raw` is live; `summary` has the 4 slots the shim fills.
-        status("topolab_om_summary", unsafe {
-            ffi::topolab_om_summary(self.raw.as_ptr(), summary.as_mut_ptr())
-        })?;
-        (self.vertices, self.edges, self.faces) = (summary[1], summary[2], summary[3]);
-        Ok(())
+        self.read_counts()
     }
 
     /// Calls `f` with every answer (an index) of relation `op` of element `id`.
@@ -473,9 +485,7 @@ impl MeshTopology for OpenMesh {
     }
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        let connectivity = soup.connectivity()?;
-        check_open_fans(soup, &connectivity)?;
-        Self::build_native(soup, connectivity.num_edges())
+        Self::construct(&foreign::admit(soup)?)?.finish()
     }
 
     fn num_vertices(&self) -> usize {
@@ -579,8 +589,9 @@ impl MeshTopology for OpenMesh {
         Err(Error::invariant(Self::NAME, message))
     }
 
-    /// The allocator's measurement (glibc `mallinfo2` before and after building): exact when
-    /// no other thread allocates during construction.
+    /// What OpenMesh's containers hold by their lengths (`topolab_om_heap_bytes`): its
+    /// kernel's records and every property's elements; the counting allocator measures the
+    /// blocks it really holds.
     fn heap_bytes(&self) -> usize {
         let mut out = 0;
         // SAFETY: `raw` is live; `out` is a valid out-pointer.
@@ -614,9 +625,12 @@ impl MeshTopology for OpenMesh {
 struct Kernels;
 
 impl NativeKernels<OpenMesh> for Kernels {
-    fn construction(&self, soup: &PolygonSoup) -> Option<Result<OpenMesh>> {
-        // Every edge of a closed triangle mesh is shared by two faces: corners / 2 edges.
-        Some(OpenMesh::build_native(soup, soup.num_corners() / 2))
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
+        foreign::admit(soup)
+    }
+
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<OpenMesh>> {
+        OpenMesh::construct(facts)
     }
 
     fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Option<Result<u64>> {

@@ -42,8 +42,7 @@ const fn concat<const N: usize>(parts: [&[&'static str]; 3]) -> [&'static str; N
     out
 }
 
-/// The C++ baselines, whose heap the counting allocator does not see (they measure their own,
-/// by `mallinfo2`), whether or not this build includes them.
+/// The C++ baselines, whether or not this build includes them.
 pub const CPP_BASELINES: [&str; 3] = [OPENMESH, CGAL_SURFACE_MESH, CGAL_POLYHEDRON];
 
 /// Runs `visitor` with the structure called `name`; `None` if there is none in this build.

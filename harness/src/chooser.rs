@@ -85,7 +85,7 @@ pub fn section(h: &mut String, r: &Results) {
     {
         return;
     }
-    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (OpenMesh: its allocator's measurement); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure offers the lecture's editing operations (insert and delete vertices and faces, flip, split and collapse edges; see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
+    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (every structure's blocks counted alike, the C++ baselines' too: see Memory per triangle); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure offers the lecture's editing operations (insert and delete vertices and faces, flip, split and collapse edges; see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
     h.push_str("<table><tr><th class=l>structure</th><th class=l>family</th><th>bytes per triangle</th><th>construction, ns/face</th><th>R00 sweep, ns/vertex</th><th>smoothing, ns/vertex</th><th class=l>stores</th><th class=l>editable</th><th class=l>pick it when</th></tr>");
     for s in &r.structures {
         let refused_torus = r.measurements.iter().any(|m| {
@@ -96,14 +96,7 @@ pub fn section(h: &mut String, r: &Results) {
         });
         let fam = if refused_torus { "grid" } else { "torus" };
         let build = cell(r, &s.name, Subject::Construction, Kernel::Construction, fam);
-        let bytes = build.and_then(|m| {
-            let per = |b: u64| b as f64 / m.triangles.max(1) as f64;
-            match m.bytes {
-                // A C++ baseline allocates outside the counting allocator: its own measurement.
-                Some(0) => m.declared_bytes.map(per),
-                b => b.map(per),
-            }
-        });
+        let bytes = build.and_then(|m| m.bytes.map(|b| b as f64 / m.triangles.max(1) as f64));
         let r00 = cell(
             r,
             &s.name,

@@ -456,51 +456,40 @@ fn workloads(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("</div>");
 }
 
-fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
-    let Some((mesh, tri)) = largest(r, "torus") else {
-        return;
-    };
-    let rows: Vec<(String, Style, f64, Option<f64>)> =
-        r.measurements
-            .iter()
-            .filter(|m| {
-                m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
-            })
-            .filter_map(|m| {
-                let declared = m.declared_bytes.map(|d| d as f64 / tri as f64);
-                match m.bytes {
-                    // A C++ baseline allocates outside Rust's allocator: its heap_bytes() is its
-                    // own allocator measurement (mallinfo2), drawn without a tick.
-                    Some(0) => declared
-                        .map(|d| (format!("{} (C++)", m.structure), ci(&m.structure), d, None)),
-                    Some(b) => Some((
-                        m.structure.clone(),
-                        ci(&m.structure),
-                        b as f64 / tri as f64,
-                        declared,
-                    )),
-                    None => None,
-                }
-            })
-            .collect();
-    let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, measured by a counting allocator (for OpenMesh, by glibc's mallinfo2 around its construction), divided by the number of triangles, geometry included. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>); a gap between bar and tick is allocator overhead or memory not accounted.</div>{}", svg::bars("bytes per triangle", "B", &rows));
-    let peak: Vec<(String, Style, f64, Option<f64>)> = r
-        .measurements
+/// One bar per structure built on `mesh`, per triangle of its `tri`: `bar` gives a construction
+/// cell's bytes and, where it has one, its tick.
+fn construction_bars(
+    r: &Results,
+    mesh: &str,
+    tri: usize,
+    ci: &dyn Fn(&str) -> Style,
+    bar: impl Fn(&Measurement) -> Option<(u64, Option<u64>)>,
+) -> Vec<(String, Style, f64, Option<f64>)> {
+    let per = |b: u64| b as f64 / tri as f64;
+    r.measurements
         .iter()
         .filter(|m| {
             m.mesh == mesh && m.kernel == Kernel::Construction && m.status == Status::Measured
         })
         .filter_map(|m| {
-            m.peak_bytes.map(|b| {
-                (
-                    m.structure.clone(),
-                    ci(&m.structure),
-                    b as f64 / tri as f64,
-                    None,
-                )
-            })
+            let (bytes, tick) = bar(m)?;
+            Some((
+                m.structure.clone(),
+                ci(&m.structure),
+                per(bytes),
+                tick.map(per),
+            ))
         })
-        .collect();
+        .collect()
+}
+
+fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
+    let Some((mesh, tri)) = largest(r, "torus") else {
+        return;
+    };
+    let rows = construction_bars(r, mesh, tri, ci, |m| m.bytes.map(|b| (b, m.declared_bytes)));
+    let _ = write!(h, "<h2>Memory per triangle ({mesh})</h2><div class=read><b>How to read it.</b> Bars: heap bytes the built structure holds, divided by the number of triangles, geometry included, counted in a build of its own by one rule for every structure: each block counts for the bytes glibc's <code>malloc_usable_size</code> gives it (the request rounded up to glibc's 16-byte steps, at least 24; not the 8-byte size field glibc keeps in front of each block). The Rust structures' blocks are counted by the lab's global allocator, the C++ baselines' (OpenMesh, CGAL) by the lab's global <code>operator new</code> and <code>delete</code>, each counting the measuring thread's blocks only. Black tick: the bytes its containers should take by their lengths (<code>heap_bytes()</code>; for a C++ baseline, its records as the library lays them out); a gap between bar and tick is the allocator's rounding or memory not accounted. The second chart: the peak during that build, the structure's own construction (for a C++ baseline, the library's, without the lab's checks before it).</div>{}", svg::bars("bytes per triangle", "B", &rows));
+    let peak = construction_bars(r, mesh, tri, ci, |m| m.peak_bytes.map(|b| (b, None)));
     h.push_str(&svg::bars(
         "peak bytes per triangle during construction",
         "B",
@@ -509,7 +498,7 @@ fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
 }
 
 fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
-    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; OpenMesh is timed as its documentation builds a mesh (<code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>), without the lab's up-front checks. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and OpenMesh share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
+    h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; the C++ baselines are timed as their documentation builds a mesh (OpenMesh and CGAL's <code>Surface_mesh</code>: <code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>; <code>Polyhedron_3</code>: its incremental builder), without the lab's up-front checks, which run before the clock and tell each library the exact numbers of vertices, edges and faces to reserve (open meshes and polygons included). Nothing else is timed: no structure's destructor (each build is freed after the clock), and not the tables from id to handle the lab adds to a <code>Polyhedron_3</code> for its queries. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and the C++ baselines share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
     for fam in ["torus", "grid"] {
         let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
         h.push_str(&plot::loglog(

@@ -15,9 +15,13 @@ use crate::results::{Measurement, Status, Subject};
 use crate::timing::{median, time, Budget, Timing};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
-use topolab_structures::{BoundaryCurves, Input, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{
+    BoundaryCurves, BuildFacts, Constructed, Input, MeshTopology, NativeKernels, Operator,
+    PolygonSoup,
+};
 
-/// Reads the process's heap use (the report binary's counting allocator) and page faults.
+/// Reads the process's heap use (the report binary's counting allocator, which counts the C++
+/// baselines' blocks by the same rule as Rust's) and page faults.
 pub trait MemoryMeter {
     /// Bytes allocated now.
     fn current(&self) -> usize;
@@ -43,6 +47,52 @@ pub trait MemoryMeter {
     /// default): builds are timed by the wall clock.
     fn thread_cpu_ns(&self) -> Option<u64> {
         None
+    }
+}
+
+/// How the harness builds `M` from a soup, decided before any clock: a baseline's own
+/// construction ([`NativeKernels::construction`]) told the facts its
+/// [`NativeKernels::admit`] found, else [`MeshTopology::from_soup`]. [`Builder::build`] is what
+/// a clock covers: the library's construction alone for a baseline; the caller finishes the
+/// structure ([`Constructed::finish`]) and drops it after the clock, as it does for every
+/// structure.
+pub struct Builder<'a, M: MeshTopology> {
+    soup: &'a PolygonSoup,
+    native: Option<(&'a dyn NativeKernels<M>, BuildFacts<'a>)>,
+}
+
+impl<'a, M: MeshTopology> Builder<'a, M> {
+    /// Prepares the builds of `M` from `soup`: for a baseline, its [`NativeKernels::admit`]
+    /// (the lab's checks, whose refusal is the structure's, and the facts); nothing for the
+    /// lab's structures, whose checks are part of their construction.
+    pub fn new(soup: &'a PolygonSoup) -> topolab_structures::Result<Self> {
+        let native = match M::native() {
+            Some(kernels) => Some((kernels, kernels.admit(soup)?)),
+            None => None,
+        };
+        Ok(Self { soup, native })
+    }
+
+    /// Whether the builds are the baseline's own construction.
+    pub fn is_native(&self) -> bool {
+        self.native.is_some()
+    }
+
+    /// One build, the part a clock covers.
+    pub fn build(&self) -> topolab_structures::Result<Constructed<M>> {
+        match &self.native {
+            Some((kernels, facts)) => kernels.construction(facts),
+            None => M::from_soup(self.soup).map(Constructed::ready),
+        }
+    }
+
+    /// The message for a build that failed after the first one succeeded.
+    fn failure(&self, e: topolab_structures::Error) -> String {
+        if self.is_native() {
+            format!("native kernel failed: {e}")
+        } else {
+            format!("a later build failed: {e}")
+        }
     }
 }
 
@@ -175,23 +225,30 @@ pub fn measure_structure<M: MeshTopology>(
     };
     let n = case.soup.num_faces();
     // Construction: memory first (one build, counted by the allocator and kept for the
-    // queries), then the timed builds with nothing counted.
+    // queries), then the timed builds with nothing counted. The build is the one the clock
+    // times, a baseline's own construction included (not `from_soup`, whose checks and edge
+    // analysis are the lab's), and its finishing step, whose tables the structure keeps.
     let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
+    let refused = |mut cons: Measurement, e: topolab_structures::Error, out: &mut Vec<_>| {
+        cons.status = Status::Refused;
+        cons.note = Some(format!("{}: {e}", e.kind()));
+        out.push(cons);
+        Ok(())
+    };
+    let builder = match Builder::<M>::new(case.soup) {
+        Ok(builder) => builder,
+        Err(e) => return refused(cons, e, out),
+    };
     meter.counting(true);
     meter.reset_peak();
     let before = meter.current();
-    let built = M::from_soup(case.soup);
+    let built = builder.build().and_then(Constructed::finish);
     let peak = meter.peak().saturating_sub(before);
     let held = meter.current().saturating_sub(before);
     meter.counting(false);
     let mut m = match built {
         Ok(m) => m,
-        Err(e) => {
-            cons.status = Status::Refused;
-            cons.note = Some(format!("{}: {e}", e.kind()));
-            out.push(cons);
-            return Ok(());
-        }
+        Err(e) => return refused(cons, e, out),
     };
     cons.bytes = Some(held as u64);
     cons.peak_bytes = Some(peak as u64);
@@ -203,7 +260,7 @@ pub fn measure_structure<M: MeshTopology>(
         min_reps: 3,
         max_reps: plan.max_reps.min(7),
     };
-    let builds = time_construction::<M>(case.soup, construction_budget, meter)
+    let builds = time_construction(&builder, construction_budget, meter)
         .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?;
     let faces = n.max(1);
     cons.native = builds.native;
@@ -346,7 +403,9 @@ pub fn measure_structure<M: MeshTopology>(
 /// the allocator returned its free memory to the kernel, so it faults in every page it
 /// touches. The page faults of each are counted around the builds, and each build is timed in
 /// the thread's CPU time when the meter knows it ([`MemoryMeter::thread_cpu_ns`]; page faults
-/// are system time, so they count).
+/// are system time, so they count). Only [`Builder::build`] is timed: each structure is
+/// finished and dropped after the clock (a destructor that frees a million records is not
+/// construction).
 struct Builds {
     /// The warm builds.
     warm: Timing,
@@ -364,33 +423,28 @@ struct Builds {
 /// the kernel's, not the structure's.
 const COLD_BUILDS: usize = 3;
 
-/// Times the construction of `M` from `soup` (see [`Builds`]): the baseline's own
-/// construction when it has one, [`MeshTopology::from_soup`] otherwise. Fails when a build
-/// fails or builds a different number of faces than the first.
+/// Times the builds of `builder` (see [`Builds`]): the baseline's own construction when it has
+/// one, [`MeshTopology::from_soup`] otherwise. Fails when a build fails or builds a different
+/// number of faces than the first.
 fn time_construction<M: MeshTopology>(
-    soup: &PolygonSoup,
+    builder: &Builder<M>,
     budget: Budget,
     meter: &dyn MemoryMeter,
 ) -> Result<Builds, String> {
-    let native = M::native();
-    let build = || -> Result<(usize, bool), String> {
-        if let Some(built) = native.and_then(|k| k.construction(soup)) {
-            return built
-                .map(|m| (m.num_faces(), true))
-                .map_err(|e| format!("native kernel failed: {e}"));
-        }
-        M::from_soup(soup)
-            .map(|m| (m.num_faces(), false))
-            .map_err(|e| format!("a later build failed: {e}"))
+    // After the clock: the structure finished, its faces counted (the check that each build
+    // is whole), and the structure dropped.
+    let faces = |built: topolab_structures::Result<Constructed<M>>| {
+        built
+            .and_then(Constructed::finish)
+            .map(|m| m.num_faces())
+            .map_err(|e| builder.failure(e))
     };
     let warm_up = Instant::now();
-    let first = build()?;
+    let built = builder.build();
+    let long = warm_up.elapsed() > budget.time;
+    let first = faces(built)?;
     // A build longer than the budget is timed once (its work dominates its noise).
-    let min_reps = if warm_up.elapsed() > budget.time {
-        1
-    } else {
-        budget.min_reps
-    };
+    let min_reps = if long { 1 } else { budget.min_reps };
     let runs = |cold: bool, max_reps: usize| -> Result<(Timing, Option<u64>), String> {
         let (mut ns, mut faults) = (Vec::new(), Vec::new());
         let start = Instant::now();
@@ -402,7 +456,7 @@ fn time_construction<M: MeshTopology>(
             }
             let before = meter.minor_faults();
             let (cpu, t) = (meter.thread_cpu_ns(), Instant::now());
-            let built = std::hint::black_box(build()?);
+            let built = std::hint::black_box(builder.build());
             let wall = t.elapsed().as_nanos() as u64;
             ns.push(match (cpu, meter.thread_cpu_ns()) {
                 (Some(a), Some(b)) => b.saturating_sub(a),
@@ -411,9 +465,10 @@ fn time_construction<M: MeshTopology>(
             if let (Some(a), Some(b)) = (before, meter.minor_faults()) {
                 faults.push(b.saturating_sub(a) as f64);
             }
+            let built = faces(built)?;
             if built != first {
                 return Err(format!(
-                    "build {} gave {built:?}, the first gave {first:?}",
+                    "build {} has {built} faces, the first had {first}",
                     ns.len()
                 ));
             }
@@ -429,7 +484,7 @@ fn time_construction<M: MeshTopology>(
         warm_faults,
         cold,
         cold_faults,
-        native: first.1,
+        native: builder.is_native(),
     })
 }
 

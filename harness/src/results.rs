@@ -234,8 +234,8 @@ pub struct Measurement {
     pub reps: usize,
     /// The kernel's checksum (decimal u64, or the float result of a workload).
     pub checksum: Option<String>,
-    /// Heap bytes the built structure holds (construction only; allocator-measured, or the
-    /// C++ allocator's for baselines).
+    /// Heap bytes the built structure holds (construction only), counted by the allocator
+    /// with one rule for Rust's and C++'s blocks (their usable sizes).
     pub bytes: Option<u64>,
     /// Peak heap bytes during construction, above what was allocated before.
     pub peak_bytes: Option<u64>,

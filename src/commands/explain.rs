@@ -79,7 +79,7 @@ fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
     let (soup, label) = mesh_or_tetrahedron(mesh, grids_only, |sample| {
         let text = registry::visit(name, ExplainVisit(sample, String::new()));
         let text = text.and_then(Result::ok).unwrap_or_default();
-        limits::growing_text(&text) + limits::outside_rust(name, sample)
+        limits::growing_text(&text)
     })?;
     registry::visit(name, ExplainVisit(&soup, format!("{name} for {label}\n\n")))
         .ok_or_else(|| unknown_structure(name))?

@@ -2,7 +2,6 @@
 //! through a structure.
 
 use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
-use crate::limits;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
 use topolab_structures::summary::{summarize, Summary};
@@ -35,7 +34,7 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
     }
     let soup = load_mesh(spec, |sample| {
         summary_of(structure, sample);
-        limits::outside_rust(structure, sample)
+        0
     })?;
     refuse_empty(spec, &soup)?;
     let (summary, non_manifold_vertices) =

@@ -21,7 +21,7 @@ use topolab_harness::changing::{
 };
 use topolab_harness::skips::{self, Skip};
 use topolab_structures::algorithms::changing::Changing;
-#[cfg(has_openmesh)]
+#[cfg(any(has_openmesh, has_cgal))]
 use topolab_structures::MeshTopology;
 use topolab_structures::{Cost, MeshEdit, PolygonSoup};
 
@@ -165,7 +165,8 @@ fn timed_openmesh(
     )
 }
 
-/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction.
+/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction (told
+/// the exact counts, as OpenMesh's).
 #[cfg(has_cgal)]
 fn timed_cgal<S: crate::cgal::CgalStructure>(
     soup: &PolygonSoup,
@@ -174,7 +175,7 @@ fn timed_cgal<S: crate::cgal::CgalStructure>(
 ) -> Result<(f64, MeshChecksum), String> {
     time(
         runs,
-        || crate::cgal::Cgal::<S>::build_native(soup, soup.num_corners() / 2),
+        || <crate::cgal::Cgal<S> as MeshTopology>::from_soup(soup),
         work,
         mesh_checksum,
     )

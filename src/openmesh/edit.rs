@@ -52,7 +52,7 @@
 //! | weld vertices | the faces around `b` and the neighbours of both (checks), the halfedges into `b` renamed, one or two boundary edge pairs merged | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |
 
-use super::{status, OpenMesh};
+use super::OpenMesh;
 use crate::foreign::edit::{edit_api, impl_mesh_edit, ForeignEdit};
 use topolab_structures::Result;
 
@@ -89,13 +89,7 @@ impl ForeignEdit for OpenMesh {
     }
 
     fn refresh_counts(&mut self) -> Result<()> {
-        let mut summary = [0u32; 4];
-        // SAFETY: `raw` is live; `summary` has the 4 slots the shim fills.
-        status("topolab_om_summary", unsafe {
-            super::ffi::topolab_om_summary(self.raw.as_ptr(), summary.as_mut_ptr())
-        })?;
-        (self.vertices, self.edges, self.faces) = (summary[1], summary[2], summary[3]);
-        Ok(())
+        self.read_counts()
     }
 }
 

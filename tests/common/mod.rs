@@ -7,14 +7,13 @@
 pub mod run;
 
 use glam::DVec3;
-use std::sync::{RwLock, RwLockReadGuard, RwLockWriteGuard};
 use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
 use topolab_harness::kernels::{sample_queries, Kernel};
 use topolab_harness::measure::{
     cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
 };
-use topolab_harness::results::Subject;
+use topolab_harness::results::{Measurement, Subject};
 use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
@@ -145,24 +144,8 @@ pub fn report_skip(what: &str, why: &str) {
     let _ = writeln!(std::io::stderr(), "SKIPPED {what}: {why}");
 }
 
-/// The heap measurement of the C++ baselines (glibc `mallinfo2`) counts every thread's
-/// allocations, so it runs alone ([`heap_alone`]); every other test of a baseline's test file
-/// runs in parallel with the others ([`heap_shared`]), as the baselines must be usable from
-/// parallel threads.
-static HEAP: RwLock<()> = RwLock::new(());
-
-/// A test that may run beside others (it measures no heap).
-pub fn heap_shared() -> RwLockReadGuard<'static, ()> {
-    HEAP.read().unwrap_or_else(|poisoned| poisoned.into_inner())
-}
-
-/// A test that measures a C++ baseline's heap: no other test of its file runs meanwhile.
-pub fn heap_alone() -> RwLockWriteGuard<'static, ()> {
-    HEAP.write()
-        .unwrap_or_else(|poisoned| poisoned.into_inner())
-}
-
-/// A memory meter that measures nothing (the heap is measured alone, in its own test).
+/// A memory meter that measures nothing (the heap is measured in tests of its own, with the
+/// lab's allocator: [`construction_cell`]).
 pub struct NoMeter;
 impl MemoryMeter for NoMeter {
     fn current(&self) -> usize {
@@ -241,6 +224,18 @@ pub fn smoothing_sum<M: MeshTopology>(soup: &PolygonSoup, reference: &M) -> f64 
         .sum()
 }
 
+/// A plan of few, short repetitions (the tests check what is measured, not how fast); `light`,
+/// the construction and the R00 sweep only.
+fn small_plan(light: bool) -> Plan {
+    Plan {
+        cell_budget: Duration::from_millis(1),
+        cell_max: Duration::from_secs(10),
+        min_reps: 1,
+        max_reps: 2,
+        light,
+    }
+}
+
 /// Checks that the harness reaches a baseline's own loops through `MeshTopology::native`:
 /// construction, sweeps, vertex and face samples and workloads run natively, and their
 /// checksums are the lab's.
@@ -253,13 +248,7 @@ pub fn harness_times_native_loops<M: MeshTopology>() {
         soup: &soup,
         queries: &queries,
     };
-    let plan = Plan {
-        cell_budget: Duration::from_millis(1),
-        cell_max: Duration::from_secs(10),
-        min_reps: 1,
-        max_reps: 2,
-        light: false,
-    };
+    let plan = small_plan(false);
     let (mut out, mut est) = (Vec::new(), Estimator::default());
     measure_structure::<M>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
     assert_eq!(
@@ -280,6 +269,25 @@ pub fn harness_times_native_loops<M: MeshTopology>() {
     }
     measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
     cross_check(&out, "torus").unwrap();
+}
+
+/// The construction cell of `M` on `soup` as the report measures it, its heap counted by the
+/// lab's allocator (the C++ baselines' blocks too, on this thread only, so tests measure in
+/// parallel), with a light plan: the construction and one sweep.
+pub fn construction_cell<M: MeshTopology>(soup: &PolygonSoup) -> Measurement {
+    let queries = sample_queries(soup, 8, 3);
+    let case = MeshCase {
+        name: "mesh",
+        family: "torus",
+        soup,
+        queries: &queries,
+    };
+    let plan = small_plan(true);
+    let (mut out, mut est) = (Vec::new(), Estimator::default());
+    measure_structure::<M>(&case, &plan, &topolab::ALLOCATOR, &mut est, &mut out).unwrap();
+    out.into_iter()
+        .find(|m| m.kernel == Kernel::Construction)
+        .expect("a construction cell")
 }
 
 /// Checks a baseline's native workloads on every mesh of [`baseline_meshes`] against what the

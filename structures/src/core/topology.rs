@@ -411,18 +411,31 @@ pub trait MeshTopology: Sized {
     }
 }
 
-/// The kernels of a baseline behind an FFI boundary (OpenMesh), which the harness times instead
-/// of its own: per-query calls across the FFI would measure the FFI instead of the library, so
-/// whole loops run on the other side and return the harness's checksum. Reached through
-/// [`MeshTopology::native`].
+/// The kernels of a baseline behind an FFI boundary (OpenMesh, CGAL), which the harness times
+/// instead of its own: per-query calls across the FFI would measure the FFI instead of the
+/// library, so whole loops run on the other side and return the harness's checksum. Reached
+/// through [`MeshTopology::native`].
 ///
-/// Each kernel answers `None` when the baseline has no loop of its own for that case (the
+/// Construction comes in three steps, so that the harness's clock covers the library's own
+/// construction and nothing else: [`NativeKernels::admit`] before the clock (the lab's checks
+/// and the counts the library reserves for), [`NativeKernels::construction`] timed, and
+/// [`Constructed::finish`] after the clock (what the lab adds for its queries). The structure
+/// is dropped after the clock too, like every structure's.
+///
+/// The other kernels answer `None` when the baseline has no loop of its own for that case (the
 /// harness then runs its generic kernel) and `Some(Err(..))` when the library failed inside
 /// the loop: a loud error of the measurement, never a silent zero.
 pub trait NativeKernels<M> {
-    /// Construction the way the baseline's own API does it (OpenMesh: `reserve`, `add_vertex`,
-    /// `add_face`, without the lab's up-front manifold checks, which are not OpenMesh's cost).
-    fn construction(&self, soup: &PolygonSoup) -> Option<Result<M>>;
+    /// The lab's checks of `soup` that [`MeshTopology::from_soup`] makes before the library
+    /// builds (so that a soup is refused as `from_soup` refuses it, with the same typed error),
+    /// and the facts the construction is told ([`BuildFacts`]). Not timed.
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>>;
+
+    /// Construction the way the baseline's own API does it (OpenMesh: `reserve` with the
+    /// facts' counts, `add_vertex`, `add_face`), without the lab's checks, which are not the
+    /// library's cost: what the harness times. A face the library refuses is an error named
+    /// the lab's way.
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<M>>;
 
     /// A whole sweep of `op` over every element of `mesh`, folded into the harness's checksum.
     fn sweep(&self, mesh: &M, op: Operator) -> Option<Result<u64>>;
@@ -435,4 +448,92 @@ pub trait NativeKernels<M> {
     /// An application workload, returning its result. Takes `&mut M` because a baseline may
     /// keep its results (normals) in the mesh; running it twice must give the same result.
     fn workload(&self, mesh: &mut M, workload: Workload) -> Option<Result<f64>>;
+}
+
+/// What a baseline's construction is told about its soup before the clock starts: the soup,
+/// checked ([`PolygonSoup::check`]: every index in range, so a construction given these facts
+/// needs no check of its own before handing the indices to a library), and its vertex, edge
+/// and face counts, the numbers a library's `reserve` takes. The lab's own structures build
+/// from the soup alone, which has the same facts: its vertex and face counts, and the edges
+/// they count in their edge analysis, which they need for their links anyway and which is
+/// timed as part of their construction. A library finds edges its own way (`add_face`) and
+/// needs their number only to reserve, so it is told it ([`NativeKernels::admit`] takes it
+/// from the same analysis, exact for open meshes and polygons too).
+#[derive(Copy, Clone, Debug)]
+pub struct BuildFacts<'a> {
+    soup: &'a PolygonSoup,
+    edges: u32,
+}
+
+impl<'a> BuildFacts<'a> {
+    /// The facts of `soup` with `edges` edges (at most `u32::MAX` is kept): fails when the
+    /// soup does not pass [`PolygonSoup::check`]. The edge count is a reservation, not a
+    /// promise the library relies on: exact from the lab's edge analysis
+    /// ([`crate::Connectivity::num_edges`]), anything else from a caller that wants to see a
+    /// library grow its arrays.
+    pub fn new(soup: &'a PolygonSoup, edges: usize) -> Result<Self> {
+        soup.check()?;
+        Ok(Self {
+            soup,
+            edges: u32::try_from(edges).unwrap_or(u32::MAX),
+        })
+    }
+
+    /// The soup, checked.
+    pub fn soup(&self) -> &'a PolygonSoup {
+        self.soup
+    }
+
+    /// Its number of vertices.
+    pub fn vertices(&self) -> u32 {
+        // `check` refuses counts that do not fit `u32`.
+        self.soup.num_vertices() as u32
+    }
+
+    /// Its number of (undirected) edges, as given to [`BuildFacts::new`].
+    pub fn edges(&self) -> u32 {
+        self.edges
+    }
+
+    /// Its number of faces.
+    pub fn faces(&self) -> u32 {
+        self.soup.num_faces() as u32
+    }
+}
+
+/// A structure as its timed construction left it ([`NativeKernels::construction`], or
+/// [`Constructed::ready`] around a lab structure): it answers no query before
+/// [`Constructed::finish`], which runs after the clock what the lab adds to the library's
+/// structure for its queries (CGAL's `Polyhedron_3`: the tables from id to handle; for every
+/// baseline, reading its counts), and hands the structure over. Dropping it frees the
+/// structure.
+pub struct Constructed<M> {
+    mesh: M,
+    finish: fn(&mut M) -> Result<()>,
+}
+
+impl<M> Constructed<M> {
+    /// `mesh`, which `finish` makes ready for queries.
+    pub fn new(mesh: M, finish: fn(&mut M) -> Result<()>) -> Self {
+        Self { mesh, finish }
+    }
+
+    /// `mesh`, ready for queries already (the lab's structures, built by
+    /// [`MeshTopology::from_soup`]).
+    pub fn ready(mesh: M) -> Self {
+        Self::new(mesh, |_| Ok(()))
+    }
+
+    /// Runs the finishing step; the structure, ready for queries.
+    pub fn finish(self) -> Result<M> {
+        let Self { mut mesh, finish } = self;
+        finish(&mut mesh)?;
+        Ok(mesh)
+    }
+}
+
+impl<M> std::fmt::Debug for Constructed<M> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Constructed { .. }")
+    }
 }
