@@ -6,6 +6,7 @@
 //! |---|---|---|---|---|
 //! | OpenMesh | `openmesh/shim.cpp`, `openmesh/decimate.cpp` | `libOpenMeshCore` | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
 //! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//! | Qhull (reentrant C library) | `qhull/shim.c` | `libqhull_r` | `has_qhull` | `TOPOLAB_NO_QHULL=1` |
 //!
 //! A missing baseline (or one switched off, to simulate that) is left out with a warning that
 //! says how to get it; the package builds without it.
@@ -22,6 +23,10 @@ const OPENMESH_HOW_TO_GET: &str = "install it with `apt-get install libopenmesh-
 (Debian/Ubuntu) or `bash .ci/install-deps`, then rebuild";
 /// How a user gets CGAL.
 const CGAL_HOW_TO_GET: &str = "install it with `apt-get install libcgal-dev` (Debian/Ubuntu) \
+or `bash .ci/install-deps`, then rebuild";
+
+/// How a user gets Qhull's reentrant library.
+const QHULL_HOW_TO_GET: &str = "install it with `apt-get install libqhull-dev` (Debian/Ubuntu) \
 or `bash .ci/install-deps`, then rebuild";
 
 /// The translation units of CGAL's shim, the slowest first (so the pool starts it first).
@@ -56,9 +61,11 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_openmesh)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal_decimate)");
+    println!("cargo::rustc-check-cfg=cfg(has_qhull)");
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
+    println!("cargo::rerun-if-changed=qhull");
     let mut shims = Vec::new();
     if switched_off("TOPOLAB_NO_OPENMESH", "the OpenMesh baseline") {
     } else if let Some(include_dirs) = find_openmesh() {
@@ -73,6 +80,12 @@ fn main() {
         println!(
             "cargo::warning=CGAL not found, building without the CGAL baselines: {CGAL_HOW_TO_GET}"
         );
+    }
+    if switched_off("TOPOLAB_NO_QHULL", "the in-process Qhull") {
+    } else if let Some(include_dirs) = find_qhull() {
+        shims.push(qhull_shim(&include_dirs));
+    } else {
+        println!("cargo::warning=Qhull's reentrant library not found, building without the in-process Qhull (the report's hull section then has no Qhull): {QHULL_HOW_TO_GET}");
     }
     let objects = compile_in_parallel(&shims);
     for (shim, objects) in shims.iter().zip(objects) {
@@ -252,5 +265,50 @@ fn cgal_shim(include_dir: &Path) -> Shim {
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],
         cfg: "has_cgal",
+    }
+}
+
+/// The include directories of Qhull's reentrant library (`libqhull_r/libqhull_r.h`) when it is
+/// installed with its pkg-config file `qhull_r` (Debian's libqhull-dev has it), which also says
+/// where to link from.
+fn find_qhull() -> Option<Vec<PathBuf>> {
+    let header = "libqhull_r/libqhull_r.h";
+    let library = pkg_config::Config::new()
+        .cargo_metadata(false)
+        .env_metadata(true)
+        .probe("qhull_r");
+    let mut dirs = library
+        .as_ref()
+        .map(|l| l.include_paths.clone())
+        .unwrap_or_default();
+    dirs.push(PathBuf::from("/usr/include"));
+    watch_for(&dirs, header);
+    let library = library.ok()?;
+    if !dirs.iter().any(|d| d.join(header).exists()) {
+        return None;
+    }
+    for dir in &library.link_paths {
+        println!("cargo::rustc-link-search=native={}", dir.display());
+    }
+    Some(library.include_paths)
+}
+
+/// The shim over `libqhull_r`: C, because Qhull leaves an error by `longjmp`, which would skip
+/// C++ destructors.
+fn qhull_shim(include_dirs: &[PathBuf]) -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .include("qhull")
+        .includes(include_dirs)
+        .std("c11")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .warnings(true);
+    Shim {
+        library: "topolab_qhull_shim",
+        build,
+        sources: vec!["qhull/shim.c"],
+        links: vec!["qhull_r"],
+        cfg: "has_qhull",
     }
 }
