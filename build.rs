@@ -1,6 +1,6 @@
-//! Build script of the `topolab` package: finds the C++ baselines, compiles their C API shims
-//! with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our release code), links them,
-//! and sets a cfg per baseline:
+//! Build script of the `topolab` package: finds the baselines (C++ libraries, and Qhull's C
+//! library), compiles their C API shims with the `cc` crate at `-O3 -DNDEBUG` (the
+//! optimisation of our release code), links them, and sets a cfg per baseline:
 //!
 //! | baseline | shim | links | cfg | off switch |
 //! |---|---|---|---|---|

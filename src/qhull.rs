@@ -313,14 +313,9 @@ pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> Result<(), String> {
             set.shape, set.n, timed.seconds
         );
         let row = HullRow {
-            shape: set.shape.clone(),
-            n: set.n,
-            algorithm: ALGORITHM.into(),
-            seconds: timed.seconds,
-            timed_runs: timed.timed_runs,
             hull_vertices: timed.last.vertices.len(),
             vertex_checksum: Some(bench::vertex_checksum(timed.last.vertices.iter().copied())),
-            ..HullRow::default()
+            ..set.outside_row(ALGORITHM, &timed)
         };
         bench::insert_outside_row(rows, row);
     }

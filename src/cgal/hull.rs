@@ -88,13 +88,8 @@ pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> std::result::Result<(), Stri
             set.shape, set.n, timed.seconds
         );
         let row = HullRow {
-            shape: set.shape.clone(),
-            n: set.n,
-            algorithm: ALGORITHM.into(),
-            seconds: timed.seconds,
-            timed_runs: timed.timed_runs,
             hull_vertices: hull.vertices,
-            ..HullRow::default()
+            ..set.outside_row(ALGORITHM, &timed)
         };
         bench::insert_outside_row(rows, row);
     }

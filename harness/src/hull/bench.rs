@@ -210,6 +210,19 @@ impl PointSet {
             POINTS_SEED,
         ))
     }
+
+    /// The row of outside hull `algorithm` on these points, timed by `timed`; the caller adds
+    /// what its hull has (`hull_vertices`, ...).
+    pub fn outside_row<T>(&self, algorithm: &str, timed: &Warm<T>) -> HullRow {
+        HullRow {
+            shape: self.shape.clone(),
+            n: self.n,
+            algorithm: algorithm.into(),
+            seconds: timed.seconds,
+            timed_runs: timed.timed_runs,
+            ..HullRow::default()
+        }
+    }
 }
 
 /// The point sets of `rows` that the randomized algorithm ran on (every one: it runs every
