@@ -4,8 +4,8 @@
 //! `libqhull-dev`; [`version`] names the one linked) and the C shim `qhull/shim.c`, called the
 //! way SciPy's `scipy.spatial.ConvexHull` calls it (`scipy/spatial/_qhull.pyx`): the command
 //! [`COMMAND`], `qh_new_qhull` on the points as given, the hull's vertices those of its
-//! triangles. SciPy runs this same Qhull release (its bundled `qhull_r` 8.0.2, 2020.2), so the
-//! two build the same hull; the tests check it (`tests/qhull.rs`).
+//! triangles. SciPy 1.17 (the `.venv`'s) bundles the same Qhull release (`qhull_r` 8.0.2,
+//! 2020.2), so the two build the same hull; the tests check it (`tests/qhull.rs`).
 //!
 //! [`convex_hull`] runs Qhull once and returns the shim's clock: `qh_new_qhull` (build, merge,
 //! triangulate) and the walk that collects the vertex ids, the way the lab's hull algorithms
@@ -18,8 +18,9 @@
 //! The FFI is a wall: the shim is C, so nothing unwinds; Qhull's errors (the exit code of
 //! `qh_new_qhull`, which catches its own `longjmp`, and a `setjmp` of the shim's around
 //! `qh_getarea` after it) come back as status codes and become [`QhullError`], with what Qhull
-//! wrote to its error file. Qhull calls `exit` only on misuse the shim never commits (a command
-//! not starting with `qhull `, an error raised with no `setjmp` armed). State:
+//! wrote to its error file. Qhull calls `exit` only on a misuse, which the shim does not commit
+//! (a command not starting with `qhull `, an error raised with no `setjmp` armed), or on an
+//! error while it reports another. State:
 //! `libqhull_r` keeps all of its state in the `qhT` its caller passes ("All global variables
 //! for qhull are in qhT", `libqhull_r.h`), and the shim makes and frees one per call, so there
 //! is no process-wide state to set up and threads may call in parallel (`tests/qhull.rs` does).
