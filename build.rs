@@ -1,11 +1,12 @@
-//! Build script of the `topolab` package: compiles the C++ baselines and their C API shims with
-//! the `cc` crate at `-O3 -DNDEBUG` (the optimisation of our release code), links them, and
-//! sets a cfg per baseline:
+//! Build script of the `topolab` package: compiles the baselines (the C++ libraries and their
+//! C API shims, and Qhull's C shim) with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of
+//! our release code), links them, and sets a cfg per baseline:
 //!
 //! | baseline | compiled here | links | cfg | off switch |
 //! |---|---|---|---|---|
 //! | OpenMesh | its Core and the Decimater's `Observer.cc` from the pinned source tree (static), `openmesh/*.cpp` | nothing more | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
 //! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//! | Qhull (reentrant C library) | `qhull/shim.c` | `libqhull_r` | `has_qhull` | `TOPOLAB_NO_QHULL=1` |
 //! | the C++ heap counting, with either | `heap/heap.cpp` (global `operator new` and `delete`) | | `has_cpp_heap` | both of the above |
 //!
 //! OpenMesh is compiled from its own source, not linked from a system package: Debian's
@@ -48,6 +49,9 @@ const OPENMESH_STAMP: &str = ".topolab-source";
 /// The Tools sources the report's Decimater needs: `BaseDecimaterT` keeps an `Observer`,
 /// whose out-of-line members are here. The rest of OpenMeshTools is not used.
 const OPENMESH_TOOLS_UNITS: [&str; 1] = ["src/OpenMesh/Tools/Decimater/Observer.cc"];
+/// How a user gets Qhull's reentrant library.
+const QHULL_HOW_TO_GET: &str = "install it with `apt-get install libqhull-dev` (Debian/Ubuntu) \
+or `bash .ci/install-deps`, then rebuild";
 
 /// The translation units of CGAL's shim, the slowest first (so the pool starts it first).
 const CGAL_UNITS: [&str; 4] = [
@@ -88,14 +92,16 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_cgal)");
     println!("cargo::rustc-check-cfg=cfg(has_cgal_decimate)");
     println!("cargo::rustc-check-cfg=cfg(has_cpp_heap)");
+    println!("cargo::rustc-check-cfg=cfg(has_qhull)");
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=openmesh");
     println!("cargo::rerun-if-changed=cgal");
     println!("cargo::rerun-if-changed=heap");
+    println!("cargo::rerun-if-changed=qhull");
     println!("cargo::rerun-if-env-changed={OPENMESH_SOURCE_VARIABLE}");
     // The libraries in the order their sources are compiled (CGAL's first: the slowest) and
     // linked (each shim before the library it calls; the heap counting, which every C++ unit
-    // calls through operator new, last).
+    // calls through operator new, after the C++ ones).
     let mut shims = Vec::new();
     if switched_off("TOPOLAB_NO_CGAL", "the CGAL baselines") {
     } else if let Some(include_dir) = find_cgal() {
@@ -123,6 +129,12 @@ fn main() {
     }
     if !shims.is_empty() {
         shims.push(heap_library());
+    }
+    if switched_off("TOPOLAB_NO_QHULL", "the in-process Qhull") {
+    } else if let Some(include_dirs) = find_qhull() {
+        shims.push(qhull_shim(&include_dirs));
+    } else {
+        println!("cargo::warning=Qhull's reentrant library not found, building without the in-process Qhull (the report's hull section then has no Qhull): {QHULL_HOW_TO_GET}");
     }
     let objects = compile_in_parallel(&shims);
     for (shim, objects) in shims.iter().zip(objects) {
@@ -434,5 +446,50 @@ fn cgal_shim(include_dir: &Path) -> Shim {
         // rationals (CGAL uses GMP whenever its header is found; no MPFR function is used).
         links: vec!["gmp"],
         cfg: Some("has_cgal"),
+    }
+}
+
+/// The include directories of Qhull's reentrant library (`libqhull_r/libqhull_r.h`) when it is
+/// installed with its pkg-config file `qhull_r` (Debian's libqhull-dev has it), which also says
+/// where to link from.
+fn find_qhull() -> Option<Vec<PathBuf>> {
+    let header = "libqhull_r/libqhull_r.h";
+    let library = pkg_config::Config::new()
+        .cargo_metadata(false)
+        .env_metadata(true)
+        .probe("qhull_r");
+    let mut dirs = library
+        .as_ref()
+        .map(|l| l.include_paths.clone())
+        .unwrap_or_default();
+    dirs.push(PathBuf::from("/usr/include"));
+    watch_for(&dirs, header);
+    let library = library.ok()?;
+    if !dirs.iter().any(|d| d.join(header).exists()) {
+        return None;
+    }
+    for dir in &library.link_paths {
+        println!("cargo::rustc-link-search=native={}", dir.display());
+    }
+    Some(library.include_paths)
+}
+
+/// The shim over `libqhull_r`: C, because Qhull leaves an error by `longjmp`, which would skip
+/// C++ destructors.
+fn qhull_shim(include_dirs: &[PathBuf]) -> Shim {
+    let mut build = cc::Build::new();
+    build
+        .include("qhull")
+        .includes(include_dirs)
+        .std("c11")
+        .opt_level(3)
+        .define("NDEBUG", None)
+        .warnings(true);
+    Shim {
+        library: "topolab_qhull_shim",
+        build,
+        sources: vec!["qhull/shim.c"],
+        links: vec!["qhull_r"],
+        cfg: "has_qhull",
     }
 }

@@ -2,12 +2,12 @@
 //!
 //! The lab's command-line tool and everything that ties the crates together: the registry of
 //! every structure (the ones of `topolab-structures` plus the C++ baselines OpenMesh and CGAL,
-//! when compiled in) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
+//! when compiled in; Qhull, in-process, for the hull section) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
 //! with the helpers of [`input`], [`limits`] and [`output`]); [`extend`] runs the report with
 //! structures of other crates added.
 #![deny(missing_docs)]
-// Only the FFI modules of the C++ baselines and the allocator may use `unsafe` (each allows it
-// for itself alone).
+// Only the FFI modules of the baselines (C++ and Qhull's C) and the allocator may use `unsafe`
+// (each allows it for itself alone).
 #![deny(unsafe_code)]
 
 pub mod cli;
@@ -35,6 +35,9 @@ mod foreign;
 #[cfg(has_openmesh)]
 #[allow(unsafe_code)]
 pub mod openmesh;
+#[cfg(has_qhull)]
+#[allow(unsafe_code)]
+pub mod qhull;
 pub mod registry;
 
 /// What to do when the OpenMesh baseline is not compiled in (OpenMesh's source was missing at
@@ -64,3 +67,13 @@ Debian/Ubuntu, or `bash .ci/install-deps`), unset TOPOLAB_NO_CGAL, and rebuild";
 
 /// `true` when this build includes the CGAL baselines.
 pub const HAS_CGAL: bool = cfg!(has_cgal);
+
+/// What to do when the in-process Qhull is not compiled in (Qhull's reentrant library was
+/// missing at build time, or `TOPOLAB_NO_QHULL=1` was set): the report's hull section then has
+/// no Qhull.
+pub const QHULL_MISSING: &str = "the in-process Qhull is not compiled in: install Qhull's \
+reentrant library (`apt-get install libqhull-dev` on Debian/Ubuntu, or `bash .ci/install-deps`), \
+unset TOPOLAB_NO_QHULL, and rebuild";
+
+/// `true` when this build includes the in-process Qhull.
+pub const HAS_QHULL: bool = cfg!(has_qhull);

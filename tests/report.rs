@@ -110,7 +110,33 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
     assert!(json["machine"]["cpu"].is_string());
     assert!(json["probe"]["read_bytes_per_s"].as_f64().unwrap() > 0.0);
     assert!(!json["fits"].as_array().unwrap().is_empty());
+    // The hull section: every hull timed warm, by the median of its timed runs; Qhull
+    // in-process on every point set of the randomized algorithm, with its vertices.
+    let hull = json["hull"].as_array().unwrap();
+    assert!(hull.iter().all(|r| r["timed_runs"].as_u64().unwrap() >= 1));
+    let randomized: Vec<_> = hull
+        .iter()
+        .filter(|r| r["algorithm"] == "randomized")
+        .collect();
+    let qhull: Vec<_> = hull.iter().filter(|r| r["algorithm"] == "qhull").collect();
+    assert!(!randomized.is_empty());
+    if topolab::HAS_QHULL {
+        assert_eq!(qhull.len(), randomized.len());
+        for (q, r) in qhull.iter().zip(&randomized) {
+            assert_eq!(
+                (&q["n"], &q["vertex_checksum"]),
+                (&r["n"], &r["vertex_checksum"])
+            );
+        }
+        assert!(json["qhull"].as_str().unwrap().contains("i Qt"));
+    } else {
+        assert!(qhull.is_empty() && json["qhull"].is_null());
+    }
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert_eq!(
+        html.contains("<code>qhull</code>: Qhull 2020.2"),
+        topolab::HAS_QHULL
+    );
     assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
     assert!(html.contains("× limit") && html.contains("worst × limit"));
     assert!(html.contains("cold − warm (page faults)"));

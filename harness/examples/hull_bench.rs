@@ -1,6 +1,7 @@
 //! Times the three hull algorithms of the lecture on 3D convex hulls against n, next to Qhull
-//! in the same run, with the quantities of the lecture's analysis: faces created against the
-//! expected bound 6n − 20, `Volume6` tests against each algorithm's bound (gift wrapping
+//! and CGAL's `convex_hull_3` (the report's outside hulls, when compiled in) on the same
+//! points, with the quantities of the lecture's analysis: faces created against the expected
+//! bound 6n − 20, `Volume6` tests against each algorithm's bound (gift wrapping
 //! n·h, incremental n², randomized n lg n), the conflict-list work Σ|P(e)| against n lg n,
 //! the share of tests the floating-point filter left to exact arithmetic, the peak heap per
 //! point, and at the end the fitted exponents per algorithm and the cost of one visibility
@@ -11,16 +12,15 @@
 //! SHAPE: cube, ball, sphere (default ball and sphere). n runs 1k, 10k, 100k, 1M up to
 //! `--max` (default 1M). Gift wrapping (O(n·h)) and the plain incremental algorithm (O(n²))
 //! run the next n while its predicted `Volume6` tests are at most [`bench::MAX_TESTS`]; the
-//! randomized one always goes on. Each time is the best of 3 runs (1 run from 100k on, or
-//! after a first run over a second) of [`bench::benchmark_row`], Qhull's the
-//! best of as many `ConvexHull` calls; Qhull is skipped without the workspace's `.venv` with
-//! SciPy. Columns: `×Qhull` the time over Qhull's at the same n, `/bound` the `Volume6`
-//! tests over the algorithm's bound, `ΣP/nlgn` Σ|P(e)| over n lg n, `exact` the tests
+//! randomized one always goes on. Each time is the median of [`bench::timed_runs`] runs after
+//! a warm-up run ([`bench::benchmark_row`]; the peak heap is counted in the warm-up), Qhull's
+//! and CGAL's the same way, in-process (`topolab::registry::add_outside_hulls`; a build without
+//! Qhull says so). Columns: `×Qhull` the time over Qhull's at the same n, `/bound` the
+//! `Volume6` tests over the algorithm's bound, `ΣP/nlgn` Σ|P(e)| over n lg n, `exact` the tests
 //! decided exactly, `B/pt` peak heap bytes per point.
 
-use std::path::Path;
 use std::time::Instant;
-use topolab_harness::hull::{bench, qhull};
+use topolab_harness::hull::bench;
 use topolab_structures::hull::plane::{FacePlane, TestCount};
 use topolab_structures::hull::predicates::volume6;
 use topolab_structures::hull::{random_points, Shape};
@@ -41,20 +41,40 @@ fn main() {
     if shapes.is_empty() {
         shapes = vec!["ball".into(), "sphere".into()];
     }
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-    let python = qhull::python(root);
-    if python.is_none() {
-        println!(
-            "Qhull SKIPPED: no {}/.venv/bin/python with scipy",
-            root.display()
-        );
+    if !topolab::HAS_QHULL {
+        println!("Qhull SKIPPED: {}", topolab::QHULL_MISSING);
     }
+    let mut rows = Vec::new();
+    for shape_name in &shapes {
+        let shape = Shape::from_name(shape_name).unwrap();
+        let sizes: Vec<usize> = [1_000usize, 10_000, 100_000, 1_000_000]
+            .into_iter()
+            .filter(|&n| n <= max)
+            .collect();
+        let run = bench::run(
+            shape,
+            shape_name,
+            &sizes,
+            bench::MAX_TESTS,
+            Some(&topolab::ALLOCATOR),
+            |row| {
+                eprintln!(
+                    "{} {} {}: {:.4} s",
+                    row.shape, row.n, row.algorithm, row.seconds
+                )
+            },
+        )
+        .expect("hull benchmark");
+        rows.extend(run);
+    }
+    topolab::registry::add_outside_hulls(&mut rows).expect("outside hulls");
     println!(
-        "{:<7} {:>8} {:<11} {:>9} {:>7} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
+        "{:<7} {:>8} {:<18} {:>9} {:>4} {:>7} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
         "shape",
         "n",
         "algorithm",
         "seconds",
+        "runs",
         "×Qhull",
         "created",
         "/(6n-20)",
@@ -65,58 +85,41 @@ fn main() {
         "exact",
         "B/pt"
     );
-    let mut rows = Vec::new();
-    for shape_name in &shapes {
-        let shape = Shape::from_name(shape_name).unwrap();
-        let sizes: Vec<usize> = [1_000usize, 10_000, 100_000, 1_000_000]
-            .into_iter()
-            .filter(|&n| n <= max)
-            .collect();
-        let mut qhull_seconds = f64::NAN;
-        let run = bench::run(
-            shape,
-            shape_name,
-            &sizes,
-            python.as_deref().map(|p| (p, root)),
-            bench::MAX_TESTS,
-            Some(&topolab::ALLOCATOR),
-            |row| {
-                if row.algorithm == "qhull" {
-                    qhull_seconds = row.seconds;
-                }
-                let n = row.n as f64;
-                let opt = |x: Option<String>| x.unwrap_or_else(|| "-".into());
-                let bound = bench::bound(&row.algorithm, row.n, row.hull_vertices);
-                println!(
-                    "{:<7} {:>8} {:<11} {:>9.4} {:>7.2} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
-                    row.shape,
-                    row.n,
-                    row.algorithm,
-                    row.seconds,
-                    row.seconds / qhull_seconds,
-                    opt(row.faces_created.map(|c| c.to_string())),
-                    opt(row
-                        .faces_created
-                        .map(|c| format!("{:.3}", c as f64 / (6.0 * n - 20.0)))),
-                    row.hull_vertices,
-                    opt(row.volume6_tests.map(|t| t.to_string())),
-                    opt(row
-                        .volume6_tests
-                        .zip(bound)
-                        .map(|(t, b)| format!("{:.3}", t as f64 / b.1))),
-                    opt(row
-                        .conflict_work
-                        .map(|w| format!("{:.3}", w as f64 / bench::n_lg_n(row.n)))),
-                    opt(row
-                        .exact_tests
-                        .zip(row.volume6_tests)
-                        .map(|(e, t)| format!("{:.1e}", e as f64 / t.max(1) as f64))),
-                    opt(row.peak_bytes.map(|b| format!("{:.0}", b as f64 / n))),
-                );
-            },
-        )
-        .expect("hull benchmark");
-        rows.extend(run);
+    for row in &rows {
+        let qhull_seconds = rows
+            .iter()
+            .find(|q| q.shape == row.shape && q.n == row.n && q.algorithm == "qhull")
+            .map_or(f64::NAN, |q| q.seconds);
+        let n = row.n as f64;
+        let opt = |x: Option<String>| x.unwrap_or_else(|| "-".into());
+        let bound = bench::bound(&row.algorithm, row.n, row.hull_vertices);
+        println!(
+            "{:<7} {:>8} {:<18} {:>9.4} {:>4} {:>7.2} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
+            row.shape,
+            row.n,
+            row.algorithm,
+            row.seconds,
+            row.timed_runs,
+            row.seconds / qhull_seconds,
+            opt(row.faces_created.map(|c| c.to_string())),
+            opt(row
+                .faces_created
+                .map(|c| format!("{:.3}", c as f64 / (6.0 * n - 20.0)))),
+            row.hull_vertices,
+            opt(row.volume6_tests.map(|t| t.to_string())),
+            opt(row
+                .volume6_tests
+                .zip(bound)
+                .map(|(t, b)| format!("{:.3}", t as f64 / b.1))),
+            opt(row
+                .conflict_work
+                .map(|w| format!("{:.3}", w as f64 / bench::n_lg_n(row.n)))),
+            opt(row
+                .exact_tests
+                .zip(row.volume6_tests)
+                .map(|(e, t)| format!("{:.1e}", e as f64 / t.max(1) as f64))),
+            opt(row.peak_bytes.map(|b| format!("{:.0}", b as f64 / n))),
+        );
     }
     println!("\nfitted exponents against n (t ∝ n^e); work = Σ|P(e)| for randomized, Volume6 tests otherwise");
     println!(

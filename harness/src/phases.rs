@@ -3,7 +3,7 @@
 //!
 //! The wall time of a section stretches with the load of the machine; its CPU time does not
 //! (much). The report runs its sections one after the other, on one thread except where a
-//! structure's construction or a subprocess (libigl, Qhull) uses more, so the CPU seconds of a
+//! structure's construction or a subprocess (libigl) uses more, so the CPU seconds of a
 //! section with a fixed amount of work are close to its wall seconds on an idle machine. A
 //! section whose CPU time exceeds its wall time ran threads. The meshes' measurement is the
 //! exception: its cells repeat until a wall-time budget, so under load they repeat less, and
@@ -26,7 +26,7 @@ pub enum Phase {
     Orderings,
     /// libigl's functions, in a Python subprocess.
     Libigl,
-    /// The 3D convex hulls, Qhull in a Python subprocess.
+    /// The 3D convex hulls, the lab's and the outside ones (Qhull, CGAL) in-process.
     Hull,
     /// The changing workloads.
     Changing,
@@ -75,7 +75,7 @@ pub struct PhaseTime {
     pub wall_s: f64,
     /// CPU time of the report's own process, user and system, all its threads, seconds.
     pub cpu_s: f64,
-    /// CPU time of the subprocesses it waited for (Python with libigl, Qhull), seconds.
+    /// CPU time of the subprocesses it waited for (Python with libigl), seconds.
     pub children_cpu_s: f64,
 }
 

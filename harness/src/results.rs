@@ -37,6 +37,8 @@ pub struct Results {
     pub hull: Vec<crate::hull::bench::HullRow>,
     /// Fitted exponents of the hull rows against n, next to the lecture's bounds.
     pub hull_fits: Vec<crate::hull::bench::HullFit>,
+    /// How the hull section ran Qhull (its library's version and options), when it did.
+    pub qhull: Option<String>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
     /// The Targets table's rounds: the structures of each target taking turns

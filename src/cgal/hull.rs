@@ -2,12 +2,11 @@
 //! exact orientation tests on the input doubles, as the lab's hulls use Shewchuk's `orient3d`)
 //! into a `Surface_mesh`, through `cgal/hull.cpp`: [`convex_hull_3`] for one point set, and
 //! [`add_to_benchmark`] for the report's hull section, beside the lecture's three algorithms
-//! and Qhull.
+//! and Qhull (`crate::qhull`).
 
 use super::{ffi, status};
 use glam::DVec3;
-use topolab_harness::hull::bench::HullRow;
-use topolab_structures::hull::{random_points, Shape};
+use topolab_harness::hull::bench::{self, HullRow};
 use topolab_structures::Result;
 
 /// The name of CGAL's rows in the hull benchmark ([`HullRow::algorithm`]).
@@ -16,8 +15,8 @@ pub const ALGORITHM: &str = "cgal-convex-hull-3";
 /// What `CGAL::convex_hull_3` built.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CgalHull {
-    /// Best time of the `convex_hull_3` call alone, seconds (input checks and copies not
-    /// included, as Qhull's time is SciPy's `ConvexHull` call alone).
+    /// Best time of the `convex_hull_3` call alone, seconds (input checks, copies and the
+    /// volume not included; the clock is read inside the shim).
     pub seconds: f64,
     /// Vertices of the hull.
     pub vertices: usize,
@@ -61,46 +60,38 @@ pub fn convex_hull_3(points: &[DVec3], repeat: u32) -> Result<CgalHull> {
 
 /// Adds a row of `CGAL::convex_hull_3` to the hull benchmark `rows` for every point set of
 /// the lecture's randomized algorithm in them, right after that point set's rows: the same
-/// points (`random_points` of the shape with the benchmark's seed, 42), timed the same way
-/// (the best of 3 runs, 1 from 100k points on), the call alone. CGAL's hull must have the
-/// randomized hull's vertex count (random points are in general position, and both hulls keep
-/// only corner points), else an error naming the point set; so must it be closed and
-/// triangulated.
+/// points ([`bench::PointSet::points`]), timed the same way ([`bench::warm_median`]: a warm-up
+/// run, then the median of [`bench::timed_runs`] runs of one [`convex_hull_3`] call each, the
+/// call alone). CGAL's hull must have the randomized hull's vertex count (random points are in
+/// general position, and both hulls keep only corner points), else an error naming the point
+/// set; so must it be closed and triangulated.
 pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> std::result::Result<(), String> {
-    let sets: Vec<(String, usize, usize)> = rows
-        .iter()
-        .filter(|r| r.algorithm == "randomized")
-        .map(|r| (r.shape.clone(), r.n, r.hull_vertices))
-        .collect();
-    for (shape_name, n, lab_vertices) in sets {
-        let shape = Shape::from_name(&shape_name).map_err(|e| e.to_string())?;
-        let points = random_points(shape, n, 42);
-        let repeat = if n >= 100_000 { 1 } else { 3 };
-        let hull = convex_hull_3(&points, repeat).map_err(|e| e.to_string())?;
-        if hull.vertices != lab_vertices || !hull.closed_triangles {
+    for set in bench::point_sets(rows) {
+        let points = set.points().map_err(|e| e.to_string())?;
+        let timed = bench::warm_median(set.n, |_warm_up| {
+            let hull = convex_hull_3(&points, 1).map_err(|e| e.to_string())?;
+            Ok::<_, String>((hull.seconds, hull))
+        })?;
+        let hull = &timed.last;
+        if hull.vertices != set.hull_vertices || !hull.closed_triangles {
             return Err(format!(
-                "CGAL's convex_hull_3 of {n} points {shape_name}: {} hull vertices{}, the randomized algorithm {lab_vertices}",
+                "CGAL's convex_hull_3 of {} points {}: {} hull vertices{}, the randomized algorithm {}",
+                set.n,
+                set.shape,
                 hull.vertices,
-                if hull.closed_triangles { "" } else { " (not a closed triangulated surface)" }
+                if hull.closed_triangles { "" } else { " (not a closed triangulated surface)" },
+                set.hull_vertices
             ));
         }
         eprintln!(
-            "topolab report: hull {shape_name} {n} {ALGORITHM}: {:.3} s",
-            hull.seconds
+            "topolab report: hull {} {} {ALGORITHM}: {:.3} s",
+            set.shape, set.n, timed.seconds
         );
         let row = HullRow {
-            shape: shape_name.clone(),
-            n,
-            algorithm: ALGORITHM.into(),
-            seconds: hull.seconds,
             hull_vertices: hull.vertices,
-            ..HullRow::default()
+            ..set.outside_row(ALGORITHM, &timed)
         };
-        let after = rows
-            .iter()
-            .rposition(|r| r.shape == shape_name && r.n == n)
-            .map_or(rows.len(), |i| i + 1);
-        rows.insert(after, row);
+        bench::insert_outside_row(rows, row);
     }
     Ok(())
 }
@@ -108,7 +99,7 @@ pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> std::result::Result<(), Stri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use topolab_structures::hull::{convex_hull, Algorithm};
+    use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
 
     fn row(algorithm: &str, n: usize, hull_vertices: usize) -> HullRow {
         HullRow {
@@ -123,7 +114,7 @@ mod tests {
     #[test]
     fn cgal_rows_follow_their_point_sets_and_must_agree_with_the_randomized_hull() {
         let h = |n| {
-            let points = random_points(Shape::Ball, n, 42);
+            let points = random_points(Shape::Ball, n, bench::POINTS_SEED);
             convex_hull(&points, Algorithm::Randomized { seed: 7 })
                 .unwrap()
                 .vertices()
@@ -149,6 +140,7 @@ mod tests {
         );
         assert_eq!(rows[2].hull_vertices, h1);
         assert!(rows[2].seconds > 0.0 && rows[2].faces_created.is_none());
+        assert_eq!(rows[2].timed_runs, 3);
         // A hull that disagrees stops the benchmark with an error naming the point set.
         let mut wrong = vec![row("randomized", 500, h1 + 1)];
         let e = add_to_benchmark(&mut wrong).unwrap_err();

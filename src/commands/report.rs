@@ -238,6 +238,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         libigl: Vec::new(),
         hull: Vec::new(),
         hull_fits: Vec::new(),
+        qhull: None,
         changing: Vec::new(),
         targets: Vec::new(),
         decimate: Vec::new(),
@@ -360,6 +361,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     if selection.hull {
         results.hull = hull(HullSizes::of(quick, args.full), &mut results.notes)?;
         results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+        results.qhull = crate::registry::qhull_description();
         clock.lap(Phase::Hull, None);
     }
     if selection.changing {
@@ -433,7 +435,7 @@ struct HullSizes {
 impl HullSizes {
     /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
     /// (h = n); its 1M points took 44 s alone (2026-12-01: CGAL 20 s, the randomized algorithm
-    /// 12, Qhull 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
+    /// 12, Qhull through SciPy 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
     /// The slow algorithms stop at [`topolab_harness::hull::bench::MAX_TESTS`]. `--full` takes
     /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
     /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
@@ -459,21 +461,20 @@ impl HullSizes {
     }
 }
 
-/// The hull benchmark: points in a ball and on a sphere ([`HullSizes`]), each run's peak heap
-/// measured by the process's counting allocator.
+/// The hull benchmark: points in a ball and on a sphere ([`HullSizes`]), each row's peak heap
+/// measured by the process's counting allocator in its untimed warm-up run, then the outside
+/// hulls on the same points (Qhull in-process, CGAL), timed the same way.
 fn hull(
     sizes: HullSizes,
     notes: &mut Vec<String>,
 ) -> Result<Vec<topolab_harness::hull::bench::HullRow>, Failure> {
-    use topolab_harness::hull::{bench, qhull};
+    use topolab_harness::hull::bench;
     use topolab_structures::hull::Shape;
-    let root = Path::new(".");
-    let python = qhull::python(root);
-    if python.is_none() {
-        notes.push(
-            "Qhull was not run: .venv/bin/python with SciPy is missing (bash .ci/install-deps)."
-                .into(),
-        );
+    if !crate::HAS_QHULL {
+        notes.push(format!(
+            "The hull section has no Qhull: {}.",
+            crate::QHULL_MISSING
+        ));
     }
     let mut rows = Vec::new();
     for (shape, name, max) in [
@@ -488,7 +489,6 @@ fn hull(
             shape,
             name,
             &sizes_here,
-            python.as_deref().map(|p| (p, root)),
             sizes.max_tests,
             Some(&crate::ALLOCATOR),
             |row| {

@@ -1,18 +1,24 @@
-//! The hull benchmark shared by the report and `examples/hull_bench.rs`: each algorithm (and
-//! Qhull, when SciPy is there) on random points of one shape at growing n, with the
-//! quantities of the cost analysis in the lecture on 3D convex hulls: the faces each
-//! algorithm creates against the expected bound 6n − 20, its `Volume6` tests against its
-//! bound (n·h, n², n lg n), the conflict-list work Σ|P(e)| against n lg n, and the fitted
-//! exponents of time and work against n ([`fits`]).
+//! The hull benchmark shared by the report and `examples/hull_bench.rs`: each algorithm on
+//! random points of one shape at growing n, with the quantities of the cost analysis in the
+//! lecture on 3D convex hulls: the faces each algorithm creates against the expected bound
+//! 6n − 20, its `Volume6` tests against its bound (n·h, n², n lg n), the conflict-list work
+//! Σ|P(e)| against n lg n, and the fitted exponents of time and work against n ([`fits`]).
+//! Hulls from outside the lab (Qhull and CGAL, through the FFI of the `topolab` crate) are added
+//! to the rows afterwards, on the same points ([`point_sets`], [`insert_outside_row`]), timed
+//! the same way ([`warm_median`]).
 
-use super::qhull;
+use crate::checksum::mix;
 use crate::fit::fit_exponent;
 use crate::measure::MemoryMeter;
+use crate::timing::median;
 use glam::DVec3;
-use std::path::Path;
 use std::time::Instant;
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape, Work};
 use topolab_structures::Result;
+
+/// The seed of the benchmark's random points: `random_points(shape, n, POINTS_SEED)`, for the
+/// lab's algorithms and for the outside hulls added afterwards alike.
+pub const POINTS_SEED: u64 = 42;
 
 /// One timed hull. (`Default`, so that a row of an outside hull, such as CGAL's, names only
 /// what it has.)
@@ -22,136 +28,255 @@ pub struct HullRow {
     pub shape: String,
     /// Number of points.
     pub n: usize,
-    /// `gift`, `incremental`, `randomized`, `qhull`, or an outside hull's name (CGAL's
+    /// `gift`, `incremental`, `randomized`, or an outside hull's name (`qhull`, CGAL's
     /// `cgal-convex-hull-3`).
     pub algorithm: String,
-    /// Best time of the repetitions, seconds.
+    /// The median of the timed runs after a warm-up run ([`warm_median`]), seconds.
     pub seconds: f64,
-    /// Faces created during the construction (`None` for Qhull).
+    /// How many timed runs `seconds` is the median of ([`timed_runs`]).
+    pub timed_runs: usize,
+    /// Faces created during the construction (`None` for an outside hull).
     pub faces_created: Option<usize>,
     /// Vertices of the hull.
     pub hull_vertices: usize,
-    /// `Volume6` evaluations ([`Work::volume6_tests`]; `None` for Qhull).
+    /// [`vertex_checksum`] of the hull's vertices (`None` for CGAL's, whose shim returns
+    /// counts only).
+    pub vertex_checksum: Option<u64>,
+    /// `Volume6` evaluations ([`Work::volume6_tests`]; `None` for an outside hull).
     pub volume6_tests: Option<u64>,
-    /// Of those, the ones decided in exact arithmetic ([`Work::exact_tests`]; `None` for
-    /// Qhull).
+    /// Of those, the ones decided in exact arithmetic ([`Work::exact_tests`]; `None` for an
+    /// outside hull).
     pub exact_tests: Option<u64>,
     /// Σ|P(e)|, the conflict-list work ([`Work::conflict_work`]; randomized only).
     pub conflict_work: Option<u64>,
     /// Peak heap bytes allocated during the call beyond what was allocated before it (the
-    /// input points are not counted); `None` for Qhull or without a memory meter.
+    /// input points are not counted), counted in the warm-up run, which is not timed; `None`
+    /// for an outside hull or without a memory meter.
     pub peak_bytes: Option<usize>,
 }
 
-/// One measured run of [`convex_hull`].
-#[derive(Copy, Clone, Debug)]
-pub struct Timed {
-    /// Seconds of the whole call (input checks and duplicate removal included).
+/// The checksum of a hull's vertex set: Σ mix(v, 1) over its input indices v (wrapping; the
+/// terms of [`crate::checksum`]), the same in any order, so two hulls with the same vertices
+/// agree and a missing, extra or other vertex changes it.
+pub fn vertex_checksum(vertices: impl IntoIterator<Item = u32>) -> u64 {
+    vertices
+        .into_iter()
+        .fold(0u64, |sum, v| sum.wrapping_add(mix(v as u64, 1)))
+}
+
+/// How many timed runs a hull of `n` points gets after its warm-up run took
+/// `warm_up_seconds`: 3 below 100k points, 1 from 100k on or when the warm-up took over a
+/// second (the run's work then dominates its noise).
+pub fn timed_runs(n: usize, warm_up_seconds: f64) -> usize {
+    if n >= 100_000 || warm_up_seconds > 1.0 {
+        1
+    } else {
+        3
+    }
+}
+
+/// A hull timed as the benchmark times every hull, the lab's and the outside ones.
+#[derive(Clone, Debug)]
+pub struct Warm<T> {
+    /// The median of the timed runs, seconds.
     pub seconds: f64,
+    /// How many timed runs ([`timed_runs`]).
+    pub timed_runs: usize,
+    /// What the warm-up run returned.
+    pub warm_up: T,
+    /// What the last timed run returned.
+    pub last: T,
+}
+
+/// Times a hull of `n` points warm: `run(true)` once as the warm-up (its time decides
+/// [`timed_runs`] and is otherwise not used), then `run(false)` that many times; the time is
+/// their median. `run` returns the seconds it measured around the hull alone and what it
+/// built (keep it small: the hull itself is best dropped inside `run`, after its clock).
+pub fn warm_median<T, E>(
+    n: usize,
+    mut run: impl FnMut(bool) -> std::result::Result<(f64, T), E>,
+) -> std::result::Result<Warm<T>, E> {
+    let (warm_up_seconds, warm_up) = run(true)?;
+    let runs = timed_runs(n, warm_up_seconds);
+    let mut times = Vec::with_capacity(runs);
+    let mut last = None;
+    for _ in 0..runs {
+        let (seconds, out) = run(false)?;
+        times.push(seconds);
+        last = Some(out);
+    }
+    times.sort_by(f64::total_cmp);
+    Ok(Warm {
+        seconds: median(&times),
+        timed_runs: runs,
+        warm_up,
+        last: last.expect("timed_runs is at least 1"),
+    })
+}
+
+/// What one run of [`convex_hull`] built, for a benchmark row (the hull itself is dropped).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Built {
     /// [`topolab_structures::hull::Hull::faces_created`].
     pub faces_created: usize,
     /// Vertices of the hull.
     pub hull_vertices: usize,
+    /// [`vertex_checksum`] of them.
+    pub vertex_checksum: u64,
     /// [`topolab_structures::hull::Hull::work`].
     pub work: Work,
-    /// Peak heap bytes beyond those allocated before the call, when `meter` was given.
-    pub peak_bytes: Option<usize>,
 }
 
-/// One benchmark measurement: builds the hull of `points` with `algorithm`, measured once
-/// with [`Instant`] (repeat and take the best or median in the caller), and with `meter` the
-/// peak heap the call needed.
+/// One benchmark measurement of [`convex_hull`] on `points` with `algorithm`, by
+/// [`warm_median`]: the clock runs around the call alone (input checks and duplicate removal
+/// are in it, as is building the winged-edge it returns; dropping it is not). With `meter`,
+/// the warm-up run counts the peak heap the call needed, and no timed run counts: counting
+/// costs a few thread-local operations per allocation, which stay out of the clock. Every run
+/// must build the same hull (the algorithms are deterministic, the randomized one by its
+/// seed), else an error.
 pub fn benchmark_row(
     points: &[DVec3],
     algorithm: Algorithm,
     meter: Option<&dyn MemoryMeter>,
-) -> Result<Timed> {
-    // The lab's allocator counts only while asked, on this thread. Counting costs a few
-    // thread-local operations per allocation, and the hull allocates rarely (its arrays
-    // grow geometrically), so the counted run is also the timed one.
-    let before = meter.map(|m| {
-        m.counting(true);
-        m.reset_peak();
-        m.current()
-    });
-    let start = Instant::now();
-    let hull = convex_hull(points, algorithm);
-    let seconds = start.elapsed().as_secs_f64();
-    let peak_bytes = meter.zip(before).map(|(m, before)| {
-        let peak = m.peak().saturating_sub(before);
-        m.counting(false);
-        peak
-    });
-    let hull = hull?;
-    Ok(Timed {
-        seconds,
-        faces_created: hull.faces_created,
-        hull_vertices: hull.vertices().len(),
-        work: hull.work,
-        peak_bytes,
-    })
+) -> std::result::Result<(Warm<Built>, Option<usize>), String> {
+    let warm = warm_median(points.len(), |warm_up| {
+        // The lab's allocator counts only while asked, on this thread.
+        let counting = meter.filter(|_| warm_up);
+        let before = counting.map(|m| {
+            m.counting(true);
+            m.reset_peak();
+            m.current()
+        });
+        let start = Instant::now();
+        let hull = convex_hull(points, algorithm);
+        let seconds = start.elapsed().as_secs_f64();
+        let peak = counting.zip(before).map(|(m, before)| {
+            let peak = m.peak().saturating_sub(before);
+            m.counting(false);
+            peak
+        });
+        let hull = hull.map_err(|e| e.to_string())?;
+        let vertices = hull.vertices();
+        let built = Built {
+            faces_created: hull.faces_created,
+            hull_vertices: vertices.len(),
+            vertex_checksum: vertex_checksum(vertices.iter().map(|v| v.0)),
+            work: hull.work,
+        };
+        Ok::<_, String>((seconds, (built, peak)))
+    })?;
+    if warm.warm_up.0 != warm.last.0 {
+        return Err(format!(
+            "{} on {} points built two different hulls: {:?}, then {:?}",
+            algorithm.name(),
+            points.len(),
+            warm.warm_up.0,
+            warm.last.0
+        ));
+    }
+    let peak = warm.warm_up.1;
+    Ok((
+        Warm {
+            seconds: warm.seconds,
+            timed_runs: warm.timed_runs,
+            warm_up: warm.warm_up.0,
+            last: warm.last.0,
+        },
+        peak,
+    ))
+}
+
+/// A point set of the benchmark, as a hull added after the run ([`insert_outside_row`]) needs
+/// it: which points, and the randomized algorithm's hull of them, to agree with.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointSet {
+    /// `ball`, `sphere` or `cube`.
+    pub shape: String,
+    /// Number of points.
+    pub n: usize,
+    /// Vertices of the randomized algorithm's hull.
+    pub hull_vertices: usize,
+    /// Their [`vertex_checksum`], if the row has it.
+    pub vertex_checksum: Option<u64>,
+}
+
+impl PointSet {
+    /// The points: `random_points` of the shape with [`POINTS_SEED`], as the benchmark drew
+    /// them.
+    pub fn points(&self) -> Result<Vec<DVec3>> {
+        Ok(random_points(
+            Shape::from_name(&self.shape)?,
+            self.n,
+            POINTS_SEED,
+        ))
+    }
+
+    /// The row of outside hull `algorithm` on these points, timed by `timed`; the caller adds
+    /// what its hull has (`hull_vertices`, ...).
+    pub fn outside_row<T>(&self, algorithm: &str, timed: &Warm<T>) -> HullRow {
+        HullRow {
+            shape: self.shape.clone(),
+            n: self.n,
+            algorithm: algorithm.into(),
+            seconds: timed.seconds,
+            timed_runs: timed.timed_runs,
+            ..HullRow::default()
+        }
+    }
+}
+
+/// The point sets of `rows` that the randomized algorithm ran on (every one: it runs every
+/// size), in row order.
+pub fn point_sets(rows: &[HullRow]) -> Vec<PointSet> {
+    rows.iter()
+        .filter(|r| r.algorithm == "randomized")
+        .map(|r| PointSet {
+            shape: r.shape.clone(),
+            n: r.n,
+            hull_vertices: r.hull_vertices,
+            vertex_checksum: r.vertex_checksum,
+        })
+        .collect()
+}
+
+/// Inserts the row of an outside hull right after the rows of its point set (at the end if
+/// there are none).
+pub fn insert_outside_row(rows: &mut Vec<HullRow>, row: HullRow) {
+    let after = rows
+        .iter()
+        .rposition(|r| r.shape == row.shape && r.n == row.n)
+        .map_or(rows.len(), |i| i + 1);
+    rows.insert(after, row);
 }
 
 /// Runs the benchmark for `shape` over `sizes` (increasing). Gift wrapping (O(n·h)) and the
 /// plain incremental algorithm (O(n²)) run the next size only while its `Volume6` tests,
 /// predicted by [`predicted_tests`], are at most `max_tests`; the randomized one always goes
-/// on. A count, not a time, decides, so the sizes shown do not depend on the machine's load. Each
-/// time is the best of 3 runs, or of 1 from 100k points on or when the first run took over a
-/// second (its work then dominates its noise). `qhull` is `(python, workspace root)`; `meter`,
-/// when given, measures each run's peak heap. Every row goes to `progress` too.
+/// on. A count, not a time, decides, so the sizes shown do not depend on the machine's load.
+/// Each row is one [`benchmark_row`]: a warm-up run, which with `meter` measures the call's
+/// peak heap, then the median of [`timed_runs`] runs. Every row goes to `progress` too.
 pub fn run(
     shape: Shape,
     shape_name: &str,
     sizes: &[usize],
-    qhull: Option<(&Path, &Path)>,
     max_tests: f64,
     meter: Option<&dyn MemoryMeter>,
     mut progress: impl FnMut(&HullRow),
-) -> Result<Vec<HullRow>, String> {
+) -> std::result::Result<Vec<HullRow>, String> {
     let mut rows = Vec::new();
     let mut too_slow = [false; 3];
     // Each slow algorithm's last (n, Volume6 tests): the growth of its work so far.
     let mut last_work: [Option<(usize, u64)>; 3] = [None; 3];
-    let mut push = |row: HullRow, rows: &mut Vec<HullRow>| {
-        progress(&row);
-        rows.push(row);
-    };
     for &n in sizes {
-        let points = random_points(shape, n, 42);
-        let repeat = if n >= 100_000 { 1 } else { 3 };
-        if let Some((python, root)) = qhull {
-            let q = qhull::run(python, root, &points, repeat)?;
-            let row = HullRow {
-                shape: shape_name.into(),
-                n,
-                algorithm: "qhull".into(),
-                seconds: q.seconds,
-                faces_created: None,
-                hull_vertices: q.vertices.len(),
-                volume6_tests: None,
-                exact_tests: None,
-                conflict_work: None,
-                peak_bytes: None,
-            };
-            push(row, &mut rows);
-        }
+        let points = random_points(shape, n, POINTS_SEED);
         for (a, algorithm) in Algorithm::all(7).into_iter().enumerate() {
             if too_slow[a] {
                 continue;
             }
-            let mut best = f64::INFINITY;
-            let mut last = None;
-            for _ in 0..repeat {
-                let timed = benchmark_row(&points, algorithm, meter).map_err(|e| e.to_string())?;
-                best = best.min(timed.seconds);
-                last = Some(timed);
-                if timed.seconds > 1.0 {
-                    break;
-                }
-            }
-            let last = last.expect("at least one run");
+            let (timed, peak_bytes) = benchmark_row(&points, algorithm, meter)?;
+            let built = timed.last;
             let randomized = matches!(algorithm, Algorithm::Randomized { .. });
-            let work = (n, last.work.volume6_tests);
+            let work = (n, built.work.volume6_tests);
             if let (false, Some(&next)) = (randomized, sizes.iter().find(|&&m| m > n)) {
                 too_slow[a] = predicted_tests(last_work[a], work, next) > max_tests;
             }
@@ -160,15 +285,18 @@ pub fn run(
                 shape: shape_name.into(),
                 n,
                 algorithm: algorithm.name().into(),
-                seconds: best,
-                faces_created: Some(last.faces_created),
-                hull_vertices: last.hull_vertices,
-                volume6_tests: Some(last.work.volume6_tests),
-                exact_tests: Some(last.work.exact_tests),
-                conflict_work: randomized.then_some(last.work.conflict_work),
-                peak_bytes: last.peak_bytes,
+                seconds: timed.seconds,
+                timed_runs: timed.timed_runs,
+                faces_created: Some(built.faces_created),
+                hull_vertices: built.hull_vertices,
+                vertex_checksum: Some(built.vertex_checksum),
+                volume6_tests: Some(built.work.volume6_tests),
+                exact_tests: Some(built.work.exact_tests),
+                conflict_work: randomized.then_some(built.work.conflict_work),
+                peak_bytes,
             };
-            push(row, &mut rows);
+            progress(&row);
+            rows.push(row);
         }
     }
     Ok(rows)
@@ -205,7 +333,7 @@ pub fn n_lg_n(n: usize) -> f64 {
 
 /// The lecture's cost bound of `algorithm` for n points with h hull vertices, by name and
 /// value: gift wrapping O(n·h), incremental O(n²), randomized incremental expected
-/// O(n lg n); `None` for another algorithm (Qhull). The lecture's h for gift wrapping counts
+/// O(n lg n); `None` for another algorithm (an outside hull). The lecture's h for gift wrapping counts
 /// the hull's edges, which is proportional to its vertices (3h − 6 for a triangulated hull).
 pub fn bound(algorithm: &str, n: usize, h: usize) -> Option<(&'static str, f64)> {
     let n_f = n as f64;
@@ -223,17 +351,17 @@ pub fn bound(algorithm: &str, n: usize, h: usize) -> Option<(&'static str, f64)>
 pub struct HullFit {
     /// `ball`, `sphere` or `cube`.
     pub shape: String,
-    /// The algorithm (Qhull too).
+    /// The algorithm (an outside hull too).
     pub algorithm: String,
     /// How many sizes the fits used.
     pub sizes: usize,
     /// Exponent of the time.
     pub time_exponent: f64,
-    /// Exponent of the `Volume6` tests (`None` for Qhull).
+    /// Exponent of the `Volume6` tests (`None` for an outside hull).
     pub tests_exponent: Option<f64>,
     /// Exponent of Σ|P(e)| (randomized only).
     pub conflict_exponent: Option<f64>,
-    /// The lecture's bound ([`bound`]): `n·h`, `n²` or `n lg n`; `None` for Qhull.
+    /// The lecture's bound ([`bound`]): `n·h`, `n²` or `n lg n`; `None` for an outside hull.
     pub bound: Option<String>,
     /// The bound's exponent at the sizes and hull sizes measured.
     pub bound_exponent: Option<f64>,
@@ -305,8 +433,132 @@ mod tests {
             volume6_tests: Some(tests),
             exact_tests: Some(0),
             conflict_work: (algorithm == "randomized").then_some(tests),
-            peak_bytes: None,
+            ..HullRow::default()
         }
+    }
+
+    #[test]
+    fn a_hull_is_timed_by_the_median_of_its_runs_after_one_warm_up() {
+        // The warm-up (10 s, flagged) is not in the median; 3 runs below 100k points.
+        let times = [10.0, 0.3, 0.1, 0.2];
+        let mut calls = Vec::new();
+        let warm: Warm<usize> = warm_median(1_000, |warm_up| {
+            calls.push(warm_up);
+            Ok::<_, ()>((times[calls.len() - 1], calls.len()))
+        })
+        .unwrap();
+        assert_eq!(calls, [true, false]);
+        assert_eq!((warm.timed_runs, warm.warm_up, warm.last), (1, 1, 2));
+        assert_eq!(
+            warm.seconds, 0.3,
+            "a warm-up over a second leaves one timed run"
+        );
+        let mut calls = 0;
+        let warm = warm_median(1_000, |warm_up| {
+            calls += 1;
+            assert_eq!(warm_up, calls == 1);
+            Ok::<_, ()>(([0.5, 0.3, 0.1, 0.2][calls - 1], ()))
+        })
+        .unwrap();
+        assert_eq!((warm.seconds, warm.timed_runs, calls), (0.2, 3, 4));
+        assert_eq!(timed_runs(99_999, 0.5), 3);
+        assert_eq!(timed_runs(100_000, 0.01), 1);
+        // An error of any run is the result.
+        let failed = warm_median(
+            10,
+            |warm_up| if warm_up { Ok((0.1, ())) } else { Err("no") },
+        );
+        assert_eq!(failed.unwrap_err(), "no");
+    }
+
+    /// A meter that records when it was asked to count, and counts 1 byte per call to
+    /// `current` while counting.
+    #[derive(Default)]
+    struct Recorder {
+        switches: std::cell::RefCell<Vec<bool>>,
+    }
+
+    impl MemoryMeter for Recorder {
+        fn current(&self) -> usize {
+            0
+        }
+        fn peak(&self) -> usize {
+            1234
+        }
+        fn reset_peak(&self) {}
+        fn counting(&self, on: bool) {
+            self.switches.borrow_mut().push(on);
+        }
+    }
+
+    #[test]
+    fn the_lab_hull_counts_its_memory_in_the_warm_up_only() {
+        let points = random_points(Shape::Ball, 2_000, POINTS_SEED);
+        let meter = Recorder::default();
+        let (timed, peak) =
+            benchmark_row(&points, Algorithm::Randomized { seed: 7 }, Some(&meter)).unwrap();
+        // Counting on and off once, around the warm-up; the three timed runs never count.
+        assert_eq!(*meter.switches.borrow(), [true, false]);
+        assert_eq!((peak, timed.timed_runs), (Some(1234), 3));
+        let hull = convex_hull(&points, Algorithm::Randomized { seed: 7 }).unwrap();
+        let vertices = hull.vertices();
+        assert_eq!(timed.last.hull_vertices, vertices.len());
+        assert_eq!(
+            timed.last.vertex_checksum,
+            vertex_checksum(vertices.iter().map(|v| v.0))
+        );
+        assert_eq!(timed.warm_up, timed.last);
+        let (_, no_meter) = benchmark_row(&points, Algorithm::Gift, None).unwrap();
+        assert_eq!(no_meter, None);
+    }
+
+    #[test]
+    fn the_vertex_checksum_is_of_the_set() {
+        let a = vertex_checksum([3, 1, 2]);
+        assert_eq!(a, vertex_checksum([1, 2, 3]));
+        assert_ne!(a, vertex_checksum([1, 2]));
+        assert_ne!(a, vertex_checksum([1, 2, 4]));
+        assert_eq!(vertex_checksum([]), 0);
+    }
+
+    #[test]
+    fn outside_rows_follow_their_point_sets() {
+        let mut rows = vec![
+            row("gift", 1_000, 10, 1.0, 1),
+            row("randomized", 1_000, 10, 1.0, 1),
+            row("randomized", 2_000, 12, 1.0, 1),
+        ];
+        rows[1].vertex_checksum = Some(77);
+        let sets = point_sets(&rows);
+        assert_eq!(sets.len(), 2);
+        assert_eq!(
+            sets[0],
+            PointSet {
+                shape: "sphere".into(),
+                n: 1_000,
+                hull_vertices: 10,
+                vertex_checksum: Some(77)
+            }
+        );
+        assert_eq!(
+            sets[1].points().unwrap(),
+            random_points(Shape::Sphere, 2_000, POINTS_SEED)
+        );
+        for n in [1_000, 2_000, 3_000] {
+            insert_outside_row(&mut rows, row("qhull", n, 10, 1.0, 0));
+        }
+        let order: Vec<(&str, usize)> = rows.iter().map(|r| (r.algorithm.as_str(), r.n)).collect();
+        assert_eq!(
+            order,
+            [
+                ("gift", 1_000),
+                ("randomized", 1_000),
+                ("qhull", 1_000),
+                ("randomized", 2_000),
+                ("qhull", 2_000),
+                ("qhull", 3_000)
+            ]
+        );
     }
 
     #[test]
