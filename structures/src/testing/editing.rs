@@ -697,7 +697,24 @@ fn run_tally<M: MeshEdit>(
     for step in 0..steps {
         let edit = draw(&mut rng, &model);
         let expected = expect(&model, &edit, M::supports(crate::EditOp::WeldVertices));
+        // A collapse's test alone (what a decimater asks of its candidates) must answer as
+        // the collapse itself then does.
+        let checked = match edit {
+            Edit::Collapse(a, b) => Some(
+                m.check_collapse(VertexId(a), VertexId(b))
+                    .map_err(|e| e.to_string()),
+            ),
+            _ => None,
+        };
         let got = apply(&mut m, &edit);
+        if let Some(checked) = checked {
+            let done = got.as_ref().map(drop).map_err(|e| e.to_string());
+            if checked != done {
+                return Err(format!(
+                    "step {step}: {edit:?}: check_collapse says {checked:?}, the collapse {done:?}"
+                ));
+            }
+        }
         match (expected, got) {
             (Some(next), Ok(())) => {
                 model = next;
