@@ -30,7 +30,7 @@ use topolab_harness::decimate::{distance, DecimateRow};
 use topolab_harness::targets::{take_turns, Answer, Run, Stopwatch};
 use topolab_harness::timing::median;
 use topolab_structures::algorithms::changing::to_soup;
-use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh};
+use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh, Strategy};
 use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
 
 /// Tori larger than this (faces) are not decimated in a full report.
@@ -62,7 +62,7 @@ fn ours<M: MeshEdit>(
     for run in 0..runs.max(2) {
         let mut m = M::from_soup(soup)?;
         let watch = Stopwatch::start(&crate::ALLOCATOR);
-        let d = decimate(&mut m, target)?;
+        let d = decimate(&mut m, target, Strategy::Lazy)?;
         times.push(watch.ns() * 1e-9);
         if run == 0 {
             m.garbage_collection();
@@ -223,7 +223,7 @@ fn pair_in_turns(
             let mut m =
                 <IndexHalfEdge as MeshTopology>::from_soup(soup).map_err(|e| e.to_string())?;
             let watch = Stopwatch::start(&crate::ALLOCATOR);
-            let d = decimate(&mut m, target).map_err(|e| e.to_string())?;
+            let d = decimate(&mut m, target, Strategy::Lazy).map_err(|e| e.to_string())?;
             let seconds = watch.ns() * 1e-9;
             if runs[i] == 1 {
                 m.garbage_collection();
