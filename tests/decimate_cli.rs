@@ -36,38 +36,37 @@ fn faces_in_off(path: &Path) -> usize {
 fn decimation_writes_a_clean_mesh_with_at_most_the_faces_asked_for() {
     let dir = std::env::temp_dir().join(format!("topolab-decimate-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    for (mesh, target, structure, strategy) in [
+    let both = ["lazy", "eager"];
+    let cases = [
         (
             "torus:2000",
             vec!["--ratio", "0.1"],
             "index-half-edge",
-            "lazy",
-        ),
-        (
-            "torus:2000",
-            vec!["--ratio", "0.1"],
-            "index-half-edge",
-            "eager",
+            &both[..],
         ),
         (
             "sphere:1000",
             vec!["--faces", "100"],
             "pointer-half-edge",
-            "eager",
+            &both[..],
         ),
-        (
-            "sphere:1000",
-            vec!["--faces", "100"],
-            "pointer-half-edge",
-            "lazy",
-        ),
+        // Flat regions: only the lazy strategy's normal test keeps all their triangles' area,
+        // which `check` asks of the file.
         (
             "genus:2:2000",
             vec!["--faces", "300"],
             "index-half-edge",
-            "lazy",
+            &both[..1],
         ),
-    ] {
+    ];
+    let runs = cases
+        .iter()
+        .flat_map(|(mesh, target, structure, strategies)| {
+            strategies
+                .iter()
+                .map(move |&s| (*mesh, target, *structure, s))
+        });
+    for (mesh, target, structure, strategy) in runs {
         let out = dir.join(format!("{structure}-{strategy}.off"));
         let run = decimate(
             mesh,
