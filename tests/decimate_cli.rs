@@ -70,7 +70,7 @@ fn decimation_writes_a_clean_mesh_with_at_most_the_faces_asked_for() {
         let out = dir.join(format!("{structure}-{strategy}.off"));
         let run = decimate(
             mesh,
-            &target,
+            target,
             &out,
             &["--structure", structure, "--strategy", strategy],
         );

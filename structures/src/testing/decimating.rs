@@ -147,7 +147,7 @@ pub fn eager_oracle(soup: &PolygonSoup, target: usize) -> Option<Vec<(u32, u32)>
             }
             let q = quadric[v as usize].add(&quadric[w as usize]);
             let p = q.eval(soup.positions[w as usize]) as f32;
-            if p >= 0.0 && p < f32::MAX {
+            if (0.0..f32::MAX).contains(&p) {
                 legal.push((p, w));
             }
         }

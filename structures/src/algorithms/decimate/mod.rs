@@ -335,7 +335,7 @@ impl Decimater {
                 return;
             }
             let p = self.error(m, v, w) as f32;
-            if p >= 0.0 && p < f32::MAX && best.is_none_or(|(b, _)| p < b) {
+            if (0.0..f32::MAX).contains(&p) && best.is_none_or(|(b, _)| p < b) {
                 best = Some((p, w.0));
             }
         });
