@@ -36,13 +36,44 @@ fn faces_in_off(path: &Path) -> usize {
 fn decimation_writes_a_clean_mesh_with_at_most_the_faces_asked_for() {
     let dir = std::env::temp_dir().join(format!("topolab-decimate-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    for (mesh, target, structure) in [
-        ("torus:2000", vec!["--ratio", "0.1"], "index-half-edge"),
-        ("sphere:1000", vec!["--faces", "100"], "pointer-half-edge"),
-        ("genus:2:2000", vec!["--faces", "300"], "index-half-edge"),
-    ] {
-        let out = dir.join(format!("{structure}.off"));
-        let run = decimate(mesh, &target, &out, &["--structure", structure]);
+    let both = ["lazy", "eager"];
+    let cases = [
+        (
+            "torus:2000",
+            vec!["--ratio", "0.1"],
+            "index-half-edge",
+            &both[..],
+        ),
+        (
+            "sphere:1000",
+            vec!["--faces", "100"],
+            "pointer-half-edge",
+            &both[..],
+        ),
+        // Flat regions: only the lazy strategy's normal test keeps all their triangles' area,
+        // which `check` asks of the file.
+        (
+            "genus:2:2000",
+            vec!["--faces", "300"],
+            "index-half-edge",
+            &both[..1],
+        ),
+    ];
+    let runs = cases
+        .iter()
+        .flat_map(|(mesh, target, structure, strategies)| {
+            strategies
+                .iter()
+                .map(move |&s| (*mesh, target, *structure, s))
+        });
+    for (mesh, target, structure, strategy) in runs {
+        let out = dir.join(format!("{structure}-{strategy}.off"));
+        let run = decimate(
+            mesh,
+            target,
+            &out,
+            &["--structure", structure, "--strategy", strategy],
+        );
         assert!(
             run.status.success(),
             "{mesh}: {}",
@@ -80,7 +111,7 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
     let out = dir.join("out.off");
     // mesh, target, more arguments, exit code, what the message says.
     type Case<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, i32, &'a str);
-    let cases: [Case; 7] = [
+    let cases: [Case; 8] = [
         ("quad-grid", vec!["--faces", "4"], vec![], 1, "corners"),
         ("bowtie", vec!["--faces", "1"], vec![], 1, "cannot decimate"),
         ("torus", vec!["--faces", "13"], vec![], 1, "at least 14"),
@@ -98,6 +129,13 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
             vec!["--structure", "che-l2"],
             2,
             "editable",
+        ),
+        (
+            "torus",
+            vec!["--faces", "20"],
+            vec!["--strategy", "greedy"],
+            2,
+            "the strategies are eager, lazy",
         ),
         (
             "torus",

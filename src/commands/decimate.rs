@@ -1,12 +1,16 @@
 //! `topolab decimate`: decimation by quadric error
-//! ([`topolab_structures::algorithms::decimate`], OpenMesh's `DecimaterT` with `ModQuadricT`:
-//! area-weighted face quadrics, half-edge collapses onto an end vertex, the link condition
-//! through [`topolab_structures::MeshEdit::collapse_edge`]'s refusal) on an editable
-//! structure, to a face count, and the result written.
+//! ([`topolab_structures::algorithms::decimate`], after OpenMesh's `DecimaterT` with
+//! `ModQuadricT`: area-weighted face quadrics, half-edge collapses onto an end vertex, the
+//! link condition through [`topolab_structures::MeshEdit`]'s collapse test) on an editable
+//! structure, to a face count, and the result written. `--strategy` chooses how candidates
+//! are kept ([`Strategy`]): `lazy`, the default, because its normal-flipping test keeps flat
+//! regions from decimating into zero-area triangles, which `topolab check` would report in
+//! the file written; `eager` runs OpenMesh's Decimater step for step, as the report compares
+//! it with OpenMesh's own.
 //!
 //! Refused before any work, nothing written (exit 2): a bad `--ratio`, an unknown or
-//! non-editable `--structure`, an unwritable output, a mesh past `u32` ids or the available
-//! memory. Refused once read, nothing written (exit 1): polygons (the decimater collapses
+//! non-editable `--structure`, an unknown `--strategy`, an unwritable output, a mesh past
+//! `u32` ids or the available memory. Refused once read, nothing written (exit 1): polygons (the decimater collapses
 //! triangles), input the half-edge cannot store (non-manifold, inconsistently oriented), and
 //! a target below what the topology allows
 //! ([`minimum_faces`]: per closed component of genus g, `2 (V − 2 + 2g)` faces with V
@@ -19,7 +23,7 @@ use crate::output::{check_mesh_out, write_mesh};
 use std::path::PathBuf;
 use std::time::Instant;
 use topolab_structures::algorithms::changing::to_soup;
-use topolab_structures::algorithms::decimate::{decimate, minimum_faces};
+use topolab_structures::algorithms::decimate::{decimate, minimum_faces, Strategy};
 use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
 
 /// Options of `topolab decimate`.
@@ -40,6 +44,19 @@ pub struct DecimateArgs {
     /// The editable structure that decimates: `index-half-edge` or `pointer-half-edge`.
     #[arg(long, default_value = "index-half-edge")]
     pub structure: String,
+    /// How candidates are kept: `lazy` (tested for legality when they leave the heap, and a
+    /// collapse that would flip or flatten a face skipped, so flat regions keep their area)
+    /// or `eager` (OpenMesh's `DecimaterT` with `ModQuadricT` alone, step for step).
+    #[arg(long, default_value = "lazy", value_parser = parse_strategy)]
+    pub strategy: Strategy,
+}
+
+/// `--strategy`'s parser: a [`Strategy`] by its name.
+fn parse_strategy(name: &str) -> Result<Strategy, String> {
+    Strategy::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Strategy::ALL.iter().map(|s| s.name()).collect();
+        format!("the strategies are {}", names.join(", "))
+    })
 }
 
 /// The structures `--structure` takes.
@@ -67,7 +84,7 @@ pub fn run(args: &DecimateArgs) -> Result<String, Failure> {
     // decimation and the soup written.
     let soup = load_mesh(spec, |s| {
         if let Ok(mut m) = IndexHalfEdge::from_soup(s) {
-            let _ = decimate(&mut m, s.num_faces() / 10);
+            let _ = decimate(&mut m, s.num_faces() / 10, args.strategy);
             m.garbage_collection();
             drop(to_soup(&m));
         }
@@ -114,7 +131,7 @@ fn decimate_with<M: MeshEdit>(args: &DecimateArgs, soup: &PolygonSoup) -> Result
             code: 1,
         });
     }
-    let d = decimate(&mut m, target).map_err(refused)?;
+    let d = decimate(&mut m, target, args.strategy).map_err(refused)?;
     m.garbage_collection();
     let result = to_soup(&m);
     drop(m);
@@ -125,11 +142,12 @@ fn decimate_with<M: MeshEdit>(args: &DecimateArgs, soup: &PolygonSoup) -> Result
         String::new()
     };
     Ok(format!(
-        "{spec}: {} faces decimated to {} by {} collapses on {}{short}: {} vertices, written to {} ({:.2} s)\n",
+        "{spec}: {} faces decimated to {} by {} collapses on {} ({} strategy){short}: {} vertices, written to {} ({:.2} s)\n",
         d.faces_before,
         d.faces_after,
         d.collapses.len(),
         args.structure,
+        args.strategy,
         result.num_vertices(),
         args.out.display(),
         started.elapsed().as_secs_f64()

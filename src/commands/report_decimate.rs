@@ -1,36 +1,35 @@
 //! The decimation section of `topolab report` (see `topolab_harness::decimate`): on the closed
 //! tori of the run up to [`MAX_FACES`], each mesh decimated to 10% of its faces by the lab's
-//! decimater on the editable structures asked for (with the reconstruction by vertex splits
-//! timed and checked), and by OpenMesh's and CGAL's decimaters natively, every result's error
-//! measured the same way.
+//! decimater on the editable structures asked for, with each [`Strategy`] (eager: OpenMesh's
+//! Decimater step for step; lazy: the lab's), the reconstruction by vertex splits timed and
+//! checked, and by OpenMesh's and CGAL's decimaters natively, every result's error measured
+//! the same way.
 //!
 //! On the run's largest torus (torus-1M in a full report: the Targets table's mesh) the
-//! index half-edge and OpenMesh's Decimater take turns, three rounds from fresh builds, so
-//! the Targets row's ratio is the median of per-round ratios with its spread; above
-//! [`MAX_FACES`] only that pair runs there.
+//! index half-edge's eager decimation and OpenMesh's Decimater (one algorithm on two
+//! structures) take turns, three rounds from fresh builds, so the Targets row's ratio is the
+//! median of per-round ratios with its spread; above [`MAX_FACES`] only that pair runs there.
 //!
 //! Cost: OpenMesh's Decimater and the library functions it calls (its legality test,
-//! `collapse`) are OpenMesh's own, compiled from its source at `-O3 -DNDEBUG` by `build.rs`
-//! (Debian's library, compiled with its assertions, spent most of the Decimater's
-//! instructions in them). Measured in the thread's CPU time on the 2-core machine under a load
-//! of about 1 (three runs of `topolab report --sections decimate --meshes torus --sizes
-//! 16384,65536,1000000`, medians, with copies of those library functions compiled in release
-//! instead of the library), per removed face: index-half-edge 0.5 µs (16k torus),
-//! 1.1 µs (64k), 2.3 µs (1M); OpenMesh 3.2, 3.5, 6.7 µs; CGAL 5.3 and 7.2 µs (the small tori
-//! vary by up to 2× from run to run). The 1M torus's turns take about 25 s of CPU, the whole
-//! section about 40 s. CGAL stays below [`MAX_FACES`] (its
-//! `edge_collapse` builds an `Edge_profile`, with vectors allocated each time, for every cost
-//! it computes, and gathers each collapse's edges in a `std::set`: about a third of its
-//! instructions in callgrind are `malloc`, `free` and the tree, none of it a setting of ours).
+//! `collapse`) are OpenMesh's own, compiled from its source at `-O3 -DNDEBUG` by `build.rs`.
+//! The eager strategy runs as many legality tests as OpenMesh's Decimater (one for every
+//! outgoing half-edge of every vertex it heaps again); the lazy one tests a candidate when it
+//! leaves the heap. CGAL stays below [`MAX_FACES`] (its `edge_collapse` builds an
+//! `Edge_profile`, with vectors allocated each time, for every cost it computes, and gathers
+//! each collapse's edges in a `std::set`: about a third of its instructions in callgrind are
+//! `malloc`, `free` and the tree, none of it a setting of ours).
 
 use crate::input::Failure;
 use crate::native_decimate::NativeDecimater;
-use topolab_harness::decimate::{distance, DecimateRow};
+use glam::DVec3;
+use topolab_harness::decimate::{distance, result_checksum, DecimateRow};
 use topolab_harness::targets::{take_turns, Answer, Run, Stopwatch};
 use topolab_harness::timing::median;
 use topolab_structures::algorithms::changing::to_soup;
-use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh};
-use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
+use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh, Strategy};
+use topolab_structures::{
+    FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup,
+};
 
 /// Tori larger than this (faces) are not decimated in a full report.
 pub const MAX_FACES: usize = 65_536;
@@ -40,20 +39,25 @@ const MAX_FACES_QUICK: usize = 16_384;
 /// The lab's structures that decimate.
 const EDITABLE: [&str; 2] = ["index-half-edge", "pointer-half-edge"];
 
-/// The decimaters of the Targets row, which take turns on the run's largest torus.
+/// The decimaters of the Targets row, which take turns on the run's largest torus: the index
+/// half-edge with the eager strategy (OpenMesh's algorithm, [`PAIR_STRATEGY`]) and OpenMesh.
 const PAIR: [&str; 2] = ["index-half-edge", crate::registry::OPENMESH];
+
+/// The strategy of the Targets row's lab decimater: the one that runs OpenMesh's algorithm.
+const PAIR_STRATEGY: Strategy = Strategy::Eager;
 
 /// Timed rounds of the pair's turns (at least 2: one run gives the result, the last one the
 /// reconstruction).
 const TURNS: usize = 3;
 
-/// Times the lab's decimation on `M`: `runs` (at least 2) fresh builds, each decimated (timed);
-/// the first run's result compacted and measured, the last one's reconstructed (timed) and
-/// compared with the original.
+/// Times the lab's decimation with `strategy` on `M`: `runs` (at least 2) fresh builds, each
+/// decimated (timed); the first run's result compacted and measured, the last one's
+/// reconstructed (timed) and compared with the original.
 fn ours<M: MeshEdit>(
     soup: &PolygonSoup,
     target: usize,
     runs: usize,
+    strategy: Strategy,
 ) -> topolab_structures::Result<(f64, PolygonSoup, f64, bool)> {
     let mut times = Vec::with_capacity(runs);
     let mut result = None;
@@ -61,7 +65,7 @@ fn ours<M: MeshEdit>(
     for run in 0..runs.max(2) {
         let mut m = M::from_soup(soup)?;
         let watch = Stopwatch::start(&crate::ALLOCATOR);
-        let d = decimate(&mut m, target)?;
+        let d = decimate(&mut m, target, strategy)?;
         times.push(watch.ns() * 1e-9);
         if run == 0 {
             m.garbage_collection();
@@ -138,13 +142,18 @@ pub fn measure(
                 continue;
             }
         }
-        let others = |s: &str| !(in_turns && PAIR.contains(&s));
-        for s in EDITABLE.into_iter().filter(|s| asked(s) && others(s)) {
-            eprintln!("topolab report: decimate {mesh}: {s}");
+        let others = |s: &str, strategy: Option<Strategy>| {
+            let paired = s == PAIR[1] || (s == PAIR[0] && strategy == Some(PAIR_STRATEGY));
+            !(in_turns && paired)
+        };
+        let editable = EDITABLE.into_iter().filter(|s| asked(s));
+        let lab = editable.flat_map(|s| Strategy::ALL.map(|strategy| (s, strategy)));
+        for (s, strategy) in lab.filter(|&(s, strategy)| others(s, Some(strategy))) {
+            eprintln!("topolab report: decimate {mesh}: {s} ({strategy})");
             let runs = if faces <= 16_384 { 3 } else { 2 };
             let (seconds, result, rebuilt, exact) = match s {
-                "pointer-half-edge" => ours::<PointerHalfEdge>(soup, target, runs),
-                _ => ours::<IndexHalfEdge>(soup, target, runs),
+                "pointer-half-edge" => ours::<PointerHalfEdge>(soup, target, runs, strategy),
+                _ => ours::<IndexHalfEdge>(soup, target, runs, strategy),
             }
             .map_err(|e| failed(s, e))?;
             if !exact {
@@ -155,6 +164,7 @@ pub fn measure(
                 faces,
                 target,
                 structure: s.to_string(),
+                strategy: Some(strategy),
                 seconds,
                 runs: runs.max(2),
                 turns: Vec::new(),
@@ -163,7 +173,10 @@ pub fn measure(
                 reconstruction: Some((rebuilt, exact)),
             });
         }
-        for d in natives.iter().filter(|d| d.available() && others(d.name())) {
+        for d in natives
+            .iter()
+            .filter(|d| d.available() && others(d.name(), None))
+        {
             eprintln!("topolab report: decimate {mesh}: {}", d.name());
             let got = d.decimate(soup, target).map_err(|e| failed(d.name(), e))?;
             rows.push(DecimateRow {
@@ -171,6 +184,7 @@ pub fn measure(
                 faces,
                 target,
                 structure: d.name().to_string(),
+                strategy: None,
                 seconds: got.seconds,
                 runs: 1,
                 turns: Vec::new(),
@@ -200,17 +214,18 @@ fn not_undone(mesh: &str, structure: &str) -> Failure {
     }
 }
 
-/// The Targets row's pair on `soup`: the index half-edge and OpenMesh's Decimater, each from a
-/// fresh build, in turns for [`TURNS`] rounds (the build not timed). Both must reach the same
-/// face count in every round; the first round's results are measured, and the index
-/// half-edge's last run is reconstructed and compared with the original.
+/// The Targets row's pair on `soup`: the index half-edge with [`PAIR_STRATEGY`] and OpenMesh's
+/// Decimater, each from a fresh build, in turns for [`TURNS`] rounds (the build not timed).
+/// Both must give the same mesh in every round ([`result_checksum`], outside the clock); the
+/// first round's results are measured, and the index half-edge's last run is reconstructed
+/// and compared with the original.
 fn pair_in_turns(
     mesh: &str,
     soup: &PolygonSoup,
     target: usize,
 ) -> Result<Vec<DecimateRow>, Failure> {
     eprintln!(
-        "topolab report: decimate {mesh}: {} and {} taking turns",
+        "topolab report: decimate {mesh}: {} ({PAIR_STRATEGY}) and {} taking turns",
         PAIR[0], PAIR[1]
     );
     let mut results: [Option<PolygonSoup>; 2] = [None, None];
@@ -218,12 +233,13 @@ fn pair_in_turns(
     let mut rebuilt = None;
     let seconds = take_turns(0, TURNS, &PAIR, |i| {
         runs[i] += 1;
-        let (seconds, faces_after) = if i == 0 {
+        let (seconds, checksum) = if i == 0 {
             let mut m =
                 <IndexHalfEdge as MeshTopology>::from_soup(soup).map_err(|e| e.to_string())?;
             let watch = Stopwatch::start(&crate::ALLOCATOR);
-            let d = decimate(&mut m, target).map_err(|e| e.to_string())?;
+            let d = decimate(&mut m, target, PAIR_STRATEGY).map_err(|e| e.to_string())?;
             let seconds = watch.ns() * 1e-9;
+            let checksum = result_checksum(live_triangles(&m));
             if runs[i] == 1 {
                 m.garbage_collection();
                 results[i] = Some(to_soup(&m));
@@ -233,21 +249,25 @@ fn pair_in_turns(
                 let s = watch.ns() * 1e-9;
                 rebuilt = Some((s, same_mesh(soup, &m, &r).is_ok()));
             }
-            (seconds, d.faces_after)
+            (seconds, checksum)
         } else {
             let got = NativeDecimater::OpenMesh
                 .decimate(soup, target)
                 .map_err(|e| e.to_string())?;
-            let faces_after = got.result.num_faces();
+            let r = &got.result;
+            let checksum = result_checksum(
+                r.faces()
+                    .map(|f| [f[0], f[1], f[2]].map(|v| r.positions[v as usize])),
+            );
             if runs[i] == 1 {
                 results[i] = Some(got.result);
             }
-            (got.seconds, faces_after)
+            (got.seconds, checksum)
         };
         Ok(Run {
             ns: seconds * 1e9,
-            // The face count both must reach (the vertex and edge counts follow on a torus).
-            answer: Answer::Counts([0, 0, faces_after]),
+            // One algorithm on two structures: the same result mesh, triangle for triangle.
+            answer: Answer::Sum(checksum),
         })
     })
     .map_err(|e| Failure {
@@ -273,6 +293,7 @@ fn pair_in_turns(
                 faces,
                 target,
                 structure: name.to_string(),
+                strategy: (i == 0).then_some(PAIR_STRATEGY),
                 seconds: median(&sorted),
                 runs: turns.len(),
                 turns,
@@ -284,21 +305,37 @@ fn pair_in_turns(
         .collect())
 }
 
+/// The live triangles of `m` (not garbage-collected), by their corners' positions.
+fn live_triangles<M: MeshEdit>(m: &M) -> impl Iterator<Item = [DVec3; 3]> + '_ {
+    let live = (0..m.num_faces()).map(FaceId::new);
+    live.filter(|&f| !m.is_deleted_face(f)).map(|f| {
+        let mut t = [DVec3::ZERO; 3];
+        let mut k = 0;
+        m.face_vertices(f, |v| {
+            if k < 3 {
+                t[k] = m.position(v);
+            }
+            k += 1;
+        });
+        t
+    })
+}
+
 /// The section's note on what its times mean: each decimater's thread CPU time per removed
 /// face on the largest torus it ran, and why the baselines cost what they cost.
 fn per_removed_face(rows: &[DecimateRow]) -> Option<String> {
-    let mut names: Vec<&str> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
     for r in rows {
-        if !names.contains(&r.structure.as_str()) {
-            names.push(&r.structure);
+        if !names.contains(&r.decimater()) {
+            names.push(r.decimater());
         }
     }
     let times: Vec<String> = names
         .iter()
-        .filter_map(|&s| {
+        .filter_map(|s| {
             let r = rows
                 .iter()
-                .filter(|r| r.structure == s)
+                .filter(|r| &r.decimater() == s)
                 .max_by_key(|r| r.faces)?;
             let removed = r.faces.saturating_sub(r.faces_after).max(1);
             Some(format!(
@@ -312,7 +349,7 @@ fn per_removed_face(rows: &[DecimateRow]) -> Option<String> {
         return None;
     }
     Some(format!(
-        "Decimation, the thread's CPU time per removed face on the largest torus each decimater ran: {}. OpenMesh's Decimater runs with the library functions it calls (TriConnectivity::is_collapse_ok, PolyConnectivity::find_halfedge, valence and collapse) compiled in release, OpenMesh built from its source (see Machine): Debian's OpenMesh 9.0 library is built with its assertions, each property access building and comparing two type-name strings and each handle step calling is_valid_handle out of line, which took 90% of the Decimater's instructions (callgrind, 16k torus); what remains is its design, a legality test for every outgoing half-edge of every vertex it heaps again (about 42 per collapse; the lab's decimater tests a candidate when it leaves the heap). CGAL's edge_collapse builds an Edge_profile, with vectors allocated each time, for every cost and placement it computes, and gathers each collapse's edges in a std::set: about a third of its instructions are malloc, free and the tree, none of it a setting of the report's.",
+        "Decimation, the thread's CPU time per removed face on the largest torus each decimater ran: {}. OpenMesh's Decimater runs as OpenMesh ships it, compiled from its source in release (see Machine); its design tests the legality of every outgoing half-edge of every vertex it heaps again, which the lab's eager strategy does too, through each structure's own test (the lazy strategy tests a candidate when it leaves the heap). CGAL's edge_collapse builds an Edge_profile, with vectors allocated each time, for every cost and placement it computes, and gathers each collapse's edges in a std::set: about a third of its instructions are malloc, free and the tree, none of it a setting of the report's.",
         times.join(", ")
     ))
 }

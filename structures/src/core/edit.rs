@@ -225,6 +225,15 @@ pub trait MeshEdit: MeshTopology {
     /// Collapses the edge from `from` to `to` into `to`: `from` and the one or two triangles
     /// of the edge are deleted. Refused unless the link condition holds.
     fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()>;
+    /// Would `collapse_edge(from, to)` be done? Its tests alone, nothing changed: `Ok(())`,
+    /// or the refusal it would return. A decimater that keeps only legal candidates asks
+    /// this of every neighbour it prices (OpenMesh's `DecimaterT` does, in `heap_vertex`).
+    /// The default runs the face-rewrite structures' test through the queries
+    /// ([`crate::core::rewrite`]); a structure whose collapse has its own test overrides it
+    /// with that test.
+    fn check_collapse(&self, from: VertexId, to: VertexId) -> Result<()> {
+        crate::core::rewrite::check_collapse(self, from, to).map(drop)
+    }
     /// Splits vertex `v` into the edge from a new vertex at `p` to `v`, with the triangles
     /// (new, `v`, `left`) and (`v`, new, `right`); the faces around `v` from `left` to
     /// `right` (clockwise seen from outside, `right` excluded) move to the new vertex. The

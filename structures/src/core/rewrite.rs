@@ -364,12 +364,18 @@ pub fn split_face<M: FaceRewrite>(m: &mut M, f: FaceId, p: DVec3) -> Result<Vert
     Ok(n)
 }
 
-/// [`MeshEdit::collapse_edge`] over [`FaceRewrite`]: pmp-library's `is_collapse_ok`, then
-/// the faces around `from` rewritten around `to`.
-pub fn collapse_edge<M: FaceRewrite>(m: &mut M, from: VertexId, to: VertexId) -> Result<()> {
+/// The faces around a vertex, each with its corners.
+pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
+
+/// The test of [`MeshEdit::collapse_edge`] over the queries alone (pmp-library's
+/// `is_collapse_ok` with OpenMesh's tetrahedron test), so that any [`MeshEdit`] can run it:
+/// the faces around `from` with their corners when the collapse may be done, the refusal
+/// otherwise. [`MeshEdit::check_collapse`]'s default, and the first half of [`collapse_edge`].
+pub fn check_collapse<M: MeshEdit>(m: &M, from: VertexId, to: VertexId) -> Result<Star> {
     let op = EditOp::CollapseEdge;
     let no = |r| Err(refuse::<M>(op, r));
-    if !live(m, from) || !live(m, to) {
+    let live = |v: VertexId| v.index() < m.num_vertices() && !m.is_deleted_vertex(v);
+    if !live(from) || !live(to) {
         return no(Refusal::NoSuchElement);
     }
     let ring0 = neighbours(m, from);
@@ -415,6 +421,17 @@ pub fn collapse_edge<M: FaceRewrite>(m: &mut M, from: VertexId, to: VertexId) ->
     {
         return no(Refusal::LinkCondition);
     }
+    Ok((around, faces))
+}
+
+/// [`MeshEdit::collapse_edge`] over [`FaceRewrite`]: [`check_collapse`], then the faces
+/// around `from` rewritten around `to`.
+pub fn collapse_edge<M: FaceRewrite + MeshEdit>(
+    m: &mut M,
+    from: VertexId,
+    to: VertexId,
+) -> Result<()> {
+    let (around, faces) = check_collapse(m, from, to)?;
     let mut old = Vec::new();
     let mut new = Vec::new();
     let mut gone = Vec::new();

@@ -95,7 +95,8 @@ impl Model {
         })
     }
 
-    fn neighbours(&self, v: u32) -> Vec<u32> {
+    /// The vertices that share a face side with `v`, sorted.
+    pub fn neighbours(&self, v: u32) -> Vec<u32> {
         let mut out = Vec::new();
         for (_, f) in self.live_faces() {
             let k = f.len();
@@ -115,7 +116,8 @@ impl Model {
         self.face_with(a, b).is_none() || self.face_with(b, a).is_none()
     }
 
-    fn is_boundary_vertex(&self, v: u32) -> bool {
+    /// Does `v` have an edge with a face on one side only?
+    pub fn is_boundary_vertex(&self, v: u32) -> bool {
         self.neighbours(v)
             .into_iter()
             .any(|w| self.is_boundary_edge(v, w))
@@ -128,6 +130,18 @@ impl Model {
     fn third(&self, f: usize, c: usize) -> u32 {
         let face = self.faces[f].as_ref().expect("live");
         face[(c + 2) % 3]
+    }
+
+    /// The model after collapsing `v0` into `v1`, or `None` when the collapse must be refused
+    /// (pmp-library's `is_collapse_ok` with OpenMesh's tetrahedron test, worked out on the
+    /// face list).
+    pub fn collapse(&self, v0: u32, v1: u32) -> Option<Model> {
+        expect(self, &Edit::Collapse(v0, v1), false)
+    }
+
+    /// The number of live faces.
+    pub fn num_live_faces(&self) -> usize {
+        self.live_faces().count()
     }
 
     /// Removes deleted slots, keeping the order of the others.
@@ -697,7 +711,24 @@ fn run_tally<M: MeshEdit>(
     for step in 0..steps {
         let edit = draw(&mut rng, &model);
         let expected = expect(&model, &edit, M::supports(crate::EditOp::WeldVertices));
+        // A collapse's test alone (what a decimater asks of its candidates) must answer as
+        // the collapse itself then does.
+        let checked = match edit {
+            Edit::Collapse(a, b) => Some(
+                m.check_collapse(VertexId(a), VertexId(b))
+                    .map_err(|e| e.to_string()),
+            ),
+            _ => None,
+        };
         let got = apply(&mut m, &edit);
+        if let Some(checked) = checked {
+            let done = got.as_ref().map(drop).map_err(|e| e.to_string());
+            if checked != done {
+                return Err(format!(
+                    "step {step}: {edit:?}: check_collapse says {checked:?}, the collapse {done:?}"
+                ));
+            }
+        }
         match (expected, got) {
             (Some(next), Ok(())) => {
                 model = next;

@@ -1,6 +1,10 @@
 //! The decimater's priority queue: a binary min-heap of vertices keyed by their best
 //! collapse's error, with each vertex's place in the heap stored so that a key can change or a
-//! vertex leave in O(log n), as OpenMesh's `HeapT` (the heap of `DecimaterT`) does.
+//! vertex leave in O(log n), as OpenMesh's `HeapT` (the heap of `DecimaterT`) does. It sifts
+//! as `HeapT` does, equal keys included: an entry rises past a strictly larger parent only,
+//! sinks past a child that is not larger (the right child taken only when strictly smaller
+//! than the left), a key change or a removal sinks then rises, so that for the same
+//! operations equal keys leave in the same order as from OpenMesh's heap.
 
 /// Marks a vertex that is not in the heap.
 const OUT: u32 = u32::MAX;
@@ -87,18 +91,20 @@ impl VertexHeap {
     fn down(&mut self, mut i: usize, key: &[f32]) -> usize {
         loop {
             let (l, r) = (2 * i + 1, 2 * i + 2);
-            let mut smallest = i;
-            if l < self.items.len() && self.less(l, smallest, key) {
-                smallest = l;
-            }
-            if r < self.items.len() && self.less(r, smallest, key) {
-                smallest = r;
-            }
-            if smallest == i {
+            if l >= self.items.len() {
                 return i;
             }
-            self.swap(i, smallest);
-            i = smallest;
+            let child = if r < self.items.len() && self.less(r, l, key) {
+                r
+            } else {
+                l
+            };
+            // `HeapT::downheap` stops only at a strictly larger child: an equal one rises.
+            if self.less(i, child, key) {
+                return i;
+            }
+            self.swap(i, child);
+            i = child;
         }
     }
 }
@@ -124,5 +130,25 @@ mod tests {
             out.push(v);
         }
         assert_eq!(out, vec![4, 1, 0, 3, 2]);
+    }
+
+    /// Equal keys leave as from OpenMesh's `HeapT`: worked by hand through its `insert`
+    /// (push, rise past strictly larger parents) and `pop_front` (the last entry to the top,
+    /// sinking past children not larger than it, the right child only when strictly smaller).
+    #[test]
+    fn equal_keys_leave_in_the_order_of_openmesh_heap() {
+        let key = vec![1.0, 1.0, 1.0, 1.0];
+        let mut h = VertexHeap::new(key.len());
+        for v in 0..4 {
+            h.upsert(v, &key);
+        }
+        // [0 1 2 3]; pop 0: 3 to the top, sinks past 1 (equal): [1 3 2]; pop 1: 2 to the top,
+        // sinks past 3: [3 2]; pop 3, then 2. A heap that stops at equal children would give
+        // 0 3 2 1.
+        let mut out = Vec::new();
+        while let Some(v) = h.pop(&key) {
+            out.push(v);
+        }
+        assert_eq!(out, vec![0, 1, 3, 2]);
     }
 }

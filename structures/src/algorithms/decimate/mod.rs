@@ -1,52 +1,89 @@
 //! Decimation by quadric error (Garland & Heckbert, "Surface simplification using quadric
-//! error metrics", SIGGRAPH 1997) on any [`MeshEdit`] structure, as OpenMesh's `DecimaterT`
-//! with `ModQuadricT` runs it, and the reconstruction of the original mesh from its record
-//! ([`reconstruct`]): the thinning "for compression and level of detail" of the lecture on
-//! polygon-mesh data structures, where "the selection strategy when removing polygons" decides
-//! and "reconstruction must be possible again".
+//! error metrics", SIGGRAPH 1997) on any [`MeshEdit`] structure, with two strategies for its
+//! candidates ([`Strategy`]): OpenMesh's `DecimaterT` with `ModQuadricT` alone, step for step
+//! ([`Strategy::Eager`]: what the report times against OpenMesh's own Decimater), and the
+//! lab's lazy one ([`Strategy::Lazy`]); and the reconstruction of the original mesh from the
+//! record of either ([`reconstruct`]): the thinning "for compression and level of detail" of
+//! the lecture on polygon-mesh data structures, where "the selection strategy when removing
+//! polygons" decides and "reconstruction must be possible again".
 //!
-//! ## What it follows
+//! ## What both do, as OpenMesh does
 //!
 //! - **Quadrics** (`ModQuadricT::initialize`): per triangle the plane through it, unit normal
 //!   `n = (p1 − p0) × (p2 − p0) / |…|`, `d = −n·p0`; its quadric `(n, d)(n, d)ᵀ` weighted by
 //!   the triangle's area (OpenMesh's default; a degenerate triangle, `|…| ≤ FLT_MIN`, keeps
 //!   the unnormalised normal and weight `|…|`, as there) is added to each of its three
 //!   vertices.
-//! - **Candidates** (`DecimaterT::heap_vertex`): a heap of vertices, each keyed by its best
-//!   outgoing half-edge collapse, the error `(Q_from + Q_to)(p_to)` rounded to `f32` as
-//!   OpenMesh's priorities are. A collapse moves `from` onto `to`: no optimal placement (the
-//!   `CollapseInfo` of OpenMesh keeps `p1`, the remaining vertex's position).
-//! - **Legality**: OpenMesh tests each candidate with `is_collapse_legal` before heaping it;
-//!   here the candidate is tested when it comes off the heap, by [`MeshEdit::collapse_edge`]'s
-//!   own refusal (the link condition and the tetrahedron test of `is_collapse_ok`, the same
-//!   tests), and a refused vertex goes back on the heap with its next-best neighbour (the
-//!   order `(error, to)`), which is the candidate OpenMesh would have heaped.
-//! - **Geometry**: a collapse that would flip a surviving face around `from` (its normal's dot
-//!   product with the old one not positive) or leave it without area is skipped like a
-//!   refused one: OpenMesh's `ModNormalFlippingT` at its default 90°, the module OpenMesh users
-//!   add beside `ModQuadricT` (the report's OpenMesh baseline runs `ModQuadricT` alone, so this
-//!   test is work the lab does and OpenMesh does not). Without it, flat regions decimate into
-//!   zero-area triangles.
+//! - **Priority** (`ModQuadricT::collapse_priority`): a collapse moves `from` onto `to`, with
+//!   no optimal placement (the `CollapseInfo` of OpenMesh keeps `p1`, the remaining vertex's
+//!   position); its error is `(Q_from + Q_to)(p_to)`, rounded to `f32` as OpenMesh's
+//!   priorities are. An error past `f32` (or NaN) is no candidate.
+//! - **Heap** (`DecimaterT`'s `HeapT`, `heap.rs`): vertices, each keyed by its best collapse;
+//!   the same sifting, so equal keys leave in the same order for the same operations.
 //! - **After a collapse** (`postprocess_collapse`): `Q_to += Q_from`, and every former
-//!   neighbour of `from` is heaped again.
+//!   neighbour of `from` is heaped again, in the structure's rotation around `from`. The
+//!   other vertices keep their keys, even those whose best collapse goes onto `to` (its
+//!   quadric grew): OpenMesh's keys are as stale.
 //! - **Stop** (`decimate_to_faces`): when the live face count is at most the target or no
 //!   candidate is left; each collapse removes two triangles.
 //!
-//! Two differences, both documented choices: a **boundary vertex is never removed** (OpenMesh
-//! lets one slide along its boundary edge; here every collapse is the inverse of a
-//! [`MeshEdit::split_vertex`], which splits interior fans only, so that [`reconstruct`] can
-//! always undo it; on closed meshes, the report's tori, nothing differs), and an error that
-//! round-off makes negative (flat regions) counts as 0, where OpenMesh skips the candidate.
+//! ## Where the strategies differ
+//!
+//! - **Eager** (`DecimaterT::heap_vertex`): to key a vertex, each neighbour in turn (the
+//!   structure's rotation, clockwise seen from outside as OpenMesh's circulator) is first
+//!   tested for legality by [`MeshEdit::check_collapse`] (the tests of OpenMesh's
+//!   `is_collapse_legal` that concern an interior vertex: `is_collapse_ok`, with its link
+//!   condition, and the tetrahedron test; OpenMesh's locked and feature marks have no
+//!   counterpart here), and only a legal one is priced; the smallest error wins, the first of
+//!   equal ones (OpenMesh's strict `<`), and an error that round-off makes negative is
+//!   skipped (OpenMesh keeps priorities `>= 0`). A vertex
+//!   with no legal collapse leaves the heap. When a vertex comes off the heap its collapse is
+//!   tested again (by [`MeshEdit::collapse_edge`]'s own refusal, the same tests) and, if
+//!   refused, dropped: the vertex is out of the heap until a collapse next to it heaps it
+//!   again. No geometric test: the report's OpenMesh baseline runs `ModQuadricT` alone.
+//! - **Lazy**: a vertex is keyed by its cheapest neighbour without a legality test (the
+//!   order `(error, to)`, an error that round-off makes negative counted as 0); the test is
+//!   [`MeshEdit::collapse_edge`]'s refusal when the vertex comes off the heap, and a refused
+//!   vertex goes back on the heap with its next-best neighbour. A collapse that would flip a
+//!   surviving face around `from` (its normal's dot product with the old one not positive)
+//!   or leave it without area is skipped like a refused one: OpenMesh's
+//!   `ModNormalFlippingT` at its default 90°, the module OpenMesh users add beside
+//!   `ModQuadricT`. Fewer legality tests than the eager strategy, and flat regions keep
+//!   their area (without the test they decimate into zero-area triangles, which `topolab
+//!   check` reports); not OpenMesh's algorithm, so not what the report compares with it.
+//!
+//! What is left between the eager strategy and OpenMesh's Decimater:
+//!
+//! - **Boundary**: a boundary vertex is never removed, in both strategies. OpenMesh lets one
+//!   slide along a boundary edge onto a boundary neighbour; here every collapse is the
+//!   inverse of a [`MeshEdit::split_vertex`], which splits interior fans only, so that
+//!   [`reconstruct`] can always undo it. An interior vertex may collapse onto a boundary
+//!   one, as in OpenMesh. On closed meshes, the report's tori, nothing differs. OpenMesh's
+//!   other boundary rule, at least two faces at `from`, always holds for an interior vertex
+//!   whose collapse passes `is_collapse_ok` (with two neighbours, its two triangles' third
+//!   corners would be one vertex, which `is_collapse_ok` refuses).
+//! - **Ties**: of equal errors around a vertex, OpenMesh keeps the first in the rotation
+//!   from its vertex's stored half-edge, and heaps a removed vertex's neighbours again in
+//!   that rotation; here the rotation starts at the structure's own stored half-edge. The
+//!   half-edges store the one OpenMesh does on the meshes tested: on closed tori, spheres and
+//!   a genus-2 plate, symmetric ones included (whose `f32` errors tie all over, and a flat
+//!   region's are 0), the eager strategy on both half-edges makes OpenMesh's collapses
+//!   exactly (`tests/decimate_openmesh.rs` in the `topolab` crate). A structure that starts
+//!   its rotations elsewhere may break such ties otherwise; without ties the start does not
+//!   matter.
 //!
 //! CGAL's `Surface_mesh_simplification::edge_collapse` with the Garland–Heckbert policies
 //! differs more: it keys edges, not vertices, and places the new vertex at the quadric's
-//! minimiser; the report sets both beside this one, with the error measured the same way on
-//! every result.
+//! minimiser; the report sets it beside these, with the error measured the same way on every
+//! result.
 //!
 //! ## Cost
 //!
-//! O(n log n) for n vertices: each collapse touches the neighbourhoods of its two vertices
-//! (O(k)) and updates O(k) heap keys (O(log n) each).
+//! O(n log n) heap work for n vertices: each collapse touches the neighbourhoods of its two
+//! vertices (O(k)) and updates O(k) heap keys (O(log n) each). The eager strategy adds a
+//! legality test for every neighbour of every vertex it keys, O(k) tests per key, each as
+//! costly as the structure's collapse test; the lazy one tests only the candidates that come
+//! off the heap.
 
 mod heap;
 mod reconstruct;
@@ -195,6 +232,48 @@ impl Collapses {
     }
 }
 
+/// How the decimater keeps its candidates: when a collapse is tested for legality, what
+/// happens to a refused one, and whether a geometric test runs (see the module docs). Both
+/// price, heap, update and stop alike, and both records are undone by [`reconstruct`].
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Strategy {
+    /// As OpenMesh's `DecimaterT` with `ModQuadricT` alone: every neighbour of a vertex tested
+    /// for legality before it is priced, only legal collapses heaped, one refused when it
+    /// leaves the heap dropped, no geometric test. What the report times against OpenMesh's
+    /// own Decimater, so that the two run one algorithm and the ratio compares structures.
+    Eager,
+    /// The lab's: collapses priced without a legality test and tested when they leave the
+    /// heap (a refused vertex heaped again with its next-best neighbour), and a collapse that
+    /// would flip or flatten a surviving face skipped (OpenMesh's `ModNormalFlippingT` at
+    /// 90°): fewer legality tests, and flat regions keep their area.
+    Lazy,
+}
+
+impl Strategy {
+    /// Both, eager first.
+    pub const ALL: [Strategy; 2] = [Strategy::Eager, Strategy::Lazy];
+
+    /// The name on the command line and in the report.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Strategy::Eager => "eager",
+            Strategy::Lazy => "lazy",
+        }
+    }
+
+    /// The strategy called `name` ([`Strategy::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|s| s.name() == name)
+    }
+}
+
+impl std::fmt::Display for Strategy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// What [`decimate`] did.
 #[derive(Clone, Debug, Default)]
 pub struct Decimation {
@@ -217,29 +296,9 @@ struct Decimater {
 }
 
 impl Decimater {
-    /// `DecimaterT::heap_vertex`: finds `v`'s best collapse (the smallest `(error, to)`, after
-    /// `after` when given) and (re)heaps `v`, or takes it out when it has none.
-    fn heap_vertex<M: MeshEdit>(&mut self, m: &M, v: u32, after: Option<(f32, u32)>) {
-        let vid = VertexId(v);
-        let mut best: Option<(f32, u32)> = None;
-        if !m.is_boundary_vertex(vid) {
-            let qv = self.quadric[v as usize];
-            m.vertex_vertices(vid, |w| {
-                let err = qv.add(&self.quadric[w.index()]).eval(m.position(w));
-                // Round-off on flat regions: OpenMesh skips negative errors, they count as 0.
-                let key = (err.max(0.0) as f32, w.0);
-                // An error past f32 (or NaN) is no candidate, as in OpenMesh (prio < FLT_MAX).
-                if key.0.is_nan() || key.0 >= f32::MAX {
-                    return;
-                }
-                if after.is_some_and(|a| key <= a) {
-                    return;
-                }
-                if best.is_none_or(|b| key < b) {
-                    best = Some(key);
-                }
-            });
-        }
+    /// Keys `v` by `best` (its collapse's error and target) and heaps it, or takes it out of
+    /// the heap when it has none: the end of `DecimaterT::heap_vertex`.
+    fn key(&mut self, v: u32, best: Option<(f32, u32)>) {
         match best {
             Some((p, w)) => {
                 self.priority[v as usize] = p;
@@ -251,6 +310,80 @@ impl Decimater {
                 self.target[v as usize] = u32::MAX;
                 self.priority[v as usize] = -1.0;
             }
+        }
+    }
+
+    /// The error of collapsing `v` onto `w`: `(Q_v + Q_w)(p_w)`.
+    fn error<M: MeshTopology>(&self, m: &M, v: VertexId, w: VertexId) -> f64 {
+        self.quadric[v.index()]
+            .add(&self.quadric[w.index()])
+            .eval(m.position(w))
+    }
+
+    /// The eager strategy's search (`DecimaterT::heap_vertex`): every neighbour `w` of `v`
+    /// in the structure's rotation whose collapse [`MeshEdit::check_collapse`] allows, priced;
+    /// the smallest `f32` error wins, the first of equal ones, skipping what OpenMesh skips
+    /// (a negative error, NaN, `FLT_MAX` and beyond). A boundary `v` has none (module docs).
+    fn cheapest_legal<M: MeshEdit>(&self, m: &M, v: VertexId) -> Option<(f32, u32)> {
+        if m.is_boundary_vertex(v) {
+            return None;
+        }
+        let mut best: Option<(f32, u32)> = None;
+        m.vertex_vertices(v, |w| {
+            // OpenMesh tests legality first and prices only what passes.
+            if m.check_collapse(v, w).is_err() {
+                return;
+            }
+            let p = self.error(m, v, w) as f32;
+            if (0.0..f32::MAX).contains(&p) && best.is_none_or(|(b, _)| p < b) {
+                best = Some((p, w.0));
+            }
+        });
+        best
+    }
+
+    /// The lazy strategy's search: the neighbour `w` of `v` with the smallest
+    /// `(error, w)` after `after` when given, untested (a negative error counts as 0; past
+    /// `f32` or NaN is no candidate). A boundary `v` has none (module docs).
+    fn cheapest<M: MeshTopology>(
+        &self,
+        m: &M,
+        v: VertexId,
+        after: Option<(f32, u32)>,
+    ) -> Option<(f32, u32)> {
+        if m.is_boundary_vertex(v) {
+            return None;
+        }
+        let mut best: Option<(f32, u32)> = None;
+        m.vertex_vertices(v, |w| {
+            let key = (self.error(m, v, w).max(0.0) as f32, w.0);
+            if key.0.is_nan() || key.0 >= f32::MAX || after.is_some_and(|a| key <= a) {
+                return;
+            }
+            if best.is_none_or(|b| key < b) {
+                best = Some(key);
+            }
+        });
+        best
+    }
+
+    /// Keys `v` afresh by the strategy's search.
+    fn heap_vertex<M: MeshEdit>(&mut self, m: &M, v: u32, strategy: Strategy) {
+        let best = match strategy {
+            Strategy::Eager => self.cheapest_legal(m, VertexId(v)),
+            Strategy::Lazy => self.cheapest(m, VertexId(v), None),
+        };
+        self.key(v, best);
+    }
+
+    /// `v`'s collapse, just off the heap, was refused: the eager strategy drops it (as
+    /// OpenMesh does: `v` stays out of the heap until a collapse next to it keys it again),
+    /// the lazy one keys `v` by its next-best neighbour.
+    fn refused<M: MeshTopology>(&mut self, m: &M, v: u32, strategy: Strategy) {
+        if strategy == Strategy::Lazy {
+            let after = (self.priority[v as usize], self.target[v as usize]);
+            let best = self.cheapest(m, VertexId(v), Some(after));
+            self.key(v, best);
         }
     }
 }
@@ -318,11 +451,16 @@ fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
     ok
 }
 
-/// Decimates `m` by quadric error until at most `target_faces` live faces remain or no legal
-/// collapse is left (see the module docs for the algorithm). Deleted elements stay marked
-/// (call [`MeshEdit::garbage_collection`] to compact them; [`reconstruct`] needs them
-/// uncollected). Errors other than a collapse's refusal are returned as they come.
-pub fn decimate<M: MeshEdit>(m: &mut M, target_faces: usize) -> Result<Decimation> {
+/// Decimates `m` by quadric error with `strategy` until at most `target_faces` live faces
+/// remain or no legal collapse is left (see the module docs for the algorithm). Deleted
+/// elements stay marked (call [`MeshEdit::garbage_collection`] to compact them;
+/// [`reconstruct`] needs them uncollected). Errors other than a collapse's refusal are
+/// returned as they come.
+pub fn decimate<M: MeshEdit>(
+    m: &mut M,
+    target_faces: usize,
+    strategy: Strategy,
+) -> Result<Decimation> {
     let n = m.num_vertices();
     let mut faces = (0..m.num_faces())
         .filter(|&f| !m.is_deleted_face(FaceId::new(f)))
@@ -339,7 +477,7 @@ pub fn decimate<M: MeshEdit>(m: &mut M, target_faces: usize) -> Result<Decimatio
     };
     for v in 0..n as u32 {
         if !m.is_deleted_vertex(VertexId(v)) {
-            d.heap_vertex(m, v, None);
+            d.heap_vertex(m, v, strategy);
         }
     }
     let mut support: Vec<u32> = Vec::with_capacity(16);
@@ -351,11 +489,11 @@ pub fn decimate<M: MeshEdit>(m: &mut M, target_faces: usize) -> Result<Decimatio
         let (from, to) = (VertexId(v), VertexId(d.target[v as usize]));
         let Some((left, right)) = wings(m, from, to) else {
             // Not two triangles around the edge: the collapse would be refused.
-            d.heap_vertex(m, v, Some((d.priority[v as usize], to.0)));
+            d.refused(m, v, strategy);
             continue;
         };
-        if !keeps_faces(m, from, to) {
-            d.heap_vertex(m, v, Some((d.priority[v as usize], to.0)));
+        if strategy == Strategy::Lazy && !keeps_faces(m, from, to) {
+            d.refused(m, v, strategy);
             continue;
         }
         support.clear();
@@ -364,23 +502,22 @@ pub fn decimate<M: MeshEdit>(m: &mut M, target_faces: usize) -> Result<Decimatio
         match m.collapse_edge(from, to) {
             Ok(()) => {}
             Err(Error::EditRefused { .. }) => {
-                d.heap_vertex(m, v, Some((d.priority[v as usize], to.0)));
+                d.refused(m, v, strategy);
                 continue;
             }
             Err(e) => return Err(e),
         }
         faces -= 2;
-        let qv = d.quadric[v as usize];
         c.from.push(v);
         c.to.push(to.0);
         c.left.push(left);
         c.right.push(right);
         c.position.push(position);
-        c.error
-            .push(qv.add(&d.quadric[to.index()]).eval(m.position(to)).max(0.0));
+        c.error.push(d.error(m, from, to).max(0.0));
+        let qv = d.quadric[v as usize];
         d.quadric[to.index()].add_assign(&qv);
         for &s in &support {
-            d.heap_vertex(m, s, None);
+            d.heap_vertex(m, s, strategy);
         }
     }
     out.faces_after = faces;
@@ -473,20 +610,30 @@ mod tests {
     #[test]
     fn decimating_a_torus_reaches_the_target_and_stays_valid() {
         let soup = meshes::torus(20, 12);
-        let mut m = IndexHalfEdge::from_soup(&soup).expect("manifold");
-        let d = decimate(&mut m, 48).expect("decimates");
-        assert_eq!(d.faces_before, 480);
-        assert!(
-            d.faces_after <= 48 && d.faces_after >= 46,
-            "{}",
-            d.faces_after
-        );
-        assert_eq!(d.collapses.len(), (480 - d.faces_after) / 2);
-        m.validate().expect("valid");
-        m.garbage_collection();
-        assert_eq!(m.num_faces(), d.faces_after);
-        // Errors are the heap's order only roughly (keys change), but never negative.
-        assert!(d.collapses.error.iter().all(|&e| e >= 0.0));
+        for strategy in Strategy::ALL {
+            let mut m = IndexHalfEdge::from_soup(&soup).expect("manifold");
+            let d = decimate(&mut m, 48, strategy).expect("decimates");
+            assert_eq!(d.faces_before, 480);
+            assert!(
+                d.faces_after <= 48 && d.faces_after >= 46,
+                "{strategy}: {}",
+                d.faces_after
+            );
+            assert_eq!(d.collapses.len(), (480 - d.faces_after) / 2);
+            m.validate().expect("valid");
+            m.garbage_collection();
+            assert_eq!(m.num_faces(), d.faces_after);
+            // Errors are the heap's order only roughly (keys change), but never negative.
+            assert!(d.collapses.error.iter().all(|&e| e >= 0.0));
+        }
+    }
+
+    #[test]
+    fn strategies_are_named_both_ways() {
+        for s in Strategy::ALL {
+            assert_eq!(Strategy::from_name(s.name()), Some(s));
+        }
+        assert_eq!(Strategy::from_name("greedy"), None);
     }
 
     #[test]
@@ -504,9 +651,11 @@ mod tests {
 
     #[test]
     fn a_sphere_goes_down_to_a_tetrahedron_at_the_least() {
-        let mut m = IndexHalfEdge::from_soup(&meshes::sphere(6, 8)).expect("manifold");
-        let d = decimate(&mut m, 0).expect("decimates");
-        assert!(d.faces_after >= 4, "{}", d.faces_after);
-        m.validate().expect("valid");
+        for strategy in Strategy::ALL {
+            let mut m = IndexHalfEdge::from_soup(&meshes::sphere(6, 8)).expect("manifold");
+            let d = decimate(&mut m, 0, strategy).expect("decimates");
+            assert!(d.faces_after >= 4, "{strategy}: {}", d.faces_after);
+            m.validate().expect("valid");
+        }
     }
 }

@@ -626,7 +626,9 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         }
     }
 
-    pub(super) fn collapse_checked(&mut self, from: u32, to: u32) -> Result<()> {
+    /// The tests of [`Self::collapse_checked`], nothing changed: the half-edge from `from`
+    /// to `to` when the collapse may be done, the refusal otherwise.
+    pub(super) fn collapse_check(&self, from: u32, to: u32) -> Result<u32> {
         let op = EditOp::CollapseEdge;
         self.live_vertex(from, op)?;
         self.live_vertex(to, op)?;
@@ -649,6 +651,11 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         if !self.is_collapse_ok(h) {
             return Err(Self::refuse(op, Refusal::LinkCondition));
         }
+        Ok(h)
+    }
+
+    pub(super) fn collapse_checked(&mut self, from: u32, to: u32) -> Result<()> {
+        let h = self.collapse_check(from, to)?;
         self.collapse_unchecked(h);
         Ok(())
     }

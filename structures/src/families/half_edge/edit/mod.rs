@@ -195,6 +195,9 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
     fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
         self.collapse_checked(from.0, to.0)
     }
+    fn check_collapse(&self, from: VertexId, to: VertexId) -> Result<()> {
+        self.collapse_check(from.0, to.0).map(drop)
+    }
     fn split_vertex(
         &mut self,
         v: VertexId,
