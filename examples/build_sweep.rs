@@ -32,8 +32,11 @@ type Build = fn(&PolygonSoup) -> usize;
 
 fn build<M: MeshTopology>(soup: &PolygonSoup) -> usize {
     // The baseline's own construction when it has one, as the report times it.
-    if let Some(built) = M::native().and_then(|k| k.construction(soup)) {
-        return built.expect("native construction").num_faces();
+    if let Some(k) = M::native() {
+        return k
+            .construction(soup)
+            .expect("native construction")
+            .num_faces();
     }
     M::from_soup(soup)
         .expect("the generated meshes are manifold")

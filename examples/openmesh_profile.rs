@@ -67,10 +67,7 @@ fn main() -> std::process::ExitCode {
         return std::process::ExitCode::SUCCESS;
     }
     let native = OpenMesh::native().expect("OpenMesh has native kernels");
-    let mut m = native
-        .construction(&soup)
-        .expect("OpenMesh has a native construction")
-        .expect("a torus is manifold");
+    let mut m = native.construction(&soup).expect("a torus is manifold");
     let workload = match kernel.as_str() {
         "sqrt3" => Some(Changing::Sqrt3),
         "collapse" => Some(Changing::Collapse),
