@@ -375,7 +375,7 @@ fn heap_library() -> Shim {
     Shim {
         library: "topolab_heap",
         build,
-        sources: vec!["heap/heap.cpp"],
+        sources: vec!["heap/heap.cpp".into()],
         links: Vec::new(),
         cfg: Some("has_cpp_heap"),
     }
@@ -488,8 +488,8 @@ fn qhull_shim(include_dirs: &[PathBuf]) -> Shim {
     Shim {
         library: "topolab_qhull_shim",
         build,
-        sources: vec!["qhull/shim.c"],
+        sources: vec!["qhull/shim.c".into()],
         links: vec!["qhull_r"],
-        cfg: "has_qhull",
+        cfg: Some("has_qhull"),
     }
 }

@@ -91,12 +91,9 @@ template <class Adapter> class CgalMesh final : public Mesh {
   }
 
   int64_t edge_neighbour(uint32_t e, uint32_t f, bool successor) const override {
-    const FD in = a_.face(f);
-    for (HD h : {a_.halfedge_at(2 * e), a_.halfedge_at(2 * e + 1)}) {
-      if (face(h, g()) != in) continue;
-      return eid(successor ? next(h, g()) : prev(h, g()));
-    }
-    return -1;
+    const HD h = side_in(a_.halfedge_at(2 * e), a_.face(f));
+    if (h == Traits::null_halfedge()) return -1;
+    return eid(successor ? next(h, g()) : prev(h, g()));
   }
 
   void boundary_curves(topolab_cgal_emit emit, topolab_cgal_end_curve end_curve,
@@ -178,17 +175,26 @@ template <class Adapter> class CgalMesh final : public Mesh {
     });
   }
 
-  uint64_t sampled(int op, const uint32_t *ids, size_t count) const override {
-    return dispatch(op, [&](auto code) -> uint64_t {
+  std::unique_ptr<topolab_cgal_sample> prepare_sample(int op, const uint32_t *ids,
+                                                      size_t count) const override {
+    std::unique_ptr<topolab_cgal_sample> prepared;
+    dispatch(op, [&](auto code) -> uint64_t {
       constexpr int Code = decltype(code)::value;
-      if constexpr (Code == BOUNDARY_CURVES) {
-        return 0;
-      } else {
-        uint64_t sum = 0;
-        for (size_t i = 0; i < count; ++i) sum += term<Code>(element<Code>(ids[i]));
-        return sum;
+      if constexpr (Code != BOUNDARY_CURVES) {
+        auto sample = std::make_unique<Sample<Code>>(*this);
+        sample->queries.reserve(count);
+        for (size_t i = 0; i < count; ++i) {
+          if constexpr (Code == EDGE_SUCCESSOR || Code == EDGE_PREDECESSOR) {
+            sample->queries.emplace_back(a_.halfedge_at(2 * ids[2 * i]), a_.face(ids[2 * i + 1]));
+          } else {
+            sample->queries.push_back(element<Code>(ids[i]));
+          }
+        }
+        prepared = std::move(sample);
       }
+      return 0;
     });
+    return prepared;
   }
 
   void prepare_workload(int workload) override {
@@ -211,12 +217,55 @@ template <class Adapter> class CgalMesh final : public Mesh {
   }
 
  private:
+  // The sampled queries of operator Op in the structure's descriptors: the element each asks
+  // about (an edge by its halfedge 2e), or (edge, face) for successor and predecessor. run() is
+  // compiled for Op alone, as a sweep is, and reads no id table.
+  template <int Op> struct Sample final : topolab_cgal_sample {
+    static constexpr bool kPairs = Op == EDGE_SUCCESSOR || Op == EDGE_PREDECESSOR;
+    // The descriptor element<Op> gives for an id.
+    using Element = decltype(std::declval<const CgalMesh &>().template element<Op>(0));
+    using Query = std::conditional_t<kPairs, std::pair<HD, FD>, Element>;
+
+    explicit Sample(const CgalMesh &mesh) : mesh(mesh) {}
+
+    uint64_t run() const override {
+      uint64_t sum = 0;
+      for (const Query &q : queries) {
+        if constexpr (kPairs) {
+          sum += mesh.template neighbour_term<Op>(q.first, q.second);
+        } else {
+          sum += mesh.template term<Op>(q);
+        }
+      }
+      return sum;
+    }
+
+    const CgalMesh &mesh;
+    std::vector<Query> queries;
+  };
+
   const Graph &g() const { return a_.graph(); }
   uint32_t eid(HD h) const { return a_.hid(h) / 2; }
 
   // How an answer enters a checksum: vertices and faces by index, edges by their end vertices.
   uint64_t key(HD h) const {
     return edge_key(a_.vid(source(h, g())), a_.vid(target(h, g())));
+  }
+
+  // The side of edge x (one of its halfedges) in face f, or null_halfedge when x does not
+  // bound f: where the successor and predecessor of the edge in f start.
+  HD side_in(HD x, FD f) const {
+    for (HD h : {x, opposite(x, g())})
+      if (face(h, g()) == f) return h;
+    return Traits::null_halfedge();
+  }
+
+  // The checksum term of one (edge, face) query of edge-successor or edge-predecessor, as the
+  // harness's generic kernel sums it: nothing when the edge does not bound the face.
+  template <int Op> uint64_t neighbour_term(HD x, FD f) const {
+    const HD h = side_in(x, f);
+    if (h == Traits::null_halfedge()) return 0;
+    return mix(key(h), key(Op == EDGE_SUCCESSOR ? next(h, g()) : prev(h, g())));
   }
 
   // The kind of element operator Op asks about, by id (edges by their halfedge 2e).

@@ -44,6 +44,15 @@ struct Input {
 
 }  // namespace topolab_cgal
 
+// A sampled kernel prepared for one operator of one mesh, behind the C API's opaque pointer
+// (the type of shim.h): its queries as the structure's own descriptors, so that run() reads no
+// id table. It refers to its mesh, which must outlive it unchanged.
+struct topolab_cgal_sample {
+  virtual ~topolab_cgal_sample() = default;
+  // The checksum of the prepared queries (harness/src/checksum.rs). May throw.
+  virtual uint64_t run() const = 0;
+};
+
 // One built structure, behind the C API's opaque pointer (the type of shim.h). Ids are checked
 // by the Rust wrapper; every method may throw (the C API's guard catches it).
 struct topolab_cgal_mesh {
@@ -64,7 +73,10 @@ struct topolab_cgal_mesh {
   // 0 when valid, else the problem code of topolab_cgal_validate with *element set.
   virtual int validate(uint32_t *element) const = 0;
   virtual uint64_t sweep(int op) const = 0;
-  virtual uint64_t sampled(int op, const uint32_t *ids, size_t count) const = 0;
+  // The sampled kernel of `op` over `count` queries (the ids of topolab_cgal_prepare_sample,
+  // checked by the Rust wrapper); null for an operator without one (boundary-curves).
+  virtual std::unique_ptr<topolab_cgal_sample> prepare_sample(int op, const uint32_t *ids,
+                                                              size_t count) const = 0;
   virtual void prepare_workload(int workload) = 0;
   virtual double workload(int workload) = 0;
 

@@ -156,14 +156,25 @@ int topolab_cgal_sweep(const topolab_cgal_mesh *mesh, int op, uint64_t *out) noe
   });
 }
 
-int topolab_cgal_sampled(const topolab_cgal_mesh *mesh, int op, const uint32_t *ids, size_t count,
-                         uint64_t *out) noexcept {
+int topolab_cgal_prepare_sample(const topolab_cgal_mesh *mesh, int op, const uint32_t *ids,
+                                size_t count, topolab_cgal_sample **out) noexcept {
   return guard([&] {
     if (!known_op(op)) return TOPOLAB_CGAL_UNKNOWN_CODE;
-    *out = mesh->sampled(op, ids, count);
+    std::unique_ptr<topolab_cgal_sample> sample = mesh->prepare_sample(op, ids, count);
+    if (!sample) return TOPOLAB_CGAL_UNKNOWN_CODE;
+    *out = sample.release();
     return TOPOLAB_CGAL_OK;
   });
 }
+
+int topolab_cgal_sampled(const topolab_cgal_sample *sample, uint64_t *out) noexcept {
+  return guard([&] {
+    *out = sample->run();
+    return TOPOLAB_CGAL_OK;
+  });
+}
+
+void topolab_cgal_free_sample(topolab_cgal_sample *sample) noexcept { delete sample; }
 
 int topolab_cgal_prepare_workload(topolab_cgal_mesh *mesh, int workload) noexcept {
   return guard([&] {

@@ -53,6 +53,8 @@ extern "C" {
 
 /* A CGAL mesh with double-precision points, owned by the caller. */
 typedef struct topolab_cgal_mesh topolab_cgal_mesh;
+/* A sampled kernel prepared for one operator of one mesh, owned by the caller. */
+typedef struct topolab_cgal_sample topolab_cgal_sample;
 
 /* Receives one answer (an index) of a query. Must not unwind (Rust catches its panics). */
 typedef void (*topolab_cgal_emit)(void *context, uint32_t index);
@@ -124,10 +126,20 @@ int topolab_cgal_validate(const topolab_cgal_mesh *mesh, int *problem,
 /* *out = the checksum of operator `op` over all elements (harness/src/checksum.rs), computed in
  * one C++ loop with CGAL's circulators. */
 int topolab_cgal_sweep(const topolab_cgal_mesh *mesh, int op, uint64_t *out) TOPOLAB_CGAL_NOEXCEPT;
-/* *out = the same checksum over the query elements ids[0..count] only (vertex, edge or face ids
- * by the operator's input; faces for edge-successor/predecessor); 0 for boundary-curves. */
-int topolab_cgal_sampled(const topolab_cgal_mesh *mesh, int op, const uint32_t *ids, size_t count,
-                         uint64_t *out) TOPOLAB_CGAL_NOEXCEPT;
+/* Prepares the sampled kernel of operator `op` over `count` queries into *out (owned by the
+ * caller, freed by topolab_cgal_free_sample): ids[0..count], vertex, edge or face ids by the
+ * operator's input, or for edge-successor/predecessor `count` (edge, face) pairs ids[2i],
+ * ids[2i + 1]. The queries are translated to the structure's own descriptors here (a
+ * Polyhedron's handles from its id tables), so that a timed topolab_cgal_sampled translates
+ * nothing. The sample refers to `mesh`, which must outlive it unchanged.
+ * TOPOLAB_CGAL_UNKNOWN_CODE for boundary-curves, which has no queries to sample. */
+int topolab_cgal_prepare_sample(const topolab_cgal_mesh *mesh, int op, const uint32_t *ids,
+                                size_t count, topolab_cgal_sample **out) TOPOLAB_CGAL_NOEXCEPT;
+/* *out = the checksum of the prepared queries, answered as the harness's generic kernel answers
+ * them (a successor or predecessor of an edge that does not bound the face counts nothing). */
+int topolab_cgal_sampled(const topolab_cgal_sample *sample, uint64_t *out) TOPOLAB_CGAL_NOEXCEPT;
+/* Frees a sample from topolab_cgal_prepare_sample. NULL is allowed. */
+void topolab_cgal_free_sample(topolab_cgal_sample *sample) TOPOLAB_CGAL_NOEXCEPT;
 /* Allocates what workload `workload` needs (the normal arrays for normals), so that a timed
  * run of topolab_cgal_workload computes only. */
 int topolab_cgal_prepare_workload(topolab_cgal_mesh *mesh, int workload) TOPOLAB_CGAL_NOEXCEPT;

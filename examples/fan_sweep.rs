@@ -71,16 +71,17 @@ impl<M: MeshTopology> Timed for Built<M> {
         // Natively when the structure has its own loop (OpenMesh), as the report times it.
         let native = M::native();
         let bits = match cell {
-            Cell::Sweep(op) => match native.and_then(|k| k.sweep(&self.m, op)) {
-                Some(sum) => sum.expect("native sweep"),
+            Cell::Sweep(op) => match native {
+                Some(k) => k.sweep(&self.m, op).expect("native sweep"),
                 None => run(&self.m, op, &self.q, &mut self.curves),
             },
-            Cell::Smoothing => {
-                match native.and_then(|k| k.workload(&mut self.m, Workload::Smoothing)) {
-                    Some(value) => value.expect("native workload").to_bits(),
-                    None => run_workload(&self.m, Workload::Smoothing, &mut self.buf).to_bits(),
-                }
-            }
+            Cell::Smoothing => match native {
+                Some(k) => k
+                    .workload(&mut self.m, Workload::Smoothing)
+                    .expect("native workload")
+                    .to_bits(),
+                None => run_workload(&self.m, Workload::Smoothing, &mut self.buf).to_bits(),
+            },
         };
         let ns = start.elapsed().as_nanos() as f64 / self.m.num_vertices() as f64;
         (ns, std::hint::black_box(bits))

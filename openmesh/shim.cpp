@@ -76,6 +76,16 @@ template <class M> bool is_boundary_vertex(const M &m, VH v) {
   return h.is_valid() && m.is_boundary(h);
 }
 
+// The halfedge of edge e in face f, or an invalid handle when e does not bound f: where the
+// successor and predecessor of e in f start.
+template <class M> HH side_in(const M &m, EH e, FH f) {
+  for (int side = 0; side < 2; ++side) {
+    const HH h = m.halfedge_handle(e, side);
+    if (m.face_handle(h) == f) return h;
+  }
+  return HH();
+}
+
 // Relation `Op` of element `id`: one emit per answer (a handle).
 template <int Op, class M, class Emit> inline void relation(const M &m, int id, Emit &&emit) {
   if constexpr (Op == R00) {
@@ -131,6 +141,15 @@ template <int Op, class M> inline uint64_t term(const M &m, int id) {
   return sum;
 }
 
+// The checksum term of one (edge, face) query of edge-successor or edge-predecessor, as the
+// harness's generic kernel sums it: nothing when e does not bound f.
+template <int Op, class M> inline uint64_t neighbour_term(const M &m, EH e, FH f) {
+  const HH h = side_in(m, e, f);
+  if (!h.is_valid()) return 0;
+  const HH other = Op == EDGE_SUCCESSOR ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
+  return mix(key(m, h), key(m, other));
+}
+
 // Calls on_loop(start halfedge, length) once per boundary loop (OpenMesh links boundary
 // halfedges with next_halfedge, also across the fans of a non-manifold vertex).
 template <class M, class OnLoop> void boundary_loops(const M &m, OnLoop &&on_loop) {
@@ -181,14 +200,17 @@ template <int Op, class M> uint64_t sweep(const M &m) {
   }
 }
 
+// The sampled queries: `count` ids (OpenMesh's handles are these indices), or `count` (edge,
+// face) pairs for successor and predecessor. Boundary curves have none (the caller refuses).
 template <int Op, class M> uint64_t sampled(const M &m, const uint32_t *ids, size_t count) {
-  if constexpr (Op == BOUNDARY_CURVES) {
-    return 0;
-  } else {
-    uint64_t sum = 0;
+  uint64_t sum = 0;
+  if constexpr (Op == EDGE_SUCCESSOR || Op == EDGE_PREDECESSOR) {
+    for (size_t i = 0; i < count; ++i)
+      sum += neighbour_term<Op>(m, EH(int(ids[2 * i])), FH(int(ids[2 * i + 1])));
+  } else if constexpr (Op != BOUNDARY_CURVES) {
     for (size_t i = 0; i < count; ++i) sum += term<Op>(m, int(ids[i]));
-    return sum;
   }
+  return sum;
 }
 
 // Runs f(std::integral_constant<int, op>) so each operator gets its own compiled loop.
@@ -450,13 +472,10 @@ int topolab_om_edge_neighbour(const topolab_om_mesh *mesh, uint32_t e, uint32_t 
                               int64_t *out) noexcept {
   return guard([&] {
     *out = with_mesh(mesh, [&](const auto &m) -> int64_t {
-      for (int side = 0; side < 2; ++side) {
-        const HH h = m.halfedge_handle(EH(int(e)), side);
-        if (m.face_handle(h) != FH(int(f))) continue;
-        const HH other = successor ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
-        return m.edge_handle(other).idx();
-      }
-      return -1;
+      const HH h = side_in(m, EH(int(e)), FH(int(f)));
+      if (!h.is_valid()) return -1;
+      const HH other = successor ? m.next_halfedge_handle(h) : m.prev_halfedge_handle(h);
+      return m.edge_handle(other).idx();
     });
     return TOPOLAB_OM_OK;
   });
@@ -556,7 +575,7 @@ int topolab_om_sweep(const topolab_om_mesh *mesh, int op, uint64_t *out) noexcep
 int topolab_om_sampled(const topolab_om_mesh *mesh, int op, const uint32_t *ids, size_t count,
                        uint64_t *out) noexcept {
   return guard([&] {
-    if (!known_op(op)) return TOPOLAB_OM_UNKNOWN_CODE;
+    if (!known_op(op) || op == BOUNDARY_CURVES) return TOPOLAB_OM_UNKNOWN_CODE;
     *out = with_mesh(mesh, [&](const auto &m) {
       return dispatch(op, [&](auto code) { return sampled<decltype(code)::value>(m, ids, count); });
     });

@@ -102,8 +102,11 @@ int topolab_om_validate(const topolab_om_mesh *mesh, int *problem,
 /* *out = the checksum of operator `op` over all elements (harness/src/checksum.rs), computed in
  * one C++ loop with OpenMesh's circulators. */
 int topolab_om_sweep(const topolab_om_mesh *mesh, int op, uint64_t *out) TOPOLAB_OM_NOEXCEPT;
-/* *out = the same checksum over the query elements ids[0..count] only (vertex, edge or face ids
- * by the operator's input; faces for edge-successor/predecessor); 0 for boundary-curves. */
+/* *out = the same checksum over `count` sampled queries only, answered as the harness's generic
+ * kernel answers them: ids[0..count], vertex, edge or face ids by the operator's input (OpenMesh's
+ * handles are these indices); for edge-successor/predecessor, `count` (edge, face) pairs
+ * ids[2i], ids[2i + 1], each asking about that edge in that face (nothing when it does not bound
+ * it). TOPOLAB_OM_UNKNOWN_CODE for boundary-curves, which has no queries to sample. */
 int topolab_om_sampled(const topolab_om_mesh *mesh, int op, const uint32_t *ids, size_t count,
                        uint64_t *out) TOPOLAB_OM_NOEXCEPT;
 /* Requests what workload `workload` needs (face and vertex normals for normals). */

@@ -15,11 +15,15 @@
 //! `halfedges_around_face`, `faces_around_face`), the interface CGAL's own algorithms use on
 //! both classes: for a Polyhedron it steps `h->next()->opposite()` exactly like
 //! `Halfedge_around_vertex_circulator`. For timing, per-query FFI calls would measure the FFI,
-//! so whole sweeps, sampled kernels and workloads run as one C++ call each
-//! ([`Cgal::native_sweep`], [`Cgal::native_sampled`], [`Cgal::native_workload`]) and return
-//! the checksums of `topolab_harness::checksum`; [`MeshTopology::native`] hands them to the
-//! harness. Operators and workloads reach C++ as the codes of `cgal/shim.h`'s tables (the
-//! OpenMesh shim's, by the same typed match).
+//! so every kernel the harness times is one C++ call: construction ([`Cgal::build_native`]),
+//! each sweep ([`Cgal::native_sweep`]), each sampled kernel ([`Cgal::native_sampled`]: the
+//! sampled vertices, edges, faces or (edge, face) pairs, checked and translated to the
+//! structure's own descriptors once, before the clock, so that a `Polyhedron_3`'s timed loop
+//! reads no id table; then answered exactly as the harness's generic kernel answers them) and
+//! each workload ([`Cgal::native_workload`]), with the checksums of
+//! `topolab_harness::checksum`. [`MeshTopology::native`] hands them to the harness, which then
+//! times no cell of either structure through per-query calls. Operators and workloads reach
+//! C++ as the codes of `cgal/shim.h`'s tables (the OpenMesh shim's, by the same typed match).
 //!
 //! Construction, the way CGAL's documentation builds each (and what the harness times, through
 //! [`MeshTopology::native`]):
@@ -97,7 +101,8 @@ use std::marker::PhantomData;
 use std::ptr::NonNull;
 use topolab_structures::{
     Access, BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId,
-    Input, MeshTopology, NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
+    MeshTopology, NativeKernels, Operator, PolygonSoup, Result, Sample, SampledRun, VertexId,
+    Workload,
 };
 
 mod access;
@@ -114,6 +119,13 @@ mod ffi {
     /// The C++ `topolab_cgal_mesh` (opaque).
     #[repr(C)]
     pub struct RawMesh {
+        _opaque: [u8; 0],
+        _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
+    }
+
+    /// The C++ `topolab_cgal_sample` (opaque): a sampled kernel prepared for one mesh.
+    #[repr(C)]
+    pub struct RawSample {
         _opaque: [u8; 0],
         _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
     }
@@ -174,13 +186,15 @@ mod ffi {
             element: *mut u32,
         ) -> i32;
         pub fn topolab_cgal_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
-        pub fn topolab_cgal_sampled(
+        pub fn topolab_cgal_prepare_sample(
             mesh: *const RawMesh,
             op: i32,
             ids: *const u32,
             count: usize,
-            out: *mut u64,
+            out: *mut *mut RawSample,
         ) -> i32;
+        pub fn topolab_cgal_sampled(sample: *const RawSample, out: *mut u64) -> i32;
+        pub fn topolab_cgal_free_sample(sample: *mut RawSample);
         pub fn topolab_cgal_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
         pub fn topolab_cgal_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
         pub fn topolab_cgal_convex_hull(
@@ -363,32 +377,38 @@ impl<S: CgalStructure> Cgal<S> {
         status("topolab_cgal_sweep", code).map(|()| out)
     }
 
-    /// The checksum of operator `op` over the query elements `ids` only: vertex, edge or face
-    /// ids by [`Operator::input`], face ids for successor and predecessor (the shim asks them
-    /// about every edge of each face). `None` for `boundary-curves` (a whole-mesh operator) or
-    /// when an id is out of range; an error when CGAL failed inside the loop.
-    pub fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        let count = match op.input() {
-            Input::Vertex => self.vertices,
-            Input::Edge => self.edges,
-            Input::Face | Input::EdgeOfFace => self.faces,
-            Input::Mesh => return None,
-        };
-        if ids.iter().any(|&id| id >= count) {
-            return None;
-        }
-        let mut out = 0;
-        // SAFETY: `raw` is live, every id was just checked to be in range, `out` is valid.
+    /// Prepares CGAL's sampled kernel of `op` over the queries of `sample` (see
+    /// [`SampledKernel`]): every id checked against this mesh here and translated by the shim to
+    /// the structure's own descriptors (a `Polyhedron_3`'s handles from its id tables), once,
+    /// so that the timed runs translate and check nothing. An error when `op` has no sampled
+    /// kernel (boundary curves), when the sample is not the kind of query `op` takes, when it
+    /// names an element the mesh does not have ([`Error::ElementOutOfRange`]), or when CGAL
+    /// failed to prepare it.
+    pub fn native_sampled(&self, op: Operator, sample: Sample<'_>) -> Result<SampledKernel<'_, S>> {
+        let ids = foreign::sample_ids(S::NAME, op, sample, foreign::HalfedgeRecords::counts(self))?;
+        let mut raw = std::ptr::null_mut();
+        // SAFETY: `self.raw` is live; `op` has a sampled kernel and `ids` holds `sample.len()`
+        // queries of its input, every id checked against the mesh; `&mut raw` is a valid
+        // out-pointer. The shim copies what it keeps from `ids`.
         let code = unsafe {
-            ffi::topolab_cgal_sampled(
+            ffi::topolab_cgal_prepare_sample(
                 self.raw.as_ptr(),
                 operator_code(op),
                 ids.as_ptr(),
-                ids.len(),
-                &mut out,
+                sample.len(),
+                &mut raw,
             )
         };
-        Some(status("topolab_cgal_sampled", code).map(|()| out))
+        status("topolab_cgal_prepare_sample", code)?;
+        match NonNull::new(raw) {
+            Some(raw) => Ok(SampledKernel {
+                raw,
+                mesh: PhantomData,
+            }),
+            None => {
+                status("topolab_cgal_prepare_sample", foreign::EXCEPTION).map(|_| unreachable!())
+            }
+        }
     }
 
     /// Allocates what `workload` needs (the normal arrays for [`Workload::Normals`], the
@@ -670,6 +690,36 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
     }
 }
 
+/// CGAL's sampled kernel of one operator, prepared by [`Cgal::native_sampled`]: the queries as
+/// the structure's own descriptors, held by the shim (freed in `Drop`), answered by one C++
+/// loop per run. It borrows its mesh, which the C++ side refers to.
+pub struct SampledKernel<'a, S: CgalStructure> {
+    /// The C++ `topolab_cgal_sample`, owned.
+    raw: NonNull<ffi::RawSample>,
+    /// The mesh the sample refers to, kept alive and unchanged while it lives.
+    mesh: PhantomData<&'a Cgal<S>>,
+}
+
+impl<S: CgalStructure> SampledKernel<'_, S> {
+    /// The checksum of the prepared queries, computed by one C++ loop with CGAL's circulators,
+    /// answering each as the harness's generic kernel does; an error when CGAL failed inside
+    /// the loop.
+    pub fn run(&self) -> Result<u64> {
+        let mut out = 0;
+        // SAFETY: `raw` came from `topolab_cgal_prepare_sample` and is live; its mesh is
+        // borrowed unchanged for the kernel's lifetime; `out` is a valid out-pointer.
+        let code = unsafe { ffi::topolab_cgal_sampled(self.raw.as_ptr(), &mut out) };
+        status("topolab_cgal_sampled", code).map(|()| out)
+    }
+}
+
+impl<S: CgalStructure> Drop for SampledKernel<'_, S> {
+    fn drop(&mut self) {
+        // SAFETY: `raw` came from `topolab_cgal_prepare_sample` and is freed exactly once, here.
+        unsafe { ffi::topolab_cgal_free_sample(self.raw.as_ptr()) }
+    }
+}
+
 /// CGAL's own loops, as the harness times them ([`MeshTopology::native`]).
 struct Kernels;
 
@@ -682,15 +732,21 @@ impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
         Cgal::construct(facts)
     }
 
-    fn sweep(&self, mesh: &Cgal<S>, op: Operator) -> Option<Result<u64>> {
-        Some(mesh.native_sweep(op))
+    fn sweep(&self, mesh: &Cgal<S>, op: Operator) -> Result<u64> {
+        mesh.native_sweep(op)
     }
 
-    fn sampled(&self, mesh: &Cgal<S>, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        mesh.native_sampled(op, ids)
+    fn sampled<'a>(
+        &self,
+        mesh: &'a Cgal<S>,
+        op: Operator,
+        sample: Sample<'_>,
+    ) -> Result<SampledRun<'a>> {
+        let kernel = mesh.native_sampled(op, sample)?;
+        Ok(Box::new(move || kernel.run()))
     }
 
-    fn workload(&self, mesh: &mut Cgal<S>, workload: Workload) -> Option<Result<f64>> {
-        Some(mesh.native_workload(workload))
+    fn workload(&self, mesh: &mut Cgal<S>, workload: Workload) -> Result<f64> {
+        mesh.native_workload(workload)
     }
 }

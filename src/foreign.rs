@@ -1,6 +1,7 @@
 //! What the wrappers of the C++ baselines share (the `openmesh` and `cgal` modules): the status
 //! codes of their shims as typed errors, the operator and workload codes of the shims' tables,
-//! Rust closures called back from C++ with their panics carried across, the lab's checks and
+//! the checked ids of a sampled kernel's queries ([`sample_ids`]), Rust closures called back
+//! from C++ with their panics carried across, the lab's checks and
 //! errors for what a halfedge library refuses, the `explain` text of halfedge records, and
 //! ([`edit`]) the one forwarding layer from `MeshEdit` to the shims' edit functions.
 //!
@@ -17,8 +18,8 @@ use std::ffi::c_void;
 use std::fmt::Write;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use topolab_structures::{
-    BoundaryCurves, BuildFacts, Connectivity, EdgeId, Error, Operator, PolygonSoup, Result,
-    Workload,
+    BoundaryCurves, BuildFacts, Connectivity, EdgeId, Element, Error, Input, Operator, PolygonSoup,
+    Result, Sample, Workload,
 };
 
 // Positions go to C++ as 3 doubles per vertex, without a copy.
@@ -94,6 +95,65 @@ pub(crate) const fn workload_code(w: Workload) -> i32 {
         Workload::Barycenter => 1,
         Workload::Normals => 2,
         Workload::Smoothing => 3,
+    }
+}
+
+/// The queries of `sample`, asked of operator `op` of `structure`, a mesh with `counts` =
+/// [vertices, edges, faces], as both shims take a sample: one id per query, or the edge then
+/// the face of each (edge, face) query of successor and predecessor (the shims' handles are
+/// these indices, or are looked up from them once, before anything is timed). Checked here,
+/// once, so that the shims' timed loops check nothing: an error when `op` has no sampled
+/// kernel (boundary curves), when the sample is not the kind of query `op` takes, or for the
+/// first id the mesh does not have.
+pub(crate) fn sample_ids(
+    structure: &'static str,
+    op: Operator,
+    sample: Sample<'_>,
+    counts: [u32; 3],
+) -> Result<Vec<u32>> {
+    if op.input() == Input::Mesh {
+        return Err(Error::Unsupported(format!(
+            "{}: {} asks about the whole mesh and has no sampled kernel",
+            structure,
+            op.name()
+        )));
+    }
+    if sample.input() != op.input() {
+        return Err(Error::Unsupported(format!(
+            "{}: {} takes {:?} queries, not {:?} ones",
+            structure,
+            op.name(),
+            op.input(),
+            sample.input()
+        )));
+    }
+    let [vertices, edges, faces] = counts;
+    let checked = |element: Element, id: u32| {
+        let count = match element {
+            Element::Vertex => vertices,
+            Element::Edge => edges,
+            Element::Face => faces,
+            Element::Mesh => 0,
+        };
+        if id < count {
+            Ok(id)
+        } else {
+            Err(Error::ElementOutOfRange {
+                structure,
+                element,
+                id,
+                count,
+            })
+        }
+    };
+    match sample {
+        Sample::Vertices(ids) => ids.iter().map(|v| checked(Element::Vertex, v.0)).collect(),
+        Sample::Edges(ids) => ids.iter().map(|e| checked(Element::Edge, e.0)).collect(),
+        Sample::Faces(ids) => ids.iter().map(|f| checked(Element::Face, f.0)).collect(),
+        Sample::EdgesOfFaces(pairs) => pairs
+            .iter()
+            .flat_map(|&(e, f)| [checked(Element::Edge, e.0), checked(Element::Face, f.0)])
+            .collect(),
     }
 }
 
@@ -317,6 +377,57 @@ mod tests {
             }
         }
         pairs
+    }
+
+    #[test]
+    fn sample_ids_are_checked_and_laid_out_for_the_shims() {
+        use topolab_structures::{FaceId, VertexId};
+        let counts = [4, 6, 3];
+        let ids = |op, sample| sample_ids("baseline", op, sample, counts);
+        let vertices = [VertexId(3), VertexId(0), VertexId(3)];
+        assert_eq!(
+            ids(Operator::R00, Sample::Vertices(&vertices)).unwrap(),
+            [3, 0, 3]
+        );
+        let pairs = [(EdgeId(5), FaceId(2)), (EdgeId(0), FaceId(1))];
+        assert_eq!(
+            ids(Operator::EdgeSuccessor, Sample::EdgesOfFaces(&pairs)).unwrap(),
+            [5, 2, 0, 1]
+        );
+        // The first id past its count is named, whichever side of a pair it is on.
+        for (op, sample, element, id) in [
+            (Operator::R00, Sample::Vertices(&[VertexId(4)]), "vertex", 4),
+            (
+                Operator::R11,
+                Sample::Edges(&[EdgeId(1), EdgeId(6)]),
+                "edge",
+                6,
+            ),
+            (Operator::R22, Sample::Faces(&[FaceId(9)]), "face", 9),
+            (
+                Operator::EdgePredecessor,
+                Sample::EdgesOfFaces(&[(EdgeId(5), FaceId(3))]),
+                "face",
+                3,
+            ),
+        ] {
+            let e = ids(op, sample).unwrap_err();
+            assert_eq!(e.kind(), "element-out-of-range", "{e}");
+            assert!(
+                e.to_string().contains(&format!("no {element} {id} (")),
+                "{e}"
+            );
+        }
+        // A sample of another kind of query, or an operator without queries, is refused.
+        for (op, sample) in [
+            (Operator::R10, Sample::Vertices(&vertices)),
+            (Operator::EdgeSuccessor, Sample::Faces(&[FaceId(0)])),
+            (Operator::BoundaryCurves, Sample::Edges(&[EdgeId(0)])),
+        ] {
+            let e = ids(op, sample).unwrap_err();
+            assert_eq!(e.kind(), "unsupported", "{e}");
+            assert!(e.to_string().contains(op.name()), "{e}");
+        }
     }
 
     #[test]

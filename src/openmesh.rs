@@ -47,15 +47,19 @@
 //! | boundary curves | scan the halfedges for unvisited boundary ones, follow `next` | O(n) |
 //! | successor, predecessor | the edge's halfedge in the face, `next`/`prev` | O(1) |
 //!
-//! For timing, per-query FFI calls would measure the FFI, so whole sweeps run as one C++
-//! function each ([`OpenMesh::native_sweep`], [`OpenMesh::native_sampled`],
-//! [`OpenMesh::native_workload`]) and return the checksums of `topolab_harness::checksum`;
-//! [`MeshTopology::native`] hands them to the harness. Operators and workloads reach C++ as
-//! the integer codes of `openmesh/shim.h`'s tables, by a typed match (`operator_code`,
-//! `workload_code`, shared with the CGAL shim). The construction it times is
-//! [`OpenMesh::construct`], the one C++ call of `reserve`, `add_vertex` and `add_face`: the
-//! lab's checks and the exact edge count for `reserve` come before the clock
-//! (`NativeKernels::admit`), reading the mesh's counts and freeing it after.
+//! For timing, per-query FFI calls would measure the FFI, so every kernel the harness times is
+//! one C++ function: construction ([`OpenMesh::construct`], the one C++ call of `reserve`,
+//! `add_vertex` and `add_face`: the lab's checks and the exact edge count for `reserve` come
+//! before the clock, `NativeKernels::admit`, and reading the mesh's counts and freeing it
+//! after), each sweep ([`OpenMesh::native_sweep`]), each sampled kernel
+//! ([`OpenMesh::native_sampled`]: the sampled vertices, edges, faces or (edge, face) pairs,
+//! checked once before the clock and handed over as OpenMesh's handles, which are the lab's
+//! indices, then answered exactly as the harness's generic kernel answers them) and each
+//! workload ([`OpenMesh::native_workload`]), with the checksums of `topolab_harness::checksum`.
+//! [`MeshTopology::native`] hands them to the harness, which then times no cell of OpenMesh
+//! through per-query calls. Operators and workloads reach C++ as the integer codes of
+//! `openmesh/shim.h`'s tables, by a typed match (`operator_code`, `workload_code`, shared with
+//! the CGAL shim).
 //!
 //! Non-manifold vertices: OpenMesh links the boundary halfedges of a vertex's fans into one
 //! cycle, so its circulators visit every fan; the conformance suite checks it (bowtie and
@@ -69,8 +73,9 @@ use std::fmt::Write;
 use std::ptr::NonNull;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{
-    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId, Input,
-    MeshTopology, NativeKernels, Operator, PolygonSoup, Result, VertexId, Workload,
+    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId,
+    MeshTopology, NativeKernels, Operator, PolygonSoup, Result, Sample, SampledRun, VertexId,
+    Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -278,32 +283,24 @@ impl OpenMesh {
         status("topolab_om_sweep", code).map(|()| out)
     }
 
-    /// The checksum of operator `op` over the query elements `ids` only: vertex, edge or face
-    /// ids by [`Operator::input`], face ids for successor and predecessor (the shim asks them
-    /// about every edge of each face). `None` for `boundary-curves` (a whole-mesh operator) or
-    /// when an id is out of range; an error when OpenMesh failed inside the loop.
-    pub fn native_sampled(&self, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        let count = match op.input() {
-            Input::Vertex => self.vertices,
-            Input::Edge => self.edges,
-            Input::Face | Input::EdgeOfFace => self.faces,
-            Input::Mesh => return None,
-        };
-        if ids.iter().any(|&id| id >= count) {
-            return None;
-        }
-        let mut out = 0;
-        // SAFETY: `raw` is live, every id was just checked to be in range, `out` is valid.
-        let code = unsafe {
-            ffi::topolab_om_sampled(
-                self.raw.as_ptr(),
-                operator_code(op),
-                ids.as_ptr(),
-                ids.len(),
-                &mut out,
-            )
-        };
-        Some(status("topolab_om_sampled", code).map(|()| out))
+    /// Prepares OpenMesh's sampled kernel of `op` over the queries of `sample` (see
+    /// [`SampledKernel`]): every id checked against this mesh here, once, so that the timed
+    /// runs check nothing. An error when `op` has no sampled kernel (boundary curves), when the
+    /// sample is not the kind of query `op` takes, or when it names an element the mesh does
+    /// not have ([`Error::ElementOutOfRange`]).
+    pub fn native_sampled(&self, op: Operator, sample: Sample<'_>) -> Result<SampledKernel<'_>> {
+        let ids = foreign::sample_ids(
+            Self::NAME,
+            op,
+            sample,
+            foreign::HalfedgeRecords::counts(self),
+        )?;
+        Ok(SampledKernel {
+            mesh: self,
+            op: operator_code(op),
+            ids,
+            queries: sample.len(),
+        })
     }
 
     /// Requests what `workload` needs (normals for [`Workload::Normals`]), so that a timed
@@ -621,6 +618,42 @@ impl MeshTopology for OpenMesh {
     }
 }
 
+/// OpenMesh's sampled kernel of one operator, prepared by [`OpenMesh::native_sampled`]: its
+/// checked queries in OpenMesh's handles, which are the indices the lab uses (one id per
+/// query, or an edge and a face for successor and predecessor), handed to one C++ loop per run.
+pub struct SampledKernel<'a> {
+    /// The mesh, borrowed unchanged while the kernel lives.
+    mesh: &'a OpenMesh,
+    /// The operator's code in the shim's table.
+    op: i32,
+    /// The ids, each checked against `mesh`.
+    ids: Vec<u32>,
+    /// How many queries `ids` holds.
+    queries: usize,
+}
+
+impl SampledKernel<'_> {
+    /// The checksum of the prepared queries, computed by one C++ loop with OpenMesh's
+    /// circulators, answering each as the harness's generic kernel does; an error when OpenMesh
+    /// failed inside the loop.
+    pub fn run(&self) -> Result<u64> {
+        let mut out = 0;
+        // SAFETY: the mesh is live and borrowed unchanged for the kernel's lifetime; `op` has
+        // a sampled kernel and `ids` holds `queries` queries of its input, every id checked
+        // against the mesh by `native_sampled`; `out` is a valid out-pointer.
+        let code = unsafe {
+            ffi::topolab_om_sampled(
+                self.mesh.raw.as_ptr(),
+                self.op,
+                self.ids.as_ptr(),
+                self.queries,
+                &mut out,
+            )
+        };
+        status("topolab_om_sampled", code).map(|()| out)
+    }
+}
+
 /// OpenMesh's own loops, as the harness times them ([`MeshTopology::native`]).
 struct Kernels;
 
@@ -633,15 +666,21 @@ impl NativeKernels<OpenMesh> for Kernels {
         OpenMesh::construct(facts)
     }
 
-    fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Option<Result<u64>> {
-        Some(mesh.native_sweep(op))
+    fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Result<u64> {
+        mesh.native_sweep(op)
     }
 
-    fn sampled(&self, mesh: &OpenMesh, op: Operator, ids: &[u32]) -> Option<Result<u64>> {
-        mesh.native_sampled(op, ids)
+    fn sampled<'a>(
+        &self,
+        mesh: &'a OpenMesh,
+        op: Operator,
+        sample: Sample<'_>,
+    ) -> Result<SampledRun<'a>> {
+        let kernel = mesh.native_sampled(op, sample)?;
+        Ok(Box::new(move || kernel.run()))
     }
 
-    fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Option<Result<f64>> {
-        Some(mesh.native_workload(workload))
+    fn workload(&self, mesh: &mut OpenMesh, workload: Workload) -> Result<f64> {
+        mesh.native_workload(workload)
     }
 }

@@ -1,6 +1,7 @@
 //! CGAL's native C++ sweeps and workloads give the lab's checksums for both structures, their
 //! construction reports problems the way the lab's structures do, and `convex_hull_3` builds
-//! the hull the lab's algorithms build.
+//! the hull the lab's algorithms build. Their sampled kernels, and that the harness times every
+//! cell of them natively, are checked with every baseline's in `tests/native_baselines.rs`.
 
 #[cfg(not(has_cgal))]
 #[test]
@@ -20,14 +21,14 @@ mod common;
 mod native {
     use super::common::{
         baseline_meshes, broken_soups, check_native_workloads, checksum, close, closed_fan_soups,
-        construction_cell, harness_times_native_loops, query_count, sampled,
+        construction_cell,
     };
     use glam::DVec3;
     use topolab::cgal::hull::convex_hull_3;
     use topolab::cgal::{self, Cgal, CgalStructure, Polyhedron, SurfaceMesh};
     use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
     use topolab_structures::meshes;
-    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
+    use topolab_structures::{MeshTopology, Operator, VertexId, VertexList};
 
     /// A native answer with CGAL's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
@@ -86,47 +87,6 @@ mod native {
         }
     }
 
-    fn sampled_kernels_sum_the_sampled_queries_only<S: CgalStructure>() {
-        for (name, soup) in baseline_meshes() {
-            let mesh = Cgal::<S>::from_soup(&soup).unwrap();
-            let reference = VertexList::from_soup(&soup).unwrap();
-            for op in Operator::ALL {
-                if op == Operator::BoundaryCurves {
-                    assert!(mesh.native_sampled(op, &[0]).is_none());
-                    continue;
-                }
-                let n = query_count(&reference, op) as u32;
-                // Repeated ids count twice, like repeated queries.
-                let ids = [n - 1, 0, n / 2, n / 2];
-                let native = mesh.native_sampled(op, &ids).map(ok);
-                assert_eq!(
-                    native,
-                    Some(sampled(&mesh, op, &ids)),
-                    "{} sampled {} on {name}",
-                    S::NAME,
-                    op.name()
-                );
-                // Vertex and face ids are the input's in every structure (edge ids are not).
-                if op.input() != Input::Edge {
-                    assert_eq!(
-                        native,
-                        Some(sampled(&reference, op, &ids)),
-                        "{} {} vs vertex-list",
-                        S::NAME,
-                        op.name()
-                    );
-                }
-                assert!(mesh.native_sampled(op, &[n]).is_none(), "id out of range");
-            }
-        }
-    }
-
-    #[test]
-    fn sampled_kernels_sum_the_sampled_queries_only_in_both() {
-        sampled_kernels_sum_the_sampled_queries_only::<cgal::SurfaceMeshClass>();
-        sampled_kernels_sum_the_sampled_queries_only::<cgal::PolyhedronClass>();
-    }
-
     fn workloads_compute_what_the_benchmark_says<S: CgalStructure>() {
         check_native_workloads(
             |soup| Cgal::<S>::from_soup(soup).unwrap(),
@@ -140,13 +100,6 @@ mod native {
     fn workloads_compute_what_the_benchmark_says_in_both() {
         workloads_compute_what_the_benchmark_says::<cgal::SurfaceMeshClass>();
         workloads_compute_what_the_benchmark_says::<cgal::PolyhedronClass>();
-    }
-
-    /// The harness reaches CGAL's own loops through `MeshTopology::native`.
-    #[test]
-    fn the_harness_times_cgals_own_loops_in_both() {
-        harness_times_native_loops::<SurfaceMesh>();
-        harness_times_native_loops::<Polyhedron>();
     }
 
     #[test]

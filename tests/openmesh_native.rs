@@ -1,5 +1,7 @@
 //! The OpenMesh baseline's native C++ sweeps and workloads give the lab's checksums, and its
-//! construction reports problems the way the lab's structures do.
+//! construction reports problems the way the lab's structures do. Its sampled kernels, and
+//! that the harness times every cell of it natively, are checked with every baseline's in
+//! `tests/native_baselines.rs`.
 
 #[cfg(not(has_openmesh))]
 #[test]
@@ -15,11 +17,11 @@ mod common;
 mod native {
     use super::common::{
         baseline_meshes as meshes, broken_soups, check_native_workloads, checksum,
-        closed_fan_soups, construction_cell, harness_times_native_loops, query_count, sampled,
+        closed_fan_soups, construction_cell,
     };
     use topolab::openmesh::OpenMesh;
     use topolab_structures::meshes;
-    use topolab_structures::{Input, MeshTopology, Operator, VertexId, VertexList};
+    use topolab_structures::{MeshTopology, Operator, VertexId, VertexList};
 
     /// A native answer with OpenMesh's own failures turned into a test failure.
     fn ok<T>(answer: topolab_structures::Result<T>) -> T {
@@ -55,46 +57,6 @@ mod native {
         ] {
             assert_ne!(ok(om.native_sweep(op)), 0, "{op:?} on a grid");
         }
-    }
-
-    #[test]
-    fn sampled_kernels_sum_the_sampled_queries_only() {
-        for (name, soup) in meshes() {
-            let om = OpenMesh::from_soup(&soup).unwrap();
-            let reference = VertexList::from_soup(&soup).unwrap();
-            for op in Operator::ALL {
-                if op == Operator::BoundaryCurves {
-                    assert!(om.native_sampled(op, &[0]).is_none());
-                    continue;
-                }
-                let n = query_count(&reference, op) as u32;
-                // Repeated ids count twice, like repeated queries.
-                let ids = [n - 1, 0, n / 2, n / 2];
-                let native = om.native_sampled(op, &ids).map(ok);
-                assert_eq!(
-                    native,
-                    Some(sampled(&om, op, &ids)),
-                    "sampled {} on {name}",
-                    op.name()
-                );
-                // Vertex and face ids are the input's in every structure (edge ids are not).
-                if op.input() != Input::Edge {
-                    assert_eq!(
-                        native,
-                        Some(sampled(&reference, op, &ids)),
-                        "{} vs vertex-list",
-                        op.name()
-                    );
-                }
-                assert!(om.native_sampled(op, &[n]).is_none(), "id out of range");
-            }
-        }
-    }
-
-    /// The harness reaches OpenMesh's own loops through `MeshTopology::native`.
-    #[test]
-    fn the_harness_times_openmeshs_own_loops() {
-        harness_times_native_loops::<OpenMesh>();
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! `cargo bench` over the harness's kernels for any list of structures: one criterion group per
 //! operator (and one for construction and each workload), `BenchmarkId::new(structure,
-//! triangles)`, throughput in queries, meshes and queries built outside `b.iter`. The lab's
+//! triangles)`, throughput in queries, meshes and queries built outside `b.iter`. A baseline
+//! behind an FFI runs its own loops, as in the report. The lab's
 //! `benches/operators.rs` and a crate outside the lab run the same groups:
 //!
 //! ```ignore
@@ -111,9 +112,13 @@ impl StructureVisitor for Bench<'_, '_> {
     fn visit<M: MeshTopology>(self) {
         let id = BenchmarkId::new(M::NAME, self.soup.num_faces());
         // A structure that cannot store the torus (a grid-only one) has nothing to time.
-        let Ok(m) = M::from_soup(self.soup) else {
+        let Ok(mut m) = M::from_soup(self.soup) else {
             return;
         };
+        // A baseline behind an FFI runs its own loops, as the report times it
+        // (`crate::measure`); a failure inside one ends the bench with the library's error.
+        let native = M::native();
+        let what = (M::NAME, self.what);
         match self.what {
             Subject::Construction => {
                 // As the report times construction (`Builder`): a baseline's own, told its
@@ -133,18 +138,45 @@ impl StructureVisitor for Bench<'_, '_> {
                 let mut curves = BoundaryCurves::default();
                 self.group
                     .throughput(Throughput::Elements(q.count(op) as u64));
-                self.group
-                    .bench_function(id, |b| b.iter(|| run(&m, op, &q, &mut curves)));
+                match (native, q.sample(op)) {
+                    // The sampled queries handed to the library before anything is timed.
+                    (Some(k), Some(sample)) => {
+                        let sampled = answered(what, k.sampled(&m, op, sample));
+                        self.group
+                            .bench_function(id, |b| b.iter(|| answered(what, sampled())));
+                    }
+                    // Boundary curves, a question about the whole mesh: the baseline's sweep.
+                    (Some(k), None) => {
+                        self.group
+                            .bench_function(id, |b| b.iter(|| answered(what, k.sweep(&m, op))));
+                    }
+                    (None, _) => {
+                        self.group
+                            .bench_function(id, |b| b.iter(|| run(&m, op, &q, &mut curves)));
+                    }
+                }
             }
             Subject::Workload(w) => {
                 let mut buf = WorkloadBuffers::default();
                 self.group
                     .throughput(Throughput::Elements(w.items(&m) as u64));
-                self.group
-                    .bench_function(id, |b| b.iter(|| run_workload(&m, w, &mut buf)));
+                match native {
+                    Some(k) => self
+                        .group
+                        .bench_function(id, |b| b.iter(|| answered(what, k.workload(&mut m, w)))),
+                    None => self
+                        .group
+                        .bench_function(id, |b| b.iter(|| run_workload(&m, w, &mut buf))),
+                };
             }
         }
     }
+}
+
+/// The answer of a native kernel of `what` (structure, subject): a failure inside the library
+/// ends the bench with its error, as it stops the report.
+fn answered<T>(what: (&str, Subject), answer: topolab_structures::Result<T>) -> T {
+    answer.unwrap_or_else(|e| panic!("{} {}: native kernel failed: {e}", what.0, what.1))
 }
 
 /// Every group (each operator, construction, each workload) for the structures of `S` that

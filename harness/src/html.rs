@@ -212,7 +212,7 @@ fn family_of(op: Operator) -> &'static str {
 }
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
-    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure).</div>");
+    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure; the C++ baselines answer them, like every kernel of theirs, in one loop in C++, the queries handed over in the library's own handles before the clock starts).</div>");
     h.push_str("<table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
@@ -405,14 +405,13 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
             let cell = match sweep(s, op) {
                 Some(m) if m.status == Status::Measured => {
                     let t = m.ns_per_item.unwrap_or(f64::NAN);
-                    let native = if m.native { ", native" } else { "" };
                     match (times_limit(m), &m.limit) {
                         (Some(x), Some(l)) => format!(
-                            "<td title=\"{}\">{}<br><span class=small>{x:.1}× limit{native}</span></td>",
+                            "<td title=\"{}\">{}<br><span class=small>{x:.1}× limit</span></td>",
                             esc(&limit_text(l)),
                             ns(t)
                         ),
-                        _ => format!("<td>{}<br><span class=small>–{native}</span></td>", ns(t)),
+                        _ => format!("<td>{}<br><span class=small>–</span></td>", ns(t)),
                     }
                 }
                 Some(m) if m.status == Status::Skipped => format!(

@@ -17,7 +17,7 @@ use std::collections::HashMap;
 pub use topolab_structures::Workload;
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshAttributes, MeshTopology, Operator, PolygonSoup,
-    VertexId,
+    Sample, VertexId,
 };
 
 /// How a measurement exercises its subject: an operator by one of the two query kernels, a
@@ -209,6 +209,19 @@ impl Queries {
             faces: pick(&self.faces, n),
             edge_faces: pick(&self.edge_faces, n),
             dense: false,
+        }
+    }
+
+    /// The queries `op` asks over this set, as a baseline's sampled kernel takes them
+    /// ([`topolab_structures::NativeKernels::sampled`]); `None` for an operator about the whole
+    /// mesh (boundary curves), which has no queries to sample.
+    pub fn sample(&self, op: Operator) -> Option<Sample<'_>> {
+        match op.input() {
+            Input::Vertex => Some(Sample::Vertices(&self.vertices)),
+            Input::Edge => Some(Sample::Edges(&self.edges)),
+            Input::Face => Some(Sample::Faces(&self.faces)),
+            Input::EdgeOfFace => Some(Sample::EdgesOfFaces(&self.edge_faces)),
+            Input::Mesh => None,
         }
     }
 

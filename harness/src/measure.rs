@@ -9,6 +9,12 @@
 //! (measured before its sweep for that reason), or of a probe of [`PROBE_QUERIES`] of its
 //! sampled queries when the sampled cell has not run. Without it, a single
 //! `--sizes 1000000` ran the scanning structures' quadratic sweeps in full (hours).
+//!
+//! A baseline behind an FFI ([`MeshTopology::native`]) is timed by its own loops in every
+//! cell: construction, sweeps, sampled kernels (its queries handed over in the library's own
+//! handles before the clock starts) and workloads, with the generic kernels' checksums. A
+//! native kernel that fails is an error of the measurement, never a fallback to the generic
+//! kernel, which would time the FFI instead of the library.
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
 use crate::results::{Measurement, Status, Subject};
@@ -198,15 +204,20 @@ fn per_query_ns<M: MeshTopology>(
     Ok(Some(ns))
 }
 
-fn measurement(structure: &str, subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
-    Measurement::new(
-        structure,
-        subject,
-        kernel,
-        case.name,
-        case.family,
-        case.soup.num_faces(),
-    )
+/// An empty cell of `M`, marked native for a baseline, whose every cell is timed (or, skipped,
+/// would be) by its own loop; a timed cell is marked again by the loop that ran.
+fn measurement<M: MeshTopology>(subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
+    Measurement {
+        native: M::native().is_some(),
+        ..Measurement::new(
+            M::NAME,
+            subject,
+            kernel,
+            case.name,
+            case.family,
+            case.soup.num_faces(),
+        )
+    }
 }
 
 /// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel
@@ -228,7 +239,7 @@ pub fn measure_structure<M: MeshTopology>(
     // queries), then the timed builds with nothing counted. The build is the one the clock
     // times, a baseline's own construction included (not `from_soup`, whose checks and edge
     // analysis are the lab's), and its finishing step, whose tables the structure keeps.
-    let mut cons = measurement(M::NAME, Subject::Construction, Kernel::Construction, case);
+    let mut cons = measurement::<M>(Subject::Construction, Kernel::Construction, case);
     let refused = |mut cons: Measurement, e: topolab_structures::Error, out: &mut Vec<_>| {
         cons.status = Status::Refused;
         cons.note = Some(format!("{}: {e}", e.kind()));
@@ -306,7 +317,7 @@ pub fn measure_structure<M: MeshTopology>(
                 &sampled
             };
             let items = q.count(op);
-            let mut cell = measurement(M::NAME, Subject::Query(op), kernel, case);
+            let mut cell = measurement::<M>(Subject::Query(op), kernel, case);
             cell.items = items;
             // A sweep's run grows with n^(1+e), a sampled run (fixed count) with n^e.
             let e =
@@ -347,7 +358,7 @@ pub fn measure_structure<M: MeshTopology>(
     let native = M::native();
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
-        let mut cell = measurement(M::NAME, Subject::Workload(w), Kernel::Workload, case);
+        let mut cell = measurement::<M>(Subject::Workload(w), Kernel::Workload, case);
         let items = w.items(&m);
         cell.items = items;
         // A workload asks its relations once per element: its run grows like n^(1+e) for the
@@ -376,15 +387,12 @@ pub fn measure_structure<M: MeshTopology>(
             out.push(cell);
             continue;
         }
-        let native_run = native.and_then(|k| {
-            time_native(budget, || {
-                k.workload(&mut m, w).map(|r| r.map(f64::to_bits))
-            })
-        });
-        cell.native = native_run.is_some();
-        let (t, r) = native_run
-            .unwrap_or_else(|| time(budget, || run_workload(&m, w, &mut buf).to_bits()))
-            .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
+        cell.native = native.is_some();
+        let (t, r) = match native {
+            Some(k) => time_native(budget, || k.workload(&mut m, w).map(f64::to_bits)),
+            None => time(budget, || run_workload(&m, w, &mut buf).to_bits()),
+        }
+        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
         fill(
             &mut cell,
             t,
@@ -415,7 +423,8 @@ struct Builds {
     cold: Timing,
     /// Median minor page faults of a cold build.
     cold_faults: Option<u64>,
-    /// Whether the baseline's own construction ran ([`topolab_structures::NativeKernels`]).
+    /// Whether the baseline's own construction was timed
+    /// ([`topolab_structures::NativeKernels`]).
     native: bool,
 }
 
@@ -488,9 +497,10 @@ fn time_construction<M: MeshTopology>(
     })
 }
 
-/// Times one kernel of `op` on a built structure: the structure's native loop when it has one
-/// (a baseline behind FFI), the harness's generic kernel otherwise. Returns the timing, the
-/// checksum and whether it ran natively. `kernel` is [`Kernel::Sweep`] or [`Kernel::Sampled`].
+/// Times one kernel of `op` on a built structure: the structure's native loop when it is a
+/// baseline behind an FFI (its sampled queries prepared in the library's handles before the
+/// clock), the harness's generic kernel otherwise. Returns the timing, the checksum and
+/// whether the native loop ran. `kernel` is [`Kernel::Sweep`] or [`Kernel::Sampled`].
 pub fn time_kernel<M: MeshTopology>(
     m: &M,
     op: Operator,
@@ -499,68 +509,58 @@ pub fn time_kernel<M: MeshTopology>(
     curves: &mut BoundaryCurves,
     budget: Budget,
 ) -> Result<(Timing, u64, bool), String> {
-    let native = M::native();
-    let timed = match kernel {
-        Kernel::Sweep => native.and_then(|k| time_native(budget, || k.sweep(m, op))),
-        Kernel::Sampled => {
-            // Vertex and face ids are the input's in every structure, so a baseline's loop
-            // can take them as they are; edge and (edge, face) samples run the generic kernel.
-            let ids: Vec<u32> = match op.input() {
-                Input::Vertex => q.vertices.iter().map(|v| v.0).collect(),
-                Input::Face => q.faces.iter().map(|f| f.0).collect(),
-                Input::Edge | Input::EdgeOfFace | Input::Mesh => Vec::new(),
-            };
-            native
-                .filter(|_| !ids.is_empty())
-                .and_then(|k| time_native(budget, || k.sampled(m, op, &ids)))
+    let Some(k) = M::native() else {
+        return match kernel {
+            Kernel::Sweep | Kernel::Sampled => time(budget, || run(m, op, q, curves)),
+            Kernel::Workload | Kernel::Construction => Err(not_an_operator_kernel(kernel)),
         }
-        Kernel::Workload | Kernel::Construction => {
-            return Err(format!("{kernel} is not a kernel of an operator"))
-        }
+        .map(|(t, sum)| (t, sum, false));
     };
-    match timed {
-        Some(timed) => timed.map(|(t, sum)| (t, sum, true)),
-        None => time(budget, || run(m, op, q, curves)).map(|(t, sum)| (t, sum, false)),
+    match kernel {
+        Kernel::Sweep => time_native(budget, || k.sweep(m, op)),
+        Kernel::Sampled => {
+            let sample = q
+                .sample(op)
+                .ok_or_else(|| format!("{} has no sampled kernel", op.name()))?;
+            let sampled = k
+                .sampled(m, op, sample)
+                .map_err(|e| format!("native kernel failed: {e}"))?;
+            time_native(budget, sampled)
+        }
+        Kernel::Workload | Kernel::Construction => Err(not_an_operator_kernel(kernel)),
     }
+    .map(|(t, sum)| (t, sum, true))
 }
 
-/// Times a baseline's native kernel `native` (see [`topolab_structures::NativeKernels`]):
-/// `None` when it has no loop of its own for this case (its first answer is `None`), else the
-/// timing and result. A failure inside the loop, in any run, fails the measurement with the
-/// library's error instead of timing a zero.
+fn not_an_operator_kernel(kernel: Kernel) -> String {
+    format!("{kernel} is not a kernel of an operator")
+}
+
+/// Times a baseline's native kernel `native` (see [`topolab_structures::NativeKernels`]). A
+/// failure inside the loop, in any run, fails the measurement with the library's error
+/// instead of timing a zero.
 fn time_native<T: PartialEq + std::fmt::Debug>(
     budget: Budget,
-    mut native: impl FnMut() -> Option<topolab_structures::Result<T>>,
-) -> Option<Result<(Timing, T), String>> {
-    if let Err(e) = native()? {
-        return Some(Err(native_failure(Some(Err(e)))));
-    }
-    let failure = std::cell::Cell::new(None);
+    mut native: impl FnMut() -> topolab_structures::Result<T>,
+) -> Result<(Timing, T), String> {
+    let mut failure = None;
+    // A failed run answers `None`: `time` stops at the first answer that differs from the
+    // warm-up's, and the first failure is the one reported.
     let timed = time(budget, || match native() {
-        Some(Ok(answer)) => Some(answer),
-        failed => {
-            failure.set(Some(native_failure(failed.map(|r| r.map(drop)))));
+        Ok(answer) => Some(answer),
+        Err(e) => {
+            failure.get_or_insert(e.to_string());
             None
         }
     });
-    Some(match failure.take() {
-        Some(e) => Err(e),
-        None => timed.and_then(|(t, answer)| {
-            answer
-                .map(|answer| (t, answer))
-                .ok_or_else(|| native_failure(None))
-        }),
-    })
-}
-
-/// The message for a native kernel that failed while timed: a baseline's exception caught at
-/// the FFI wall (`Some(Err)`), or a kernel that stopped answering (`None`). The cell then fails
-/// loudly instead of timing a zero checksum.
-fn native_failure(failed: Option<topolab_structures::Result<()>>) -> String {
-    match failed {
-        Some(Err(e)) => format!("native kernel failed: {e}"),
-        _ => "native kernel stopped answering between runs".into(),
-    }
+    let (t, answer) = match failure {
+        Some(e) => return Err(format!("native kernel failed: {e}")),
+        None => timed?,
+    };
+    // With no failure, every run answered.
+    answer
+        .map(|answer| (t, answer))
+        .ok_or_else(|| "native kernel failed without an error".into())
 }
 
 /// Builds `M` from `case` and times one sweep of `op` over every element (for comparisons
@@ -570,7 +570,7 @@ pub fn measure_sweep<M: MeshTopology>(
     op: Operator,
     plan: &Plan,
 ) -> Result<Measurement, String> {
-    let mut cell = measurement(M::NAME, Subject::Query(op), Kernel::Sweep, case);
+    let mut cell = measurement::<M>(Subject::Query(op), Kernel::Sweep, case);
     let m = match M::from_soup(case.soup) {
         Ok(m) => m,
         Err(e) => {
@@ -790,38 +790,31 @@ mod tests {
         }
     }
 
-    /// Times `answers` (one per call, then `None`) as a native kernel.
-    fn time_answers(answers: Vec<Option<Result<u64>>>) -> Option<Result<u64, String>> {
+    /// Times `answers` as a native kernel: one per run, then 5 for every later run.
+    fn time_answers(answers: Vec<Result<u64>>) -> Result<u64, String> {
         let budget = Budget {
             time: Duration::from_millis(1),
             min_reps: 2,
             max_reps: 3,
         };
         let mut answers = answers.into_iter();
-        time_native(budget, || answers.next().flatten()).map(|r| r.map(|(_, sum)| sum))
+        time_native(budget, || answers.next().unwrap_or(Ok(5))).map(|(_, sum)| sum)
     }
 
     #[test]
     fn native_kernels_are_timed_when_they_answer_and_fail_loudly() {
-        // No loop of its own: the harness's generic kernel runs instead.
-        assert_eq!(time_answers(vec![None]), None);
-        let always = (0..9).map(|_| Some(Ok(5))).collect();
-        assert_eq!(time_answers(always), Some(Ok(5)));
-        // A failure in the first run, or in a later one, is the library's error, not a 0.
-        for answers in [
-            vec![Some(Err(foreign()))],
-            vec![Some(Ok(5)), Some(Ok(5)), Some(Err(foreign())), Some(Ok(5))],
-        ] {
-            let err = time_answers(answers).unwrap().unwrap_err();
+        assert_eq!(time_answers(Vec::new()), Ok(5));
+        // A failure in the warm-up, or in a timed run, is the library's error, not a 0.
+        for answers in [vec![Err(foreign())], vec![Ok(5), Ok(5), Err(foreign())]] {
+            let err = time_answers(answers).unwrap_err();
             assert!(
                 err.contains("native kernel failed") && err.contains("a test failure"),
                 "{err}"
             );
         }
-        let err = time_answers(vec![Some(Ok(5)), Some(Ok(5))])
-            .unwrap()
-            .unwrap_err();
-        assert!(err.contains("stopped answering"), "{err}");
+        // A kernel whose answer changes between runs fails like a generic one.
+        let err = time_answers(vec![Ok(5), Ok(6)]).unwrap_err();
+        assert!(err.contains("gave Some(6)"), "{err}");
     }
 
     #[test]

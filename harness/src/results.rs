@@ -245,7 +245,9 @@ pub struct Measurement {
     pub declared_bytes: Option<u64>,
     /// For skipped cells: the estimate from smaller sizes, ns per item.
     pub estimate_ns_per_item: Option<f64>,
-    /// Whether the structure ran the kernel natively (a baseline's own loop).
+    /// Whether the cell is a baseline's own loop ([`topolab_structures::NativeKernels`]): true
+    /// for every cell of a baseline behind an FFI, skipped ones included (they would be), and
+    /// false for the lab's structures, which the harness's generic kernels time.
     pub native: bool,
     /// Why refused, or other remarks.
     pub note: Option<String>,

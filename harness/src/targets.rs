@@ -20,7 +20,7 @@
 //! chain at its own step's latency ([`measured_chain`]): che-l2 1.11–1.28× in those runs.
 //!
 //! The runs are the size sweep's own: the harness kernels ([`crate::kernels::run`],
-//! [`crate::kernels::run_workload`]), a baseline's native loops where it has them
+//! [`crate::kernels::run_workload`]), and a baseline's own loops for every run of a baseline
 //! ([`topolab_structures::NativeKernels`]). Every run is timed in the measuring thread's CPU
 //! time ([`Stopwatch`]), as the size sweep times construction: time slices given to other
 //! processes do not count. Every run's answer must agree with the first run's; a disagreement
@@ -451,24 +451,28 @@ impl<M: MeshTopology> Built<M> {
         })
     }
 
-    /// One run of a sweep or of smoothing, natively for a baseline with its own loop, as the
-    /// size sweep runs it, timed by a [`Stopwatch`] on `meter`.
+    /// One run of a sweep or of smoothing, natively for a baseline, as the size sweep runs it,
+    /// timed by a [`Stopwatch`] on `meter`.
     pub fn run(&mut self, cell: Cell, meter: &dyn MemoryMeter) -> Result<Run, String> {
         let native = M::native();
         let watch = Stopwatch::start(meter);
         let (items, answer) = match cell {
             Cell::R00Sweep => {
                 let op = Operator::R00;
-                let sum = match native.and_then(|k| k.sweep(&self.m, op)) {
-                    Some(sum) => sum.map_err(|e| format!("native kernel failed: {e}"))?,
+                let sum = match native {
+                    Some(k) => k
+                        .sweep(&self.m, op)
+                        .map_err(|e| format!("native kernel failed: {e}"))?,
                     None => run(&self.m, op, &self.q, &mut self.curves),
                 };
                 (self.q.count(op), Answer::Sum(sum))
             }
             Cell::Smoothing => {
                 let w = Workload::Smoothing;
-                let value = match native.and_then(|k| k.workload(&mut self.m, w)) {
-                    Some(v) => v.map_err(|e| format!("native kernel failed: {e}"))?,
+                let value = match native {
+                    Some(k) => k
+                        .workload(&mut self.m, w)
+                        .map_err(|e| format!("native kernel failed: {e}"))?,
                     None => run_workload(&self.m, w, &mut self.buf),
                 };
                 (w.items(&self.m), Answer::Value(value))

@@ -10,10 +10,8 @@ use glam::DVec3;
 use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
 use topolab_harness::kernels::{sample_queries, Kernel};
-use topolab_harness::measure::{
-    cross_check, measure_structure, Estimator, MemoryMeter, MeshCase, Plan,
-};
-use topolab_harness::results::{Measurement, Subject};
+use topolab_harness::measure::{measure_structure, Estimator, MemoryMeter, MeshCase, Plan};
+use topolab_harness::results::Measurement;
 use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
@@ -25,9 +23,10 @@ fn key<M: MeshTopology>(m: &M, e: EdgeId) -> u64 {
     edge_key(a.0, b.0)
 }
 
-/// How many query elements operator `op` has in `m`: vertices, edges or faces by its input
-/// (faces for successor and predecessor, asked about every edge of each face; one mesh).
-pub fn query_count<M: MeshTopology>(m: &M, op: Operator) -> usize {
+/// How many query elements a sweep of operator `op` walks in `m`: vertices, edges or faces by
+/// its input (faces for successor and predecessor, asked about every edge of each face; one
+/// mesh).
+fn query_count<M: MeshTopology>(m: &M, op: Operator) -> usize {
     match op.input() {
         Input::Vertex => m.num_vertices(),
         Input::Edge => m.num_edges(),
@@ -94,11 +93,6 @@ pub fn checksum<M: MeshTopology>(m: &M, op: Operator) -> u64 {
         }
         _ => (0..query_count(m, op) as u32).collect(),
     };
-    sampled(m, op, &ids)
-}
-
-/// The checksum of `op` over the query elements `ids` only.
-pub fn sampled<M: MeshTopology>(m: &M, op: Operator, ids: &[u32]) -> u64 {
     ids.iter()
         .fold(0u64, |sum, &id| sum.wrapping_add(term(m, op, id)))
 }
@@ -234,41 +228,6 @@ fn small_plan(light: bool) -> Plan {
         max_reps: 2,
         light,
     }
-}
-
-/// Checks that the harness reaches a baseline's own loops through `MeshTopology::native`:
-/// construction, sweeps, vertex and face samples and workloads run natively, and their
-/// checksums are the lab's.
-pub fn harness_times_native_loops<M: MeshTopology>() {
-    let soup = meshes::torus(6, 5);
-    let queries = sample_queries(&soup, 8, 3);
-    let case = MeshCase {
-        name: "torus",
-        family: "torus",
-        soup: &soup,
-        queries: &queries,
-    };
-    let plan = small_plan(false);
-    let (mut out, mut est) = (Vec::new(), Estimator::default());
-    measure_structure::<M>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-    assert_eq!(
-        out.len(),
-        1 + 13 * 2 + 1 + Workload::ALL.len(),
-        "{}",
-        M::NAME
-    );
-    for m in &out {
-        // The harness hands a baseline vertex and face samples only (measure::time_kernel).
-        let native = match (m.operator, m.kernel) {
-            (Subject::Query(op), Kernel::Sampled) => {
-                matches!(op.input(), Input::Vertex | Input::Face)
-            }
-            _ => true,
-        };
-        assert_eq!(m.native, native, "{} {} {}", M::NAME, m.operator, m.kernel);
-    }
-    measure_structure::<VertexList>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
-    cross_check(&out, "torus").unwrap();
 }
 
 /// The construction cell of `M` on `soup` as the report measures it, its heap counted by the

@@ -232,6 +232,18 @@ pub enum Error {
     /// A request outside what the structure or mesh offers (e.g. an unknown structure name).
     #[error("{0}")]
     Unsupported(String),
+    /// A query about an element the structure does not have: an id past its count.
+    #[error("{structure} has no {} {id} (it has {count}, numbered from 0)", element.name())]
+    ElementOutOfRange {
+        /// The structure asked.
+        structure: &'static str,
+        /// The kind of element.
+        element: crate::core::topology::Element,
+        /// The id asked about.
+        id: u32,
+        /// How many elements of that kind the structure has.
+        count: u32,
+    },
     /// An edit ([`crate::MeshEdit`]) that cannot be done on this mesh; nothing was changed.
     #[error("{structure} refuses {op}: {reason}")]
     EditRefused {
@@ -279,6 +291,7 @@ impl Error {
             Error::DegeneratePoints { .. } => "degenerate-points",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
+            Error::ElementOutOfRange { .. } => "element-out-of-range",
             Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
         }

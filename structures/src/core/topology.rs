@@ -28,6 +28,18 @@ pub enum Element {
     Mesh,
 }
 
+impl Element {
+    /// The lower-case name, as in messages ("vertex", "edge", "face", "mesh").
+    pub const fn name(self) -> &'static str {
+        match self {
+            Element::Vertex => "vertex",
+            Element::Edge => "edge",
+            Element::Face => "face",
+            Element::Mesh => "mesh",
+        }
+    }
+}
+
 /// What one query of an [`Operator`] is given ([`Operator::input`]): the element whose
 /// neighbourhood it asks about, which is also what a sweep of the operator walks over.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
@@ -394,8 +406,9 @@ pub trait MeshTopology: Sized {
     /// For teaching: what the structure stores, record by record, with the lecture's field names.
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result;
 
-    /// The kernels a baseline runs itself, for timing (see [`NativeKernels`]); `None` (the
-    /// default): the harness times [`MeshTopology::from_soup`] and its own generic kernels.
+    /// The kernels a baseline runs itself, for timing (see [`NativeKernels`]): with them, every
+    /// kernel of the structure is timed natively; `None` (the default): the harness times
+    /// [`MeshTopology::from_soup`] and its own generic kernels.
     /// (A baseline returns a constant; the lifetime `'a` spares the structures generic over
     /// a type, such as the half-edge over its links, a `'static` bound.)
     fn native<'a>() -> Option<&'a dyn NativeKernels<Self>> {
@@ -411,6 +424,54 @@ pub trait MeshTopology: Sized {
     }
 }
 
+/// The sampled queries of one operator, in the lab's ids of the structure they are asked of
+/// ([`Operator::input`] says which kind an operator takes): what a baseline's sampled kernel
+/// ([`NativeKernels::sampled`]) answers, the same queries as the harness's generic kernel.
+#[derive(Copy, Clone, Debug)]
+pub enum Sample<'a> {
+    /// Vertices ([`Input::Vertex`]).
+    Vertices(&'a [VertexId]),
+    /// Edges ([`Input::Edge`]).
+    Edges(&'a [EdgeId]),
+    /// Faces ([`Input::Face`]).
+    Faces(&'a [FaceId]),
+    /// (edge, face) pairs ([`Input::EdgeOfFace`]): the successor or predecessor of the edge in
+    /// that face.
+    EdgesOfFaces(&'a [(EdgeId, FaceId)]),
+}
+
+impl Sample<'_> {
+    /// The kind of query this sample holds.
+    pub const fn input(&self) -> Input {
+        match self {
+            Sample::Vertices(_) => Input::Vertex,
+            Sample::Edges(_) => Input::Edge,
+            Sample::Faces(_) => Input::Face,
+            Sample::EdgesOfFaces(_) => Input::EdgeOfFace,
+        }
+    }
+
+    /// How many queries it holds.
+    pub const fn len(&self) -> usize {
+        match self {
+            Sample::Vertices(ids) => ids.len(),
+            Sample::Edges(ids) => ids.len(),
+            Sample::Faces(ids) => ids.len(),
+            Sample::EdgesOfFaces(pairs) => pairs.len(),
+        }
+    }
+
+    /// `true` when it holds no query.
+    pub const fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// A baseline's sampled kernel, prepared by [`NativeKernels::sampled`]: each call runs the
+/// whole loop over the prepared queries on the other side of the FFI and returns the harness's
+/// checksum, or the library's failure inside the loop.
+pub type SampledRun<'a> = Box<dyn Fn() -> Result<u64> + 'a>;
+
 /// The kernels of a baseline behind an FFI boundary (OpenMesh, CGAL), which the harness times
 /// instead of its own: per-query calls across the FFI would measure the FFI instead of the
 /// library, so whole loops run on the other side and return the harness's checksum. Reached
@@ -422,9 +483,10 @@ pub trait MeshTopology: Sized {
 /// [`Constructed::finish`] after the clock (what the lab adds for its queries). The structure
 /// is dropped after the clock too, like every structure's.
 ///
-/// The other kernels answer `None` when the baseline has no loop of its own for that case (the
-/// harness then runs its generic kernel) and `Some(Err(..))` when the library failed inside
-/// the loop: a loud error of the measurement, never a silent zero.
+/// A baseline has every kernel: a structure with native kernels is timed by them alone,
+/// never by the harness's generic kernels, so a kernel that cannot run is an error of the
+/// measurement, not a silent fallback. `Err` is also how a failure of the library inside a
+/// loop arrives (an exception caught at the FFI wall): a loud error, never a silent zero.
 pub trait NativeKernels<M> {
     /// The lab's checks of `soup` that [`MeshTopology::from_soup`] makes before the library
     /// builds (so that a soup is refused as `from_soup` refuses it, with the same typed error),
@@ -438,16 +500,19 @@ pub trait NativeKernels<M> {
     fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<M>>;
 
     /// A whole sweep of `op` over every element of `mesh`, folded into the harness's checksum.
-    fn sweep(&self, mesh: &M, op: Operator) -> Option<Result<u64>>;
+    fn sweep(&self, mesh: &M, op: Operator) -> Result<u64>;
 
-    /// Like [`NativeKernels::sweep`], over the sampled query elements `ids` only: vertex, edge
-    /// or face ids by [`Operator::input`] (face ids for [`Input::EdgeOfFace`], each asking
-    /// about every edge of the face).
-    fn sampled(&self, mesh: &M, op: Operator, ids: &[u32]) -> Option<Result<u64>>;
+    /// Prepares the sampled kernel of `op` over `sample`, once, before anything is timed:
+    /// checks every id against `mesh` and hands the queries to the library in its own handles,
+    /// so that the timed run translates nothing. The run answers exactly the queries of
+    /// `sample`, as the harness's generic kernel does, with the same checksum. An error when
+    /// `sample` is not the kind of query `op` takes, holds an id `mesh` does not have, or `op`
+    /// has no sampled kernel ([`Input::Mesh`]).
+    fn sampled<'a>(&self, mesh: &'a M, op: Operator, sample: Sample<'_>) -> Result<SampledRun<'a>>;
 
     /// An application workload, returning its result. Takes `&mut M` because a baseline may
     /// keep its results (normals) in the mesh; running it twice must give the same result.
-    fn workload(&self, mesh: &mut M, workload: Workload) -> Option<Result<f64>>;
+    fn workload(&self, mesh: &mut M, workload: Workload) -> Result<f64>;
 }
 
 /// What a baseline's construction is told about its soup before the clock starts: the soup,
