@@ -5,6 +5,7 @@
 #include "mesh.h"
 
 #include <CGAL/assertions.h>  // set_error_behaviour (defined there in header-only CGAL)
+#include <CGAL/version.h>     // CGAL_VERSION_STR, for the report
 
 using topolab_cgal::guard;
 
@@ -25,6 +26,8 @@ bool known_workload(int w) { return w >= 0 && w < topolab_cgal::WORKLOAD_COUNT; 
 }  // namespace
 
 extern "C" {
+
+const char *topolab_cgal_version() noexcept { return CGAL_VERSION_STR; }
 
 int topolab_cgal_build(int structure, const double *xyz, uint32_t vertices,
                        const uint32_t *indices, const uint32_t *offsets, uint32_t faces,

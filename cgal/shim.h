@@ -61,6 +61,9 @@ typedef void (*topolab_cgal_emit)(void *context, uint32_t index);
 /* Called when a boundary curve is complete. */
 typedef void (*topolab_cgal_end_curve)(void *context);
 
+/* The version of the CGAL headers compiled in, e.g. "5.5.1" (a static string). */
+const char *topolab_cgal_version(void) TOPOLAB_CGAL_NOEXCEPT;
+
 /* Builds `structure` from a face list into *out, the way CGAL's documentation builds one, and does
  * nothing else (callers time it): Surface_mesh by reserve + add_vertex + add_face; Polyhedron_3
  * by Polyhedron_incremental_builder_3 (begin_surface with the counts, add_vertex, add_facet).

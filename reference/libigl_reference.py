@@ -5,10 +5,10 @@
 
 Loads a triangle mesh with libigl, computes the relations the lab computes with libigl's own
 functions, and writes for each one the checksum of harness/src/checksum.rs (same `mix` and
-`edge_key`, in numpy uint64 wrapping arithmetic) and the time of the libigl call alone (best
-of 5, one thread: IGL_NUM_THREADS=1):
+`edge_key`, in numpy uint64 wrapping arithmetic) and the time of the libigl call alone (median
+of 5 after a warm-up run, one thread: IGL_NUM_THREADS=1):
 
-    {"mesh": ..., "vertices": n, "triangles": m,
+    {"mesh": ..., "vertices": n, "triangles": m, "libigl_version": "2.6.1",
      "results": [{"operator": "r00", "function": "adjacency_list",
                   "checksum": "<u64 as decimal string>", "seconds": ...}, ...]}
 
@@ -29,6 +29,7 @@ has a "value" (the sum of all vertex normal coordinates) instead of a checksum.
 import argparse
 import json
 import os
+import statistics
 import sys
 import time
 
@@ -67,14 +68,16 @@ def wrapping_sum(x):
     return int(np.sum(np.asarray(x, dtype=U64), dtype=U64))
 
 
-def best_of(call, repeats=5):
-    """The result of `call` and its fastest time in seconds."""
-    best, result = float("inf"), None
+def median_of(call, repeats=5):
+    """The result of `call` and the median of its times in seconds, after one run to warm up
+    (the lab's timings are medians of warm runs too)."""
+    result = call()
+    times = []
     for _ in range(repeats):
         start = time.perf_counter()
         result = call()
-        best = min(best, time.perf_counter() - start)
-    return result, best
+        times.append(time.perf_counter() - start)
+    return result, statistics.median(times)
 
 
 def r00(adjacency):
@@ -109,6 +112,15 @@ def boundary_curves(loops):
     return total % (1 << 64)
 
 
+def libigl_version():
+    """The installed libigl package's version, or "unknown"."""
+    try:
+        from importlib.metadata import version
+        return version("libigl")
+    except Exception:  # noqa: BLE001 - any failure only loses the version string
+        return "unknown"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("mesh", help="a triangle mesh file libigl reads (.obj, .off, ...)")
@@ -131,16 +143,16 @@ def main():
     ]
     results = []
     for operator, function, call, checksum in runs:
-        output, seconds = best_of(call)
+        output, seconds = median_of(call)
         results.append({"operator": operator, "function": function,
                         "checksum": str(checksum(output)), "seconds": seconds})
     uniform = igl.PER_VERTEX_NORMALS_WEIGHTING_TYPE_UNIFORM
-    normals, seconds = best_of(lambda: igl.per_vertex_normals(V, F, uniform))
+    normals, seconds = median_of(lambda: igl.per_vertex_normals(V, F, uniform))
     results.append({"operator": "normals", "function": "per_vertex_normals",
                     "value": float(np.sum(normals)), "seconds": seconds})
 
     report = {"mesh": args.mesh, "vertices": int(n), "triangles": int(F.shape[0]),
-              "threads": 1, "results": results}
+              "threads": 1, "libigl_version": libigl_version(), "results": results}
     with open(args.out, "w") as out:
         json.dump(report, out, indent=2)
         out.write("\n")

@@ -113,6 +113,14 @@ mod edit;
 pub mod hull;
 
 /// The declarations of `cgal/shim.h`.
+/// The version of the CGAL headers this build compiled, e.g. `5.5.1`.
+pub fn version() -> String {
+    // SAFETY: the shim returns CGAL_VERSION_STR, a static NUL-terminated string.
+    unsafe { std::ffi::CStr::from_ptr(ffi::topolab_cgal_version()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
 mod ffi {
     use std::ffi::c_void;
 
@@ -138,6 +146,7 @@ mod ffi {
     // Every function returns a status (`crate::foreign::OK` or a failure) and writes its
     // results through out-pointers; all are `noexcept` in C++ and catch every exception.
     extern "C" {
+        pub fn topolab_cgal_version() -> *const std::ffi::c_char;
         pub fn topolab_cgal_build(
             structure: i32,
             xyz: *const f64,

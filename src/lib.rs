@@ -10,6 +10,7 @@
 // (each allows it for itself alone).
 #![deny(unsafe_code)]
 
+pub mod baselines;
 pub mod cli;
 pub mod commands;
 pub mod extend;

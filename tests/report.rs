@@ -138,6 +138,16 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
         topolab::HAS_QHULL
     );
     assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
+    // How the baselines are run: one entry per outside library the run used, each saying its
+    // build, on the page and in results.json.
+    let baselines = json["baselines"].as_array().unwrap();
+    let listed = |name: &str| baselines.iter().any(|b| b["name"] == name);
+    assert_eq!(listed("openmesh"), topolab::HAS_OPENMESH, "{baselines:?}");
+    assert_eq!(listed("qhull"), topolab::HAS_QHULL, "{baselines:?}");
+    if let Some(build) = topolab::OPENMESH_BUILD {
+        assert!(html.contains("<h2>How the baselines are run</h2>"));
+        assert!(html.contains(build), "the OpenMesh build is on the page");
+    }
     assert!(html.contains("× limit") && html.contains("worst × limit"));
     assert!(html.contains("cold − warm (page faults)"));
     for s in registry::NAMES {

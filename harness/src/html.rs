@@ -67,6 +67,7 @@ pub fn render(r: &Results) -> String {
         crate::chooser::section(&mut h, r);
     }
     machine_section(&mut h, r);
+    crate::baselines::render(&mut h, &r.baselines);
     let draw = |s: Section, h: &mut String| match s {
         Section::Chooser => {}
         Section::Targets => crate::targets::render(h, r),

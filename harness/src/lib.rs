@@ -7,6 +7,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod baselines;
 pub mod bench;
 pub mod catalogue;
 pub mod changing;

@@ -19,6 +19,8 @@ pub struct Results {
     pub format_version: u32,
     /// Machine and build facts.
     pub machine: Machine,
+    /// How each outside library was built, used, timed and counted ([`crate::baselines`]).
+    pub baselines: Vec<crate::baselines::BaselineRun>,
     /// The memory probe, measured in the same run.
     pub probe: Probe,
     /// How the run was configured.

@@ -215,6 +215,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     );
     let mut results = Results {
         format_version: FORMAT_VERSION,
+        baselines: Vec::new(),
         machine: machine::facts(
             crate::OPENMESH_BUILD
                 .map(str::to_string)
@@ -354,8 +355,10 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         orderings::<X>(&cases, &names, &plan, &mut results)?;
         clock.lap(Phase::Orderings, None);
     }
+    let mut libigl_version = None;
     if selection.libigl {
-        results.libigl = libigl(&cases, &results.measurements, &mut results.notes);
+        (results.libigl, libigl_version) =
+            libigl(&cases, &results.measurements, &mut results.notes);
         clock.lap(Phase::Libigl, None);
     }
     if selection.hull {
@@ -391,6 +394,13 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         )?;
         clock.lap(Phase::Targets, None);
     }
+    let measured: Vec<&str> = names.iter().map(String::as_str).collect();
+    results.baselines = crate::baselines::runs(crate::baselines::Used {
+        structures: &measured,
+        hull: selection.hull && !results.hull.is_empty(),
+        decimate: selection.decimate && !results.decimate.is_empty(),
+        libigl: libigl_version.as_deref(),
+    });
     let skipped = results
         .measurements
         .iter()
@@ -623,11 +633,13 @@ fn orderings<X: Structures>(
 
 /// libigl's reference timings on the tori, when `.venv/bin/python` with libigl exists: the
 /// script's checksums are compared with the lab's sweep of the same operator.
+/// libigl's rows on the tori, and the version of libigl that answered (from its script's
+/// output), when it ran.
 fn libigl(
     cases: &[(String, String, PolygonSoup)],
     measurements: &[Measurement],
     notes: &mut Vec<String>,
-) -> Vec<topolab_harness::results::LibiglRow> {
+) -> (Vec<topolab_harness::results::LibiglRow>, Option<String>) {
     let python = Path::new(".venv/bin/python");
     let script = Path::new("reference/libigl_reference.py");
     let ready = python.exists()
@@ -640,11 +652,12 @@ fn libigl(
             "libigl was not run: .venv/bin/python with libigl is missing (bash .ci/install-deps)."
                 .into(),
         );
-        return Vec::new();
+        return (Vec::new(), None);
     }
     let dir = std::env::temp_dir().join(format!("topolab-libigl-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
     let mut rows = Vec::new();
+    let mut version = None;
     for (name, _, soup) in cases.iter().filter(|c| c.1 == "torus") {
         eprintln!("topolab report: libigl on {name}");
         let (mesh, json) = (
@@ -668,6 +681,9 @@ fn libigl(
             notes.push(format!("libigl failed on {name}"));
             continue;
         };
+        if let Some(v) = v["libigl_version"].as_str() {
+            version = Some(v.to_string());
+        }
         let edges = soup.connectivity().map(|c| c.num_edges()).unwrap_or(0);
         for r in v["results"].as_array().into_iter().flatten() {
             let Some(subject) = r["operator"].as_str().and_then(Subject::from_name) else {
@@ -720,7 +736,7 @@ fn libigl(
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
-    rows
+    (rows, version)
 }
 
 /// Writes `results.json` and `index.html`, with the sections' times of `clock` and the time of
