@@ -163,7 +163,11 @@ mod tests {
         });
         assert_eq!(runs[0].name, registry::OPENMESH);
         assert_eq!(runs[0].build, build);
-        assert!(runs[0].library.starts_with("OpenMesh "), "{}", runs[0].library);
+        assert!(
+            runs[0].library.starts_with("OpenMesh "),
+            "{}",
+            runs[0].library
+        );
     }
 
     #[cfg(has_cgal)]

@@ -158,8 +158,9 @@ impl StructureVisitor for Bench<'_, '_> {
             }
             Subject::Workload(w) => {
                 let mut buf = WorkloadBuffers::default();
-                self.group
-                    .throughput(Throughput::Elements(w.items(&m) as u64));
+                self.group.throughput(Throughput::Elements(
+                    w.items(m.num_vertices(), m.num_faces()) as u64,
+                ));
                 match native {
                     Some(k) => self
                         .group

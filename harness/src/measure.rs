@@ -359,7 +359,7 @@ pub fn measure_structure<M: MeshTopology>(
     let mut buf = WorkloadBuffers::default();
     for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
         let mut cell = measurement::<M>(Subject::Workload(w), Kernel::Workload, case);
-        let items = w.items(&m);
+        let items = w.items(m.num_vertices(), m.num_faces());
         cell.items = items;
         // A workload asks its relations once per element: its run grows like n^(1+e) for the
         // costliest relation it uses.

@@ -475,7 +475,10 @@ impl<M: MeshTopology> Built<M> {
                         .map_err(|e| format!("native kernel failed: {e}"))?,
                     None => run_workload(&self.m, w, &mut self.buf),
                 };
-                (w.items(&self.m), Answer::Value(value))
+                (
+                    w.items(self.m.num_vertices(), self.m.num_faces()),
+                    Answer::Value(value),
+                )
             }
             Cell::Construction | Cell::Changing(_) => {
                 return Err(format!("{cell:?} is not run on a built structure"))

@@ -238,7 +238,7 @@ pub enum Error {
         /// The structure asked.
         structure: &'static str,
         /// The kind of element.
-        element: crate::core::topology::Element,
+        element: crate::core::operator::Element,
         /// The id asked about.
         id: u32,
         /// How many elements of that kind the structure has.
@@ -250,9 +250,9 @@ pub enum Error {
         /// The structure that refused.
         structure: &'static str,
         /// The operation.
-        op: crate::core::edit::EditOp,
+        op: crate::core::edit_op::EditOp,
         /// Why.
-        reason: crate::core::edit::Refusal,
+        reason: crate::core::edit_op::Refusal,
     },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.

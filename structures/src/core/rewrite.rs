@@ -7,7 +7,7 @@
 //! its queries cost in that structure plus the rewrite: O(k) where the queries are local (the
 //! winged-edge), O(n) where a neighbour is found by a scan (the vertex list).
 //!
-//! Every operation checks first and refuses with [`Error::EditRefused`] before its first
+//! Every operation checks first and refuses with [`Error::EditRefused`](crate::Error::EditRefused) before its first
 //! write, so a refused edit changes nothing. The checks are those of the half-edge libraries
 //! (pmp-library's `is_collapse_ok` for a collapse, no existing edge for a flip), and the
 //! manifold check of a rewrite is local: only the vertices of the faces removed or added can
@@ -21,8 +21,12 @@
 //! workloads) hold across edits.
 
 use crate::core::edit::{EditOp, Refusal};
-use crate::core::error::{Error, Result};
+use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+pub use crate::core::neighbourhood::Star;
+use crate::core::neighbourhood::{
+    adjacent, check_collapse, corners, face_with, faces_at, neighbours, refuse, sides_of,
+};
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
 
@@ -32,7 +36,7 @@ use crate::core::edit::{Deletion, MeshEdit};
 /// The primitive under the operations of this module: what a structure without half-edges
 /// offers to be edited.
 pub trait FaceRewrite: MeshTopology {
-    /// Appends an unused vertex at `p`; refused with [`Error::TooLarge`] when ids run out.
+    /// Appends an unused vertex at `p`; refused with [`Error::TooLarge`](crate::Error::TooLarge) when ids run out.
     fn push_vertex(&mut self, p: DVec3) -> Result<VertexId>;
     /// Moves vertex `v` (a live vertex).
     fn write_position(&mut self, v: VertexId, p: DVec3);
@@ -92,106 +96,8 @@ pub(crate) fn retain_unmarked<T>(per_vertex: &mut Vec<T>, marks: &[bool]) {
     });
 }
 
-fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
-    Error::EditRefused {
-        structure: M::NAME,
-        op,
-        reason,
-    }
-}
-
 fn live<M: FaceRewrite>(m: &M, v: VertexId) -> bool {
     v.index() < m.num_vertices() && !m.vertex_deleted(v)
-}
-
-fn corners<M: MeshTopology>(m: &M, f: FaceId) -> Vec<VertexId> {
-    let mut out = Vec::with_capacity(4);
-    m.face_vertices(f, |v| out.push(v));
-    out
-}
-
-fn faces_at<M: MeshTopology>(m: &M, v: VertexId) -> Vec<FaceId> {
-    let mut out = Vec::with_capacity(8);
-    m.vertex_faces(v, |f| out.push(f));
-    out.sort_unstable();
-    out.dedup();
-    out
-}
-
-/// The face that runs a → b, with its corners and the corner of a.
-fn face_with<M: MeshTopology>(
-    m: &M,
-    a: VertexId,
-    b: VertexId,
-) -> Option<(FaceId, Vec<VertexId>, usize)> {
-    faces_at(m, a).into_iter().find_map(|f| {
-        let c = corners(m, f);
-        let k = c.len();
-        (0..k)
-            .find(|&i| c[i] == a && c[(i + 1) % k] == b)
-            .map(|i| (f, c, i))
-    })
-}
-
-/// The vertices that share a face side with v, sorted.
-fn neighbours<M: MeshTopology>(m: &M, v: VertexId) -> Vec<VertexId> {
-    let mut out = Vec::new();
-    for f in faces_at(m, v) {
-        let c = corners(m, f);
-        let k = c.len();
-        for i in 0..k {
-            if c[i] == v {
-                out.push(c[(i + 1) % k]);
-                out.push(c[(i + k - 1) % k]);
-            }
-        }
-    }
-    out.sort_unstable();
-    out.dedup();
-    out
-}
-
-/// The faces of edge `e` = {a, b}, each with its corners and the corner where it leaves the
-/// end it runs from: `[the face running a → b, the one running b → a]`. The structure's own
-/// edge → faces query (O(1) in the edge lists), not a search around a vertex.
-#[allow(clippy::type_complexity)]
-fn sides_of<M: MeshTopology>(
-    m: &M,
-    e: EdgeId,
-    a: VertexId,
-    b: VertexId,
-) -> [Option<(FaceId, Vec<VertexId>, usize)>; 2] {
-    let mut out = [None, None];
-    m.edge_faces(e, |f| {
-        let c = corners(m, f);
-        let k = c.len();
-        for i in 0..k {
-            let (x, y) = (c[i], c[(i + 1) % k]);
-            if (x, y) == (a, b) {
-                out[0] = Some((f, c.clone(), i));
-            } else if (x, y) == (b, a) {
-                out[1] = Some((f, c.clone(), i));
-            }
-        }
-    });
-    out
-}
-
-/// Do `a` and `b` share a face side? One rotation around `a`, no allocation.
-fn adjacent<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
-    let mut found = false;
-    m.vertex_vertices(a, |w| found |= w == b);
-    found
-}
-
-fn is_boundary_edge<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
-    face_with(m, a, b).is_none() || face_with(m, b, a).is_none()
-}
-
-fn is_boundary_vertex<M: MeshTopology>(m: &M, v: VertexId) -> bool {
-    neighbours(m, v)
-        .into_iter()
-        .any(|w| is_boundary_edge(m, v, w))
 }
 
 /// Would the faces around each vertex of `check` make one fan, every directed edge once,
@@ -364,66 +270,6 @@ pub fn split_face<M: FaceRewrite>(m: &mut M, f: FaceId, p: DVec3) -> Result<Vert
     Ok(n)
 }
 
-/// The faces around a vertex, each with its corners.
-pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
-
-/// The test of [`MeshEdit::collapse_edge`] over the queries alone (pmp-library's
-/// `is_collapse_ok` with OpenMesh's tetrahedron test), so that any [`MeshEdit`] can run it:
-/// the faces around `from` with their corners when the collapse may be done, the refusal
-/// otherwise. [`MeshEdit::check_collapse`]'s default, and the first half of [`collapse_edge`].
-pub fn check_collapse<M: MeshEdit>(m: &M, from: VertexId, to: VertexId) -> Result<Star> {
-    let op = EditOp::CollapseEdge;
-    let no = |r| Err(refuse::<M>(op, r));
-    let live = |v: VertexId| v.index() < m.num_vertices() && !m.is_deleted_vertex(v);
-    if !live(from) || !live(to) {
-        return no(Refusal::NoSuchElement);
-    }
-    let ring0 = neighbours(m, from);
-    if !ring0.contains(&to) {
-        return no(Refusal::NotNeighbours);
-    }
-    let around = faces_at(m, from);
-    let faces: Vec<Vec<VertexId>> = around.iter().map(|&f| corners(m, f)).collect();
-    if faces.iter().any(|c| c.len() != 3) {
-        return no(Refusal::NotTriangles);
-    }
-    let third = |a: VertexId, b: VertexId| {
-        faces.iter().find_map(|c| {
-            (0..3)
-                .find(|&i| c[i] == a && c[(i + 1) % 3] == b)
-                .map(|i| c[(i + 2) % 3])
-        })
-    };
-    let (left, right) = (third(from, to), third(to, from));
-    for (side, a, b) in [(left, to, from), (right, from, to)] {
-        if let Some(x) = side {
-            if is_boundary_edge(m, a, x) && is_boundary_edge(m, x, b) {
-                return no(Refusal::LinkCondition);
-            }
-        }
-    }
-    if left == right {
-        return no(Refusal::LinkCondition);
-    }
-    if let (Some(l), Some(r)) = (left, right) {
-        let valence = |v: VertexId| neighbours(m, v).len();
-        if neighbours(m, l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
-            return no(Refusal::LinkCondition);
-        }
-    }
-    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {
-        return no(Refusal::LinkCondition);
-    }
-    let ring1 = neighbours(m, to);
-    if ring0
-        .iter()
-        .any(|&w| w != to && Some(w) != left && Some(w) != right && ring1.contains(&w))
-    {
-        return no(Refusal::LinkCondition);
-    }
-    Ok((around, faces))
-}
-
 /// [`MeshEdit::collapse_edge`] over [`FaceRewrite`]: [`check_collapse`], then the faces
 /// around `from` rewritten around `to`.
 pub fn collapse_edge<M: FaceRewrite + MeshEdit>(
@@ -431,7 +277,7 @@ pub fn collapse_edge<M: FaceRewrite + MeshEdit>(
     from: VertexId,
     to: VertexId,
 ) -> Result<()> {
-    let (around, faces) = check_collapse(m, from, to)?;
+    let (around, faces) = check_collapse(m, from, to, |v| m.is_deleted_vertex(v))?;
     let mut old = Vec::new();
     let mut new = Vec::new();
     let mut gone = Vec::new();

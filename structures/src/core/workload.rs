@@ -2,7 +2,7 @@
 //! [`crate::Operator`]s, so that a baseline's [`crate::NativeKernels`] can be asked for one by
 //! type. The harness runs them (`topolab_harness::kernels::run_workload`).
 
-use crate::core::topology::{MeshTopology, Operator};
+use crate::core::operator::Operator;
 
 /// The application workloads of the Surface_mesh benchmark (Sieger & Botsch, IMR 2011).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
@@ -52,12 +52,11 @@ impl Workload {
         }
     }
 
-    /// What one item is (for ns per item).
-    pub fn items<M: MeshTopology>(self, m: &M) -> usize {
+    /// How many items one run handles on a mesh of `vertices` and `faces` (for ns per item).
+    pub fn items(self, vertices: usize, faces: usize) -> usize {
         match self {
-            Workload::Circulators => m.num_vertices() + m.num_faces(),
-            Workload::Barycenter | Workload::Smoothing => m.num_vertices(),
-            Workload::Normals => m.num_vertices() + m.num_faces(),
+            Workload::Circulators | Workload::Normals => vertices + faces,
+            Workload::Barycenter | Workload::Smoothing => vertices,
         }
     }
 }

@@ -13,6 +13,7 @@ use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
 use crate::testing::conformance::compare;
 use crate::testing::meshes::{self, RandomMeshParams};
+pub use crate::testing::oracle::canonical_face;
 use glam::DVec3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -24,12 +25,6 @@ pub struct Model {
     pub positions: Vec<Option<DVec3>>,
     /// Per face, its corners, `None` once deleted.
     pub faces: Vec<Option<Vec<u32>>>,
-}
-
-/// `f` rotated so that its smallest vertex comes first.
-pub fn canonical_face(f: &[u32]) -> Vec<u32> {
-    let i = (0..f.len()).min_by_key(|&i| f[i]).unwrap_or(0);
-    f[i..].iter().chain(&f[..i]).copied().collect()
 }
 
 impl Model {

@@ -190,3 +190,9 @@ impl Oracle {
         roots.len()
     }
 }
+
+/// `f` rotated so that its smallest vertex comes first.
+pub fn canonical_face(f: &[u32]) -> Vec<u32> {
+    let i = (0..f.len()).min_by_key(|&i| f[i]).unwrap_or(0);
+    f[i..].iter().chain(&f[..i]).copied().collect()
+}

@@ -11,8 +11,8 @@ use crate::core::edit::{MeshEdit, Refusal};
 use crate::core::error::Error;
 use crate::core::soup::PolygonSoup;
 use crate::testing::conformance::compare;
-use crate::testing::editing::canonical_face;
 use crate::testing::meshes;
+use crate::testing::oracle::canonical_face;
 use glam::DVec3;
 
 /// The closed meshes the weld tests cut.

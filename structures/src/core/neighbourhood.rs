@@ -1,0 +1,175 @@
+//! A vertex's neighbourhood over the queries of [`MeshTopology`] alone (its faces, their
+//! corners, its neighbours, which of its sides are boundary) and the collapse test built on it
+//! ([`check_collapse`]): what the face-rewriting structures ([`crate::core::rewrite`]) and the
+//! default of [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse) share.
+//! Each helper allocates a small vector: they serve the editing operations, never a timed query.
+
+use crate::core::edit_op::{EditOp, Refusal};
+use crate::core::error::{Error, Result};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::topology::MeshTopology;
+
+pub(crate) fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
+    Error::EditRefused {
+        structure: M::NAME,
+        op,
+        reason,
+    }
+}
+
+pub(crate) fn corners<M: MeshTopology>(m: &M, f: FaceId) -> Vec<VertexId> {
+    let mut out = Vec::with_capacity(4);
+    m.face_vertices(f, |v| out.push(v));
+    out
+}
+
+pub(crate) fn faces_at<M: MeshTopology>(m: &M, v: VertexId) -> Vec<FaceId> {
+    let mut out = Vec::with_capacity(8);
+    m.vertex_faces(v, |f| out.push(f));
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The face that runs a → b, with its corners and the corner of a.
+pub(crate) fn face_with<M: MeshTopology>(
+    m: &M,
+    a: VertexId,
+    b: VertexId,
+) -> Option<(FaceId, Vec<VertexId>, usize)> {
+    faces_at(m, a).into_iter().find_map(|f| {
+        let c = corners(m, f);
+        let k = c.len();
+        (0..k)
+            .find(|&i| c[i] == a && c[(i + 1) % k] == b)
+            .map(|i| (f, c, i))
+    })
+}
+
+/// The vertices that share a face side with v, sorted.
+pub(crate) fn neighbours<M: MeshTopology>(m: &M, v: VertexId) -> Vec<VertexId> {
+    let mut out = Vec::new();
+    for f in faces_at(m, v) {
+        let c = corners(m, f);
+        let k = c.len();
+        for i in 0..k {
+            if c[i] == v {
+                out.push(c[(i + 1) % k]);
+                out.push(c[(i + k - 1) % k]);
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The faces of edge `e` = {a, b}, each with its corners and the corner where it leaves the
+/// end it runs from: `[the face running a → b, the one running b → a]`. The structure's own
+/// edge → faces query (O(1) in the edge lists), not a search around a vertex.
+#[allow(clippy::type_complexity)]
+pub(crate) fn sides_of<M: MeshTopology>(
+    m: &M,
+    e: EdgeId,
+    a: VertexId,
+    b: VertexId,
+) -> [Option<(FaceId, Vec<VertexId>, usize)>; 2] {
+    let mut out = [None, None];
+    m.edge_faces(e, |f| {
+        let c = corners(m, f);
+        let k = c.len();
+        for i in 0..k {
+            let (x, y) = (c[i], c[(i + 1) % k]);
+            if (x, y) == (a, b) {
+                out[0] = Some((f, c.clone(), i));
+            } else if (x, y) == (b, a) {
+                out[1] = Some((f, c.clone(), i));
+            }
+        }
+    });
+    out
+}
+
+/// Do `a` and `b` share a face side? One rotation around `a`, no allocation.
+pub(crate) fn adjacent<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
+    let mut found = false;
+    m.vertex_vertices(a, |w| found |= w == b);
+    found
+}
+
+pub(crate) fn is_boundary_edge<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
+    face_with(m, a, b).is_none() || face_with(m, b, a).is_none()
+}
+
+pub(crate) fn is_boundary_vertex<M: MeshTopology>(m: &M, v: VertexId) -> bool {
+    neighbours(m, v)
+        .into_iter()
+        .any(|w| is_boundary_edge(m, v, w))
+}
+
+/// The faces around a vertex, each with its corners.
+pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
+
+/// The test of [`MeshEdit::collapse_edge`](crate::core::edit::MeshEdit::collapse_edge) over
+/// the queries alone (pmp-library's `is_collapse_ok` with OpenMesh's tetrahedron test), so that
+/// any structure can run it (`is_deleted` tells the vertices an edit deleted): the faces around
+/// `from` with their corners when the collapse may be done, the refusal otherwise.
+/// [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse)'s default, and the
+/// first half of [`collapse_edge`](crate::core::rewrite::collapse_edge).
+pub fn check_collapse<M: MeshTopology>(
+    m: &M,
+    from: VertexId,
+    to: VertexId,
+    is_deleted: impl Fn(VertexId) -> bool,
+) -> Result<Star> {
+    let op = EditOp::CollapseEdge;
+    let no = |r| Err(refuse::<M>(op, r));
+    let live = |v: VertexId| v.index() < m.num_vertices() && !is_deleted(v);
+    if !live(from) || !live(to) {
+        return no(Refusal::NoSuchElement);
+    }
+    let ring0 = neighbours(m, from);
+    if !ring0.contains(&to) {
+        return no(Refusal::NotNeighbours);
+    }
+    let around = faces_at(m, from);
+    let faces: Vec<Vec<VertexId>> = around.iter().map(|&f| corners(m, f)).collect();
+    if faces.iter().any(|c| c.len() != 3) {
+        return no(Refusal::NotTriangles);
+    }
+    let third = |a: VertexId, b: VertexId| {
+        faces.iter().find_map(|c| {
+            (0..3)
+                .find(|&i| c[i] == a && c[(i + 1) % 3] == b)
+                .map(|i| c[(i + 2) % 3])
+        })
+    };
+    let (left, right) = (third(from, to), third(to, from));
+    for (side, a, b) in [(left, to, from), (right, from, to)] {
+        if let Some(x) = side {
+            if is_boundary_edge(m, a, x) && is_boundary_edge(m, x, b) {
+                return no(Refusal::LinkCondition);
+            }
+        }
+    }
+    if left == right {
+        return no(Refusal::LinkCondition);
+    }
+    if let (Some(l), Some(r)) = (left, right) {
+        let valence = |v: VertexId| neighbours(m, v).len();
+        if neighbours(m, l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
+            return no(Refusal::LinkCondition);
+        }
+    }
+    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {
+        return no(Refusal::LinkCondition);
+    }
+    let ring1 = neighbours(m, to);
+    if ring0
+        .iter()
+        .any(|&w| w != to && Some(w) != left && Some(w) != right && ring1.contains(&w))
+    {
+        return no(Refusal::LinkCondition);
+    }
+    Ok((around, faces))
+}
