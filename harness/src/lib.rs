@@ -15,6 +15,7 @@ pub mod checksum;
 pub mod chooser;
 pub mod compare;
 pub mod decimate;
+pub mod findings;
 pub mod fit;
 pub mod html;
 pub mod hull;

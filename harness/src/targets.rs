@@ -83,7 +83,7 @@ impl Cell {
     }
 
     /// The words the Targets table names it with.
-    fn text(self) -> String {
+    pub(crate) fn text(self) -> String {
         match self {
             Cell::R00Sweep => "vertex 1-ring sweep (r00)".into(),
             Cell::Smoothing => "smoothing".into(),

@@ -1,9 +1,9 @@
 //! # Compact Half-Edge (CHE), levels 0–3
 //!
-//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a
-//! triangle mesh stored as integer arrays, in four levels that each add containers and answer the
-//! relations with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by
-//! cell.
+//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see "The sources" in
+//! `docs/structures.md`): a triangle mesh stored as integer arrays, in four levels that each add
+//! containers and answer the relations with that level's algorithm, so the lab can measure the
+//! chapter's Table 4.1 cell by cell.
 //!
 //! Vertices, half-edges and triangles are non-negative integers. Triangle `t` owns the
 //! half-edges `3t, 3t+1, 3t+2`; half-edge `he` belongs to triangle `he / 3`, and
