@@ -14,6 +14,7 @@ pub mod baselines;
 pub mod cli;
 pub mod commands;
 pub mod extend;
+pub mod failure;
 pub mod input;
 pub mod limits;
 pub mod output;
