@@ -121,8 +121,6 @@ pub fn version() -> String {
 }
 
 mod ffi {
-    use std::ffi::c_void;
-
     /// The C++ `topolab_cgal_mesh` (opaque).
     #[repr(C)]
     pub struct RawMesh {
@@ -136,8 +134,6 @@ mod ffi {
         _opaque: [u8; 0],
         _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
     }
-
-    use crate::foreign::{Emit, EndCurve};
 
     pub const SURFACE_MESH: i32 = 0;
     pub const POLYHEDRON: i32 = 1;
@@ -159,41 +155,7 @@ mod ffi {
         ) -> i32;
         pub fn topolab_cgal_finish(mesh: *mut RawMesh) -> i32;
         pub fn topolab_cgal_free(mesh: *mut RawMesh);
-        pub fn topolab_cgal_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
         pub fn topolab_cgal_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
-        pub fn topolab_cgal_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
-        pub fn topolab_cgal_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
-        pub fn topolab_cgal_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
-        pub fn topolab_cgal_query(
-            mesh: *const RawMesh,
-            op: i32,
-            id: u32,
-            emit: Emit,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_cgal_edge_neighbour(
-            mesh: *const RawMesh,
-            e: u32,
-            f: u32,
-            successor: i32,
-            out: *mut i64,
-        ) -> i32;
-        pub fn topolab_cgal_boundary_curves(
-            mesh: *const RawMesh,
-            emit: Emit,
-            end_curve: EndCurve,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_cgal_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_validate(
-            mesh: *const RawMesh,
-            problem: *mut i32,
-            element: *mut u32,
-        ) -> i32;
-        pub fn topolab_cgal_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
         pub fn topolab_cgal_prepare_sample(
             mesh: *const RawMesh,
             op: i32,
@@ -203,8 +165,6 @@ mod ffi {
         ) -> i32;
         pub fn topolab_cgal_sampled(sample: *const RawSample, out: *mut u64) -> i32;
         pub fn topolab_cgal_free_sample(sample: *mut RawSample);
-        pub fn topolab_cgal_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
-        pub fn topolab_cgal_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
         pub fn topolab_cgal_convex_hull(
             xyz: *const f64,
             n: u32,
@@ -433,21 +393,21 @@ impl<S: CgalStructure> Cgal<S> {
 }
 
 topology_api!(TOPOLOGY: ffi::RawMesh = [
-    position: ffi::topolab_cgal_position,
-    edge_vertices: ffi::topolab_cgal_edge_vertices,
-    is_boundary_vertex: ffi::topolab_cgal_is_boundary_vertex,
-    is_boundary_edge: ffi::topolab_cgal_is_boundary_edge,
-    query: ffi::topolab_cgal_query,
-    edge_neighbour: ffi::topolab_cgal_edge_neighbour,
-    boundary_curves: ffi::topolab_cgal_boundary_curves,
-    halfedge: ffi::topolab_cgal_halfedge,
-    vertex_halfedge: ffi::topolab_cgal_vertex_halfedge,
-    face_halfedge: ffi::topolab_cgal_face_halfedge,
-    heap_bytes: ffi::topolab_cgal_heap_bytes,
-    validate: ffi::topolab_cgal_validate,
-    sweep: ffi::topolab_cgal_sweep,
-    prepare_workload: ffi::topolab_cgal_prepare_workload,
-    workload: ffi::topolab_cgal_workload,
+    topolab_cgal_position,
+    topolab_cgal_edge_vertices,
+    topolab_cgal_is_boundary_vertex,
+    topolab_cgal_is_boundary_edge,
+    topolab_cgal_query,
+    topolab_cgal_edge_neighbour,
+    topolab_cgal_boundary_curves,
+    topolab_cgal_halfedge,
+    topolab_cgal_vertex_halfedge,
+    topolab_cgal_face_halfedge,
+    topolab_cgal_heap_bytes,
+    topolab_cgal_validate,
+    topolab_cgal_sweep,
+    topolab_cgal_prepare_workload,
+    topolab_cgal_workload,
 ]);
 
 impl<S: CgalStructure> ForeignMesh for Cgal<S> {

@@ -84,16 +84,12 @@ mod access;
 mod edit;
 
 mod ffi {
-    use std::ffi::c_void;
-
     /// The C++ `topolab_om_mesh` (opaque).
     #[repr(C)]
     pub struct RawMesh {
         _opaque: [u8; 0],
         _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
     }
-
-    use crate::foreign::{Emit, EndCurve};
 
     // Every function returns a status (`crate::foreign::OK` or a failure) and writes its
     // results through out-pointers; all are `noexcept` in C++ and catch every exception.
@@ -111,41 +107,7 @@ mod ffi {
             failed_face: *mut u32,
         ) -> i32;
         pub fn topolab_om_free(mesh: *mut RawMesh);
-        pub fn topolab_om_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
         pub fn topolab_om_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
-        pub fn topolab_om_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
-        pub fn topolab_om_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
-        pub fn topolab_om_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
-        pub fn topolab_om_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
-        pub fn topolab_om_query(
-            mesh: *const RawMesh,
-            op: i32,
-            id: u32,
-            emit: Emit,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_om_edge_neighbour(
-            mesh: *const RawMesh,
-            e: u32,
-            f: u32,
-            successor: i32,
-            out: *mut i64,
-        ) -> i32;
-        pub fn topolab_om_boundary_curves(
-            mesh: *const RawMesh,
-            emit: Emit,
-            end_curve: EndCurve,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_om_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
-        pub fn topolab_om_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
-        pub fn topolab_om_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
-        pub fn topolab_om_validate(
-            mesh: *const RawMesh,
-            problem: *mut i32,
-            element: *mut u32,
-        ) -> i32;
-        pub fn topolab_om_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
         pub fn topolab_om_sampled(
             mesh: *const RawMesh,
             op: i32,
@@ -153,8 +115,6 @@ mod ffi {
             count: usize,
             out: *mut u64,
         ) -> i32;
-        pub fn topolab_om_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
-        pub fn topolab_om_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
         pub fn topolab_om_prepare_changing(mesh: *mut RawMesh) -> i32;
         pub fn topolab_om_changing(mesh: *mut RawMesh, workload: i32) -> i32;
     }
@@ -344,21 +304,21 @@ impl OpenMesh {
 }
 
 topology_api!(TOPOLOGY: ffi::RawMesh = [
-    position: ffi::topolab_om_position,
-    edge_vertices: ffi::topolab_om_edge_vertices,
-    is_boundary_vertex: ffi::topolab_om_is_boundary_vertex,
-    is_boundary_edge: ffi::topolab_om_is_boundary_edge,
-    query: ffi::topolab_om_query,
-    edge_neighbour: ffi::topolab_om_edge_neighbour,
-    boundary_curves: ffi::topolab_om_boundary_curves,
-    halfedge: ffi::topolab_om_halfedge,
-    vertex_halfedge: ffi::topolab_om_vertex_halfedge,
-    face_halfedge: ffi::topolab_om_face_halfedge,
-    heap_bytes: ffi::topolab_om_heap_bytes,
-    validate: ffi::topolab_om_validate,
-    sweep: ffi::topolab_om_sweep,
-    prepare_workload: ffi::topolab_om_prepare_workload,
-    workload: ffi::topolab_om_workload,
+    topolab_om_position,
+    topolab_om_edge_vertices,
+    topolab_om_is_boundary_vertex,
+    topolab_om_is_boundary_edge,
+    topolab_om_query,
+    topolab_om_edge_neighbour,
+    topolab_om_boundary_curves,
+    topolab_om_halfedge,
+    topolab_om_vertex_halfedge,
+    topolab_om_face_halfedge,
+    topolab_om_heap_bytes,
+    topolab_om_validate,
+    topolab_om_sweep,
+    topolab_om_prepare_workload,
+    topolab_om_workload,
 ]);
 
 impl ForeignMesh for OpenMesh {

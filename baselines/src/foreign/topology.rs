@@ -38,17 +38,118 @@ pub(crate) struct TopologyApi<R> {
     pub(crate) workload: Call<unsafe extern "C" fn(*mut R, i32, *mut f64) -> i32>,
 }
 
-/// The constant [`TopologyApi`] `$api` of a shim's functions (declared in its `ffi` module),
-/// in [`TopologyApi`]'s order.
+/// Declares a shim's query functions (an `extern "C"` block with the layer's signatures, one
+/// symbol per field of [`TopologyApi`], in its order) and the constant [`TopologyApi`] `$api`
+/// holding them.
 macro_rules! topology_api {
-    ($api:ident: $raw:ty = [$($field:ident: $f:path),* $(,)?]) => {
-        const $api: $crate::foreign::topology::TopologyApi<$raw> =
+    ($api:ident: $raw:ty = [
+        $position:ident, $edge_vertices:ident, $is_boundary_vertex:ident,
+        $is_boundary_edge:ident, $query:ident, $edge_neighbour:ident, $boundary_curves:ident,
+        $halfedge:ident, $vertex_halfedge:ident, $face_halfedge:ident, $heap_bytes:ident,
+        $validate:ident, $sweep:ident, $prepare_workload:ident, $workload:ident $(,)?
+    ]) => {
+        // All `noexcept` in C++, catching every exception; each returns a status
+        // (`crate::foreign::OK` or a failure) and writes its results through out-pointers.
+        extern "C" {
+            fn $position(mesh: *const $raw, v: u32, out: *mut f64) -> i32;
+            fn $edge_vertices(mesh: *const $raw, e: u32, out: *mut u32) -> i32;
+            fn $is_boundary_vertex(mesh: *const $raw, v: u32, out: *mut i32) -> i32;
+            fn $is_boundary_edge(mesh: *const $raw, e: u32, out: *mut i32) -> i32;
+            fn $query(
+                mesh: *const $raw,
+                op: i32,
+                id: u32,
+                emit: $crate::foreign::Emit,
+                context: *mut std::ffi::c_void,
+            ) -> i32;
+            fn $edge_neighbour(
+                mesh: *const $raw,
+                e: u32,
+                f: u32,
+                successor: i32,
+                out: *mut i64,
+            ) -> i32;
+            fn $boundary_curves(
+                mesh: *const $raw,
+                emit: $crate::foreign::Emit,
+                end_curve: $crate::foreign::EndCurve,
+                context: *mut std::ffi::c_void,
+            ) -> i32;
+            fn $halfedge(mesh: *const $raw, h: u32, out: *mut u32) -> i32;
+            fn $vertex_halfedge(mesh: *const $raw, v: u32, out: *mut u32) -> i32;
+            fn $face_halfedge(mesh: *const $raw, f: u32, out: *mut u32) -> i32;
+            fn $heap_bytes(mesh: *const $raw, out: *mut u64) -> i32;
+            fn $validate(mesh: *const $raw, problem: *mut i32, element: *mut u32) -> i32;
+            fn $sweep(mesh: *const $raw, op: i32, out: *mut u64) -> i32;
+            fn $prepare_workload(mesh: *mut $raw, workload: i32) -> i32;
+            fn $workload(mesh: *mut $raw, workload: i32, out: *mut f64) -> i32;
+        }
+
+        const $api: $crate::foreign::topology::TopologyApi<$raw> = {
+            use $crate::foreign::Call;
             $crate::foreign::topology::TopologyApi {
-                $($field: $crate::foreign::Call {
-                    name: stringify!($f),
-                    f: $f,
-                },)*
-            };
+                position: Call {
+                    name: stringify!($position),
+                    f: $position,
+                },
+                edge_vertices: Call {
+                    name: stringify!($edge_vertices),
+                    f: $edge_vertices,
+                },
+                is_boundary_vertex: Call {
+                    name: stringify!($is_boundary_vertex),
+                    f: $is_boundary_vertex,
+                },
+                is_boundary_edge: Call {
+                    name: stringify!($is_boundary_edge),
+                    f: $is_boundary_edge,
+                },
+                query: Call {
+                    name: stringify!($query),
+                    f: $query,
+                },
+                edge_neighbour: Call {
+                    name: stringify!($edge_neighbour),
+                    f: $edge_neighbour,
+                },
+                boundary_curves: Call {
+                    name: stringify!($boundary_curves),
+                    f: $boundary_curves,
+                },
+                halfedge: Call {
+                    name: stringify!($halfedge),
+                    f: $halfedge,
+                },
+                vertex_halfedge: Call {
+                    name: stringify!($vertex_halfedge),
+                    f: $vertex_halfedge,
+                },
+                face_halfedge: Call {
+                    name: stringify!($face_halfedge),
+                    f: $face_halfedge,
+                },
+                heap_bytes: Call {
+                    name: stringify!($heap_bytes),
+                    f: $heap_bytes,
+                },
+                validate: Call {
+                    name: stringify!($validate),
+                    f: $validate,
+                },
+                sweep: Call {
+                    name: stringify!($sweep),
+                    f: $sweep,
+                },
+                prepare_workload: Call {
+                    name: stringify!($prepare_workload),
+                    f: $prepare_workload,
+                },
+                workload: Call {
+                    name: stringify!($workload),
+                    f: $workload,
+                },
+            }
+        };
     };
 }
 pub(crate) use topology_api;
