@@ -66,7 +66,7 @@
 //! random meshes with corner-touching cells, faces in random order). That needs every fan to
 //! be open: a vertex with a closed fan and another fan is refused with
 //! [`Error::NonManifoldVertex`] (OpenMesh's `add_face` refuses it too, "complex vertex"), a
-//! case [`Capabilities::non_manifold_vertices`] cannot express.
+//! case [`Capabilities::non_manifold_vertices`](topolab_structures::Capabilities::non_manifold_vertices) cannot express.
 
 use crate::foreign::topology::{self, topology_api, topology_queries, ForeignMesh, TopologyApi};
 use crate::foreign::{self, refusal};
