@@ -1,15 +1,15 @@
 //! `topolab report`: measures every structure on the size sweep and writes `results.json` and
 //! a self-contained `index.html`. [`report_with`] is the same report with structures from
-//! outside the lab beside the lab's (see [`crate::extend`]).
+//! outside the lab beside the lab's (`crate::extend::report_main` is its `main` for other crates).
 
 use super::report_scale;
 use super::report_sections::{Selection, LIBIGL};
-use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
+use topolab_baselines::Lab;
 use topolab_harness::kernels::sample_queries;
 use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
@@ -513,7 +513,7 @@ fn hull(
             code: 1,
         })?);
     }
-    crate::registry::add_outside_hulls(&mut rows).map_err(|e| Failure {
+    topolab_harness::hull::outside::add_outside_hulls(&mut rows).map_err(|e| Failure {
         message: format!("hull benchmark: {e}"),
         code: 1,
     })?;
