@@ -141,6 +141,8 @@ fn ramp_ends(family: Family) -> ((u8, u8, u8), (u8, u8, u8)) {
         Family::EdgeLists => ((102, 189, 99), (0, 100, 40)),
         Family::CornerLists => ((165, 165, 165), (95, 95, 95)),
         Family::RegularGrid => ((170, 150, 210), (84, 39, 143)),
+        // A placeholder hue until the report's palette gives the Rust crates their own.
+        Family::RustCrate => ((0, 0, 0), (90, 60, 40)),
         Family::Outside => ((0, 0, 0), (90, 60, 40)),
     }
 }

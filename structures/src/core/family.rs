@@ -21,18 +21,22 @@ pub enum Family {
     Che,
     /// Implicit topology: arithmetic on a regular grid's counts.
     RegularGrid,
+    /// A Rust crate from crates.io (lox, baby_shark, tri-mesh), behind an adapter of the lab:
+    /// what a Rust user would depend on instead of the lab.
+    RustCrate,
     /// Not of the lab: a baseline library (OpenMesh) or a structure from another crate.
     Outside,
 }
 
 impl Family {
     /// Every family, in the order the report lists them.
-    pub const ALL: [Family; 6] = [
+    pub const ALL: [Family; 7] = [
         Family::CornerLists,
         Family::EdgeLists,
         Family::HalfEdge,
         Family::Che,
         Family::RegularGrid,
+        Family::RustCrate,
         Family::Outside,
     ];
 
@@ -44,6 +48,7 @@ impl Family {
             Family::HalfEdge => "half-edge",
             Family::Che => "che",
             Family::RegularGrid => "regular-grid",
+            Family::RustCrate => "rust-crate",
             Family::Outside => "outside",
         }
     }

@@ -1,0 +1,171 @@
+//! What the adapters share: the lab's checks before a crate sees a soup ([`admit`]), and the
+//! queries composed from a structure's other answers where a crate has no query of its own
+//! (each adapter's `cost()` declares which it uses).
+
+use topolab_structures::{
+    BoundaryCurves, Connectivity, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, Result,
+};
+
+/// Refuses what the crates mis-handle, before the crate sees it: indices out of range and
+/// repeated corners ([`PolygonSoup::check`]), an edge with more than two faces or two faces
+/// running one way along their edge ([`PolygonSoup::connectivity`]), a vertex whose faces form
+/// several fans, and, when `triangles_only`, polygons ([`Error::NotTriangles`]). Returns the
+/// edge analysis, for the edge count a crate does not keep.
+///
+/// Why each check: tri-mesh pairs twins by an unordered vertex pair in a hash map, so a third
+/// face or a reversed face is paired silently with the wrong half-edge; lox panics on a
+/// non-manifold edge or vertex; and every crate walks one fan per vertex.
+pub fn admit(
+    soup: &PolygonSoup,
+    structure: &'static str,
+    triangles_only: bool,
+) -> Result<Connectivity> {
+    soup.check()?;
+    if triangles_only {
+        if let Some((face, corners)) = soup.first_non_triangle() {
+            return Err(Error::NotTriangles {
+                structure,
+                face,
+                corners,
+            });
+        }
+    }
+    let connectivity = soup.connectivity()?;
+    connectivity.check_vertex_fans(soup)?;
+    Ok(connectivity)
+}
+
+/// R11 from R12 and R21: the other edges of each face of `e`.
+#[inline]
+pub fn edge_edges<M: MeshTopology>(m: &M, e: EdgeId, mut f: impl FnMut(EdgeId)) {
+    m.edge_faces(e, |face| {
+        m.face_edges(face, |x| {
+            if x != e {
+                f(x)
+            }
+        })
+    });
+}
+
+/// Successor from R21: the edge after `e` in `face`'s edges (cyclically), `None` if `e` is
+/// not one of them.
+#[inline]
+pub fn edge_successor<M: MeshTopology>(m: &M, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+    let (mut first, mut found, mut after) = (None, false, None);
+    m.face_edges(face, |x| {
+        first.get_or_insert(x);
+        if found && after.is_none() {
+            after = Some(x);
+        }
+        found |= x == e;
+    });
+    if found {
+        after.or(first)
+    } else {
+        None
+    }
+}
+
+/// Predecessor from R21: the edge before `e` in `face`'s edges (cyclically), `None` if `e`
+/// is not one of them.
+#[inline]
+pub fn edge_predecessor<M: MeshTopology>(m: &M, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+    let (mut last, mut before, mut found, mut is_first) = (None, None, false, false);
+    m.face_edges(face, |x| {
+        if x == e && !found {
+            found = true;
+            before = last;
+            is_first = last.is_none();
+        }
+        last = Some(x);
+    });
+    match (found, is_first) {
+        (false, _) => None,
+        (true, true) => last,
+        (true, false) => before,
+    }
+}
+
+/// Boundary curves from the enumeration, R01, R10 and the boundary-edge test: every
+/// boundary edge not yet in a curve starts one, which goes on through the other boundary
+/// edge at its far end (a manifold vertex has two) until it comes back.
+pub fn boundary_curves<M: MeshTopology>(m: &M, out: &mut BoundaryCurves) {
+    out.clear();
+    m.for_each_edge(|start| {
+        if !m.is_boundary_edge(start) || out.edges.contains(&start) {
+            return;
+        }
+        let (mut e, mut at) = (start, m.edge_vertices(start)[1]);
+        loop {
+            out.edges.push(e);
+            let mut next = None;
+            m.vertex_edges(at, |x| {
+                if next.is_none() && x != e && m.is_boundary_edge(x) {
+                    next = Some(x);
+                }
+            });
+            match next {
+                Some(x) if x != start => {
+                    let [a, b] = m.edge_vertices(x);
+                    at = if a == at { b } else { a };
+                    e = x;
+                }
+                _ => break,
+            }
+        }
+        out.end_curve();
+    });
+}
+
+/// What the lab can check of a crate that keeps its invariants private: every answer of the
+/// faces and edges names a vertex, face and edge in range, each face has three or more
+/// corners, and each edge two distinct ends.
+pub fn validate_answers<M: MeshTopology>(m: &M) -> Result<()> {
+    let (nv, nf) = (m.num_vertices(), m.num_faces());
+    let mut problem = None;
+    for f in 0..nf {
+        let mut corners = 0;
+        m.face_vertices(FaceId(f as u32), |v| {
+            corners += 1;
+            if v.index() >= nv {
+                problem.get_or_insert(format!("face {f} names vertex {}", v.0));
+            }
+        });
+        if corners < 3 {
+            problem.get_or_insert(format!("face {f} has {corners} corners"));
+        }
+    }
+    m.for_each_edge(|e| {
+        let [a, b] = m.edge_vertices(e);
+        if a == b || a.index() >= nv || b.index() >= nv {
+            problem.get_or_insert(format!("edge {} has ends {} and {}", e.0, a.0, b.0));
+        }
+        m.edge_faces(e, |f| {
+            if f.index() >= nf {
+                problem.get_or_insert(format!("edge {} names face {}", e.0, f.0));
+            }
+        });
+    });
+    match problem {
+        None => Ok(()),
+        Some(message) => Err(Error::Invariant {
+            structure: M::NAME,
+            message,
+        }),
+    }
+}
+
+/// For `explain`: each vertex's neighbours (R00), one line per vertex, the records the crate
+/// keeps being private.
+pub fn write_one_rings<M: MeshTopology>(m: &M, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+    for v in 0..m.num_vertices() {
+        write!(w, "v{v}:")?;
+        let mut result = Ok(());
+        m.vertex_vertices(topolab_structures::VertexId(v as u32), |x| {
+            result = result.and_then(|()| write!(w, " {}", x.0));
+        });
+        result?;
+        writeln!(w)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,102 @@
+//! # The Rust crates a Rust user would pick, as structures of the lab
+//!
+//! Each module adapts one structure of a crate from crates.io to
+//! [`MeshTopology`](topolab_structures::MeshTopology), so the conformance suite, the
+//! registry and the report treat it like the lab's own structures:
+//!
+//! | structure | crate | what it stores |
+//! |---|---|---|
+//! | [`lox-half-edge`](lox_half_edge) | lox `HalfEdgeMesh` | half-edges, twin `h ^ 1` |
+//! | [`lox-directed-edge`](lox_directed_edge) | lox `DirectedEdgeMesh` | twin and target per corner |
+//! | [`tri-mesh`](tri_mesh) | tri-mesh `Mesh` | half-edges with `Option` fields behind `RefCell` |
+//!
+//! Each adapter builds the crate's structure through the crate's documented API and answers
+//! each query with the crate's own query where it has one; where it has none, the adapter
+//! composes the answer from the crate's primitives (the [`compose`] helpers) and declares the
+//! cost of that composition in `cost()`. Input the crate would mis-handle (a third face on an
+//! edge, faces that disagree on orientation, a vertex with several fans, polygons where the
+//! crate stores triangles) is refused with the lab's typed error before the crate sees it
+//! ([`compose::admit`]), so no crate panics and none silently stores something else.
+
+#![deny(missing_docs)]
+
+pub mod compose;
+pub mod lox_directed_edge;
+pub mod lox_half_edge;
+pub mod tri_mesh;
+
+pub use lox_directed_edge::LoxDirectedEdge;
+pub use lox_half_edge::LoxHalfEdge;
+pub use tri_mesh::TriMesh;
+
+/// A crate from crates.io that this build measures, pinned by exact version in
+/// `peers/Cargo.toml` (Cargo.lock records its checksum).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct PeerCrate {
+    /// Its name on crates.io.
+    pub name: &'static str,
+    /// The exact version this build compiles.
+    pub version: &'static str,
+    /// The lab's names of the structures adapted from it.
+    pub structures: &'static [&'static str],
+    /// How the adapters use it: the types, constructors and queries.
+    pub used_as: &'static str,
+}
+
+/// Every crate of this build, in registry order.
+pub const CRATES: [PeerCrate; 2] = [
+    PeerCrate {
+        name: "lox",
+        version: "0.1.1",
+        structures: &[lox_half_edge::NAME, lox_directed_edge::NAME],
+        used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits",
+    },
+    PeerCrate {
+        name: "tri-mesh",
+        version: "0.6.1",
+        structures: &[tri_mesh::NAME],
+        used_as: "Mesh::new from a three_d_asset::TriMesh with f64 positions and u32 indices; queried with vertex_halfedge_iter, face_halfedge_iter, edge_iter and its walkers",
+    },
+];
+
+/// Names of every structure of this crate, in registry order.
+pub const NAMES: [&str; 3] = [lox_half_edge::NAME, lox_directed_edge::NAME, tri_mesh::NAME];
+
+/// The crate a structure called `name` comes from, `None` when it is not one of this crate's.
+pub fn crate_of(name: &str) -> Option<&'static PeerCrate> {
+    CRATES.iter().find(|c| c.structures.contains(&name))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The versions the report names are the ones Cargo.lock pinned.
+    #[test]
+    fn every_version_named_is_the_one_cargo_lock_pins() {
+        let lock = include_str!("../../Cargo.lock");
+        for c in CRATES {
+            let entry = format!("name = \"{}\"\nversion = \"{}\"", c.name, c.version);
+            assert!(lock.contains(&entry), "{} {} not in Cargo.lock", c.name, c.version);
+            let manifest = include_str!("../Cargo.toml");
+            assert!(
+                manifest.contains(&format!("{} = \"={}\"", c.name, c.version)),
+                "{} is not pinned to ={} in peers/Cargo.toml",
+                c.name,
+                c.version
+            );
+        }
+    }
+
+    #[test]
+    fn every_structure_has_one_crate() {
+        for name in NAMES {
+            assert_eq!(
+                CRATES.iter().filter(|c| c.structures.contains(&name)).count(),
+                1,
+                "{name}"
+            );
+        }
+        assert_eq!(crate_of("index-half-edge"), None);
+    }
+}

@@ -1,0 +1,201 @@
+//! # lox-half-edge: lox 0.1.1's `HalfEdgeMesh`
+//!
+//! lox's half-edge mesh with its standard configuration (`PolyConfig`: polygons, `prev`
+//! stored). Twins are stored next to each other (`h ^ 1`), so lox's edge handle `e` owns
+//! half-edges `2e` and `2e + 1` and is the lab's `EdgeId` `e`; vertex and face handles are
+//! given out in insertion order, so they are the soup's ids. lox stores no positions: the
+//! adapter keeps them beside the mesh, as lox's documentation keeps properties in a map
+//! beside it.
+//!
+//! | operator | lox call | cost |
+//! |---|---|---|
+//! | R00, R01, R02 | `vertices_around_vertex`, `edges_around_vertex`, `faces_around_vertex` | O(k) |
+//! | R10, R12 | `endpoints_of_edge`, `faces_of_edge` | O(1) |
+//! | R20, R21, R22 | `vertices_around_face`, `edges_around_face`, `faces_around_face` | O(k) |
+//! | R11 | composed: R21 of each face of R12 | O(k) |
+//! | boundary vertex, edge | `is_boundary_vertex`, `is_boundary_edge` | O(1) |
+//! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
+//! | successor, predecessor | composed: the edge's place in R21 | O(k) |
+
+use crate::compose;
+use glam::DVec3;
+use lox::core::half_edge::{HalfEdgeMesh, PolyConfig};
+use lox::prelude::*;
+use lox::{EdgeHandle, FaceHandle, VertexHandle};
+use topolab_structures::{
+    BoundaryCurves, Capabilities, Cost, EdgeId, FaceId, Family, MeshTopology, Operator,
+    PolygonSoup, Result, VertexId,
+};
+
+/// The lab's name of this structure.
+pub const NAME: &str = "lox-half-edge";
+
+/// lox's `HalfEdgeMesh` and the positions the adapter keeps beside it; see the module docs.
+#[derive(Clone, Debug)]
+pub struct LoxHalfEdge {
+    mesh: HalfEdgeMesh<PolyConfig>,
+    positions: Vec<DVec3>,
+}
+
+impl MeshTopology for LoxHalfEdge {
+    const NAME: &'static str = NAME;
+    const FAMILY: Family = Family::RustCrate;
+
+    fn capabilities() -> Capabilities {
+        Capabilities::POLYGONS
+    }
+
+    fn cost(op: Operator) -> Cost {
+        match op {
+            Operator::R10 | Operator::R12 | Operator::BoundaryVertex | Operator::BoundaryEdge => {
+                Cost::Constant
+            }
+            Operator::BoundaryCurves => Cost::Linear,
+            _ => Cost::Local,
+        }
+    }
+
+    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+        compose::admit(soup, NAME, false)?;
+        let mut mesh = HalfEdgeMesh::<PolyConfig>::empty();
+        mesh.reserve_for_vertices(soup.num_vertices() as u32);
+        mesh.reserve_for_faces(soup.num_faces() as u32);
+        for _ in 0..soup.num_vertices() {
+            mesh.add_vertex();
+        }
+        // One buffer for every face's handles: `add_face` takes a slice.
+        let mut corners = Vec::new();
+        for face in soup.faces() {
+            corners.clear();
+            corners.extend(face.iter().map(|&v| VertexHandle::new(v)));
+            mesh.add_face(&corners);
+        }
+        Ok(Self {
+            mesh,
+            positions: soup.positions.clone(),
+        })
+    }
+
+    #[inline]
+    fn num_vertices(&self) -> usize {
+        self.mesh.num_vertices() as usize
+    }
+    #[inline]
+    fn num_edges(&self) -> usize {
+        self.mesh.num_edges() as usize
+    }
+    #[inline]
+    fn num_faces(&self) -> usize {
+        self.mesh.num_faces() as usize
+    }
+
+    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        for e in self.mesh.edge_handles() {
+            f(EdgeId(e.idx()));
+        }
+    }
+
+    #[inline]
+    fn position(&self, v: VertexId) -> DVec3 {
+        self.positions[v.index()]
+    }
+
+    #[inline]
+    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        for w in self.mesh.vertices_around_vertex(VertexHandle::new(v.0)) {
+            f(VertexId(w.idx()));
+        }
+    }
+    #[inline]
+    fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
+        for e in self.mesh.edges_around_vertex(VertexHandle::new(v.0)) {
+            f(EdgeId(e.idx()));
+        }
+    }
+    #[inline]
+    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+        for g in self.mesh.faces_around_vertex(VertexHandle::new(v.0)) {
+            f(FaceId(g.idx()));
+        }
+    }
+    #[inline]
+    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
+        self.mesh
+            .endpoints_of_edge(EdgeHandle::new(e.0))
+            .map(|v| VertexId(v.idx()))
+    }
+    #[inline]
+    fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId)) {
+        compose::edge_edges(self, e, f);
+    }
+    #[inline]
+    fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
+        for g in self.mesh.faces_of_edge(EdgeHandle::new(e.0)) {
+            f(FaceId(g.idx()));
+        }
+    }
+    #[inline]
+    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
+        for v in self.mesh.vertices_around_face(FaceHandle::new(face.0)) {
+            f(VertexId(v.idx()));
+        }
+    }
+    #[inline]
+    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
+        for e in self.mesh.edges_around_face(FaceHandle::new(face.0)) {
+            f(EdgeId(e.idx()));
+        }
+    }
+    #[inline]
+    fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
+        for g in self.mesh.faces_around_face(FaceHandle::new(face.0)) {
+            f(FaceId(g.idx()));
+        }
+    }
+    #[inline]
+    fn is_boundary_vertex(&self, v: VertexId) -> bool {
+        self.mesh.is_boundary_vertex(VertexHandle::new(v.0))
+    }
+    #[inline]
+    fn is_boundary_edge(&self, e: EdgeId) -> bool {
+        self.mesh.is_boundary_edge(EdgeHandle::new(e.0))
+    }
+    #[inline]
+    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+        compose::boundary_curves(self, out);
+    }
+    #[inline]
+    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        compose::edge_successor(self, e, face)
+    }
+    #[inline]
+    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        compose::edge_predecessor(self, e, face)
+    }
+
+    fn validate(&self) -> Result<()> {
+        compose::validate_answers(self)
+    }
+
+    /// From lox's record layout (its arrays' capacities are private): per vertex its
+    /// outgoing half-edge (4 bytes), per face one half-edge (4), per half-edge face, target,
+    /// next and prev (16), plus the positions kept beside the mesh. lox's `StableVec`s also
+    /// keep a deletion bit per element, which only the allocator's measurement sees.
+    fn heap_bytes(&self) -> usize {
+        4 * self.num_vertices()
+            + 4 * self.num_faces()
+            + 16 * 2 * self.num_edges()
+            + self.positions.capacity() * std::mem::size_of::<DVec3>()
+    }
+
+    fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        writeln!(
+            w,
+            "lox 0.1.1 HalfEdgeMesh<PolyConfig>: {} vertices (outgoing half-edge), {} faces (one half-edge), {} half-edges (face, target, next, prev; twin = h ^ 1)",
+            self.num_vertices(),
+            self.num_faces(),
+            2 * self.num_edges()
+        )?;
+        compose::write_one_rings(self, w)
+    }
+}

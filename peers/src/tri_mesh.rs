@@ -1,0 +1,238 @@
+//! # tri-mesh: tri-mesh 0.6.1's `Mesh`
+//!
+//! tri-mesh's half-edge mesh (half-edges with `Option` fields in arrays behind `RefCell`,
+//! twins matched by a hash map when it is built), built with `Mesh::new` from the
+//! `three_d_asset::TriMesh` its documentation builds it from. Its ids are given out by its
+//! iterators and read back through `Deref<Target = u32>`: vertices and faces in input order,
+//! so they are the soup's ids. The adapter keeps the ids its iterators gave (one `u32` per
+//! vertex, face and half-edge), so that a query turns the lab's id into tri-mesh's with one
+//! read, without the crate's `unsafe fn new` meant for tests. `EdgeId` `e` is the half-edge
+//! of the edge that `edge_iter` yields (the one with the smaller id).
+//!
+//! | operator | tri-mesh call | cost |
+//! |---|---|---|
+//! | R00, R01, R02 | `vertex_halfedge_iter` and a walker per half-edge | O(k) |
+//! | R10, R12 | `edge_vertices`; the walker's face and its twin's | O(1) |
+//! | R20, R21, R22 | `face_halfedge_iter` and a walker per half-edge | O(k) |
+//! | R11 | composed: R21 of each face of R12 | O(k) |
+//! | boundary vertex | `is_vertex_on_boundary` (walks the 1-ring) | O(k) |
+//! | boundary edge | `is_edge_on_boundary` | O(1) |
+//! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
+//! | successor, predecessor | composed: the edge's place in R21 | O(k) |
+
+use crate::compose;
+use glam::DVec3;
+use three_d_asset::{Indices, Positions};
+use topolab_structures::{
+    BoundaryCurves, Capabilities, Cost, EdgeId, FaceId, Family, MeshTopology, Operator,
+    PolygonSoup, Result, VertexId,
+};
+use tri_mesh::{FaceID, HalfEdgeID, Mesh, Vector3, VertexID};
+
+/// The lab's name of this structure.
+pub const NAME: &str = "tri-mesh";
+
+/// tri-mesh's `Mesh` and the ids its iterators gave; see the module docs.
+pub struct TriMesh {
+    mesh: Mesh,
+    vertices: Vec<VertexID>,
+    faces: Vec<FaceID>,
+    half_edges: Vec<HalfEdgeID>,
+}
+
+impl std::fmt::Debug for TriMesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "TriMesh({} vertices, {} faces)", self.vertices.len(), self.faces.len())
+    }
+}
+
+impl TriMesh {
+    #[inline]
+    fn vertex(&self, v: VertexId) -> VertexID {
+        self.vertices[v.index()]
+    }
+    #[inline]
+    fn half_edge(&self, e: EdgeId) -> HalfEdgeID {
+        self.half_edges[e.index()]
+    }
+    /// The lab's id of the edge of half-edge `h`: the smaller of its and its twin's.
+    #[inline]
+    fn edge(&self, h: HalfEdgeID) -> EdgeId {
+        let twin = self.mesh.walker_from_halfedge(h).twin_id();
+        EdgeId(twin.map_or(*h, |t| (*h).min(*t)))
+    }
+}
+
+impl MeshTopology for TriMesh {
+    const NAME: &'static str = NAME;
+    const FAMILY: Family = Family::RustCrate;
+
+    fn capabilities() -> Capabilities {
+        Capabilities {
+            triangles_only: true,
+            ..Capabilities::POLYGONS
+        }
+    }
+
+    fn cost(op: Operator) -> Cost {
+        match op {
+            Operator::R10 | Operator::R12 | Operator::BoundaryEdge => Cost::Constant,
+            Operator::BoundaryCurves => Cost::Linear,
+            _ => Cost::Local,
+        }
+    }
+
+    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+        compose::admit(soup, NAME, true)?;
+        let input = three_d_asset::TriMesh {
+            positions: Positions::F64(
+                soup.positions
+                    .iter()
+                    .map(|p| Vector3::new(p.x, p.y, p.z))
+                    .collect(),
+            ),
+            indices: Indices::U32(soup.indices().to_vec()),
+            ..Default::default()
+        };
+        let mesh = Mesh::new(&input);
+        Ok(Self {
+            vertices: mesh.vertex_iter().collect(),
+            faces: mesh.face_iter().collect(),
+            half_edges: mesh.halfedge_iter().collect(),
+            mesh,
+        })
+    }
+
+    #[inline]
+    fn num_vertices(&self) -> usize {
+        self.mesh.no_vertices()
+    }
+    #[inline]
+    fn num_edges(&self) -> usize {
+        self.mesh.no_edges()
+    }
+    #[inline]
+    fn num_faces(&self) -> usize {
+        self.mesh.no_faces()
+    }
+
+    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
+        for h in self.mesh.edge_iter() {
+            f(EdgeId(*h));
+        }
+    }
+
+    #[inline]
+    fn position(&self, v: VertexId) -> DVec3 {
+        let p = self.mesh.vertex_position(self.vertex(v));
+        DVec3::new(p.x, p.y, p.z)
+    }
+
+    #[inline]
+    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        for h in self.mesh.vertex_halfedge_iter(self.vertex(v)) {
+            if let Some(w) = self.mesh.walker_from_halfedge(h).vertex_id() {
+                f(VertexId(*w));
+            }
+        }
+    }
+    #[inline]
+    fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
+        for h in self.mesh.vertex_halfedge_iter(self.vertex(v)) {
+            f(self.edge(h));
+        }
+    }
+    #[inline]
+    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+        for h in self.mesh.vertex_halfedge_iter(self.vertex(v)) {
+            if let Some(g) = self.mesh.walker_from_halfedge(h).face_id() {
+                f(FaceId(*g));
+            }
+        }
+    }
+    #[inline]
+    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
+        let (a, b) = self.mesh.edge_vertices(self.half_edge(e));
+        [VertexId(*a), VertexId(*b)]
+    }
+    #[inline]
+    fn edge_edges(&self, e: EdgeId, f: impl FnMut(EdgeId)) {
+        compose::edge_edges(self, e, f);
+    }
+    #[inline]
+    fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
+        let mut walker = self.mesh.walker_from_halfedge(self.half_edge(e));
+        if let Some(g) = walker.face_id() {
+            f(FaceId(*g));
+        }
+        if let Some(g) = walker.as_twin().face_id() {
+            f(FaceId(*g));
+        }
+    }
+    #[inline]
+    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
+        for h in self.mesh.face_halfedge_iter(self.faces[face.index()]) {
+            if let Some(v) = self.mesh.walker_from_halfedge(h).vertex_id() {
+                f(VertexId(*v));
+            }
+        }
+    }
+    #[inline]
+    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
+        for h in self.mesh.face_halfedge_iter(self.faces[face.index()]) {
+            f(self.edge(h));
+        }
+    }
+    #[inline]
+    fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
+        for h in self.mesh.face_halfedge_iter(self.faces[face.index()]) {
+            if let Some(g) = self.mesh.walker_from_halfedge(h).as_twin().face_id() {
+                f(FaceId(*g));
+            }
+        }
+    }
+    #[inline]
+    fn is_boundary_vertex(&self, v: VertexId) -> bool {
+        self.mesh.is_vertex_on_boundary(self.vertex(v))
+    }
+    #[inline]
+    fn is_boundary_edge(&self, e: EdgeId) -> bool {
+        self.mesh.is_edge_on_boundary(self.half_edge(e))
+    }
+    #[inline]
+    fn boundary_curves(&self, out: &mut BoundaryCurves) {
+        compose::boundary_curves(self, out);
+    }
+    #[inline]
+    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        compose::edge_successor(self, e, face)
+    }
+    #[inline]
+    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+        compose::edge_predecessor(self, e, face)
+    }
+
+    fn validate(&self) -> Result<()> {
+        compose::validate_answers(self)
+    }
+
+    /// From tri-mesh's record layout (its arrays are private): per vertex an
+    /// `Option<HalfEdgeID>` and an f64 position (8 + 24 bytes), per half-edge four
+    /// `Option<u32>` fields (32), per face an `Option<HalfEdgeID>` (8); plus the adapter's id
+    /// tables (4 bytes per vertex, face and half-edge).
+    fn heap_bytes(&self) -> usize {
+        let half_edges = self.mesh.no_halfedges();
+        (32 + 4) * self.num_vertices() + (32 + 4) * half_edges + (8 + 4) * self.num_faces()
+    }
+
+    fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        writeln!(
+            w,
+            "tri-mesh 0.6.1 Mesh: {} vertices (position, half-edge), {} faces (half-edge), {} half-edges (vertex, twin, next, face; boundary half-edges have no face and no next)",
+            self.num_vertices(),
+            self.num_faces(),
+            self.mesh.no_halfedges()
+        )?;
+        compose::write_one_rings(self, w)
+    }
+}
