@@ -16,7 +16,7 @@
 //!   (seven shapes, filled then hollow), so a grey printout still separates them.
 //! - **Hover titles** (`<title>`): each point gives the structure, the size and the median,
 //!   fastest and slowest run and the number of repetitions. plotters' SVG backend writes no
-//!   `<title>` (nor `class`), so these are added to its output by [`finish`]: one invisible
+//!   `<title>` (nor `class`), so these are added to its output by `finish`: one invisible
 //!   circle over each marker holds the point's title.
 
 use plotters::coord::Shift;
@@ -27,7 +27,7 @@ use std::fmt::Write;
 use topolab_structures::Family;
 
 /// A drawing area of plotters' SVG backend, in pixels from its top left corner.
-pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 /// What drawing can fail with (plotters' error type; its SVG backend writes into a string).
 type Drawn = Result<(), DrawingAreaErrorKind<<SVGBackend<'static> as DrawingBackend>::ErrorType>>;
 
@@ -97,7 +97,7 @@ impl Marker {
             Marker::Circle => {
                 let radius = r.round() as i32;
                 area.draw(&Circle::new(at, radius, inside))?;
-                return Ok(area.draw(&Circle::new(at, radius, outline))?);
+                return area.draw(&Circle::new(at, radius, outline));
             }
             // Strokes only: hollow and filled look alike, so the second round of crosses and
             // pluses is drawn thinner.
@@ -127,7 +127,7 @@ impl Marker {
         let mut ring: Vec<(i32, i32)> = corners.iter().map(|&(dx, dy)| px(dx, dy)).collect();
         area.draw(&Polygon::new(ring.clone(), inside))?;
         ring.push(ring[0]);
-        Ok(area.draw(&PathElement::new(ring, outline))?)
+        area.draw(&PathElement::new(ring, outline))
     }
 }
 

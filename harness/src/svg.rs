@@ -29,7 +29,7 @@ const LABEL_CHAR_W: f64 = 7.2;
 /// [`bars`] drawn with plotters: each row is two units of the y axis (first row on top),
 /// labelled at its middle by the structure's name; each bar's value is written at its end. plotters writes
 /// no `<title>`, so each tick's hover title ("containers: …") is an invisible rectangle over
-/// it, added after plotters' drawing ([`plot::finish`]).
+/// it, added after plotters' drawing (`plot::finish`).
 fn draw_bars(
     title: &str,
     unit: &str,
