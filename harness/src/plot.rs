@@ -411,9 +411,11 @@ fn hover_title(name: &str, p: &Point, unit: &str) -> String {
 /// string, both at its ends and neither touching what plotters wrote in between: its opening
 /// `<svg>` tag is replaced by one with `class="loglog"` (so the page and its tests can find the
 /// plots), and before the closing tag go (1) the marked rectangles `class="plot-area"` (the
-/// pixel range of plotters' own plotting area, drawn as the data's frame) and `class="legend"`
-/// (the legend's border), and (2) one invisible circle per point, over its marker, holding the
-/// point's hover `<title>` (`pointer-events="all"`, so it catches the pointer unpainted).
+/// pixel range of plotters' own plotting area, drawn as the data's frame, widened by the
+/// pixel to its left where plotters draws the y axis, so that the two lines do not stand side
+/// by side) and `class="legend"` (the legend's border), and (2) one invisible circle per
+/// point, over its marker, holding the point's hover `<title>` (`pointer-events="all"`, so it
+/// catches the pointer unpainted).
 fn draw_loglog(
     lay: &Layout,
     labels: &Labels,
@@ -504,9 +506,9 @@ fn draw_loglog(
         let _ = write!(
             marks,
             r##"<rect class="plot-area" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#999"/><rect class="legend" x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="none" stroke="#ccc"/>"##,
-            xs.start,
+            xs.start - 1,
             ys.start,
-            xs.end - xs.start,
+            xs.end - xs.start + 1,
             ys.end - ys.start,
             l.x,
             l.y,
