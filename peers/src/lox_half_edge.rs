@@ -13,7 +13,8 @@
 //! | R10, R12 | `endpoints_of_edge`, `faces_of_edge` | O(1) |
 //! | R20, R21, R22 | `vertices_around_face`, `edges_around_face`, `faces_around_face` | O(k) |
 //! | R11 | composed: R21 of each face of R12 | O(k) |
-//! | boundary vertex, edge | `is_boundary_vertex`, `is_boundary_edge` | O(1) |
+//! | boundary vertex | `is_isolated_vertex`, `is_boundary_vertex` (lox also says so of an isolated vertex, the lab not) | O(1) |
+//! | boundary edge | `is_boundary_edge` | O(1) |
 //! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
 //! | successor, predecessor | composed: the edge's place in R21 | O(k) |
 
@@ -152,9 +153,12 @@ impl MeshTopology for LoxHalfEdge {
             f(FaceId(g.idx()));
         }
     }
+    /// lox calls an isolated vertex a boundary vertex; the lab does not (no boundary edge
+    /// meets it), so the adapter asks lox both questions.
     #[inline]
     fn is_boundary_vertex(&self, v: VertexId) -> bool {
-        self.mesh.is_boundary_vertex(VertexHandle::new(v.0))
+        let v = VertexHandle::new(v.0);
+        !self.mesh.is_isolated_vertex(v) && self.mesh.is_boundary_vertex(v)
     }
     #[inline]
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
