@@ -8,6 +8,7 @@
 //! |---|---|---|
 //! | [`lox-half-edge`](lox_half_edge) | lox `HalfEdgeMesh` | half-edges, twin `h ^ 1` |
 //! | [`lox-directed-edge`](lox_directed_edge) | lox `DirectedEdgeMesh` | twin and target per corner |
+//! | [`baby-shark-corner-table`](baby_shark_corner_table) | baby_shark `CornerTable` | opposite corner and vertex per corner |
 //! | [`tri-mesh`](tri_mesh) | tri-mesh `Mesh` | half-edges with `Option` fields behind `RefCell` |
 //!
 //! Each adapter builds the crate's structure through the crate's documented API and answers
@@ -20,13 +21,17 @@
 
 #![deny(missing_docs)]
 
+pub mod baby_shark_corner_table;
 pub mod compose;
 pub mod lox_directed_edge;
 pub mod lox_half_edge;
+pub mod registry;
 pub mod tri_mesh;
 
+pub use baby_shark_corner_table::BabySharkCornerTable;
 pub use lox_directed_edge::LoxDirectedEdge;
 pub use lox_half_edge::LoxHalfEdge;
+pub use registry::Peers;
 pub use tri_mesh::TriMesh;
 
 /// A crate from crates.io that this build measures, pinned by exact version in
@@ -44,12 +49,18 @@ pub struct PeerCrate {
 }
 
 /// Every crate of this build, in registry order.
-pub const CRATES: [PeerCrate; 2] = [
+pub const CRATES: [PeerCrate; 3] = [
     PeerCrate {
         name: "lox",
         version: "0.1.1",
         structures: &[lox_half_edge::NAME, lox_directed_edge::NAME],
         used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits",
+    },
+    PeerCrate {
+        name: "baby_shark",
+        version: "0.3.12",
+        structures: &[baby_shark_corner_table::NAME],
+        used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges",
     },
     PeerCrate {
         name: "tri-mesh",
@@ -60,7 +71,12 @@ pub const CRATES: [PeerCrate; 2] = [
 ];
 
 /// Names of every structure of this crate, in registry order.
-pub const NAMES: [&str; 3] = [lox_half_edge::NAME, lox_directed_edge::NAME, tri_mesh::NAME];
+pub const NAMES: [&str; 4] = [
+    lox_half_edge::NAME,
+    lox_directed_edge::NAME,
+    baby_shark_corner_table::NAME,
+    tri_mesh::NAME,
+];
 
 /// The crate a structure called `name` comes from, `None` when it is not one of this crate's.
 pub fn crate_of(name: &str) -> Option<&'static PeerCrate> {

@@ -1,0 +1,50 @@
+//! The peers as one [`Structures`] list, which the lab's registry
+//! (`topolab_baselines::registry`, behind its feature `peers`) chains after its own, as
+//! a crate outside the lab joins a run.
+
+use crate::{BabySharkCornerTable, LoxDirectedEdge, LoxHalfEdge, TriMesh};
+use topolab_structures::registry::{StructureVisitor, Structures};
+
+/// Every peer, in registry order ([`crate::NAMES`]).
+pub type Peers = (LoxHalfEdge, LoxDirectedEdge, BabySharkCornerTable, TriMesh);
+
+/// Runs `visitor` with the peer called `name`, or hands it back when no peer has that name
+/// (so the caller can go on to other lists).
+pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V> {
+    <Peers as Structures>::visit(name, visitor)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::registry::{duplicate_name, names};
+    use topolab_structures::{Family, MeshTopology};
+
+    /// The list and the names the lab's registry shows agree, and no peer takes a name of
+    /// the lab's own structures.
+    #[test]
+    fn the_list_is_the_names() {
+        let listed = names::<Peers>();
+        assert_eq!(listed, crate::NAMES);
+        assert_eq!(duplicate_name(&listed), None);
+        for name in listed {
+            assert!(!topolab_structures::registry::NAMES.contains(&name), "{name}");
+        }
+    }
+
+    #[test]
+    fn every_peer_is_a_rust_crate_and_visits_by_name() {
+        struct FamilyOf;
+        impl StructureVisitor for FamilyOf {
+            type Output = (&'static str, Family);
+            fn visit<M: MeshTopology>(self) -> Self::Output {
+                (M::NAME, M::FAMILY)
+            }
+        }
+        for name in crate::NAMES {
+            let (visited, family) = visit(name, FamilyOf).ok().expect("a peer visits");
+            assert_eq!((visited, family), (name, Family::RustCrate));
+        }
+        assert!(visit("index-half-edge", FamilyOf).is_err());
+    }
+}
