@@ -1,5 +1,7 @@
 //! Every structure of the lab by name: those of [`topolab_structures::registry`] plus the C++
-//! baselines when they are compiled in: OpenMesh ([`crate::openmesh::OpenMesh`], name
+//! baselines when they are compiled in, then the Rust crates of `topolab-peers` when the
+//! feature `peers` is on (lox's two structures, baby_shark's corner table, tri-mesh; see
+//! [`peer_crate`]). The C++ baselines when they are compiled in: OpenMesh ([`crate::openmesh::OpenMesh`], name
 //! `openmesh`) and CGAL's two halfedge structures ([`crate::cgal::SurfaceMesh`],
 //! `cgal-surface-mesh`; [`crate::cgal::Polyhedron`], `cgal-polyhedron`). The CLI and the
 //! report go through this registry, so `topolab list`, `topolab info --structure NAME` and
@@ -22,12 +24,22 @@ const CGAL_NAMES: &[&str] = if cfg!(has_cgal) {
     &[]
 };
 
-/// Names of every structure, in report order: the crate's, then the baselines.
-pub const NAMES: &[&str] = &concat::<
-    { structures::NAMES.len() + OPENMESH_NAMES.len() + CGAL_NAMES.len() },
->([structures::NAMES, OPENMESH_NAMES, CGAL_NAMES]);
+#[cfg(feature = "peers")]
+const PEER_NAMES: &[&str] = &topolab_peers::NAMES;
+#[cfg(not(feature = "peers"))]
+const PEER_NAMES: &[&str] = &[];
 
-const fn concat<const N: usize>(parts: [&[&'static str]; 3]) -> [&'static str; N] {
+/// Whether this build has the Rust crates of `topolab-peers` (the feature `peers`).
+pub const HAS_PEERS: bool = cfg!(feature = "peers");
+
+/// Names of every structure, in report order: the crate's, then the C++ baselines, then the
+/// Rust crates.
+pub const NAMES: &[&str] = &concat::<
+    { structures::NAMES.len() + OPENMESH_NAMES.len() + CGAL_NAMES.len() + PEER_NAMES.len() },
+    4,
+>([structures::NAMES, OPENMESH_NAMES, CGAL_NAMES, PEER_NAMES]);
+
+const fn concat<const N: usize, const P: usize>(parts: [&[&'static str]; P]) -> [&'static str; N] {
     let mut out = [""; N];
     let (mut i, mut part) = (0, 0);
     while part < parts.len() {
@@ -59,7 +71,24 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
     if name == CGAL_POLYHEDRON {
         return Some(visitor.visit::<crate::cgal::Polyhedron>());
     }
+    #[cfg(feature = "peers")]
+    let visitor = match topolab_peers::registry::visit(name, visitor) {
+        Ok(output) => return Some(output),
+        Err(visitor) => visitor,
+    };
     structures::visit(name, visitor)
+}
+
+/// The crate from crates.io (its name and exact version) that the structure called `name`
+/// adapts, `None` for the lab's own structures and the C++ baselines (and for every name in
+/// a build without the feature `peers`).
+pub fn peer_crate(name: &str) -> Option<(&'static str, &'static str)> {
+    #[cfg(feature = "peers")]
+    if let Some(c) = topolab_peers::crate_of(name) {
+        return Some((c.name, c.version));
+    }
+    let _ = name;
+    None
 }
 
 /// Runs `visitor` with the editable structure (one that implements `MeshEdit`) called
@@ -92,7 +121,7 @@ pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Outpu
 /// The baselines that run the changing workloads natively, the whole workload in C++ through
 /// their own Euler operations (OpenMesh's, CGAL's), when compiled in.
 pub const NATIVE_CHANGING: &[&str] =
-    &concat::<{ OPENMESH_NAMES.len() + CGAL_NAMES.len() }>([OPENMESH_NAMES, CGAL_NAMES, &[]]);
+    &concat::<{ OPENMESH_NAMES.len() + CGAL_NAMES.len() }, 2>([OPENMESH_NAMES, CGAL_NAMES]);
 
 /// Does the structure called `name` change meshes: through `MeshEdit`
 /// ([`visit_editable`]) or natively ([`NATIVE_CHANGING`])?

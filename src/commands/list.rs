@@ -52,6 +52,10 @@ fn edit_rows() -> Vec<EditRow> {
 #[derive(serde::Serialize)]
 pub(crate) struct StructureRow {
     pub(crate) name: &'static str,
+    /// The crate from crates.io and its exact version, for the Rust crates measured beside
+    /// the lab (`lox 0.1.1`); absent for the lab's structures and the C++ baselines.
+    #[serde(rename = "crate", skip_serializing_if = "Option::is_none")]
+    pub(crate) from_crate: Option<String>,
     pub(crate) capabilities: Capabilities,
     pub(crate) costs: Vec<(&'static str, &'static str)>,
 }
@@ -63,6 +67,7 @@ impl StructureVisitor for Row {
     fn visit<M: MeshTopology>(self) -> StructureRow {
         StructureRow {
             name: M::NAME,
+            from_crate: registry::peer_crate(M::NAME).map(|(c, v)| format!("{c} {v}")),
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()
@@ -122,7 +127,7 @@ pub fn list(json: bool) -> Result<String, Failure> {
         let c = r.capabilities;
         let _ = writeln!(
             out,
-            "{:<width$} {}{}{}{}",
+            "{:<width$} {}{}{}{}{}",
             r.name,
             if c.triangles_only {
                 "triangles only"
@@ -144,10 +149,21 @@ pub fn list(json: bool) -> Result<String, Failure> {
             } else {
                 ""
             },
+            r.from_crate
+                .as_deref()
+                .map(|c| format!("; the crate {c} from crates.io"))
+                .unwrap_or_default(),
         );
     }
     for (name, why) in registry::absent_baselines() {
         let _ = writeln!(out, "{name:<width$} not in this build: {why}");
+    }
+    if !registry::HAS_PEERS {
+        let _ = writeln!(
+            out,
+            "{:<width$} not in this build: built without the feature `peers` (the default features include it)",
+            "lox, baby_shark, tri-mesh"
+        );
     }
     let edits = edit_rows();
     let _ = write!(
