@@ -140,8 +140,9 @@ fn ramp_ends(family: Family) -> ((u8, u8, u8), (u8, u8, u8)) {
         Family::EdgeLists => ((102, 189, 99), (0, 100, 40)),
         Family::CornerLists => ((165, 165, 165), (95, 95, 95)),
         Family::RegularGrid => ((170, 150, 210), (84, 39, 143)),
-        // A placeholder hue until the report's palette gives the Rust crates their own.
-        Family::RustCrate => ((0, 0, 0), (90, 60, 40)),
+        // A rust red of their own, apart from the half-edge's orange: the crates are read
+        // beside the lab's structures of the same design.
+        Family::RustCrate => ((240, 120, 150), (140, 10, 60)),
         Family::Outside => ((0, 0, 0), (90, 60, 40)),
     }
 }
@@ -153,7 +154,7 @@ fn mix(a: (u8, u8, u8), b: (u8, u8, u8), t: f64) -> (u8, u8, u8) {
 
 /// The style of each structure, given in report order with its family: a ramp of the family's
 /// hue over its members (one member: the middle of the ramp; outside structures start at
-/// black), dashed outside the lab, and a marker of its own per position (seven shapes, then
+/// black), dashed outside the lab (the C++ baselines and the Rust crates), and a marker of its own per position (seven shapes, then
 /// the same hollow), so that no two of up to fourteen structures look alike.
 pub fn styles(families: &[Family]) -> Vec<Style> {
     families
@@ -170,7 +171,7 @@ pub fn styles(families: &[Family]) -> Vec<Style> {
             };
             Style {
                 rgb: mix(light, dark, t),
-                dashed: f == Family::Outside,
+                dashed: matches!(f, Family::Outside | Family::RustCrate),
                 marker: Marker::ALL[i % Marker::ALL.len()],
                 hollow: (i / Marker::ALL.len()) % 2 == 1,
             }

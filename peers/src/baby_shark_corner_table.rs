@@ -33,8 +33,8 @@
 use crate::compose;
 use baby_shark::exports::nalgebra::Vector3;
 use baby_shark::mesh::corner_table::{
-    CornerTable, EdgeAttribute, EdgeId as SharkEdge, FaceId as SharkFace,
-    VertexAttribute, VertexId as SharkVertex,
+    CornerTable, EdgeAttribute, EdgeId as SharkEdge, FaceId as SharkFace, VertexAttribute,
+    VertexId as SharkVertex,
 };
 use glam::DVec3;
 use std::ops::ControlFlow;
@@ -122,9 +122,7 @@ impl MeshTopology for BabySharkCornerTable {
 
     fn cost(op: Operator) -> Cost {
         match op {
-            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => {
-                Cost::Local
-            }
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => Cost::Local,
             Operator::BoundaryCurves => Cost::Linear,
             _ => Cost::Constant,
         }

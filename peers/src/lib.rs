@@ -18,6 +18,11 @@
 //! edge, faces that disagree on orientation, a vertex with several fans, polygons where the
 //! crate stores triangles) is refused with the lab's typed error before the crate sees it
 //! ([`compose::admit`]), so no crate panics and none silently stores something else.
+//!
+//! [`registry::Peers`] lists the four as one `Structures` list, which the lab's registry
+//! (`topolab_baselines::registry`, behind its feature `peers`) chains after the C++
+//! baselines; [`CRATES`] names each crate's exact version for `topolab list` and the report.
+//! This crate depends on `topolab-structures` only.
 
 #![deny(missing_docs)]
 
@@ -54,7 +59,7 @@ pub const CRATES: [PeerCrate; 3] = [
         name: "lox",
         version: "0.1.1",
         structures: &[lox_half_edge::NAME, lox_directed_edge::NAME],
-        used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits",
+        used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits (is_isolated_vertex beside is_boundary_vertex, which says true of an isolated vertex)",
     },
     PeerCrate {
         name: "baby_shark",
@@ -93,7 +98,12 @@ mod tests {
         let lock = include_str!("../../Cargo.lock");
         for c in CRATES {
             let entry = format!("name = \"{}\"\nversion = \"{}\"", c.name, c.version);
-            assert!(lock.contains(&entry), "{} {} not in Cargo.lock", c.name, c.version);
+            assert!(
+                lock.contains(&entry),
+                "{} {} not in Cargo.lock",
+                c.name,
+                c.version
+            );
             let manifest = include_str!("../Cargo.toml");
             assert!(
                 manifest.contains(&format!("{} = \"={}\"", c.name, c.version)),
@@ -108,7 +118,10 @@ mod tests {
     fn every_structure_has_one_crate() {
         for name in NAMES {
             assert_eq!(
-                CRATES.iter().filter(|c| c.structures.contains(&name)).count(),
+                CRATES
+                    .iter()
+                    .filter(|c| c.structures.contains(&name))
+                    .count(),
                 1,
                 "{name}"
             );

@@ -28,7 +28,10 @@ mod tests {
         assert_eq!(listed, crate::NAMES);
         assert_eq!(duplicate_name(&listed), None);
         for name in listed {
-            assert!(!topolab_structures::registry::NAMES.contains(&name), "{name}");
+            assert!(
+                !topolab_structures::registry::NAMES.contains(&name),
+                "{name}"
+            );
         }
     }
 

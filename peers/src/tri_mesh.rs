@@ -42,7 +42,12 @@ pub struct TriMesh {
 
 impl std::fmt::Debug for TriMesh {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "TriMesh({} vertices, {} faces)", self.vertices.len(), self.faces.len())
+        write!(
+            f,
+            "TriMesh({} vertices, {} faces)",
+            self.vertices.len(),
+            self.faces.len()
+        )
     }
 }
 
