@@ -9,8 +9,9 @@
 //!   (`class="plot-area"`, `class="legend"`) so a test can read them back.
 //! - **One hue family per structure family** ([`styles`]): the CHE levels are a ramp of blues
 //!   (level 0 lightest), the half-edges oranges, the edge lists greens, the scanning corner
-//!   lists greys, the grids purples; structures from outside the lab (OpenMesh, a crate's own
-//!   structure) are dashed, the first black. The family comes from the structure's declared
+//!   lists greys, the grids purples, the Rust crates (lox, baby_shark, tri-mesh) rust reds;
+//!   structures from outside the lab (OpenMesh, a crate's own structure, the Rust crates) are
+//!   dashed, the first of the baselines black. The family comes from the structure's declared
 //!   [`Family`], never from its name.
 //! - **Markers tell lines apart in print**: each line of a plot gets its own marker shape
 //!   (seven shapes, filled then hollow), so a grey printout still separates them.
@@ -154,8 +155,9 @@ fn mix(a: (u8, u8, u8), b: (u8, u8, u8), t: f64) -> (u8, u8, u8) {
 
 /// The style of each structure, given in report order with its family: a ramp of the family's
 /// hue over its members (one member: the middle of the ramp; outside structures start at
-/// black), dashed outside the lab (the C++ baselines and the Rust crates), and a marker of its own per position (seven shapes, then
-/// the same hollow), so that no two of up to fourteen structures look alike.
+/// black), dashed outside the lab (the C++ baselines and the Rust crates), and a marker of
+/// its own per position (seven shapes, then the same hollow), so that no two of up to
+/// fourteen structures look alike.
 pub fn styles(families: &[Family]) -> Vec<Style> {
     families
         .iter()
