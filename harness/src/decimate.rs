@@ -12,7 +12,7 @@
 //! original's bounding-box diagonal.
 
 use crate::checksum::mix;
-use crate::targets::Spread;
+use crate::timing::turns::Spread;
 use glam::DVec3;
 use std::fmt::Write;
 use topolab_structures::algorithms::decimate::Strategy;

@@ -9,7 +9,7 @@
 //! exception: its cells repeat until a wall-time budget, so under load they repeat less, and
 //! its CPU time falls short of its time alone.
 
-use crate::html::esc;
+use crate::report::format::esc;
 use std::fmt::Write;
 
 /// A section of a report run, as timed (the page's sections are drawn from several of them).

@@ -2,8 +2,8 @@
 //! `bench-data/cache/` refined by Loop subdivision, new vertices appended after the old ones)
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
-use crate::html::ns;
 use crate::kernels::Kernel;
+use crate::report::format::ns;
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};

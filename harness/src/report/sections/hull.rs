@@ -1,0 +1,153 @@
+//! The 3D convex hulls: the lecture's three algorithms beside Qhull and CGAL, and the
+//! quantities of the lecture's analysis, counted in the same runs.
+
+use crate::plot;
+use crate::report::format::esc;
+use crate::results::Results;
+use std::fmt::Write;
+use topolab_structures::Family;
+
+pub(crate) fn hull(h: &mut String, r: &Results) {
+    if r.hull.is_empty() {
+        return;
+    }
+    h.push_str("<h2>3D convex hull on the winged-edge (the lecture on 3D convex hulls)</h2><div class=read><b>How to read it.</b> The lecture's three algorithms build the hull of random points as a winged-edge mesh: gift wrapping (O(n·h)), incremental (O(n²)), randomized incremental with a conflict graph (expected O(n log n)), next to Qhull and CGAL's <code>convex_hull_3</code> on the same points in the same run (below the table: how each is run). Every hull is timed warm: a warm-up run, then the median of the timed runs (<i>runs</i>: 3 below 100k points, 1 from 100k on or after a warm-up over a second); the clock runs around the call alone (for the lab's algorithms, building the winged-edge they return is in it, dropping it is not), and the lab's peak heap (next table) is counted in the warm-up run, never in a timed one. Points in a ball have few hull vertices; points on a sphere are all on the hull (h = n). Gift wrapping and the incremental algorithm run a size only while its predicted <i>Volume6</i> tests stay within the run's budget (2·10<sup>9</sup> by default: their n² shows on the sizes before), and the sphere stops at 100k points by default (every point is on its hull; <code>topolab report --full</code> goes to 1M, as the ball does): the run's notes say what was left out. The table compares the faces each algorithm created with the lecture's expected bound 6n − 20.</div><div class=plots>");
+    let algos = [
+        "gift",
+        "incremental",
+        "randomized",
+        "qhull",
+        "cgal-convex-hull-3",
+    ];
+    // The lecture's three algorithms build a winged-edge: that family's hue; Qhull and CGAL
+    // are outside.
+    let styles = plot::styles(&[
+        Family::EdgeLists,
+        Family::EdgeLists,
+        Family::EdgeLists,
+        Family::Outside,
+        Family::Outside,
+    ]);
+    let mut shapes: Vec<&str> = r.hull.iter().map(|x| x.shape.as_str()).collect();
+    shapes.dedup();
+    for shape in &shapes {
+        let series: Vec<plot::Line> = algos
+            .iter()
+            .enumerate()
+            .map(|(i, a)| plot::Line {
+                name: a.to_string(),
+                style: styles[i],
+                points: r
+                    .hull
+                    .iter()
+                    .filter(|x| x.shape == *shape && x.algorithm == *a)
+                    .map(|x| plot::Point {
+                        x: x.n as f64,
+                        y: x.seconds * 1e9 / x.n as f64,
+                        min: None,
+                        max: None,
+                        reps: 0,
+                    })
+                    .collect(),
+            })
+            .collect();
+        h.push_str(&plot::loglog(
+            &format!(
+                "hull of points {}",
+                if *shape == "sphere" {
+                    "on a sphere"
+                } else {
+                    "in a ball"
+                }
+            ),
+            "points",
+            "ns per point",
+            "ns per point",
+            &series,
+        ));
+    }
+    h.push_str("</div><table><tr><th class=l>points</th><th>n</th><th class=l>algorithm</th><th>seconds</th><th>runs</th><th>× Qhull</th><th>hull vertices</th><th>faces created</th><th>/ (6n − 20)</th></tr>");
+    for x in &r.hull {
+        let q = r
+            .hull
+            .iter()
+            .find(|y| y.shape == x.shape && y.n == x.n && y.algorithm == "qhull")
+            .map(|y| y.seconds);
+        let _ = write!(h, "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.4}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", x.shape, x.n, x.algorithm, x.seconds, x.timed_runs, q.map(|q| format!("{:.2}", x.seconds / q)).unwrap_or_default(), x.hull_vertices, x.faces_created.map(|c| c.to_string()).unwrap_or_default(), x.faces_created.map(|c| format!("{:.3}", c as f64 / (6.0 * x.n as f64 - 20.0))).unwrap_or_default());
+    }
+    h.push_str("</table>");
+    if let Some(qhull) = r
+        .qhull
+        .as_ref()
+        .filter(|_| r.hull.iter().any(|x| x.algorithm == "qhull"))
+    {
+        let _ = write!(h, "<div class=read><code>qhull</code>: {}. The clock is read inside the shim, around <code>qh_new_qhull</code> (which builds, merges and triangulates the hull) and the walk that collects the hull's vertex ids, as the lab's algorithms are timed around building their output; SciPy's output arrays, volume and area are not in it, nor is freeing the hull. The report stops unless Qhull's hull has the randomized algorithm's vertices (the same count and vertex checksum) and 2h − 4 triangles. The tests check this Qhull against SciPy's <code>ConvexHull</code> on seeded point sets (the same vertices, triangles and volume).</div>", esc(qhull));
+    }
+    if r.hull.iter().any(|x| x.algorithm == "cgal-convex-hull-3") {
+        h.push_str("<div class=read><code>cgal-convex-hull-3</code>: CGAL's <code>convex_hull_3</code> (C++ quickhull with exact predicates, into a <code>Surface_mesh</code>) on the same points in the same run, timed the same way, the clock inside the shim around the library call alone; the report stops unless its hull has the randomized algorithm's vertex count.</div>");
+    }
+}
+
+/// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.
+pub(crate) fn hull_analysis(h: &mut String, r: &Results) {
+    use crate::hull::bench::{bound, n_lg_n};
+    let ours: Vec<_> = r
+        .hull
+        .iter()
+        .filter(|x| x.volume6_tests.is_some())
+        .collect();
+    if ours.is_empty() {
+        return;
+    }
+    h.push_str("<h3>The lecture's analysis, measured</h3><div class=read><b>How to read it.</b> What the lecture on 3D convex hulls counts to bound each algorithm, counted in the same runs as the table above. <i>Volume6</i>: orientation tests, the algorithms' unit of work; <i>/ bound</i> divides them by the algorithm's bound (gift wrapping n·h, incremental n², randomized n lg n): a ratio that stays level as n grows means the bound describes the work, a falling one that the bound is loose for this input (the incremental algorithm's n² is its worst case, reached on a sphere). <i>Σ|P(e)|</i>: the conflict-list work of the randomized algorithm, the sum of the merged lists P(e) = P(f1) ∪ P(f2) over all horizon edges, expected O(n lg n). <i>exact</i>: the tests the floating-point filter of the face's plane left to exact arithmetic (gift wrapping calls the adaptive predicate directly: 0). <i>B per point</i>: the peak heap the call allocated beyond its input, per point. The second table fits t ∝ n<sup>e</sup> to the time and to the work (Σ|P(e)| for the randomized algorithm, Volume6 tests otherwise) and compares the work's exponent with the bound's at the same n and h: green when it grows no faster.</div>");
+    h.push_str("<table><tr><th class=l>points</th><th>n</th><th class=l>algorithm</th><th>hull vertices</th><th>µs per point</th><th>Volume6</th><th class=l>bound</th><th>Volume6 / bound</th><th>Σ|P(e)|</th><th>Σ|P(e)| / n lg n</th><th>exact</th><th>B per point</th></tr>");
+    for x in &ours {
+        let b = bound(&x.algorithm, x.n, x.hull_vertices);
+        let tests = x.volume6_tests.unwrap_or(0);
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td>{}</td><td class=l>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            x.shape,
+            x.n,
+            x.algorithm,
+            x.hull_vertices,
+            x.seconds * 1e6 / x.n as f64,
+            tests,
+            b.map_or("", |b| b.0),
+            b.map(|b| format!("{:.3}", tests as f64 / b.1)).unwrap_or_default(),
+            x.conflict_work.map(|w| w.to_string()).unwrap_or_default(),
+            x.conflict_work
+                .map(|w| format!("{:.2}", w as f64 / n_lg_n(x.n)))
+                .unwrap_or_default(),
+            x.exact_tests.map(|e| e.to_string()).unwrap_or_default(),
+            x.peak_bytes
+                .map(|p| format!("{:.0}", p as f64 / x.n as f64))
+                .unwrap_or_default(),
+        );
+    }
+    h.push_str("</table>");
+    if r.hull_fits.is_empty() {
+        return;
+    }
+    h.push_str("<table><tr><th class=l>points</th><th class=l>algorithm</th><th>sizes</th><th>time exponent</th><th>work exponent</th><th class=l>bound</th><th>bound's exponent</th></tr>");
+    for f in &r.hull_fits {
+        let e = |x: Option<f64>| x.map(|x| format!("{x:.2}")).unwrap_or_default();
+        let class = match f.within_bound {
+            Some(true) => "ok",
+            Some(false) => "bad",
+            None => "l",
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td>{:.2}</td><td class={class}>{}</td><td class=l>{}</td><td>{}</td></tr>",
+            f.shape,
+            f.algorithm,
+            f.sizes,
+            f.time_exponent,
+            e(f.conflict_exponent.or(f.tests_exponent)),
+            f.bound.as_deref().unwrap_or(""),
+            e(f.bound_exponent),
+        );
+    }
+    h.push_str("</table>");
+}

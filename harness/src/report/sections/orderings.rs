@@ -1,0 +1,59 @@
+//! "Element order": the vertex 1-ring sweep of a mesh renumbered in each order.
+
+use crate::report::format::ns;
+use crate::results::{Measurement, Results, Status};
+use std::fmt::Write;
+
+pub(crate) fn orderings(h: &mut String, r: &Results, names: &[&str]) {
+    let all: Vec<&Measurement> = r
+        .measurements
+        .iter()
+        .filter(|m| m.family == "ordering")
+        .collect();
+    // One table per renumbered mesh (the torus, a refined real mesh), in the run's order.
+    let mut bases: Vec<&str> = all
+        .iter()
+        .map(|m| m.mesh.split('/').next().unwrap_or_default())
+        .collect();
+    bases.dedup();
+    for base in bases {
+        let ms: Vec<&Measurement> = all
+            .iter()
+            .copied()
+            .filter(|m| m.mesh.split('/').next() == Some(base))
+            .collect();
+        ordering_table(h, base, &ms, names);
+    }
+}
+
+fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str]) {
+    let mut meshes: Vec<&str> = ms.iter().map(|m| m.mesh.as_str()).collect();
+    meshes.dedup();
+    let cols: Vec<&str> = names
+        .iter()
+        .copied()
+        .filter(|n| ms.iter().any(|m| m.structure == *n))
+        .collect();
+    let _ = write!(h, "<h2>Element order ({base})</h2><div class=read><b>How to read it.</b> The same mesh with its vertices renumbered (faces follow their smallest vertex): as generated (or as refined: each new vertex appended after the old ones, as real tools do), at random, along a Morton or Hilbert curve, breadth-first. The cell is the vertex 1-ring sweep (R00 over every vertex), nanoseconds per vertex. Order decides how often a query leaves the cache: a random order makes every structure pay the memory latency the probe measured.</div><table><tr><th class=l>order</th>");
+    for c in &cols {
+        let _ = write!(h, "<th>{c}</th>");
+    }
+    h.push_str("</tr>");
+    for mesh in meshes {
+        let _ = write!(
+            h,
+            "<tr><th class=l>{}</th>",
+            mesh.split('/').nth(1).unwrap_or(mesh)
+        );
+        for c in &cols {
+            match ms.iter().find(|m| m.mesh == mesh && m.structure == *c) {
+                Some(m) if m.status == Status::Measured => {
+                    let _ = write!(h, "<td>{}</td>", m.ns_per_item.map(ns).unwrap_or_default());
+                }
+                _ => h.push_str("<td class=skip>–</td>"),
+            }
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+}
