@@ -97,13 +97,12 @@ const fn limit(structure: &'static str) -> Target {
     }
 }
 
-/// The targets of issue 15 (and the changing workloads'), in the table's order.
-pub const TARGETS: [Target; 15] = [
-    versus(Cell::Construction, "che-l1", "openmesh", 0.1),
-    versus(Cell::R00Sweep, "che-l2", "index-half-edge", 1.2),
+/// The targets of the developers' guide, in the table's order. Every half-edge-family sweep is
+/// held within 2× its limit.
+pub const TARGETS: [Target; 13] = [
+    versus(Cell::Construction, "che-l1", "openmesh", 0.3),
+    versus(Cell::R00Sweep, "che-l2", "index-half-edge", 1.35),
     versus(Cell::Smoothing, "che-l2", "index-half-edge", 1.2),
-    versus(Cell::R00Sweep, "che-l2", "openmesh", 0.6),
-    versus(Cell::Smoothing, "che-l2", "openmesh", 0.6),
     versus(Cell::R00Sweep, "index-half-edge", "openmesh", 0.5),
     // The half-edge family: the two half-edge storages, the CHE levels and OpenMesh.
     limit("index-half-edge"),

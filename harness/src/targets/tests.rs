@@ -5,7 +5,7 @@ use super::measured::{measured, measured_chain};
 use super::plan::*;
 use super::probe::{with_probe, ChaseTurns, ProbeTurns};
 use super::rounds::pair;
-use super::text::{missed_limit_text, reason, versus_text, CHE_L1_CONSTRUCTION};
+use super::text::{missed_limit_text, versus_text};
 use crate::kernels::Kernel;
 use crate::probe::Probe;
 use crate::results::{Limit, Measurement, Subject};
@@ -39,7 +39,7 @@ fn the_plan_times_each_pair_once_and_a_limit_alone_only_when_untimed() {
     for s in ["che-l2", "openmesh", "che-l1", "pointer-half-edge"] {
         assert_eq!(find(&[s, PROBE]).unwrap().cells, [Cell::R00Sweep], "{s}");
     }
-    assert_eq!(all.len(), 4 + 7);
+    assert_eq!(all.len(), 3 + 7);
     // Without OpenMesh, its pairs and its limit go.
     let without = plan(|s, _| s != "openmesh");
     assert!(without.iter().all(|g| !g.structures.contains(&"openmesh")));
@@ -181,23 +181,6 @@ fn two_structures_take_turns_with_equal_checksums() {
     }
     // No chain without its turns.
     assert_eq!(measured_chain(&old, &target, Some(&l)), None);
-}
-
-#[test]
-fn only_a_missed_che_l1_construction_shows_its_breakdown() {
-    let construction = TARGETS[0];
-    assert_eq!(
-        (construction.cell, construction.structure),
-        (Cell::Construction, "che-l1")
-    );
-    assert_eq!(reason(&construction, "no"), Some(CHE_L1_CONSTRUCTION));
-    assert_eq!(reason(&construction, "yes"), None);
-    assert_eq!(reason(&construction, "–"), None);
-    assert_eq!(reason(&pair_target(Cell::Smoothing), "no"), None);
-    // The breakdown names every pass of the build.
-    for pass in ["G[]", "V[]", "O[]", "VH[]", "one-fan walk", "OpenMesh"] {
-        assert!(CHE_L1_CONSTRUCTION.contains(pass), "{pass}");
-    }
 }
 
 #[test]

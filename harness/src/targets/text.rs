@@ -134,14 +134,3 @@ pub(crate) fn missed_limit_text(turns: &[Turns], t: &Target, l: &Limit, probe: &
     }
     text
 }
-
-/// Why che-l1's construction misses its target, shown under the row when it does: the build's
-/// passes as measured pass by pass (see the CHE build module's docs, where the alternatives
-/// tried are measured too).
-pub const CHE_L1_CONSTRUCTION: &str = "Measured separately on 2026-12-01, not in this run, pass by pass (torus-1M, warm, median of 9 rounds in turns with OpenMesh, ns/face; `cargo run --release --example build_sweep -- 1000000 torus 9 all passes`): copy G[] 1.2 and check it finite 0.6, copy V[] 1.1, pair O[] 10.4, VH[] (Algorithm 3) 2.0, one-fan walk 3.2; whole build 18.9 against OpenMesh's 72.9 (its add_face compiled here at -O3 without assertions), so the target leaves 7.3 ns/face, less than the pairing alone. The pairing waits on its bucket walk (one dependent load per step), and pairing by a counting sort, by vertex stars or by fixed slots measured no faster.";
-
-/// The measured reason shown under a target that is not met and has one ([`CHE_L1_CONSTRUCTION`]).
-pub(crate) fn reason(t: &Target, met: &str) -> Option<&'static str> {
-    (met == "no" && t.cell == Cell::Construction && t.structure == "che-l1")
-        .then_some(CHE_L1_CONSTRUCTION)
-}

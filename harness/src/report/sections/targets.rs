@@ -7,8 +7,7 @@ use crate::results::{Results, Status};
 use crate::targets::measured::measured;
 use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, ROUNDS, TARGETS};
 use crate::targets::text::{
-    chain_text, missed_limit_text, one_after_another, reason, sequential, sequential_subject,
-    versus_text,
+    chain_text, missed_limit_text, one_after_another, sequential, sequential_subject, versus_text,
 };
 use std::fmt::Write;
 
@@ -67,13 +66,12 @@ pub fn render(h: &mut String, r: &Results) {
                     && sequential_subject(t.cell) == Some((m.operator, m.kernel))
             })
         };
-        let why = match (t.against, limit, reason(t, met)) {
-            (Against::Limit, Some(l), _) if met == "no" => {
+        let why = match (t.against, limit) {
+            (Against::Limit, Some(l)) if met == "no" => {
                 esc(&missed_limit_text(&turns, t, l, &r.probe))
             }
-            (Against::Limit, Some(l), _) => esc(&chain_text(&turns, t, l).unwrap_or_default()),
-            (_, _, Some(measured)) => esc(measured),
-            (Against::Structure(b), _, _) if met == "no" => {
+            (Against::Limit, Some(l)) => esc(&chain_text(&turns, t, l).unwrap_or_default()),
+            (Against::Structure(b), _) if met == "no" => {
                 esc(&versus_text(&r.measurements, mesh, t, b).unwrap_or_default())
             }
             _ if spread.is_none() && skipped() => {
