@@ -3,7 +3,7 @@
 //! The operator catalogue (what each operator takes and answers), the kernels that time it on
 //! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)),
 //! [`timing`] (medians, contenders taking turns, the memory meter), complexity fits, the machine
-//! probe, the [`results`] schema, the HTML [`report`] and its [`sections`](mod@sections), the
+//! probe, the [`results`] schema, the HTML [`report`] and its sections, the
 //! [`targets`] measured in turns, and [`compare`](mod@compare): two runs side by side.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
@@ -13,7 +13,6 @@ pub mod bench;
 pub mod catalogue;
 pub mod changing;
 pub mod checksum;
-pub mod chooser;
 pub mod compare;
 pub mod decimate;
 pub mod fit;
@@ -30,8 +29,6 @@ pub mod reads;
 pub mod repaired;
 pub mod report;
 pub mod results;
-pub mod scale;
-pub mod sections;
 pub mod skips;
 pub mod svg;
 pub mod targets;

@@ -74,8 +74,9 @@ pub struct Settings {
     pub cell_max_s: f64,
     /// The command that produced the results.
     pub command: String,
-    /// The sections of the report this run measured and shows (`--sections`).
-    pub sections: Vec<crate::sections::Section>,
+    /// The sections of the report this run measured and shows (`--sections`), by name, in
+    /// page order.
+    pub sections: Vec<&'static str>,
 }
 
 /// A structure and its declared costs.

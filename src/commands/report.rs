@@ -3,7 +3,6 @@
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
 use super::report_scale;
-use super::report_sections::{Selection, LIBIGL};
 use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
@@ -15,11 +14,13 @@ use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::phases::Phase;
+use topolab_harness::report::section::{Real, Refined};
+use topolab_harness::report::sections::libigl::LIBIGL;
+use topolab_harness::report::selection::Selection;
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
     FORMAT_VERSION,
 };
-use topolab_harness::sections::Section;
 use topolab_harness::{fit, html, machine, probe, svg};
 use topolab_structures::registry::{duplicate_name, names, Structures};
 use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
@@ -45,11 +46,11 @@ pub struct ReportArgs {
     #[arg(long, value_delimiter = ',')]
     pub structures: Option<Vec<String>>,
     /// Sections of the page to measure and show, comma separated (default: all): chooser,
-    /// targets, table-4-1, plots, sweeps, workloads, memory, construction, orderings,
-    /// real-meshes, real-at-scale, libigl, hull, changing, decimate, teaching, meshes. Only what they are drawn
-    /// from is measured.
+    /// table-4-1, plots, sweeps, workloads, memory, construction, orderings, real-meshes,
+    /// real-at-scale, libigl, hull, changing, decimate, teaching, meshes, targets. Only what
+    /// they are drawn from is measured.
     #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
-    pub sections: Option<Vec<Section>>,
+    pub sections: Option<Vec<String>>,
     /// Mesh families, comma separated: `torus` (closed), `grid` (open, with boundary), `real`
     /// (the meshes `make data` fetched into bench-data/cache/, when present), `refined` (two of
     /// them refined by Loop subdivision to 1.2M and 3.3M triangles, measured like the tori).
@@ -206,7 +207,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let mut clock = super::report_timing::Clock::start();
     let probe = probe::measure(probe_mb, probe_mb);
-    clock.lap(Phase::Probe, None);
+    clock.lap(Phase::PROBE, None);
     let mut notes = Vec::new();
     let selection = Selection::new(
         args.sections.as_deref(),
@@ -230,7 +231,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cell_budget_s: plan.cell_budget.as_secs_f64(),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command,
-            sections: selection.sections.clone(),
+            sections: selection.names(),
         },
         structures: Vec::new(),
         meshes: Vec::new(),
@@ -258,7 +259,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         results.teaching.push(teach);
     }
     let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
-    for size in sizes.iter().filter(|_| selection.generated) {
+    for size in sizes.iter().filter(|_| selection.generated()) {
         for fam in &generated {
             let spec = format!("{fam}:{size}");
             let soup = meshes::from_spec(&spec)
@@ -267,14 +268,14 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         }
     }
     let mut repaired = std::collections::HashMap::new();
-    if families.contains(&"real") && selection.real_meshes {
+    if families.contains(&"real") && selection.needs.real != Real::None {
         for (name, soup) in real_meshes(&mut results.notes) {
             let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
             repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
         }
     }
-    if families.contains(&report_scale::FAMILY) && selection.refined {
+    if families.contains(&report_scale::FAMILY) && selection.needs.refined != Refined::None {
         let list: &[report_scale::Refined] = if quick {
             &report_scale::QUICK
         } else {
@@ -284,7 +285,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             cases.push((name, report_scale::FAMILY.into(), soup));
         }
     }
-    clock.lap(Phase::Meshes, None);
+    clock.lap(Phase::MESHES, None);
     let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
     let bar = ProgressBar::new((measured * names.len()) as u64);
     bar.set_style(
@@ -348,57 +349,65 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
             counts: MeshCounts::of(soup),
             repaired: repaired.remove(name),
         });
-        bar.suspend(|| clock.lap(Phase::Measure, Some(name)));
+        bar.suspend(|| clock.lap(Phase::MEASURE, Some(name)));
     }
     bar.finish_and_clear();
-    if selection.orderings {
-        orderings::<X>(&cases, &names, &plan, &mut results)?;
-        clock.lap(Phase::Orderings, None);
-    }
-    let mut libigl_version = None;
-    if selection.libigl {
-        (results.libigl, libigl_version) =
-            libigl(&cases, &results.measurements, &mut results.notes);
-        clock.lap(Phase::Libigl, None);
-    }
-    if selection.hull {
-        results.hull = hull(HullSizes::of(quick, args.full), &mut results.notes)?;
-        results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
-        results.qhull = crate::registry::qhull_description();
-        clock.lap(Phase::Hull, None);
-    }
-    if selection.changing {
-        results.changing =
-            super::report_changing::measure(&cases, &names, quick, args.full, &mut results.notes)?;
-        clock.lap(Phase::Changing, None);
-    }
-    if selection.decimate {
-        results.decimate =
-            super::report_decimate::measure(&cases, &names, quick, &mut results.notes)?;
-        clock.lap(Phase::Decimate, None);
-    }
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
-    clock.lap(Phase::Fits, None);
-    if selection.sections.contains(&Section::Table41) {
-        results.reads = crate::commands::report_reads::count(&names, &sizes, &mut results.notes);
-        clock.lap(Phase::Reads, None);
-    }
-    if selection.sections.contains(&Section::Targets) {
-        results.targets = super::report_targets::measure::<X>(
-            &cases,
-            &names,
-            &results.measurements,
-            &results.probe,
-            &mut results.notes,
-        )?;
-        clock.lap(Phase::Targets, None);
+    clock.lap(Phase::FITS, None);
+    let mut libigl_version = None;
+    // Each shown section's own measurement, in page order, timed as its phase (after the fits:
+    // the Targets hold sweeps to their limits).
+    for section in &selection.sections {
+        let Some(phase) = section.phase() else {
+            continue;
+        };
+        match section.name() {
+            "table-4-1" => {
+                results.reads =
+                    crate::commands::report_reads::count(&names, &sizes, &mut results.notes)
+            }
+            "orderings" => orderings::<X>(&cases, &names, &plan, &mut results)?,
+            "libigl" => {
+                (results.libigl, libigl_version) =
+                    libigl(&cases, &results.measurements, &mut results.notes)
+            }
+            "hull" => {
+                results.hull = hull(HullSizes::of(quick, args.full), &mut results.notes)?;
+                results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
+                results.qhull = crate::registry::qhull_description();
+            }
+            "changing" => {
+                results.changing = super::report_changing::measure(
+                    &cases,
+                    &names,
+                    quick,
+                    args.full,
+                    &mut results.notes,
+                )?
+            }
+            "decimate" => {
+                results.decimate =
+                    super::report_decimate::measure(&cases, &names, quick, &mut results.notes)?
+            }
+            "targets" => {
+                results.targets = super::report_targets::measure::<X>(
+                    &cases,
+                    &names,
+                    &results.measurements,
+                    &results.probe,
+                    &mut results.notes,
+                )?
+            }
+            other => unreachable!("the section {other} has a phase and no measurement"),
+        }
+        clock.lap(phase, None);
     }
     let measured: Vec<&str> = names.iter().map(String::as_str).collect();
     results.baselines = crate::baselines::runs(crate::baselines::Used {
         structures: &measured,
-        hull: selection.hull && !results.hull.is_empty(),
-        decimate: selection.decimate && !results.decimate.is_empty(),
+        hull: !results.hull.is_empty(),
+        decimate: !results.decimate.is_empty(),
         libigl: libigl_version.as_deref(),
     });
     let skipped = results
@@ -755,7 +764,7 @@ fn write(
     let mut without = String::new();
     topolab_harness::phases::render(&mut without, &results.phases);
     let page = html::render(results);
-    clock.lap(Phase::Writing, None);
+    clock.lap(Phase::WRITING, None);
     results.phases = clock.times().to_vec();
     let mut with = String::new();
     topolab_harness::phases::render(&mut with, &results.phases);

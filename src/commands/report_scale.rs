@@ -11,7 +11,7 @@ use topolab_structures::refine::{subdivide_levels, Scheme};
 use topolab_structures::PolygonSoup;
 
 /// The mesh family of the refined meshes in results and on the page.
-pub use topolab_harness::scale::FAMILY;
+pub use topolab_harness::report::sections::real_at_scale::FAMILY;
 
 /// One refined mesh: the file stem in `bench-data/cache/` and the Loop levels.
 #[derive(Copy, Clone, Debug)]

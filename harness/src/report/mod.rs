@@ -1,8 +1,11 @@
 //! The report page drawn from [`crate::results::Results`]: its shell ([`page`]), the formatting
-//! its sections share ([`format`](mod@format)), the look-ups of cells they share (`cells`) and the sections
-//! drawn here (`sections`).
+//! its sections share ([`format`](mod@format)), the look-ups of cells they share (`cells`), what a
+//! section is ([`section`]), the sections in their one list ([`sections`]) and what a run
+//! measures for the sections it shows ([`selection`]).
 
 pub(crate) mod cells;
 pub mod format;
 pub mod page;
-pub(crate) mod sections;
+pub mod section;
+pub mod sections;
+pub mod selection;

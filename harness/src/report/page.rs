@@ -1,14 +1,10 @@
 //! The report page: its shell (head, CSS, title), the Machine block with the run's time by
 //! section, and the sections in page order, drawn from [`Results`].
 
-use crate::plot;
 use crate::report::format::{bytes, esc};
-use crate::report::sections::{
-    construction, hull, libigl, memory, meshes, orderings, plots, real_meshes, sweeps, table_4_1,
-    targets, teaching, workloads,
-};
+use crate::report::section::Page;
+use crate::report::sections::SECTIONS;
 use crate::results::Results;
-use crate::sections::Section;
 use std::fmt::Write;
 use topolab_structures::Step;
 
@@ -26,52 +22,26 @@ pre{background:#f6f8fa;padding:.6em;overflow-x:auto;font-size:12px;max-height:42
 .teach{display:flex;gap:16px;flex-wrap:wrap;align-items:flex-start} details{margin:.3em 0}
 "#;
 
-/// Renders the whole report page.
+/// Renders the whole report page: the sections the run measured (`settings.sections`), in the
+/// order of [`SECTIONS`], the chooser above the Machine block.
 pub fn render(r: &Results) -> String {
     let mut h = String::new();
-    let names: Vec<&str> = r.structures.iter().map(|s| s.name.as_str()).collect();
-    let styles = plot::styles(&r.structures.iter().map(|s| s.family).collect::<Vec<_>>());
-    let ci = |s: &str| styles[names.iter().position(|&n| n == s).unwrap_or(0)];
+    let page = Page::new(r);
     let _ = write!(h, "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>topolab report</title><style>{CSS}</style></head><body>");
     let _ = write!(h, "<h1>topolab report</h1><p>Mesh data structures side by side: every operator timed on every structure, on meshes of growing size, with the theory next to the measurement. Produced by <code>{}</code>.</p>", esc(&r.settings.command));
     // `--sections`: only the sections the run measured.
-    let shows = |s: Section| r.settings.sections.contains(&s);
-    // The chooser comes first, above the machine: what a reader wants before the details.
-    if shows(Section::Chooser) {
-        crate::chooser::section(&mut h, r);
+    let shown = || {
+        SECTIONS
+            .iter()
+            .filter(|s| r.settings.sections.contains(&s.name()))
+    };
+    for s in shown().filter(|s| s.before_machine()) {
+        s.render(&mut h, &page);
     }
     machine_section(&mut h, r);
     crate::baselines::render(&mut h, &r.baselines);
-    let draw = |s: Section, h: &mut String| match s {
-        Section::Chooser => {}
-        Section::Targets => targets::render(h, r),
-        Section::Table41 => {
-            table_4_1::table_4_1(h, r, &names);
-            crate::reads::section::table(h, r);
-        }
-        Section::Plots => plots::plots(h, r, &ci),
-        Section::Sweeps => sweeps::sweeps(h, r, &names),
-        Section::Workloads => workloads::workloads(h, r, &ci),
-        Section::Memory => memory::memory(h, r, &ci),
-        Section::Construction => construction::construction(h, r, &ci),
-        Section::Orderings => orderings::orderings(h, r, names.as_slice()),
-        Section::RealMeshes => real_meshes::real_meshes(h, r, names.as_slice()),
-        Section::RealAtScale => crate::scale::section(h, r, names.as_slice()),
-        Section::Libigl => libigl::libigl(h, r),
-        Section::Hull => {
-            hull::hull(h, r);
-            hull::hull_analysis(h, r);
-        }
-        Section::Changing => crate::changing::render(h, &r.changing),
-        Section::Decimate => crate::decimate::render(h, &r.decimate),
-        Section::Teaching => {
-            teaching::teaching(h, r);
-            crate::reads::section::teaching(h);
-        }
-        Section::Meshes => meshes::meshes(h, r),
-    };
-    for s in Section::ALL.into_iter().filter(|&s| shows(s)) {
-        draw(s, &mut h);
+    for s in shown().filter(|s| !s.before_machine()) {
+        s.render(&mut h, &page);
     }
     if !r.notes.is_empty() {
         h.push_str("<h2>Notes</h2><ul>");

@@ -5,10 +5,11 @@ use crate::plot;
 use crate::plot::Style;
 use crate::report::cells::{largest, lines};
 use crate::report::format::ns;
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status, Subject};
 use std::fmt::Write;
 
-pub(crate) fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
+fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     h.push_str("<h2>Construction time</h2><div class=read><b>How to read it.</b> Time to build each structure from the face list, per face, against mesh size (log-log), with each structure's own checks of the input; the C++ baselines are timed as their documentation builds a mesh (OpenMesh and CGAL's <code>Surface_mesh</code>: <code>reserve</code>, <code>add_vertex</code>, <code>add_face</code>; <code>Polyhedron_3</code>: its incremental builder), without the lab's up-front checks, which run before the clock and tell each library the exact numbers of vertices, edges and faces to reserve (open meshes and polygons included). Nothing else is timed: no structure's destructor (each build is freed after the clock), and not the tables from id to handle the lab adds to a <code>Polyhedron_3</code> for its queries. A flat line is linear-time construction. Each build is timed in the CPU time of the measuring thread (user and system: page faults count), which other processes on a shared machine do not stretch. Builds are timed <i>warm</i>: glibc's <code>malloc</code> (which the Rust structures and the C++ baselines share) keeps the memory freed by the build before, so a build touches no fresh page whatever the run built earlier; nothing is counted while timing (the heap is measured in a build of its own). The table below also times <i>cold</i> builds, each after the allocator returned its free memory to the kernel: every page the build touches is then a page fault, whose cost on this machine is the difference.</div><div class=plots>");
     for fam in ["torus", "grid"] {
         let series = lines(r, Subject::Construction, Kernel::Construction, fam, ci);
@@ -55,4 +56,21 @@ pub(crate) fn construction(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Sty
         );
     }
     h.push_str("</table>");
+}
+
+/// Construction time, warm and cold.
+pub struct Construction;
+
+impl Section for Construction {
+    fn name(&self) -> &'static str {
+        "construction"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Light)
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        construction(h, page.r, &|s| page.style(s));
+    }
 }

@@ -1,13 +1,19 @@
 //! The 3D convex hulls: the lecture's three algorithms beside Qhull and CGAL, and the
 //! quantities of the lecture's analysis, counted in the same runs.
 
+use crate::phases::Phase;
 use crate::plot;
 use crate::report::format::esc;
+use crate::report::section::{Needs, Page, Section};
 use crate::results::Results;
 use std::fmt::Write;
 use topolab_structures::Family;
 
-pub(crate) fn hull(h: &mut String, r: &Results) {
+/// The structure the hull section's algorithms build on: the hull section runs when
+/// `--structures` names it.
+pub const HULL_STRUCTURE: &str = "winged-edge";
+
+fn hull(h: &mut String, r: &Results) {
     if r.hull.is_empty() {
         return;
     }
@@ -89,7 +95,7 @@ pub(crate) fn hull(h: &mut String, r: &Results) {
 }
 
 /// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.
-pub(crate) fn hull_analysis(h: &mut String, r: &Results) {
+fn hull_analysis(h: &mut String, r: &Results) {
     use crate::hull::bench::{bound, n_lg_n};
     let ours: Vec<_> = r
         .hull
@@ -150,4 +156,29 @@ pub(crate) fn hull_analysis(h: &mut String, r: &Results) {
         );
     }
     h.push_str("</table>");
+}
+
+/// The 3D convex hull algorithms beside Qhull and CGAL.
+pub struct Hull;
+
+impl Section for Hull {
+    fn name(&self) -> &'static str {
+        "hull"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            subject: Some(HULL_STRUCTURE),
+            ..Needs::NOTHING
+        }
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("hull", "3D convex hulls"))
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        hull(h, page.r);
+        hull_analysis(h, page.r);
+    }
 }

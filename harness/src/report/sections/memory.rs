@@ -3,13 +3,14 @@
 use crate::kernels::Kernel;
 use crate::plot::Style;
 use crate::report::cells::largest;
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status};
 use crate::svg;
 use std::fmt::Write;
 
 /// One bar per structure built on `mesh`, per triangle of its `tri`: `bar` gives a construction
 /// cell's bytes and, where it has one, its tick.
-pub(crate) fn construction_bars(
+fn construction_bars(
     r: &Results,
     mesh: &str,
     tri: usize,
@@ -34,7 +35,7 @@ pub(crate) fn construction_bars(
         .collect()
 }
 
-pub(crate) fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
+fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
@@ -46,4 +47,21 @@ pub(crate) fn memory(h: &mut String, r: &Results, ci: &dyn Fn(&str) -> Style) {
         "B",
         &peak,
     ));
+}
+
+/// Heap bytes per triangle.
+pub struct Memory;
+
+impl Section for Memory {
+    fn name(&self) -> &'static str {
+        "memory"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Light)
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        memory(h, page.r, &|s| page.style(s));
+    }
 }

@@ -1,10 +1,12 @@
 //! "Element order": the vertex 1-ring sweep of a mesh renumbered in each order.
 
+use crate::phases::Phase;
 use crate::report::format::ns;
+use crate::report::section::{Needs, Page, Refined, Section};
 use crate::results::{Measurement, Results, Status};
 use std::fmt::Write;
 
-pub(crate) fn orderings(h: &mut String, r: &Results, names: &[&str]) {
+fn orderings(h: &mut String, r: &Results, names: &[&str]) {
     let all: Vec<&Measurement> = r
         .measurements
         .iter()
@@ -56,4 +58,29 @@ fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str
         h.push_str("</tr>");
     }
     h.push_str("</table>");
+}
+
+/// The vertex 1-ring sweep of a torus and a refined real mesh in each element order.
+pub struct Orderings;
+
+impl Section for Orderings {
+    fn name(&self) -> &'static str {
+        "orderings"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            generated: true,
+            refined: Refined::Made,
+            ..Needs::NOTHING
+        }
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("orderings", "orderings"))
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        orderings(h, page.r, &page.names);
+    }
 }

@@ -2,11 +2,12 @@
 
 use crate::kernels::Kernel;
 use crate::report::format::{esc, ns};
+use crate::report::section::{Needs, Page, Real, Section};
 use crate::results::{MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::Operator;
 
-pub(crate) fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
+fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     let real: Vec<&MeshInfo> = r.meshes.iter().filter(|m| m.family == "real").collect();
     if real.is_empty() {
         return;
@@ -60,4 +61,24 @@ pub(crate) fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
         h.push_str("</tr>");
     }
     h.push_str("</table>");
+}
+
+/// The real meshes of `bench-data/cache/` (repaired where the structures refuse them).
+pub struct RealMeshes;
+
+impl Section for RealMeshes {
+    fn name(&self) -> &'static str {
+        "real-meshes"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            real: Real::Measured,
+            ..Needs::NOTHING
+        }
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        real_meshes(h, page.r, &page.names);
+    }
 }

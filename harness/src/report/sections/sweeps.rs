@@ -4,11 +4,12 @@
 use crate::kernels::Kernel;
 use crate::report::cells::{largest, limit_text, times_limit};
 use crate::report::format::{esc, ns};
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::Operator;
 
-pub(crate) fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
+fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
@@ -64,4 +65,21 @@ pub(crate) fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
         }
     }
     h.push_str("</tr></table>");
+}
+
+/// Every sweep against its limit.
+pub struct Sweeps;
+
+impl Section for Sweeps {
+    fn name(&self) -> &'static str {
+        "sweeps"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Full)
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        sweeps(h, page.r, &page.names);
+    }
 }

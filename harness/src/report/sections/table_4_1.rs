@@ -2,13 +2,15 @@
 //! and the time at the largest size, with libigl's functions beside them.
 
 use crate::kernels::Kernel;
+use crate::phases::Phase;
 use crate::report::cells::{cells, family_of, table_kernel};
 use crate::report::format::ns;
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::Operator;
 
-pub(crate) fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
+fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure; the C++ baselines answer them, like every kernel of theirs, in one loop in C++, the queries handed over in the library's own handles before the clock starts).</div>");
     h.push_str("<table><tr><th class=l>operator</th>");
     for n in names {
@@ -114,4 +116,27 @@ pub(crate) fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
         h.push_str("</tr>");
     }
     h.push_str("</table>");
+}
+
+/// The measured Table 4.1 of the CHE thesis chapter (declared cost, fitted exponent, time),
+/// and the reads per query counted.
+pub struct Table41;
+
+impl Section for Table41 {
+    fn name(&self) -> &'static str {
+        "table-4-1"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Full)
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("reads", "reads per query (Table 4.1)"))
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        table_4_1(h, page.r, &page.names);
+        crate::reads::section::table(h, page.r);
+    }
 }

@@ -1,8 +1,10 @@
 //! "Targets": every target measured in turns on the largest torus of the run, its ratio
 //! beside its goal, with the same ratio one after another and, for a missed one, why.
 
+use crate::phases::Phase;
 use crate::report::cells::largest;
 use crate::report::format::{against_goal, class_of, esc};
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Status};
 use crate::targets::measured::measured;
 use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, ROUNDS, TARGETS};
@@ -12,7 +14,7 @@ use crate::targets::text::{
 use std::fmt::Write;
 
 /// The Targets section: every target measured in turns, on the largest torus of the run.
-pub fn render(h: &mut String, r: &Results) {
+fn render(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
@@ -122,4 +124,26 @@ pub fn render(h: &mut String, r: &Results) {
         h,
         "</table><p class=small>The rounds of this table took {seconds:.1} s. Warm builds reuse the memory the build before them freed (see Construction time for cold builds and page faults). Limits: see Sweeps and their limits. Bytes per triangle, measured: see Memory per triangle.</p>"
     );
+}
+
+/// The project's performance targets on the largest torus, last: the project's own
+/// bookkeeping, after what a reader came for.
+pub struct Targets;
+
+impl Section for Targets {
+    fn name(&self) -> &'static str {
+        "targets"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Full)
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("targets", "Targets turns"))
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        render(h, page.r);
+    }
 }

@@ -4,6 +4,7 @@
 
 use crate::kernels::Kernel;
 use crate::report::format::ns;
+use crate::report::section::{Needs, Page, Refined, Section};
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
@@ -33,7 +34,7 @@ fn find<'a>(
 }
 
 /// The section: one table per refined mesh; nothing when there is none.
-pub fn section(h: &mut String, r: &Results, names: &[&str]) {
+fn section(h: &mut String, r: &Results, names: &[&str]) {
     let refined: Vec<&MeshInfo> = r.meshes.iter().filter(|m| m.family == FAMILY).collect();
     if refined.is_empty() {
         return;
@@ -107,5 +108,25 @@ pub fn section(h: &mut String, r: &Results, names: &[&str]) {
             h.push_str("</tr>");
         }
         h.push_str("</table>");
+    }
+}
+
+/// Real meshes refined to 1M triangles and more (family [`FAMILY`]), measured like the tori.
+pub struct RealAtScale;
+
+impl Section for RealAtScale {
+    fn name(&self) -> &'static str {
+        "real-at-scale"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            refined: Refined::Measured,
+            ..Needs::NOTHING
+        }
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        section(h, page.r, &page.names);
     }
 }
