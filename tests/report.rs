@@ -164,7 +164,53 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
     assert!(html.contains("<h2>Choosing a structure</h2>"));
     // The chooser is at the top: before the machine and every measured section.
     assert!(html.find("Choosing a structure") < html.find("<h2>Machine</h2>"));
+    findings_are_written_from_the_results(&out, ms);
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// FINDINGS.md lists every structure on the largest torus with its R00 sweep as results.json
+/// has it, sorted fastest first.
+fn findings_are_written_from_the_results(out: &Path, ms: &[serde_json::Value]) {
+    let md = std::fs::read_to_string(out.join("FINDINGS.md")).expect("FINDINGS.md is written");
+    assert!(md.starts_with("# Findings of this run"), "{md}");
+    let mut sweeps: Vec<(&str, f64)> = ms
+        .iter()
+        .filter(|m| {
+            m["operator"] == "r00"
+                && m["kernel"] == "sweep"
+                && m["mesh"] == "torus-800"
+                && m["status"] == "measured"
+        })
+        .map(|m| {
+            (
+                m["structure"].as_str().unwrap(),
+                m["ns_per_item"].as_f64().unwrap(),
+            )
+        })
+        .collect();
+    assert!(sweeps.len() >= registry::NAMES.len() / 2, "{sweeps:?}");
+    let mut rows = Vec::new();
+    for (s, ns) in sweeps {
+        let shown = if ns >= 100.0 {
+            format!("{ns:.0}")
+        } else {
+            format!("{ns:.1}")
+        };
+        let at = md
+            .find(&format!("| {s} |"))
+            .unwrap_or_else(|| panic!("{s} is not listed in\n{md}"));
+        let line = md[at..].lines().next().unwrap();
+        assert!(
+            line.contains(&format!("| {shown} |")),
+            "{s}: {shown} not in {line}"
+        );
+        rows.push((at, ns));
+    }
+    for (a, x) in &rows {
+        for (b, y) in &rows {
+            assert!(x >= y || a < b, "a faster sweep is listed later:\n{md}");
+        }
+    }
 }
 
 /// Every log-log plot of the page has a data area and a legend, and they do not overlap; the

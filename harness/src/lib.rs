@@ -15,6 +15,7 @@ pub mod changing;
 pub mod checksum;
 pub mod compare;
 pub mod decimate;
+pub mod findings;
 pub mod fit;
 pub mod html;
 pub mod hull;

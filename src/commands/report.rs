@@ -203,7 +203,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         .filter(|f| ["torus", "grid"].contains(f))
         .collect();
     crate::limits::admit_report(&sizes, &generated, &names, probe_mb)?;
-    crate::output::check_folder(&args.out, &["results.json", "index.html"])?;
+    crate::output::check_folder(&args.out, &["results.json", "index.html", "FINDINGS.md"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let mut clock = super::report_timing::Clock::start();
     let probe = probe::measure(probe_mb, probe_mb);
@@ -748,7 +748,7 @@ fn libigl(
     (rows, version)
 }
 
-/// Writes `results.json` and `index.html`, with the sections' times of `clock` and the time of
+/// Writes `results.json`, `index.html` and `FINDINGS.md`, with the sections' times of `clock` and the time of
 /// rendering the page itself (its row is put into the rendered page's table afterwards).
 fn write(
     out: &Path,
@@ -772,6 +772,10 @@ fn write(
     let json = serde_json::to_string_pretty(results).expect("serialisable");
     crate::output::write_file(&out.join("results.json"), |w| w.write_all(json.as_bytes()))?;
     crate::output::write_file(&out.join("index.html"), |w| w.write_all(page.as_bytes()))?;
+    let findings = topolab_harness::findings::markdown(results);
+    crate::output::write_file(&out.join("FINDINGS.md"), |w| {
+        w.write_all(findings.as_bytes())
+    })?;
     Ok(())
 }
 

@@ -1,10 +1,11 @@
 //! Vertex and face orderings: the same mesh with its elements numbered differently.
 //!
-//! Element order changes traversal cost by an order of magnitude: a vertex-vertex sweep reads
-//! the neighbours of each vertex in turn, and when neighbours have nearby numbers their data
-//! shares cache lines. OpenMesh's sweep costs 12 ns per vertex on an ordered torus and about
-//! 125 ns on a Loop-subdivided bunny whose new vertices were appended (see `refine`). The
-//! benchmarks run each structure on each ordering to show it.
+//! Element order changes traversal cost many times over: a vertex-vertex sweep reads the
+//! neighbours of each vertex in turn, and when neighbours have nearby numbers their data
+//! shares cache lines. A Loop-subdivided mesh whose new vertices were appended (see `refine`)
+//! scatters them, and OpenMesh's sweep of it is far slower per vertex than its sweep of an
+//! ordered torus (the report's "Real meshes at scale" section sets the two side by side). The
+//! report's "Element order" section runs the 1-ring sweep under each ordering to show it.
 //!
 //! | ordering | vertex order |
 //! |---|---|

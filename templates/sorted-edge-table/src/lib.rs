@@ -1,7 +1,7 @@
 //! # Sorted edge table
 //!
 //! A structure that lives outside the lab and is benchmarked by it: the worked example of the
-//! README's section "Benchmark your own structure". It implements
+//! lab's guide "Benchmark your own structure" (`docs/extend.md`). It implements
 //! [`MeshTopology`] and nothing else of the lab; its tests run the lab's conformance suite
 //! (`tests/conformance.rs`), its binary the lab's report with it added (`src/bin/report.rs`),
 //! its bench the lab's criterion groups (`benches/operators.rs`).

@@ -114,8 +114,8 @@ pub fn prepare(points: &[DVec3]) -> Result<Prepared> {
 /// input order, so every algorithm sees the same sequence. One pass with a hash table of
 /// indices (open addressing, at most half full): O(n) expected, reading the points in order;
 /// sorting by position instead took n log n comparisons, each reading two points at random
-/// (a third of a randomized hull's time at 1M points). Equal positions are equal as numbers,
-/// so −0.0 and 0.0 are one position and hash alike.
+/// (a large share of a randomized hull's time on 1M points). Equal positions are equal as
+/// numbers, so −0.0 and 0.0 are one position and hash alike.
 fn first_occurrences(points: &[DVec3]) -> Vec<u32> {
     let slots = (2 * points.len()).next_power_of_two().max(16);
     let mask = slots - 1;

@@ -7,12 +7,12 @@
 //! the corner closes it; not found, it opens a new edge. Edges come out numbered by first
 //! appearance with no renumbering, since an edge is opened by its smallest corner. O(c·k) for
 //! c corners and buckets of at most k entries (a vertex's valence), against the sort's
-//! O(c log c) and its 16 bytes per corner. On the 1M-triangle torus the constructions built
-//! from [`Connectivity`] went, in ns per face (warm builds; `topolab report --sections
-//! construction --sizes 1000000 --meshes torus`, before and after, together with the fan walk
-//! of [`Connectivity::every_vertex_one_fan`]): vertex list 174 → 31, edge list 194 → 39,
-//! winged-edge 206 → 61, index half-edge 218 → 60, explicit 250 → 96, pointer half-edge
-//! 375 → 245 (OpenMesh's `add_face` build, 69–73, in both runs).
+//! O(c log c) and its 16 bytes per corner. Together with the fan walk of
+//! [`Connectivity::every_vertex_one_fan`], it made every construction built from
+//! [`Connectivity`] faster (vertex list, edge list, winged-edge, index and pointer half-edge,
+//! explicit), measured as warm builds on the 1M-triangle torus with OpenMesh's `add_face`
+//! build beside them; `topolab report --sections construction --sizes 1000000 --meshes torus`
+//! measures them again.
 //!
 //! At the first edge it cannot store (a third corner, or two corners the same way) it gives
 //! up, and the sorting analysis names the problem as it always has. It gives up too when its
@@ -27,7 +27,7 @@ const NONE: u32 = u32::MAX;
 /// How many steps along their buckets a pass over `items` corners or half-edges may take
 /// before it gives up for a method that does not care about valences. A bucket holds the
 /// edges from its vertex to larger ones, so a vertex of valence k costs about k²/2 steps:
-/// 0.83–1.0 per corner measured on the generated tori (100k and 1M triangles), a 200 × 200
+/// 0.83–1.0 per corner counted on the generated tori (100k and 1M triangles), a 200 × 200
 /// grid and a UV sphere whose poles have valence 200; 5·10¹¹ on a fan of a million triangles
 /// around one vertex.
 pub(crate) const fn bucket_step_budget(items: usize) -> usize {

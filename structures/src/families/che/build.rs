@@ -3,54 +3,51 @@
 //!
 //! ## Where the fast construction's time goes
 //!
-//! Level 1's fast build ([`build_fast`]) is five passes. Measured pass by pass on the
-//! 1M-triangle torus, warm builds, median of 9 rounds in turns with OpenMesh's `add_face`
-//! build (`cargo run --release --example build_sweep -- 1000000 torus 9 all passes`, 2-core
-//! VM at load 1, 2026-12-01; OpenMesh's build compiled here at -O3 without its assertions, as
-//! the lab's OpenMesh is), in ns per face:
+//! Level 1's fast build ([`build_fast`]) is five passes:
 //!
-//! | pass | ns/face |
-//! |---|---|
-//! | copy `G[]`, check it finite | 1.2 + 0.6 |
-//! | copy `V[]` | 1.1 |
-//! | pair `O[]` ([`opposites_by_buckets`]) | 10.4 |
-//! | `VH[]` (Algorithm 3, [`vertex_half_edges_algorithm_3`]) | 2.0 |
-//! | one-fan walk ([`every_vertex_one_fan`]) | 3.2 |
-//! | whole build (OpenMesh: 72.9) | 18.9 |
+//! 1. copy `G[]` and check that it is finite;
+//! 2. copy `V[]`;
+//! 3. pair `O[]` ([`opposites_by_buckets`]);
+//! 4. `VH[]` (Algorithm 3, [`vertex_half_edges_algorithm_3`]);
+//! 5. the one-fan walk ([`every_vertex_one_fan`]).
+//!
+//! `cargo run --release --example build_sweep -- 1000000 torus 9 all passes` times them pass
+//! by pass, each in turns with the whole build and OpenMesh's `add_face` build (OpenMesh
+//! compiled from its pinned source at -O3 without its assertions, as the lab builds it). The
+//! pairing is the largest of the five.
 //!
 //! The pairing waits on its bucket walk: each step loads the node of the half-edge that
 //! joined the bucket before, and the twin of an edge between two strips of the torus arrives
-//! a whole strip later, its node tens of KB back, out of L1. Measured against it in one process, each returning the same `O[]`, none was faster
-//! (ns/face of the pairing alone, same run, the bucket walk at 11–16 under the run's load):
+//! a whole strip later, its node tens of KB back, out of L1. Measured against it in one
+//! process, each returning the same `O[]`, none of these was faster:
 //!
 //! - a counting sort of the half-edges into buckets keyed by the smaller vertex (count,
 //!   prefix sum, scatter `larger << 32 | he` as `u64`, then an insertion sort and a scan of
-//!   each bucket, about 6 entries): 18–22. Its scatter alone costs 4 (a read-modify-write of
-//!   each bucket's cursor), and sorting the buckets more than the walk saves;
+//!   each bucket, about 6 entries): its scatter (a read-modify-write of each bucket's cursor)
+//!   and sorting the buckets cost more than the walk saves;
 //! - buckets keyed by the origin, that is, each vertex's star, matched inside the star (a
 //!   half-edge's twin leaving the vertex is the one whose destination is the origin of the
 //!   triangle's previous half-edge), which gives `O[]`, `VH[]` and the one-fan check in one
-//!   pass over the stars: 24–28 for all three against 18–19 for the three passes here, even
-//!   with the matches compared four lanes at a time;
+//!   pass over the stars: slower than the three passes here, even with the matches compared
+//!   four lanes at a time;
 //! - the bucket as split `u32` arrays (key and link), or with the key read back from `V[]`
-//!   to halve the scratch: 18–22;
-//! - seven fixed slots per vertex (one cache line) with an overflow list: within the noise
-//!   of the bucket walk (10–16), for 32 more bytes per face to clear first;
+//!   to halve the scratch: slower;
+//! - seven fixed slots per vertex (one cache line) with an overflow list: no faster than the
+//!   bucket walk, for 32 more bytes per face to clear first;
 //! - `VH[]` kept inside the pairing loop (the first half-edge leaving each vertex, then the
 //!   boundary ones from `O[]`): slower, the added branch costs more than Algorithm 3's pass.
 //!
-//! So the construction target (0.1× OpenMesh, 7.3 ns/face in that run) is not met: the
-//! pairing alone is 0.14×, and the copies and checks every level needs add 0.11×. Cold builds
-//! (memory returned to the kernel before each build) add about 28 ns/face here: 15.6k
-//! first-touch page faults per build (64 MB: `G[]`, `V[]`, `O[]` 12 bytes per face each, the
-//! pairing's nodes 24, `head` and `VH[]` 2 each), about 1.8 µs each on this VM; OpenMesh
-//! takes 16.1k. Halving the nodes would save about a fifth of that, but every `u32` layout
-//! measured made the warm pairing slower.
+//! The developers' guide's construction target asks level 1 for at most 0.3× the time of
+//! OpenMesh's `add_face` build; the report's Targets section measures it in turns and shows
+//! whether a run meets it, and the `passes` form above sets each pass beside OpenMesh's build.
 //!
-//! Against Debian's OpenMesh, with its compiled-in assertions (170–260 ns/face in the lab's
-//! first measurements), the same passes came to 0.13× OpenMesh. Compiled without them,
-//! OpenMesh's build takes 2.3 to 3.6 times less, and the target now asks for less than the
-//! pairing alone costs.
+//! Cold builds (memory returned to the kernel before each build) add a first-touch page
+//! fault for every page the build writes: 64 bytes per face (`G[]`, `V[]` and `O[]` 12 bytes
+//! per face each, the pairing's nodes 24, `head` and `VH[]` 2 each), about as many pages as
+//! OpenMesh's build touches. `build_sweep` with `cold` prints the faults per build beside the
+//! times, and the report's Construction section times both warm and cold builds. Halving the
+//! nodes would save about a fifth of those pages, but every `u32` layout measured made the
+//! warm pairing slower.
 
 use super::{fan_walk_algorithm_7, next, next_boundary_half_edge, opposite_of};
 use crate::core::error::{Error, Result};

@@ -18,11 +18,10 @@
 //! So the reads of `O[]` and `V[]` need no bounds check. Reads of `G[]` (positions) stay
 //! checked.
 //!
-//! Measured with callgrind on the harness's kernels over a 100k-triangle torus, dropping
-//! the bounds checks took che-l2's R00 sweep from 139 to 123 instructions per vertex and
-//! the smoothing workload from 183 to 148. See "Speed" in the [module docs](super) for the
-//! time this gained and for what the other structures were offered (the trait's fairness
-//! rule).
+//! Counted with callgrind on the harness's kernels over a torus, dropping the bounds checks
+//! lowered the instructions per vertex of che-l2's R00 sweep and of the smoothing workload.
+//! See "Speed" in the [module docs](super) for how the time this gained was measured and for
+//! what the other structures were offered (the trait's fairness rule).
 
 #![allow(unsafe_code)]
 

@@ -1,9 +1,9 @@
 //! # Compact Half-Edge (CHE), levels 0–3
 //!
-//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see Sources in the README): a
-//! triangle mesh stored as integer arrays, in four levels that each add containers and answer the
-//! relations with that level's algorithm, so the lab can measure the chapter's Table 4.1 cell by
-//! cell.
+//! The CHE thesis chapter (chapter 4, "A Estrutura de Dados CHE"; see "The sources" in
+//! `docs/structures.md`): a triangle mesh stored as integer arrays, in four levels that each add
+//! containers and answer the relations with that level's algorithm, so the lab can measure the
+//! chapter's Table 4.1 cell by cell.
 //!
 //! Vertices, half-edges and triangles are non-negative integers. Triangle `t` owns the
 //! half-edges `3t, 3t+1, 3t+2`; half-edge `he` belongs to triangle `he / 3`, and
@@ -86,93 +86,79 @@
 //! R00, R01 and R02 answer sets, so levels 2 and 3 answer them by the fastest walk of the same
 //! star rather than in Algorithm 7's order; [`CheLevel::vertex_star`] (and with it
 //! `topolab explain che --trace`) keeps Algorithm 7 as the chapter writes it. Five things
-//! made the walk slow, measured with instruction counts (callgrind; this machine has no
-//! hardware counters) on the harness's R00 sweep of a 100k-triangle torus:
+//! made the walk slow. They were found by counting instructions with callgrind on the
+//! harness's R00 sweep of a torus (the `fan_sweep` example's docs give the command, which
+//! counts the timed kernel only), and each change below lowered that count:
 //!
 //! - **`% 3` on the walk's chain.** The walk's dependency chain is `h → prev(h) → O[prev(h)]
 //!   → h`. With `next` written `he % 3 == 2` and `prev` `he % 3 == 0` in one loop, the
 //!   compiler computed one full remainder for both before every `O[]` load. [`next`] and
 //!   [`prev`] now test divisibility (`(he + 1).is_multiple_of(3)`, the same definition),
-//!   a multiply and a compare: 251 → 203 instructions per vertex.
+//!   a multiply and a compare.
 //! - **Calls.** The relations the `che_topology!` macro writes were not `#[inline]`: the
 //!   harness called R00 out of line and the smoothing workload reached the boundary test
 //!   through the GOT. They are `#[inline]` now, as the fairness rule of
-//!   [`MeshTopology`](crate::MeshTopology) asks of every structure; with that, 182.
+//!   [`MeshTopology`](crate::MeshTopology) asks of every structure.
 //! - **One chain.** The walk (`Fan::spokes`) covers an interior star from both ends at once,
 //!   forward `h ← O[prev(h)]` and backward `g ← next(O[g])`, until the two meet: two
 //!   independent chains, each half as long. Each neighbour is read as `V[e]` of the half-edge
 //!   `e` that enters the vertex, at the index where the walk reads `O[e]`, instead of
-//!   `V[next(h)]` after it: 139. A boundary star is walked forward only: its `VH[v]` is one
-//!   end, and the other is not stored.
+//!   `V[next(h)]` after it. A boundary star is walked forward only: its `VH[v]` is one end,
+//!   and the other is not stored.
 //! - **Bounds checks.** Levels 2 and 3 never change `V[]`, `O[]` and `VH[]` after they are
 //!   built, except that level 3 writes negative curve labels into `O[]`. So the walk reads
 //!   `V[]` and `O[]` without bounds checks. This is safe because every id the arrays hold is
 //!   checked to be in range once: when the mesh is built, after level 3's relabelling, and
 //!   in `validate()`. The unchecked reads are in one small module (`fan.rs`), which says why
-//!   each index is in range: 139 → 123 instructions per vertex, and 183 → 148 for the
-//!   smoothing workload. Smoothing also gained because the compiler now shares the
-//!   boundary test's `VH[v]` and `O[VH[v]]` reads with the walk that follows it. Each end
-//!   of the walk then tracked the next spoke it reports (a half-edge entering the vertex),
-//!   which needs one state variable fewer: 120, smoothing 147, but
-//!   no faster in the timings below (R00 1.47–1.50× → 1.49–1.52× the index half-edge).
+//!   each index is in range. The smoothing workload gained too, because the compiler now
+//!   shares the boundary test's `VH[v]` and `O[VH[v]]` reads with the walk that follows it.
+//!   Each end of the walk then tracked the next spoke it reports (a half-edge entering the
+//!   vertex), which needs one state variable fewer and a few instructions fewer, but timed
+//!   no faster.
 //! - **`prev` as a choice of two candidates.** Written "`he + 2` if 3 divides `he`, else
 //!   `he - 1`", [`prev`] compiled to `he + (test ? 2 : -1)`: after the multiply and the
 //!   compare, an add-with-carry and an `or` made the `-1` or `2`, then an add, all before the
-//!   forward walk's next `O[]` load (7 cycles of arithmetic on that chain, against 6 for
-//!   [`next`], which the compiler already wrote as a conditional move). Written as a choice
-//!   between the candidates `he + 2` and `he - 1` (the same definition), both candidates are
-//!   computed beside the multiply and a conditional move picks one: multiply, compare, move,
-//!   load. 119 → 115 instructions per vertex on the sweep of the 100k-triangle torus (this
-//!   time measured with `valgrind --tool=callgrind --toggle-collect='topolab_harness::kernels::run*'`
-//!   on `fan_sweep 100000 torus 1 che-l2 r00`; the index half-edge: 98). Timed on the
-//!   1M-triangle torus in thread CPU time by a copy of both walks outside the crate (the
-//!   same arrays, the same checksum, the variants and the index half-edge taking turns, 15
-//!   to 21 rounds, at load 7–13 on 2 cores), the conditional move took R00 from 1.15–1.22×
-//!   the index half-edge's time to 1.10–1.15× (the medians of four runs; in one of them the
-//!   same move written in inline assembly gave 1.20 against 1.20, the Rust form 1.14). The
-//!   Targets turns of the report
-//!   (`topolab report --sizes 1000000 --meshes torus --structures che-l2,index-half-edge,openmesh --sections targets`,
-//!   the binaries before and after taking turns, load 12–13) did not resolve it: che-l2 ÷
-//!   index half-edge 1.23–1.46 before and 1.35–1.43 after, che-l2 ÷ OpenMesh 0.64–0.66 before
-//!   and 0.65–0.68 after (medians of three runs before, two after); at that load one run's
-//!   rounds spread over ±15%.
+//!   forward walk's next `O[]` load: one cycle more on that chain than [`next`], which the
+//!   compiler already wrote as a conditional move. Written as a choice between the
+//!   candidates `he + 2` and `he - 1` (the same definition), both candidates are computed
+//!   beside the multiply and a conditional move picks one: multiply, compare, move, load.
+//!   Timed in thread CPU time by a copy of both walks outside the crate (the same arrays and
+//!   checksum, the variants and the index half-edge taking turns on the 1M-triangle torus),
+//!   the conditional move lowered R00's ratio to the index half-edge; the same move written
+//!   in inline assembly was no faster than the Rust form. The report's Targets turns, run
+//!   with the binaries before and after on a busy machine, could not tell the two apart: the
+//!   rounds of one run spread wider than the change.
 //!
 //! What is left is the chain, and it is the CHE's design: each step computes `prev` or
-//! `next` (a multiply, a compare and a conditional move, about five instructions) before its
-//! load, where the half-edge's `twin` is `h ^ 1`, one instruction. Per spoke, that is 5 to 6
-//! cycles of arithmetic before the load on the CHE's chains against 1 on the index half-edge's,
-//! which the CHE's two chains (each half as long) only make up for in part. These variants
-//! were measured on that same sweep and not kept:
+//! `next` (a multiply, a compare and a conditional move) before its load, where the
+//! half-edge's `twin` is `h ^ 1`, one instruction. Per spoke, the CHE's chains do several
+//! dependent instructions of arithmetic before the load against one on the index
+//! half-edge's, which the CHE's two chains (each half as long) only make up for in part.
+//! These variants were measured on that same sweep (instructions counted, most of them timed
+//! in turns too) and not kept:
 //!
-//! | variant | instructions per vertex |
+//! | variant | why it was not kept |
 //! |---|---|
-//! | one end only, with a boundary check first | fewer, 112, but 1.5–2× the time: one chain |
-//! | one end only, two steps unrolled | 112, same time as one end |
-//! | `prev` as arithmetic, `h - 1 + 3·[3 divides h]` | 118–126 |
-//! | `prev` as a select the compiler cannot turn into a branch | 115, no faster (timed in wall time at load 16–17; the two-candidate `prev` above, the same 115, is kept) |
-//! | a software prefetch of `O[VH[v + 8]]`, offered to the index half-edge too (`next[VH[v + 8] ^ 1]`) | in the copy outside the crate, one run: 1.25× against 1.22× for the CHE, 0.98× its own time for the index half-edge (within the run's spread); the sweep reads two forward streams, which the hardware prefetcher already follows |
-//! | both candidate `O[]` entries of `prev` loaded, then one selected | 158–192; in the copy outside the crate (both chains, candidates clamped to the array), 1.34× the index half-edge's time against 1.22× |
-//! | both ends, each tracking the half-edge that enters | 114, no faster |
+//! | one end only, with a boundary check first | fewer instructions, but slower: one chain, twice as long |
+//! | one end only, two steps unrolled | fewer instructions, but no faster than one end |
+//! | `prev` as arithmetic, `h - 1 + 3·[3 divides h]` | more instructions than the two-candidate `prev` |
+//! | `prev` as a select the compiler cannot turn into a branch | as many instructions as the two-candidate `prev`, which is kept, and no faster |
+//! | a software prefetch of `O[VH[v + 8]]`, offered to the index half-edge too (`next[VH[v + 8] ^ 1]`) | no faster for either, within the spread of the rounds: the sweep reads two forward streams, which the hardware prefetcher already follows |
+//! | both candidate `O[]` entries of `prev` loaded, then one selected | more instructions, and slower in the copy outside the crate (both chains, candidates clamped to the array) |
+//! | both ends, each tracking the half-edge that enters | about the same instructions, no faster |
 //!
-//! On the 1M-triangle torus, in one process with the structures taking turns on a shared
-//! machine (`cargo run --release --example fan_sweep`), the two-ended walk took R00 from 2.7×
-//! the index half-edge's time to 1.3×, and smoothing from 2.4× to 1.3×. The unchecked reads
-//! were timed on the 100k-triangle torus: `fan_sweep 100000 torus 201`, before and after, two
-//! runs each, taking turns, at load 16–17 on 2 cores. Load that high made the 1M-triangle
-//! ratios swing from 1.2× to 2.3× within one binary.
-//!
-//! | che-l2 ÷ | R00, median | R00, fastest | smoothing, median | smoothing, fastest |
-//! |---|---|---|---|---|
-//! | index half-edge, before | 1.69, 1.54 | 1.54, 1.54 | 1.22, 1.20 | 1.14, 1.20 |
-//! | index half-edge, after | 1.43, 1.46 | 1.42, 1.44 | 1.11, 1.09 | 1.08, 1.06 |
-//! | OpenMesh, before | 0.74, 0.75 | 0.76, 0.75 | 0.53, 0.55 | 0.51, 0.54 |
-//! | OpenMesh, after | 0.69, 0.70 | 0.72, 0.72 | 0.51, 0.52 | 0.49, 0.50 |
-//!
-//! (These "after" rows were measured at 123 instructions, before the last change.)
-//! R00 stays about 1.4× the index half-edge's time at this size, and the instruction
-//! counts show why: 120 against 91 per vertex (115 against 98 when counted again for the
-//! two-candidate `prev`). About 30 of the difference is `prev` and `next` at each of a
-//! vertex's six steps.
+//! The two-ended walk and the unchecked reads were timed with the structures taking turns in
+//! one process (`cargo run --release --example fan_sweep`, whose docs give its arguments):
+//! the two-ended walk made R00 and smoothing faster against the index half-edge on the
+//! 1M-triangle torus. The unchecked reads were timed on the 100k-triangle torus
+//! (`fan_sweep 100000 torus 201`), because on a busy machine the 1M-triangle ratios swung
+//! more within one binary than the change could move them; they made R00 and smoothing
+//! faster against both the index half-edge and OpenMesh. The instruction counts show why the
+//! CHE's walk cannot match the index half-edge's step for step: it takes more instructions per
+//! vertex, and most of the difference is `prev` and `next` at each of a vertex's steps. The
+//! developers' guide sets the goals (R00 at most 1.35× and smoothing at most 1.2× the index
+//! half-edge's time); the report's Targets section measures both in turns and shows whether a
+//! run meets them.
 
 mod access;
 mod build;
@@ -203,8 +189,8 @@ use topology::che_topology;
 ///
 /// `(he + 1) % 3 == 0` is asked as divisibility (`is_multiple_of`), which compiles to a
 /// multiply and a compare; written `he % 3 == 2` beside [`prev`]'s test in one loop, the
-/// compiler computes one full remainder for both, about 11 instructions in front of every
-/// `O[]` load of a fan walk (see "Speed" in the module docs).
+/// compiler computes one full remainder for both in front of every `O[]` load of a fan walk
+/// (see "Speed" in the module docs).
 #[inline(always)]
 pub const fn next(he: HalfEdgeId) -> HalfEdgeId {
     HalfEdgeId(if (he.0 + 1).is_multiple_of(3) {

@@ -36,32 +36,28 @@
 //! The lab's fairness rule (the docs of [`MeshTopology`](crate::MeshTopology)) offers every
 //! structure that walks fans the walk from both ends at once, which made the CHE and the
 //! winged-edge faster. Here the backward rotation `twin(prev(g))` was measured beside the
-//! forward one and did not pay, so both storages rotate one way, the lecture's loop.
-//! Instruction counts (callgrind, the harness's R00 sweep of a 100k-triangle torus) and the
-//! R00 time as a multiple of OpenMesh's in the same process (1M-triangle torus, median of 5
-//! runs of 9 interleaved rounds on a shared machine, `cargo run --release --example
-//! fan_sweep`), one way → both ways:
+//! forward one and did not pay, so both storages rotate one way, the lecture's loop. It was
+//! measured by instruction counts (callgrind on the harness's R00 sweep, the command in the
+//! `fan_sweep` example's docs) and by R00 timed in turns with OpenMesh in one process
+//! (`cargo run --release --example fan_sweep`):
 //!
-//! - index: 91 → 114 instructions per vertex, 0.49 → 0.66× OpenMesh. A step is one load
-//!   and an `xor`, so the rotation is bound by its instructions more than by its chain, and
-//!   the second chain only adds instructions.
-//! - pointer: 86 → 129 instructions per vertex, 3.41 → 3.41× OpenMesh (R01 2.76 → 3.28×,
-//!   smoothing 2.51 → 2.52×). Without a stored `prev`, each backward step walks the face
-//!   (`next` twice) before its `pair`, and the time goes to cache misses on records spread
-//!   over the heap rather than to one chain's latency.
+//! - index: the second end added instructions and time. A step is one load and an `xor`, so
+//!   the rotation is bound by its instructions more than by its chain, and the second chain
+//!   only adds instructions.
+//! - pointer: the second end added instructions and saved no time, in R00, R01 or smoothing.
+//!   Without a stored `prev`, each backward step walks the face (`next` twice) before its
+//!   `pair`, and the time goes to cache misses on records spread over the heap rather than to
+//!   one chain's latency.
 //!
 //! The CHE's vertex star reads its arrays without bounds checks, because its ranges are
 //! checked once when it is built (the fairness rule's "Bounds checks"). The same was offered
 //! to the index half-edge. A copy of its rotation over its `vertex`, `next` and `face` arrays,
-//! with unchecked reads, was timed against the same copy with checked reads. Both were
-//! measured on the harness's R00 sweep and smoothing workload of a 100k-triangle torus, in
-//! one process taking turns, fastest and median of 201 rounds, in two runs at load 17:
+//! with unchecked reads, was timed against the same copy with checked reads, on the harness's
+//! R00 sweep and smoothing workload of a 100k-triangle torus, in one process taking turns:
 //!
-//! - R00: 91 → 78 instructions per vertex, but the same time (5.87 → 5.91 and 5.84 →
-//!   5.84 ns fastest, 6.40 → 6.38 and 6.64 → 6.59 median). The walk is one chain of
-//!   `next` loads, not bound by its instructions.
-//! - Smoothing: 128 → 114 instructions per vertex, 2–6% faster (10.07 → 9.88 and
-//!   8.19 → 7.72 ns fastest, 11.42 → 10.97 and 12.40 → 12.11 median).
+//! - R00: fewer instructions per vertex, but the same time. The walk is one chain of `next`
+//!   loads, not bound by its instructions.
+//! - Smoothing: fewer instructions per vertex, and only slightly faster.
 //!
 //! It is not kept. Both storages are edited in place (`MeshEdit`), so a range checked when
 //! the mesh is built would not stay true. Keeping it true would mean checking every link
@@ -72,17 +68,17 @@
 //! Edges keep the soup's first-appearance order ([`crate::Connectivity`]); the build does not
 //! renumber them around vertices. A vertex's fan then lies in two runs of edges, those its
 //! faces' row created and those the row before created, and a sweep over the vertices in
-//! order reads both runs as streams. Measured with callgrind's cache simulation (64-byte
-//! lines), R00 over every vertex of a 100k-triangle torus: the index storage misses L1
-//! 0.814 times per vertex, which is its 52 bytes per vertex (`vertex_half_edge`, then
-//! `vertex` and `next` of six half-edges) divided by 64: every line is fetched once. On the
-//! 1M-triangle torus (a last-level cache of 32 MB simulated) it misses L1 1.56 times per
-//! vertex, as the two runs lie a row of edges apart, more than L1 holds, but the last level
-//! 0.81 times: every line still comes from memory once, and the Targets table finds the
-//! sweep at its bandwidth limit. A numbering that put each fan in fewer lines could not fetch
-//! fewer lines from memory; it would cost construction time. OpenMesh's sweep misses 1.59 times per vertex (102 bytes: its
-//! 16-byte halfedge records, fetched whole for the 8 bytes read of each), so on a mesh
-//! larger than the caches the two stream 52 against about 100 bytes per vertex.
+//! order reads both runs as streams. R00 over every vertex reads 52 bytes per vertex in the
+//! index storage (`vertex_half_edge`, then `vertex` and `next` of six half-edges). Callgrind's
+//! cache simulation (64-byte lines) on a 100k-triangle torus counts about one L1 miss per 64
+//! of those bytes: every line is fetched once. On the 1M-triangle torus it counts more L1
+//! misses, as the two runs lie a row of edges apart, more than L1 holds, but (with a 32 MB
+//! last level simulated) still about one last-level miss per line: every line comes from
+//! memory once. The report's "Sweeps against their limit" section sets the sweep beside what
+//! the machine's bandwidth allows for those bytes. A numbering that put each fan in fewer
+//! lines could not fetch fewer lines from memory; it would cost construction time. OpenMesh's
+//! sweep reads its 16-byte halfedge records whole for the 8 bytes it needs of each, so on a
+//! mesh larger than the caches the two stream 52 against about 100 bytes per vertex.
 
 mod access;
 mod build;

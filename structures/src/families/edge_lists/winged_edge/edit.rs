@@ -10,7 +10,7 @@
 //! lecture's record stores `av(v)` (see the module docs): the edge between two vertices is
 //! found by walking the fan of one from its `av` before anything changes, so a rewrite of k
 //! faces costs O(k), with no index beside the record. (The hull algorithms' index by end
-//! vertices, a hash map, made the edits 20 times slower than the half-edges' on the
+//! vertices, a hash map, made the edits many times slower than the half-edges' on the
 //! 1M-triangle torus, one cache miss per look-up; an edit drops it, and the hull API builds
 //! it again on its next call.)
 //!

@@ -68,12 +68,11 @@
 //! The vertex rotation runs from `av(v)` in both directions at once until the two walks meet
 //! or each reaches a missing face: two independent chains of dependent loads, each half as
 //! long (the lab's fairness rule in the docs of [`MeshTopology`](crate::MeshTopology) offers
-//! that walk to every structure that walks fans). The answers come in no cyclic order. On the
-//! 1M-triangle torus, in one process beside OpenMesh, R00 went from 1.28 to 1.00× OpenMesh's
-//! time and smoothing from 1.51 to 1.21× (medians of 5 runs of 9 interleaved rounds on a
-//! shared machine, `cargo run --release --example fan_sweep`), with about the instructions of
-//! the one-way walk (callgrind, the harness's R00 sweep of a 100k-triangle torus: 206 before,
-//! 214 per vertex after).
+//! that walk to every structure that walks fans). The answers come in no cyclic order. Timed
+//! on the 1M-triangle torus in turns with OpenMesh in one process (`cargo run --release
+//! --example fan_sweep`), the two-ended walk made R00 and smoothing faster than the one-way
+//! walk, with about the same instructions per vertex (callgrind on the harness's R00 sweep,
+//! the command in the `fan_sweep` example's docs).
 //!
 //! ## Non-manifold input
 //!

@@ -690,8 +690,8 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     /// pmp's `remove_edge_helper`. Where neither end was on the boundary, `vh` has no
     /// boundary half-edge afterwards either (it keeps its own half-edges and takes `vo`'s), so
     /// pmp's `adjust_outgoing_halfedge`, a walk around `vh` that would find none, is skipped:
-    /// the result is the same, and on a closed mesh the walk was a fifth of the collapse
-    /// test's instructions (see `remove_loop`).
+    /// the result is the same, and on a closed mesh callgrind counted a large share of the
+    /// collapse test's instructions in the walk (see `remove_loop`).
     fn remove_edge(&mut self, h: u32) {
         let (hn, hp) = (self.nx(h), self.pv(h));
         let o = h ^ 1;

@@ -89,8 +89,8 @@ fn set(flags: &mut Vec<bool>, i: u32) {
 }
 
 /// Makes room for flag `i`, at least doubling: a sweep of deletions marks rising ids, and
-/// growing to just `i + 1` called `resize` for nearly every mark (a tenth of the collapse
-/// test's instructions went to marking).
+/// growing to just `i + 1` called `resize` for nearly every mark (callgrind counted a
+/// sizeable share of the collapse test's instructions in marking).
 #[cold]
 #[inline(never)]
 fn grow(flags: &mut Vec<bool>, i: usize) {
