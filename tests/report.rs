@@ -173,7 +173,7 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
 fn findings_are_written_from_the_results(out: &Path, ms: &[serde_json::Value]) {
     let md = std::fs::read_to_string(out.join("FINDINGS.md")).expect("FINDINGS.md is written");
     assert!(md.starts_with("# Findings of this run"), "{md}");
-    let mut sweeps: Vec<(&str, f64)> = ms
+    let sweeps: Vec<(&str, f64)> = ms
         .iter()
         .filter(|m| {
             m["operator"] == "r00"

@@ -19,7 +19,6 @@ pub mod repair;
 pub mod report;
 pub mod report_changing;
 pub mod report_decimate;
-pub mod report_reads;
 pub mod report_repair;
 pub mod report_scale;
 pub mod report_sections;

@@ -10,20 +10,19 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_harness::kernels::sample_queries;
-use topolab_harness::kernels::Kernel;
 use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::phases::Phase;
+use topolab_harness::report::run::{Listed, MeshFamily, ReportError, Request, Run};
 use topolab_harness::report::section::{Real, Refined};
 use topolab_harness::report::sections::libigl::LIBIGL;
 use topolab_harness::report::selection::Selection;
 use topolab_harness::results::{
-    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Subject, Teaching,
-    FORMAT_VERSION,
+    CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching, FORMAT_VERSION,
 };
 use topolab_harness::{fit, html, machine, probe, svg};
 use topolab_structures::registry::{duplicate_name, names, Structures};
-use topolab_structures::{meshes, Input, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
 
 /// Options of `topolab report`.
 #[derive(clap::Args, Debug, Clone)]
@@ -355,23 +354,44 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     results.fits = fit::fit_all(&results.measurements, &results.structures);
     limit::annotate(&mut results);
     clock.lap(Phase::FITS, None);
-    let mut libigl_version = None;
+    let request = Request {
+        quick,
+        full: args.full,
+        sizes: sizes.clone(),
+        names: names.clone(),
+        structures: args.structures.clone(),
+        added: topolab_structures::registry::names::<X>()
+            .into_iter()
+            .map(str::to_string)
+            .collect(),
+        sections: args.sections.clone(),
+        meshes: families
+            .iter()
+            .map(|f| MeshFamily::from_name(f))
+            .collect::<Result<_, _>>()
+            .map_err(failure)?,
+        out: args.out.clone(),
+        probe_mb,
+        command: results.settings.command.clone(),
+    };
+    let listed = Listed::<(Lab, X)>::new();
+    let mut run = Run {
+        request: &request,
+        cases: &cases,
+        plan: &plan,
+        results: &mut results,
+        structures: &listed,
+        meter: &crate::ALLOCATOR,
+        libigl_version: None,
+    };
     // Each shown section's own measurement, in page order, timed as its phase (after the fits:
     // the Targets hold sweeps to their limits).
     for section in &selection.sections {
         let Some(phase) = section.phase() else {
             continue;
         };
+        let results = &mut *run.results;
         match section.name() {
-            "table-4-1" => {
-                results.reads =
-                    crate::commands::report_reads::count(&names, &sizes, &mut results.notes)
-            }
-            "orderings" => orderings::<X>(&cases, &names, &plan, &mut results)?,
-            "libigl" => {
-                (results.libigl, libigl_version) =
-                    libigl(&cases, &results.measurements, &mut results.notes)
-            }
             "hull" => {
                 results.hull = hull(HullSizes::of(quick, args.full), &mut results.notes)?;
                 results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
@@ -399,10 +419,11 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
                     &mut results.notes,
                 )?
             }
-            other => unreachable!("the section {other} has a phase and no measurement"),
+            _ => section.measure(&mut run).map_err(failure)?,
         }
         clock.lap(phase, None);
     }
+    let libigl_version = run.libigl_version;
     let measured: Vec<&str> = names.iter().map(String::as_str).collect();
     results.baselines = crate::baselines::runs(crate::baselines::Used {
         structures: &measured,
@@ -429,6 +450,19 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cases.len(),
         args.out.join("index.html").display()
     ))
+}
+
+/// The CLI's failure of a report's error: exit 2 for a request that cannot run, 1 for a
+/// measurement that failed, 2 for a report that cannot be written.
+fn failure(e: ReportError) -> Failure {
+    let code = match e {
+        ReportError::Measurement(_) => 1,
+        ReportError::Usage(_) | ReportError::Output(_) => 2,
+    };
+    Failure {
+        message: e.message().to_string(),
+        code,
+    }
 }
 
 fn short(n: usize) -> String {
@@ -567,185 +601,6 @@ fn real_meshes(notes: &mut Vec<String>) -> Vec<(String, PolygonSoup)> {
         }
     }
     out
-}
-
-/// The structures whose vertex 1-ring is compared across element orderings.
-const ORDERING_STRUCTURES: [&str; 7] = [
-    "index-half-edge",
-    "che-l2",
-    "pointer-half-edge",
-    "winged-edge",
-    "openmesh",
-    "cgal-surface-mesh",
-    "cgal-polyhedron",
-];
-
-struct Sweep<'a> {
-    case: &'a MeshCase<'a>,
-    plan: &'a Plan,
-}
-
-impl StructureVisitor for Sweep<'_> {
-    type Output = Result<Measurement, String>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        topolab_harness::measure::measure_sweep::<M>(self.case, Operator::R00, self.plan)
-    }
-}
-
-/// The effect of element order: the largest torus (at most 256k triangles) and the smallest
-/// refined real mesh, each renumbered by each ordering, and the R00 sweep of a few structures
-/// on each (and of every structure of `X`: whoever adds a structure wants to see how it takes
-/// reordering).
-fn orderings<X: Structures>(
-    cases: &[(String, String, PolygonSoup)],
-    names: &[String],
-    plan: &Plan,
-    results: &mut Results,
-) -> Result<(), Failure> {
-    let torus = cases
-        .iter()
-        .filter(|c| c.1 == "torus" && c.2.num_faces() <= 300_000)
-        .max_by_key(|c| c.2.num_faces());
-    let refined = cases
-        .iter()
-        .filter(|c| c.1 == report_scale::FAMILY)
-        .min_by_key(|c| c.2.num_faces());
-    let added = topolab_structures::registry::names::<X>();
-    let structures: Vec<&String> = names
-        .iter()
-        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(&n.as_str()))
-        .collect();
-    for (base, _, soup) in torus.into_iter().chain(refined) {
-        for ordering in topolab_structures::ordering::Ordering::ALL {
-            eprintln!("topolab report: ordering {} of {base}", ordering.name());
-            let re = topolab_structures::ordering::reorder(soup, ordering).soup;
-            let name = format!("{base}/{}", ordering.name());
-            let queries = sample_queries(&re, 1, 0);
-            let case = MeshCase {
-                name: &name,
-                family: "ordering",
-                soup: &re,
-                queries: &queries,
-            };
-            for s in &structures {
-                let m = visit::<X, _>(s, Sweep { case: &case, plan })
-                    .expect("registered")
-                    .map_err(|message| Failure { message, code: 1 })?;
-                results.measurements.push(m);
-            }
-            cross_check(&results.measurements, &name)
-                .map_err(|message| Failure { message, code: 1 })?;
-        }
-    }
-    Ok(())
-}
-
-/// libigl's reference timings on the tori, when `.venv/bin/python` with libigl exists: the
-/// script's checksums are compared with the lab's sweep of the same operator.
-/// libigl's rows on the tori, and the version of libigl that answered (from its script's
-/// output), when it ran.
-fn libigl(
-    cases: &[(String, String, PolygonSoup)],
-    measurements: &[Measurement],
-    notes: &mut Vec<String>,
-) -> (Vec<topolab_harness::results::LibiglRow>, Option<String>) {
-    let python = Path::new(".venv/bin/python");
-    let script = Path::new("reference/libigl_reference.py");
-    let ready = python.exists()
-        && std::process::Command::new(python)
-            .args(["-c", "import igl"])
-            .output()
-            .is_ok_and(|o| o.status.success());
-    if !ready || !script.exists() {
-        notes.push(
-            "libigl was not run: .venv/bin/python with libigl is missing (bash .ci/install-deps)."
-                .into(),
-        );
-        return (Vec::new(), None);
-    }
-    let dir = std::env::temp_dir().join(format!("topolab-libigl-{}", std::process::id()));
-    let _ = std::fs::create_dir_all(&dir);
-    let mut rows = Vec::new();
-    let mut version = None;
-    for (name, _, soup) in cases.iter().filter(|c| c.1 == "torus") {
-        eprintln!("topolab report: libigl on {name}");
-        let (mesh, json) = (
-            dir.join(format!("{name}.obj")),
-            dir.join(format!("{name}.json")),
-        );
-        if topolab_structures::io::write(&mesh, soup).is_err() {
-            continue;
-        }
-        let ran = std::process::Command::new(python)
-            .arg(script)
-            .arg(&mesh)
-            .arg("--out")
-            .arg(&json)
-            .env("IGL_NUM_THREADS", "1")
-            .output();
-        let parsed: Option<serde_json::Value> = std::fs::read_to_string(&json)
-            .ok()
-            .and_then(|t| serde_json::from_str(&t).ok());
-        let Some(v) = parsed.filter(|_| ran.is_ok_and(|o| o.status.success())) else {
-            notes.push(format!("libigl failed on {name}"));
-            continue;
-        };
-        if let Some(v) = v["libigl_version"].as_str() {
-            version = Some(v.to_string());
-        }
-        let edges = soup.connectivity().map(|c| c.num_edges()).unwrap_or(0);
-        for r in v["results"].as_array().into_iter().flatten() {
-            let Some(subject) = r["operator"].as_str().and_then(Subject::from_name) else {
-                continue;
-            };
-            // The lab's answer over the whole mesh: an operator's sweep, or the workload.
-            let kernel = match subject {
-                Subject::Query(_) => Kernel::Sweep,
-                Subject::Workload(_) => Kernel::Workload,
-                Subject::Construction => Kernel::Construction,
-            };
-            let lab = measurements.iter().find(|m| {
-                m.mesh == *name
-                    && m.operator == subject
-                    && m.kernel == kernel
-                    && m.checksum.is_some()
-            });
-            let (checksum, agrees) = match (
-                r["checksum"].as_str(),
-                r["value"].as_f64(),
-                lab.and_then(|m| m.checksum.as_deref()),
-            ) {
-                (Some(c), _, Some(l)) => (c.to_string(), c == l),
-                (None, Some(x), Some(l)) => {
-                    let l: f64 = l.parse().unwrap_or(f64::NAN);
-                    (
-                        format!("{x:.9e}"),
-                        (x - l).abs() <= 1e-6 * x.abs().max(l.abs()).max(1.0),
-                    )
-                }
-                _ => continue,
-            };
-            let items = match subject {
-                Subject::Query(op) => match op.input() {
-                    Input::Vertex => soup.num_vertices(),
-                    Input::Edge => edges,
-                    // Boundary curves too: per face, like the face relations.
-                    Input::Face | Input::EdgeOfFace | Input::Mesh => soup.num_faces(),
-                },
-                Subject::Workload(_) | Subject::Construction => soup.num_vertices(),
-            };
-            rows.push(topolab_harness::results::LibiglRow {
-                mesh: name.clone(),
-                operator: subject,
-                function: r["function"].as_str().unwrap_or_default().into(),
-                checksum,
-                agrees,
-                ns_per_item: r["seconds"].as_f64().unwrap_or(f64::NAN) * 1e9 / items.max(1) as f64,
-            });
-        }
-    }
-    let _ = std::fs::remove_dir_all(&dir);
-    (rows, version)
 }
 
 /// Writes `results.json`, `index.html` and `FINDINGS.md`, with the sections' times of `clock` and the time of

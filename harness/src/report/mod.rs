@@ -1,11 +1,12 @@
 //! The report page drawn from [`crate::results::Results`]: its shell ([`page`]), the formatting
 //! its sections share ([`format`](mod@format)), the look-ups of cells they share (`cells`), what a
-//! section is ([`section`]), the sections in their one list ([`sections`]) and what a run
+//! run is asked for and what a section measures with ([`run`]), what a section is ([`section`]), the sections in their one list ([`sections`]) and what a run
 //! measures for the sections it shows ([`selection`]).
 
 pub(crate) mod cells;
 pub mod format;
 pub mod page;
+pub mod run;
 pub mod section;
 pub mod sections;
 pub mod selection;

@@ -5,6 +5,7 @@
 
 use crate::phases::Phase;
 use crate::plot::{self, Style};
+use crate::report::run::{ReportError, Run};
 use crate::results::Results;
 
 /// How much of the size sweep (every structure on the generated tori and grids) a section
@@ -121,6 +122,13 @@ pub trait Section: Sync {
     /// The phase its own measurement is timed as, when it measures something of its own.
     fn phase(&self) -> Option<Phase> {
         None
+    }
+
+    /// Its own measurement, after the size sweep, the fits and the limits, timed as its
+    /// [`phase`](Section::phase): it adds its rows to `run.results`. Nothing, by default.
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        let _ = run;
+        Ok(())
     }
 
     /// Whether it is drawn above the Machine block (what a reader wants before the details):

@@ -1,8 +1,12 @@
 //! "Element order": the vertex 1-ring sweep of a mesh renumbered in each order.
 
+use crate::kernels::sample_queries;
+use crate::measure::{cross_check, MeshCase};
 use crate::phases::Phase;
 use crate::report::format::ns;
+use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Refined, Section};
+use crate::report::sections::real_at_scale::FAMILY;
 use crate::results::{Measurement, Results, Status};
 use std::fmt::Write;
 
@@ -60,6 +64,64 @@ fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str
     h.push_str("</table>");
 }
 
+/// The structures whose vertex 1-ring is compared across element orderings.
+const ORDERING_STRUCTURES: [&str; 7] = [
+    "index-half-edge",
+    "che-l2",
+    "pointer-half-edge",
+    "winged-edge",
+    "openmesh",
+    "cgal-surface-mesh",
+    "cgal-polyhedron",
+];
+
+/// The effect of element order: the largest torus (at most 256k triangles) and the smallest
+/// refined real mesh, each renumbered by each ordering, and the R00 sweep of a few structures
+/// on each (and of every structure from outside the lab: whoever adds a structure wants to see
+/// how it takes reordering).
+fn measure(run: &mut Run) -> Result<(), ReportError> {
+    let (cases, plan, results) = (run.cases, run.plan, &mut *run.results);
+    let torus = cases
+        .iter()
+        .filter(|c| c.1 == "torus" && c.2.num_faces() <= 300_000)
+        .max_by_key(|c| c.2.num_faces());
+    let refined = cases
+        .iter()
+        .filter(|c| c.1 == FAMILY)
+        .min_by_key(|c| c.2.num_faces());
+    let added = &run.request.added;
+    let structures: Vec<&String> = run
+        .request
+        .names
+        .iter()
+        .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(n))
+        .collect();
+    for (base, _, soup) in torus.into_iter().chain(refined) {
+        for ordering in topolab_structures::ordering::Ordering::ALL {
+            eprintln!("topolab report: ordering {} of {base}", ordering.name());
+            let re = topolab_structures::ordering::reorder(soup, ordering).soup;
+            let name = format!("{base}/{}", ordering.name());
+            let queries = sample_queries(&re, 1, 0);
+            let case = MeshCase {
+                name: &name,
+                family: "ordering",
+                soup: &re,
+                queries: &queries,
+            };
+            for s in &structures {
+                let m = run
+                    .structures
+                    .sweep(s, &case, plan)
+                    .ok_or_else(|| ReportError::Usage(format!("no structure is called {s}")))?
+                    .map_err(ReportError::Measurement)?;
+                results.measurements.push(m);
+            }
+            cross_check(&results.measurements, &name).map_err(ReportError::Measurement)?;
+        }
+    }
+    Ok(())
+}
+
 /// The vertex 1-ring sweep of a torus and a refined real mesh in each element order.
 pub struct Orderings;
 
@@ -78,6 +140,10 @@ impl Section for Orderings {
 
     fn phase(&self) -> Option<Phase> {
         Some(Phase::new("orderings", "orderings"))
+    }
+
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        measure(run)
     }
 
     fn render(&self, h: &mut String, page: &Page) {

@@ -3,11 +3,14 @@
 
 use crate::kernels::Kernel;
 use crate::phases::Phase;
+use crate::reads::count::{count_all, Budget, ReadsRow};
 use crate::report::cells::{cells, family_of, table_kernel};
 use crate::report::format::ns;
+use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Status, Subject};
 use std::fmt::Write;
+use std::time::Instant;
 use topolab_structures::Operator;
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
@@ -118,6 +121,24 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
     h.push_str("</table>");
 }
 
+/// Counts the reads of `names` (the C++ baselines and structures outside the lab are left
+/// out: their reads are not the lab's to count) on the generated meshes of `sizes`, and notes
+/// how long it took.
+fn count(names: &[String], sizes: &[usize], notes: &mut Vec<String>) -> Vec<ReadsRow> {
+    eprintln!("topolab report: counting reads per query...");
+    let start = Instant::now();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let rows = count_all(&names, sizes, Budget::default());
+    let skipped = rows.iter().filter(|r| !r.skipped.is_empty()).count();
+    notes.push(format!(
+        "Reads per query were counted in {:.1} s ({} rows; {skipped} stop before the largest size, whose reads the declared cost puts above {:.0e} per cell).",
+        start.elapsed().as_secs_f64(),
+        rows.len(),
+        Budget::default().reads_per_cell
+    ));
+    rows
+}
+
 /// The measured Table 4.1 of the CHE thesis chapter (declared cost, fitted exponent, time),
 /// and the reads per query counted.
 pub struct Table41;
@@ -133,6 +154,12 @@ impl Section for Table41 {
 
     fn phase(&self) -> Option<Phase> {
         Some(Phase::new("reads", "reads per query (Table 4.1)"))
+    }
+
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        let r = &mut *run.results;
+        r.reads = count(&run.request.names, &run.request.sizes, &mut r.notes);
+        Ok(())
     }
 
     fn render(&self, h: &mut String, page: &Page) {
