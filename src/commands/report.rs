@@ -2,7 +2,6 @@
 //! a self-contained `index.html`. [`report_with`] is the same report with structures from
 //! outside the lab beside the lab's (see [`crate::extend`]).
 
-use super::report_scale;
 use crate::extend::Lab;
 use crate::input::Failure;
 use crate::registry::StructureVisitor;
@@ -13,10 +12,13 @@ use topolab_harness::kernels::sample_queries;
 use topolab_harness::limit::{self, MeshCounts};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::phases::Phase;
+use topolab_harness::report::clock::{self, Clock};
 use topolab_harness::report::run::{Listed, MeshFamily, ReportError, Request, Run};
 use topolab_harness::report::section::{Real, Refined};
 use topolab_harness::report::sections::libigl::LIBIGL;
+use topolab_harness::report::sections::real_at_scale::FAMILY;
 use topolab_harness::report::selection::Selection;
+use topolab_harness::report::{refined, repair};
 use topolab_harness::results::{
     CostRow, Measurement, MeshInfo, Results, Settings, StructureInfo, Teaching, FORMAT_VERSION,
 };
@@ -167,7 +169,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     };
     let mut families: Vec<&str> = Vec::with_capacity(args.meshes.len());
     for f in &args.meshes {
-        if !["torus", "grid", "real", report_scale::FAMILY].contains(&f.as_str()) {
+        if !["torus", "grid", "real", FAMILY].contains(&f.as_str()) {
             return Err(Failure::usage(format!(
                 "unknown mesh family {f:?}; known: torus, grid, real, refined"
             )));
@@ -181,9 +183,9 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cell_max: Duration::from_millis(if quick { 150 } else { 300 }),
         min_reps: 3,
         max_reps: if args.full {
-            super::report_timing::FULL_MAX_REPS
+            clock::FULL_MAX_REPS
         } else {
-            super::report_timing::MAX_REPS
+            clock::MAX_REPS
         },
         light: false,
     };
@@ -204,7 +206,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     crate::limits::admit_report(&sizes, &generated, &names, probe_mb)?;
     crate::output::check_folder(&args.out, &["results.json", "index.html", "FINDINGS.md"])?;
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
-    let mut clock = super::report_timing::Clock::start();
+    let mut clock = Clock::start(cpu_now);
     let probe = probe::measure(probe_mb, probe_mb);
     clock.lap(Phase::PROBE, None);
     let mut notes = Vec::new();
@@ -249,9 +251,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         phases: Vec::new(),
     };
     crate::registry::note_absent(&mut results.notes);
-    results
-        .notes
-        .extend(super::report_timing::budget_notes(quick, args.full));
+    results.notes.extend(clock::budget_notes(quick, args.full));
     for n in &names {
         let (info, teach) = visit::<X, _>(n, Describe).expect("checked above");
         results.structures.push(info);
@@ -269,19 +269,25 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
     let mut repaired = std::collections::HashMap::new();
     if families.contains(&"real") && selection.needs.real != Real::None {
         for (name, soup) in real_meshes(&mut results.notes) {
-            let (soup, log) = super::report_repair::measurable(&name, soup, &mut results.notes);
+            let (soup, log) = repair::measurable(&name, soup, &mut results.notes);
             repaired.extend(log.map(|log| (name.clone(), log)));
             cases.push((name, "real".into(), soup));
         }
     }
-    if families.contains(&report_scale::FAMILY) && selection.needs.refined != Refined::None {
-        let list: &[report_scale::Refined] = if quick {
-            &report_scale::QUICK
+    if families.contains(&FAMILY) && selection.needs.refined != Refined::None {
+        let list: &[refined::Refined] = if quick {
+            &refined::QUICK
         } else {
-            &report_scale::FULL
+            &refined::FULL
         };
-        for (name, soup) in report_scale::refined_meshes(list, &names, &mut results.notes)? {
-            cases.push((name, report_scale::FAMILY.into(), soup));
+        // A refined mesh is admitted as a torus of as many triangles.
+        let admit = |faces: usize| {
+            crate::limits::admit_report(&[faces], &["torus"], &names, 0)
+                .map_err(|f| ReportError::Usage(f.message))
+        };
+        let made = refined::refined_meshes(list, &admit, &mut results.notes).map_err(failure)?;
+        for (name, soup) in made {
+            cases.push((name, FAMILY.into(), soup));
         }
     }
     clock.lap(Phase::MESHES, None);
@@ -299,7 +305,7 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         ..plan
     };
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
-        let light_here = selection.light(fam) || (!args.full && report_scale::light(name));
+        let light_here = selection.light(fam) || (!args.full && refined::light(name));
         let plan = if light_here { &light } else { &plan };
         let queries = sample_queries(soup, samples, 2026);
         let case = MeshCase {
@@ -450,6 +456,16 @@ pub fn report_with<X: Structures>(args: &ReportArgs, command: String) -> Result<
         cases.len(),
         args.out.join("index.html").display()
     ))
+}
+
+/// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
+/// zero CPU rather than failing the report).
+fn cpu_now() -> (f64, f64) {
+    use crate::alloc::{cpu_seconds, Who};
+    (
+        cpu_seconds(Who::Process).unwrap_or(0.0),
+        cpu_seconds(Who::Children).unwrap_or(0.0),
+    )
 }
 
 /// The CLI's failure of a report's error: exit 2 for a request that cannot run, 1 for a
@@ -605,11 +621,7 @@ fn real_meshes(notes: &mut Vec<String>) -> Vec<(String, PolygonSoup)> {
 
 /// Writes `results.json`, `index.html` and `FINDINGS.md`, with the sections' times of `clock` and the time of
 /// rendering the page itself (its row is put into the rendered page's table afterwards).
-fn write(
-    out: &Path,
-    results: &mut Results,
-    mut clock: super::report_timing::Clock,
-) -> Result<(), Failure> {
+fn write(out: &Path, results: &mut Results, mut clock: Clock) -> Result<(), Failure> {
     use std::io::Write as _;
     std::fs::create_dir_all(out).map_err(|e| Failure {
         message: format!("cannot write the report to {}: {e}", out.display()),

@@ -210,7 +210,7 @@ fn timed_native(
 }
 
 /// Runs both workloads on every torus of `cases` (name, family, soup) for each structure of
-/// `names` that can edit, each [`super::report_timing::changing_runs`] times; a disagreement
+/// `names` that can edit, each [`topolab_harness::report::clock::changing_runs`] times; a disagreement
 /// between structures is an error.
 pub fn measure(
     cases: &[(String, String, PolygonSoup)],
@@ -236,7 +236,7 @@ pub fn measure(
             ));
             continue;
         }
-        let runs = super::report_timing::changing_runs(soup.num_faces(), quick, full);
+        let runs = topolab_harness::report::clock::changing_runs(soup.num_faces(), quick, full);
         for w in Changing::ALL {
             for &s in &editing {
                 eprintln!("topolab report: {} on {mesh}: {s}", w.name());

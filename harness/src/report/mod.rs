@@ -4,8 +4,11 @@
 //! measures for the sections it shows ([`selection`]).
 
 pub(crate) mod cells;
+pub mod clock;
 pub mod format;
 pub mod page;
+pub mod refined;
+pub mod repair;
 pub mod run;
 pub mod section;
 pub mod sections;
