@@ -1,4 +1,5 @@
-//! The report page drawn from [`crate::results::Results`]: its shell ([`page`]), the formatting
+//! The report: the run from its request to its files ([`pipeline`]), the page drawn from
+//! [`crate::results::Results`]: its shell ([`page`]), the formatting
 //! its sections share ([`format`](mod@format)), the look-ups of cells they share (`cells`), what a
 //! run is asked for and what a section measures with ([`run`]), what a section is ([`section`]), the sections in their one list ([`sections`]) and what a run
 //! measures for the sections it shows ([`selection`]).
@@ -7,6 +8,7 @@ pub(crate) mod cells;
 pub mod clock;
 pub mod format;
 pub mod page;
+pub mod pipeline;
 pub mod refined;
 pub mod repair;
 pub mod run;
