@@ -19,7 +19,7 @@ pub enum MeshFamily {
     /// The meshes `make data` fetched into `bench-data/cache/`, when present.
     Real,
     /// Two of them refined by Loop subdivision to 1.2M and 3.3M triangles, measured like the
-    /// tori ([`FAMILY`](crate::report::sections::real_at_scale::FAMILY)).
+    /// tori.
     Refined,
 }
 
@@ -33,12 +33,12 @@ impl MeshFamily {
     ];
 
     /// Its name in `--meshes` and as the family of its meshes in the results.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             MeshFamily::Torus => "torus",
             MeshFamily::Grid => "grid",
             MeshFamily::Real => "real",
-            MeshFamily::Refined => crate::report::sections::real_at_scale::FAMILY,
+            MeshFamily::Refined => "refined",
         }
     }
 

@@ -4,13 +4,14 @@
 
 use crate::kernels::Kernel;
 use crate::report::format::ns;
+use crate::report::run::MeshFamily;
 use crate::report::section::{Needs, Page, Refined, Section};
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
 
 /// The family name of the refined meshes.
-pub const FAMILY: &str = "refined";
+pub const FAMILY: &str = MeshFamily::Refined.name();
 
 /// The torus whose triangle count is nearest (in ratio) to `triangles`.
 fn nearest_torus(r: &Results, triangles: usize) -> Option<&MeshInfo> {
