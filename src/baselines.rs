@@ -7,7 +7,7 @@ use crate::registry;
 use topolab_harness::baselines::BaselineRun;
 
 /// How the C++ baselines' heap is counted, the same sentence for each.
-const CPP_HEAP: &str = "in one untimed build of its own, by the lab's global operator new and delete (heap/heap.cpp), each block for its malloc_usable_size, as the Rust structures' blocks are counted by the lab's global allocator; peak and held bytes of that build";
+const CPP_HEAP: &str = "in one untimed build of its own, by the lab's global operator new and delete (baselines/cpp/heap/heap.cpp), each block for its malloc_usable_size, as the Rust structures' blocks are counted by the lab's global allocator; peak and held bytes of that build";
 
 /// What the report's run used: the structures it measured, and whether its hull, decimation
 /// and libigl sections ran.
@@ -74,7 +74,7 @@ fn cgal_structures(version: &str) -> BaselineRun {
     BaselineRun {
         name: format!("{}, {}", registry::CGAL_SURFACE_MESH, registry::CGAL_POLYHEDRON),
         library: format!("CGAL {version} (header-only)"),
-        build: "Debian's libcgal-dev headers, compiled here into the shim at -O3 -DNDEBUG (cgal/*.cpp)".into(),
+        build: "Debian's libcgal-dev headers, compiled here into the shim at -O3 -DNDEBUG (baselines/cpp/cgal/*.cpp)".into(),
         used_as: "Surface_mesh<Point_3> built with reserve, add_vertex, add_face; Polyhedron_3 (HalfedgeDS_list, Polyhedron_items_with_id_3) built with Polyhedron_incremental_builder_3; both queried with CGAL's circulators and halfedge functions, and changed with its Euler operations".into(),
         timed: "construction: the library's build calls alone (Polyhedron_3's id tables made after the clock); every sweep, sampled kernel (its queries turned into CGAL's descriptors before the clock) and workload as one C++ loop".into(),
         counted: CPP_HEAP.into(),
@@ -88,9 +88,9 @@ fn cgal_structures(version: &str) -> BaselineRun {
 #[cfg(has_cgal)]
 fn cgal_hull(version: &str) -> BaselineRun {
     BaselineRun {
-        name: crate::cgal::hull::ALGORITHM.into(),
+        name: topolab_baselines::hulls::HullLibrary::CgalConvexHull3.name().into(),
         library: format!("CGAL {version} convex_hull_3"),
-        build: "Debian's libcgal-dev headers, compiled here at -O3 -DNDEBUG (cgal/hull.cpp), linked with GMP".into(),
+        build: "Debian's libcgal-dev headers, compiled here at -O3 -DNDEBUG (baselines/cpp/cgal/hull.cpp), linked with GMP".into(),
         used_as: "convex_hull_3 with the Exact_predicates_inexact_constructions_kernel into a Surface_mesh".into(),
         timed: "the convex_hull_3 call alone, warm: a run to warm up, then the median of the timed runs, as every hull of the section".into(),
         counted: "not counted (GMP allocates with its own malloc)".into(),
@@ -101,9 +101,9 @@ fn cgal_hull(version: &str) -> BaselineRun {
 #[cfg(has_qhull)]
 fn qhull() -> BaselineRun {
     BaselineRun {
-        name: "qhull".into(),
+        name: topolab_baselines::hulls::HullLibrary::Qhull.name().into(),
         library: format!("Qhull {} (libqhull_r)", crate::qhull::version()),
-        build: "Debian's libqhull-dev, linked; the C shim qhull/shim.c compiled here at -O3 -DNDEBUG".into(),
+        build: "Debian's libqhull-dev, linked; the C shim baselines/c/qhull/shim.c compiled here at -O3 -DNDEBUG".into(),
         used_as: crate::qhull::description(),
         timed: "qh_new_qhull and collecting the hull's vertex ids, in-process, warm: a run to warm up, then the median of the timed runs; copying the points, the volume and freeing are outside the clock".into(),
         counted: "not counted".into(),

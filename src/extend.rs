@@ -17,29 +17,9 @@
 //! the worked example, and the README's section "Benchmark your own structure" the guide.
 
 use crate::commands::report::{report_with, ReportArgs};
-use crate::registry::{self, StructureVisitor};
 use clap::Parser;
 use std::process::ExitCode;
 use topolab_structures::registry::Structures;
-
-/// Every structure of this build of the lab (the [`registry`]: the structures of
-/// `topolab-structures`, then the C++ baselines compiled in) as a [`Structures`] list, for
-/// the report and the `cargo bench` groups of `topolab_harness::bench`.
-#[derive(Copy, Clone, Debug)]
-pub struct Lab;
-
-impl Structures for Lab {
-    fn names(out: &mut Vec<&'static str>) {
-        out.extend_from_slice(registry::NAMES);
-    }
-    fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V> {
-        if registry::NAMES.contains(&name) {
-            Ok(registry::visit(name, visitor).expect("a registered name visits its structure"))
-        } else {
-            Err(visitor)
-        }
-    }
-}
 
 /// The command line of [`report_main`]: the options of `topolab report`.
 #[derive(Parser, Debug)]
@@ -71,26 +51,6 @@ pub fn report_main<X: Structures>() -> ExitCode {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    struct Name;
-    impl StructureVisitor for Name {
-        type Output = &'static str;
-        fn visit<M: topolab_structures::MeshTopology>(self) -> &'static str {
-            M::NAME
-        }
-    }
-
-    #[test]
-    fn the_lab_is_every_registered_structure_and_only_those() {
-        assert_eq!(
-            topolab_structures::registry::names::<Lab>(),
-            registry::NAMES
-        );
-        for &name in registry::NAMES {
-            assert_eq!(Lab::visit(name, Name).ok(), Some(name));
-        }
-        assert!(Lab::visit("no-such-structure", Name).is_err());
-    }
 
     #[test]
     fn an_added_structure_named_like_one_of_the_lab_is_a_usage_error() {

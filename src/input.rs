@@ -1,32 +1,11 @@
 //! What the subcommands share: reading a mesh named on the command line, and the
 //! [`Failure`] a command returns (its message and exit code).
 
+pub use crate::failure::Failure;
 use crate::{limits, registry};
 use std::path::Path;
 use topolab_structures::meshes::{self, MeshSize, SpecError};
-use topolab_structures::{Error, PolygonSoup};
-
-/// A failed command: what to tell the user and the exit code.
-#[derive(Debug)]
-pub struct Failure {
-    /// The message, with context.
-    pub message: String,
-    /// The exit code.
-    pub code: u8,
-}
-
-impl Failure {
-    fn unreadable(what: &str, e: Error) -> Self {
-        Self {
-            message: format!("cannot read {what}: {e}"),
-            code: 2,
-        }
-    }
-    /// A usage error (exit code 2).
-    pub fn usage(message: String) -> Self {
-        Self { message, code: 2 }
-    }
-}
+use topolab_structures::PolygonSoup;
 
 /// Refuses an input path that is not a regular file: a directory cannot be read as a mesh, and
 /// a device or pipe (`/dev/zero`) may never end. Returns the file's size in bytes.

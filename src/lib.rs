@@ -1,80 +1,39 @@
 //! # topolab
 //!
-//! The lab's command-line tool and everything that ties the crates together: the registry of
-//! every structure (the ones of `topolab-structures` plus the C++ baselines OpenMesh and CGAL,
-//! when compiled in; Qhull, in-process, for the hull section) and the commands of the `topolab` binary ([`cli`] parses them, [`commands`] runs them,
-//! with the helpers of [`input`], [`limits`] and [`output`]); [`extend`] runs the report with
-//! structures of other crates added.
+//! The lab's command-line tool: the commands of the `topolab` binary ([`cli`] parses them,
+//! [`commands`] runs them, with the helpers of [`input`], [`limits`] and [`output`]) over the
+//! registry of every structure of `topolab-baselines` (the ones of `topolab-structures` plus
+//! the C++ baselines OpenMesh and CGAL, when compiled in; Qhull, in-process, for the hull
+//! section); [`extend`] runs the report with structures of other crates added. It declares
+//! the process's counting allocator ([`ALLOCATOR`]).
 #![deny(missing_docs)]
-// Only the FFI modules of the baselines (C++ and Qhull's C) and the allocator may use `unsafe`
-// (each allows it for itself alone).
-#![deny(unsafe_code)]
+// The FFI and the allocator, the only `unsafe` code, are in the crates below.
+#![forbid(unsafe_code)]
 
 pub mod baselines;
 pub mod cli;
 pub mod commands;
 pub mod extend;
+pub mod failure;
 pub mod input;
 pub mod limits;
-#[allow(unsafe_code)]
-pub mod native_decimate;
 pub mod output;
 
-#[allow(unsafe_code)]
-pub mod alloc;
-
-/// The process's allocator: glibc's, counting a thread's bytes only while the report measures
-/// a structure's heap (see [`alloc`]).
-#[global_allocator]
-pub static ALLOCATOR: alloc::CountingAllocator = alloc::CountingAllocator;
+// The crates below, under the names the commands and the examples use.
+pub use topolab_alloc as alloc;
 #[cfg(has_cgal)]
-#[allow(unsafe_code)]
-pub mod cgal;
-#[cfg(any(has_openmesh, has_cgal))]
-#[allow(unsafe_code)]
-mod foreign;
+pub use topolab_baselines::cgal;
 #[cfg(has_openmesh)]
-#[allow(unsafe_code)]
-pub mod openmesh;
+pub use topolab_baselines::openmesh;
 #[cfg(has_qhull)]
-#[allow(unsafe_code)]
-pub mod qhull;
-pub mod registry;
-
-/// What to do when the OpenMesh baseline is not compiled in (OpenMesh's source was missing at
-/// build time, or `TOPOLAB_NO_OPENMESH=1` was set).
-pub const OPENMESH_MISSING: &str = "the OpenMesh baseline is not compiled in: fetch OpenMesh's \
-pinned source (`bash .ci/install-deps`, or `python3 third_party/fetch.py`; build.rs compiles \
-it), unset TOPOLAB_NO_OPENMESH, and rebuild";
-
-/// The OpenMesh this build measures: its version, where its source came from and how
-/// `build.rs` compiled it (e.g. `OpenMesh 9.1.0, compiled here from PyPI openmesh 1.2.1's
-/// source: ...`); `None` when the baseline is not compiled in.
-pub const OPENMESH_BUILD: Option<&str> = if HAS_OPENMESH {
-    option_env!("TOPOLAB_OPENMESH_BUILD")
-} else {
-    // Not a variable of someone's shell that happens to have the name.
-    None
+pub use topolab_baselines::qhull;
+pub use topolab_baselines::{
+    native_decimate, registry, CGAL_MISSING, HAS_CGAL, HAS_OPENMESH, HAS_QHULL, OPENMESH_BUILD,
+    OPENMESH_MISSING, QHULL_MISSING,
 };
 
-/// `true` when this build includes the OpenMesh baseline.
-pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
-
-/// What to do when the CGAL baselines are not compiled in (CGAL was missing at build time, or
-/// `TOPOLAB_NO_CGAL=1` was set).
-pub const CGAL_MISSING: &str = "the CGAL baselines (cgal-surface-mesh, cgal-polyhedron, \
-convex_hull_3) are not compiled in: install CGAL (`apt-get install libcgal-dev` on \
-Debian/Ubuntu, or `bash .ci/install-deps`), unset TOPOLAB_NO_CGAL, and rebuild";
-
-/// `true` when this build includes the CGAL baselines.
-pub const HAS_CGAL: bool = cfg!(has_cgal);
-
-/// What to do when the in-process Qhull is not compiled in (Qhull's reentrant library was
-/// missing at build time, or `TOPOLAB_NO_QHULL=1` was set): the report's hull section then has
-/// no Qhull.
-pub const QHULL_MISSING: &str = "the in-process Qhull is not compiled in: install Qhull's \
-reentrant library (`apt-get install libqhull-dev` on Debian/Ubuntu, or `bash .ci/install-deps`), \
-unset TOPOLAB_NO_QHULL, and rebuild";
-
-/// `true` when this build includes the in-process Qhull.
-pub const HAS_QHULL: bool = cfg!(has_qhull);
+/// The process's allocator: glibc's, counting a thread's bytes, Rust's and the C++ baselines',
+/// only while the report measures a structure's heap (see [`alloc`]).
+#[global_allocator]
+pub static ALLOCATOR: alloc::CountingAllocator =
+    alloc::CountingAllocator::with_foreign(topolab_baselines::heap::CPP_HEAP);

@@ -23,7 +23,7 @@
 //! switch ([`crate::alloc`]).
 //! Decimation, when it exists, goes through the same checks.
 
-use crate::input::Failure;
+use crate::failure::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::sync::atomic::{AtomicBool, Ordering};
 use topolab_structures::meshes::{self, MeshSize};

@@ -1,7 +1,7 @@
 //! The editing suite ([`topolab_structures::testing::editing`]) on the C++ baselines that edit
 //! through their own Euler operations: one line each. Each structure's tests run in parallel
 //! threads on independent meshes, as the conformance tests do (the shims' one process-wide
-//! set-up is thread-safe: `tests/openmesh_threads.rs`, `tests/cgal_threads.rs`).
+//! set-up is thread-safe: `baselines/tests/openmesh_threads.rs`, `baselines/tests/cgal_threads.rs`).
 
 #[cfg(has_openmesh)]
 topolab_structures::edit_conformance!(

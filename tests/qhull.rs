@@ -167,9 +167,10 @@ mod in_process {
 
     #[test]
     fn the_command_is_the_shims_and_the_version_the_libraries() {
-        let header =
-            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("qhull/shim.h"))
-                .unwrap();
+        let header = std::fs::read_to_string(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("baselines/c/qhull/shim.h"),
+        )
+        .unwrap();
         let define = header
             .lines()
             .find_map(|l| l.strip_prefix("#define TOPOLAB_QHULL_COMMAND "))

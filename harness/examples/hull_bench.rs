@@ -14,7 +14,7 @@
 //! run the next n while its predicted `Volume6` tests are at most [`bench::MAX_TESTS`]; the
 //! randomized one always goes on. Each time is the median of [`bench::timed_runs`] runs after
 //! a warm-up run ([`bench::benchmark_row`]; the peak heap is counted in the warm-up), Qhull's
-//! and CGAL's the same way, in-process (`topolab::registry::add_outside_hulls`; a build without
+//! and CGAL's the same way, in-process (`topolab_harness::hull::outside::add_outside_hulls`; a build without
 //! Qhull says so). Columns: `×Qhull` the time over Qhull's at the same n, `/bound` the
 //! `Volume6` tests over the algorithm's bound, `ΣP/nlgn` Σ|P(e)| over n lg n, `exact` the tests
 //! decided exactly, `B/pt` peak heap bytes per point.
@@ -24,6 +24,12 @@ use topolab_harness::hull::bench;
 use topolab_structures::hull::plane::{FacePlane, TestCount};
 use topolab_structures::hull::predicates::volume6;
 use topolab_structures::hull::{random_points, Shape};
+
+/// The lab's counting allocator, C++'s heap included: the benchmark measures each run's peak
+/// heap with it, as the report does.
+#[global_allocator]
+static ALLOCATOR: topolab_alloc::CountingAllocator =
+    topolab_alloc::CountingAllocator::with_foreign(topolab_baselines::heap::CPP_HEAP);
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -41,8 +47,8 @@ fn main() {
     if shapes.is_empty() {
         shapes = vec!["ball".into(), "sphere".into()];
     }
-    if !topolab::HAS_QHULL {
-        println!("Qhull SKIPPED: {}", topolab::QHULL_MISSING);
+    if !topolab_baselines::HAS_QHULL {
+        println!("Qhull SKIPPED: {}", topolab_baselines::QHULL_MISSING);
     }
     let mut rows = Vec::new();
     for shape_name in &shapes {
@@ -56,7 +62,7 @@ fn main() {
             shape_name,
             &sizes,
             bench::MAX_TESTS,
-            Some(&topolab::ALLOCATOR),
+            Some(&ALLOCATOR),
             |row| {
                 eprintln!(
                     "{} {} {}: {:.4} s",
@@ -67,7 +73,7 @@ fn main() {
         .expect("hull benchmark");
         rows.extend(run);
     }
-    topolab::registry::add_outside_hulls(&mut rows).expect("outside hulls");
+    topolab_harness::hull::outside::add_outside_hulls(&mut rows).expect("outside hulls");
     println!(
         "{:<7} {:>8} {:<18} {:>9} {:>4} {:>7} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
         "shape",

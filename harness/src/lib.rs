@@ -14,6 +14,7 @@ pub mod catalogue;
 pub mod changing;
 pub mod checksum;
 pub mod compare;
+pub mod counting;
 pub mod decimate;
 pub mod findings;
 pub mod fit;

@@ -4,7 +4,7 @@
 //! ([`Host`]: its counting allocator, its baselines, its atomic writes). [`report_with`] is the
 //! same report with structures from outside the lab beside the lab's (see [`crate::extend`]).
 
-use crate::extend::Lab;
+use topolab_baselines::Lab;
 use crate::input::Failure;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
@@ -336,7 +336,7 @@ fn hull(
             code: 1,
         })?);
     }
-    crate::registry::add_outside_hulls(&mut rows).map_err(|e| Failure {
+    topolab_harness::hull::outside::add_outside_hulls(&mut rows).map_err(|e| Failure {
         message: format!("hull benchmark: {e}"),
         code: 1,
     })?;

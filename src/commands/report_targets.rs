@@ -3,12 +3,12 @@
 //! the changing workloads from fresh builds in turns (OpenMesh natively, as the changing
 //! section runs it), every run in the measuring thread's CPU time.
 
-use crate::extend::Lab;
 use crate::input::Failure;
 #[cfg(has_openmesh)]
 use crate::openmesh::OpenMesh;
 use std::marker::PhantomData;
 use std::time::Instant;
+use topolab_baselines::Lab;
 use topolab_harness::changing::{mesh_checksum, MeshChecksum};
 use topolab_harness::probe::Probe;
 use topolab_harness::results::Measurement;

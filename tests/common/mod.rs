@@ -5,6 +5,11 @@
 #![allow(dead_code)]
 
 pub mod run;
+/// The helpers shared with the baselines crate's tests.
+#[path = "../../baselines/tests/common/mod.rs"]
+mod shared;
+#[allow(unused_imports)]
+pub use shared::{broken_soups, closed_fan_soups, report_skip};
 
 use glam::DVec3;
 use std::time::Duration;
@@ -131,13 +136,6 @@ pub fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
 }
 
-/// Tells the person running the tests that `what` did not run and why. Written to stderr
-/// directly: libtest captures `eprintln!` of a passing test, and a skip must be seen.
-pub fn report_skip(what: &str, why: &str) {
-    use std::io::Write;
-    let _ = writeln!(std::io::stderr(), "SKIPPED {what}: {why}");
-}
-
 /// A memory meter that measures nothing (the heap is measured in tests of its own, with the
 /// lab's allocator: [`construction_cell`]).
 pub struct NoMeter;
@@ -164,36 +162,6 @@ pub fn baseline_meshes() -> Vec<(&'static str, PolygonSoup)> {
             "random",
             meshes::random_mesh(7, RandomMeshParams::default()),
         ),
-    ]
-}
-
-/// Three triangles on one edge, then two triangles traversing their shared edge the same way:
-/// the halfedge libraries (OpenMesh, CGAL) refuse the last face of each.
-pub fn broken_soups() -> Vec<PolygonSoup> {
-    let positions = (0..5)
-        .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0))
-        .collect();
-    vec![
-        PolygonSoup::from_polygons(positions, &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]]),
-        PolygonSoup::from_polygons(
-            (0..4).map(|i| DVec3::new(i as f64, 0.0, 1.0)).collect(),
-            &[[0u32, 1, 2], [0, 1, 3]],
-        ),
-    ]
-}
-
-/// A closed tetrahedron plus a triangle at its vertex 0, the triangle first or last.
-pub fn closed_fan_soups() -> Vec<PolygonSoup> {
-    let tetrahedron = meshes::closed_tetrahedron();
-    let mut positions = tetrahedron.positions.clone();
-    positions.extend([DVec3::new(5.0, 5.0, 5.0), DVec3::new(6.0, 5.0, 5.0)]);
-    let faces: Vec<Vec<u32>> = tetrahedron.faces().map(|f| f.to_vec()).collect();
-    let triangle = vec![0u32, 4, 5];
-    let last: Vec<Vec<u32>> = faces.iter().cloned().chain([triangle.clone()]).collect();
-    let first: Vec<Vec<u32>> = [triangle].into_iter().chain(faces).collect();
-    vec![
-        PolygonSoup::from_polygons(positions.clone(), &last),
-        PolygonSoup::from_polygons(positions, &first),
     ]
 }
 

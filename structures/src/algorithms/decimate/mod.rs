@@ -68,7 +68,7 @@
 //!   half-edges store the one OpenMesh does on the meshes tested: on closed tori, spheres and
 //!   a genus-2 plate, symmetric ones included (whose `f32` errors tie all over, and a flat
 //!   region's are 0), the eager strategy on both half-edges makes OpenMesh's collapses
-//!   exactly (`tests/decimate_openmesh.rs` in the `topolab` crate). A structure that starts
+//!   exactly (`baselines/tests/decimate_openmesh.rs` in the `topolab-baselines` crate). A structure that starts
 //!   its rotations elsewhere may break such ties otherwise; without ties the start does not
 //!   matter.
 //!

@@ -154,22 +154,6 @@ pub fn qhull_description() -> Option<String> {
     None
 }
 
-/// Adds the hulls of the outside libraries compiled in (Qhull in-process, CGAL's
-/// `convex_hull_3`) to the report's hull benchmark `rows` (`qhull::add_to_benchmark`,
-/// `cgal::hull::add_to_benchmark`), each point set's rows followed by Qhull's and CGAL's; without
-/// them, nothing (the report's notes say why: [`note_absent`] for CGAL, the hull section's own
-/// note for Qhull).
-pub fn add_outside_hulls(
-    rows: &mut Vec<topolab_harness::hull::bench::HullRow>,
-) -> Result<(), String> {
-    #[cfg(has_qhull)]
-    crate::qhull::add_to_benchmark(rows)?;
-    #[cfg(has_cgal)]
-    crate::cgal::hull::add_to_benchmark(rows)?;
-    let _ = rows;
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -86,7 +86,7 @@
 //! process-wide action, pinning CGAL's failure behaviour to exceptions (so that a failure
 //! CGAL reports reaches the wall instead of aborting), is done once per process, thread-safely
 //! (a function-local static); the builder writes nothing with `verbose` off. Meshes are
-//! independent, so threads may build and query meshes in parallel (`tests/cgal_threads.rs`,
+//! independent, so threads may build and query meshes in parallel (`baselines/tests/cgal_threads.rs`,
 //! and `.ci/repeat-baseline-tests` in CI). CGAL's heap is counted per thread like Rust's, by
 //! the lab's global `operator new` (`heap/heap.cpp`), so threads do not disturb each other's
 //! measurements either.
@@ -94,15 +94,14 @@
 //! [`hull::convex_hull_3`] runs `CGAL::convex_hull_3` (quickhull,
 //! `Exact_predicates_inexact_constructions_kernel`) for the report's hull section.
 
-use crate::foreign::{self, operator_code, refusal, workload_code};
-use glam::DVec3;
+use crate::foreign::topology::{self, topology_api, topology_queries, ForeignMesh, TopologyApi};
+use crate::foreign::{self, refusal};
 use std::fmt::Write;
 use std::marker::PhantomData;
 use std::ptr::NonNull;
 use topolab_structures::{
-    Access, BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId,
-    MeshTopology, NativeKernels, Operator, PolygonSoup, Result, Sample, SampledRun, VertexId,
-    Workload,
+    Access, BuildFacts, Constructed, Cost, Error, MeshTopology, NativeKernels, Operator,
+    PolygonSoup, Result, Sample, SampledRun, Workload,
 };
 
 mod access;
@@ -122,8 +121,6 @@ pub fn version() -> String {
 }
 
 mod ffi {
-    use std::ffi::c_void;
-
     /// The C++ `topolab_cgal_mesh` (opaque).
     #[repr(C)]
     pub struct RawMesh {
@@ -137,8 +134,6 @@ mod ffi {
         _opaque: [u8; 0],
         _not_send_sync_or_unpin: core::marker::PhantomData<(*mut u8, core::marker::PhantomPinned)>,
     }
-
-    use crate::foreign::{Emit, EndCurve};
 
     pub const SURFACE_MESH: i32 = 0;
     pub const POLYHEDRON: i32 = 1;
@@ -160,41 +155,7 @@ mod ffi {
         ) -> i32;
         pub fn topolab_cgal_finish(mesh: *mut RawMesh) -> i32;
         pub fn topolab_cgal_free(mesh: *mut RawMesh);
-        pub fn topolab_cgal_heap_bytes(mesh: *const RawMesh, out: *mut u64) -> i32;
         pub fn topolab_cgal_summary(mesh: *const RawMesh, out: *mut u32) -> i32;
-        pub fn topolab_cgal_position(mesh: *const RawMesh, v: u32, out: *mut f64) -> i32;
-        pub fn topolab_cgal_edge_vertices(mesh: *const RawMesh, e: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_is_boundary_vertex(mesh: *const RawMesh, v: u32, out: *mut i32) -> i32;
-        pub fn topolab_cgal_is_boundary_edge(mesh: *const RawMesh, e: u32, out: *mut i32) -> i32;
-        pub fn topolab_cgal_query(
-            mesh: *const RawMesh,
-            op: i32,
-            id: u32,
-            emit: Emit,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_cgal_edge_neighbour(
-            mesh: *const RawMesh,
-            e: u32,
-            f: u32,
-            successor: i32,
-            out: *mut i64,
-        ) -> i32;
-        pub fn topolab_cgal_boundary_curves(
-            mesh: *const RawMesh,
-            emit: Emit,
-            end_curve: EndCurve,
-            context: *mut c_void,
-        ) -> i32;
-        pub fn topolab_cgal_halfedge(mesh: *const RawMesh, h: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_vertex_halfedge(mesh: *const RawMesh, v: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_face_halfedge(mesh: *const RawMesh, f: u32, out: *mut u32) -> i32;
-        pub fn topolab_cgal_validate(
-            mesh: *const RawMesh,
-            problem: *mut i32,
-            element: *mut u32,
-        ) -> i32;
-        pub fn topolab_cgal_sweep(mesh: *const RawMesh, op: i32, out: *mut u64) -> i32;
         pub fn topolab_cgal_prepare_sample(
             mesh: *const RawMesh,
             op: i32,
@@ -204,8 +165,6 @@ mod ffi {
         ) -> i32;
         pub fn topolab_cgal_sampled(sample: *const RawSample, out: *mut u64) -> i32;
         pub fn topolab_cgal_free_sample(sample: *mut RawSample);
-        pub fn topolab_cgal_prepare_workload(mesh: *mut RawMesh, workload: i32) -> i32;
-        pub fn topolab_cgal_workload(mesh: *mut RawMesh, workload: i32, out: *mut f64) -> i32;
         pub fn topolab_cgal_convex_hull(
             xyz: *const f64,
             n: u32,
@@ -223,11 +182,6 @@ const LIBRARY: &str = "CGAL";
 /// The lab's error for a failure status of shim function `call`.
 fn status(call: &'static str, code: i32) -> Result<()> {
     foreign::status(LIBRARY, call, code)
-}
-
-/// For the trait's infallible queries (see [`foreign::infallible`]).
-fn infallible(call: &'static str, code: i32) {
-    foreign::infallible(LIBRARY, call, code)
 }
 
 /// Which CGAL class a [`Cgal`] holds: what differs between the two (see the module docs).
@@ -379,11 +333,7 @@ impl<S: CgalStructure> Cgal<S> {
     /// The checksum of operator `op` over every element, computed by one C++ loop with CGAL's
     /// circulators; an error when CGAL failed inside the loop.
     pub fn native_sweep(&self, op: Operator) -> Result<u64> {
-        let mut out = 0;
-        // SAFETY: `raw` is live; `out` is a valid out-pointer; the shim checks the code.
-        let code =
-            unsafe { ffi::topolab_cgal_sweep(self.raw.as_ptr(), operator_code(op), &mut out) };
-        status("topolab_cgal_sweep", code).map(|()| out)
+        topology::sweep(self, op)
     }
 
     /// Prepares CGAL's sampled kernel of `op` over the queries of `sample` (see
@@ -394,7 +344,7 @@ impl<S: CgalStructure> Cgal<S> {
     /// names an element the mesh does not have ([`Error::ElementOutOfRange`]), or when CGAL
     /// failed to prepare it.
     pub fn native_sampled(&self, op: Operator, sample: Sample<'_>) -> Result<SampledKernel<'_, S>> {
-        let ids = foreign::sample_ids(S::NAME, op, sample, foreign::HalfedgeRecords::counts(self))?;
+        let ids = foreign::sample_ids(S::NAME, op, sample, ForeignMesh::counts(self))?;
         let mut raw = std::ptr::null_mut();
         // SAFETY: `self.raw` is live; `op` has a sampled kernel and `ids` holds `sample.len()`
         // queries of its input, every id checked against the mesh; `&mut raw` is a valid
@@ -402,7 +352,7 @@ impl<S: CgalStructure> Cgal<S> {
         let code = unsafe {
             ffi::topolab_cgal_prepare_sample(
                 self.raw.as_ptr(),
-                operator_code(op),
+                foreign::operator_code(op),
                 ids.as_ptr(),
                 sample.len(),
                 &mut raw,
@@ -424,11 +374,7 @@ impl<S: CgalStructure> Cgal<S> {
     /// buffer of [`Workload::Smoothing`]), so that a timed [`Cgal::native_workload`] computes
     /// only; an error when the allocation failed.
     pub fn prepare_workload(&mut self, workload: Workload) -> Result<()> {
-        // SAFETY: `raw` is live and exclusively borrowed.
-        let code = unsafe {
-            ffi::topolab_cgal_prepare_workload(self.raw.as_ptr(), workload_code(workload))
-        };
-        status("topolab_cgal_prepare_workload", code)
+        topology::prepare_workload(self, workload)
     }
 
     /// Runs a Surface_mesh benchmark workload (Sieger & Botsch) in one C++ call; an error when
@@ -442,229 +388,49 @@ impl<S: CgalStructure> Cgal<S> {
     /// | `normals` | face normals, then vertex normals (normalised sum of unit face normals) | the sum of all vertex normal coordinates |
     /// | `smoothing` | one step of uniform 1-ring averaging of interior vertices | the sum of all coordinates afterwards |
     pub fn native_workload(&mut self, workload: Workload) -> Result<f64> {
-        let mut out = 0.0;
-        // SAFETY: `raw` is live and exclusively borrowed; `out` is a valid out-pointer.
-        let code = unsafe {
-            ffi::topolab_cgal_workload(self.raw.as_ptr(), workload_code(workload), &mut out)
-        };
-        status("topolab_cgal_workload", code).map(|()| out)
-    }
-
-    /// Calls `f` with every answer (an index) of relation `op` of element `id`.
-    fn query(&self, op: Operator, id: u32, f: impl FnMut(u32)) {
-        let raw = self.raw.as_ptr();
-        let code = foreign::with_emit(f, |emit, context| {
-            // SAFETY: `raw` is live; the caller checked `id` against the element count of
-            // `op`'s input; `emit` and `context` come from `with_emit`, which keeps the
-            // context alive for the call (C++ does not keep it).
-            unsafe { ffi::topolab_cgal_query(raw, operator_code(op), id, emit, context) }
-        });
-        infallible("topolab_cgal_query", code);
-    }
-
-    fn vertex(&self, v: VertexId) -> u32 {
-        assert!(
-            v.0 < self.vertices,
-            "{v:?} out of range ({} vertices)",
-            self.vertices
-        );
-        v.0
-    }
-    fn edge(&self, e: EdgeId) -> u32 {
-        assert!(
-            e.0 < self.edges,
-            "{e:?} out of range ({} edges)",
-            self.edges
-        );
-        e.0
-    }
-    fn face(&self, f: FaceId) -> u32 {
-        assert!(
-            f.0 < self.faces,
-            "{f:?} out of range ({} faces)",
-            self.faces
-        );
-        f.0
-    }
-
-    fn neighbour_in_face(&self, e: EdgeId, face: FaceId, successor: bool) -> Option<EdgeId> {
-        let (e, face) = (self.edge(e), self.face(face));
-        let mut answer = -1;
-        // SAFETY: `raw` is live, both ids were checked, `answer` is a valid out-pointer.
-        let code = unsafe {
-            ffi::topolab_cgal_edge_neighbour(
-                self.raw.as_ptr(),
-                e,
-                face,
-                successor as i32,
-                &mut answer,
-            )
-        };
-        infallible("topolab_cgal_edge_neighbour", code);
-        u32::try_from(answer).ok().map(EdgeId)
+        topology::workload(self, workload)
     }
 }
 
-impl<S: CgalStructure> foreign::HalfedgeRecords for Cgal<S> {
+topology_api!(TOPOLOGY: ffi::RawMesh = [
+    topolab_cgal_position,
+    topolab_cgal_edge_vertices,
+    topolab_cgal_is_boundary_vertex,
+    topolab_cgal_is_boundary_edge,
+    topolab_cgal_query,
+    topolab_cgal_edge_neighbour,
+    topolab_cgal_boundary_curves,
+    topolab_cgal_halfedge,
+    topolab_cgal_vertex_halfedge,
+    topolab_cgal_face_halfedge,
+    topolab_cgal_heap_bytes,
+    topolab_cgal_validate,
+    topolab_cgal_sweep,
+    topolab_cgal_prepare_workload,
+    topolab_cgal_workload,
+]);
+
+impl<S: CgalStructure> ForeignMesh for Cgal<S> {
+    type Raw = ffi::RawMesh;
+    const LIBRARY: &'static str = LIBRARY;
+    const TOPOLOGY: TopologyApi<ffi::RawMesh> = TOPOLOGY;
+
+    fn raw(&self) -> *mut ffi::RawMesh {
+        self.raw.as_ptr()
+    }
+
     fn counts(&self) -> [u32; 3] {
         [self.vertices, self.edges, self.faces]
-    }
-    fn record_position(&self, v: u32) -> DVec3 {
-        self.position(VertexId(v))
-    }
-    fn vertex_halfedge(&self, v: u32) -> u32 {
-        let mut h = u32::MAX;
-        // SAFETY: `raw` is live, `v` < vertices (callers iterate that range), `h` is a valid
-        // out-pointer.
-        let code = unsafe { ffi::topolab_cgal_vertex_halfedge(self.raw.as_ptr(), v, &mut h) };
-        infallible("topolab_cgal_vertex_halfedge", code);
-        h
-    }
-    /// The halfedge record `h` as CGAL stores it: (target vertex, next, prev, face).
-    fn halfedge(&self, h: u32) -> [u32; 4] {
-        let mut out = [0u32; 4];
-        // SAFETY: `raw` is live, `h` < 2 × edges (callers iterate that range), `out` has 4 slots.
-        let code = unsafe { ffi::topolab_cgal_halfedge(self.raw.as_ptr(), h, out.as_mut_ptr()) };
-        infallible("topolab_cgal_halfedge", code);
-        out
-    }
-    fn face_halfedge(&self, f: u32) -> u32 {
-        let mut h = u32::MAX;
-        // SAFETY: `raw` is live, `f` < faces (callers iterate that range), `h` is a valid
-        // out-pointer.
-        let code = unsafe { ffi::topolab_cgal_face_halfedge(self.raw.as_ptr(), f, &mut h) };
-        infallible("topolab_cgal_face_halfedge", code);
-        h
     }
 }
 
 impl<S: CgalStructure> MeshTopology for Cgal<S> {
     const NAME: &'static str = S::NAME;
 
-    fn capabilities() -> Capabilities {
-        Capabilities {
-            // With open fans only; see the module docs.
-            non_manifold_vertices: true,
-            ..Capabilities::POLYGONS
-        }
-    }
-
-    fn cost(op: Operator) -> Cost {
-        match op {
-            Operator::BoundaryVertex => S::BOUNDARY_VERTEX,
-            Operator::R10
-            | Operator::R12
-            | Operator::BoundaryEdge
-            | Operator::EdgeSuccessor
-            | Operator::EdgePredecessor => Cost::Constant,
-            Operator::R00
-            | Operator::R01
-            | Operator::R02
-            | Operator::R11
-            | Operator::R20
-            | Operator::R21
-            | Operator::R22 => Cost::Local,
-            Operator::BoundaryCurves => Cost::Linear,
-        }
-    }
-
-    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        Self::construct(&foreign::admit(soup)?)?.finish()
-    }
-
-    fn num_vertices(&self) -> usize {
-        self.vertices as usize
-    }
-    fn num_edges(&self) -> usize {
-        self.edges as usize
-    }
-    fn num_faces(&self) -> usize {
-        self.faces as usize
-    }
-    fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
-        (0..self.edges).for_each(|e| f(EdgeId(e)));
-    }
-    fn position(&self, v: VertexId) -> DVec3 {
-        let v = self.vertex(v);
-        let mut out = [0.0f64; 3];
-        // SAFETY: `raw` is live, `v` checked, `out` has 3 slots.
-        let code = unsafe { ffi::topolab_cgal_position(self.raw.as_ptr(), v, out.as_mut_ptr()) };
-        infallible("topolab_cgal_position", code);
-        DVec3::from_array(out)
-    }
-    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
-        self.query(Operator::R00, self.vertex(v), |w| f(VertexId(w)));
-    }
-    fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
-        self.query(Operator::R01, self.vertex(v), |e| f(EdgeId(e)));
-    }
-    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
-        self.query(Operator::R02, self.vertex(v), |g| f(FaceId(g)));
-    }
-    fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
-        let e = self.edge(e);
-        let mut out = [0u32; 2];
-        // SAFETY: `raw` is live, `e` checked, `out` has 2 slots.
-        let code =
-            unsafe { ffi::topolab_cgal_edge_vertices(self.raw.as_ptr(), e, out.as_mut_ptr()) };
-        infallible("topolab_cgal_edge_vertices", code);
-        out.map(VertexId)
-    }
-    fn edge_edges(&self, e: EdgeId, mut f: impl FnMut(EdgeId)) {
-        self.query(Operator::R11, self.edge(e), |x| f(EdgeId(x)));
-    }
-    fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
-        self.query(Operator::R12, self.edge(e), |g| f(FaceId(g)));
-    }
-    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        self.query(Operator::R20, self.face(face), |v| f(VertexId(v)));
-    }
-    fn face_edges(&self, face: FaceId, mut f: impl FnMut(EdgeId)) {
-        self.query(Operator::R21, self.face(face), |e| f(EdgeId(e)));
-    }
-    fn face_faces(&self, face: FaceId, mut f: impl FnMut(FaceId)) {
-        self.query(Operator::R22, self.face(face), |g| f(FaceId(g)));
-    }
-    fn is_boundary_vertex(&self, v: VertexId) -> bool {
-        let v = self.vertex(v);
-        let mut out = 0;
-        // SAFETY: `raw` is live, `v` checked, `out` is a valid out-pointer.
-        let code = unsafe { ffi::topolab_cgal_is_boundary_vertex(self.raw.as_ptr(), v, &mut out) };
-        infallible("topolab_cgal_is_boundary_vertex", code);
-        out != 0
-    }
-    fn is_boundary_edge(&self, e: EdgeId) -> bool {
-        let e = self.edge(e);
-        let mut out = 0;
-        // SAFETY: `raw` is live, `e` checked, `out` is a valid out-pointer.
-        let code = unsafe { ffi::topolab_cgal_is_boundary_edge(self.raw.as_ptr(), e, &mut out) };
-        infallible("topolab_cgal_is_boundary_edge", code);
-        out != 0
-    }
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
-        let raw = self.raw.as_ptr();
-        let code = foreign::with_curves(out, |emit, end_curve, context| {
-            // SAFETY: `raw` is live; the callbacks and context come from `with_curves`, alive
-            // for the whole call.
-            unsafe { ffi::topolab_cgal_boundary_curves(raw, emit, end_curve, context) }
-        });
-        // Its visited flags are the one allocation of a query in the shim: out of memory
-        // there is reported like Rust's own.
-        infallible("topolab_cgal_boundary_curves", code);
-    }
-    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        self.neighbour_in_face(e, face, true)
-    }
-    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        self.neighbour_in_face(e, face, false)
-    }
+    topology_queries!(boundary_vertex: S::BOUNDARY_VERTEX);
 
     fn validate(&self) -> Result<()> {
-        let (mut problem, mut element) = (0, 0u32);
-        // SAFETY: `raw` is live; `problem` and `element` are valid out-pointers.
-        status("topolab_cgal_validate", unsafe {
-            ffi::topolab_cgal_validate(self.raw.as_ptr(), &mut problem, &mut element)
-        })?;
+        let (problem, element) = topology::validate(self)?;
         let message = match problem {
             0 => return Ok(()),
             1 => format!("halfedge {element}: next/prev/opposite/face links disagree"),
@@ -673,17 +439,6 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
             _ => "CGAL's own is_valid() fails".to_string(),
         };
         Err(Error::invariant(S::NAME, message))
-    }
-
-    /// What CGAL's records hold by their numbers (`topolab_cgal_heap_bytes`; see the module
-    /// docs), with the `Polyhedron_3`'s id tables; the counting allocator measures the blocks
-    /// it really holds.
-    fn heap_bytes(&self) -> usize {
-        let mut out = 0;
-        // SAFETY: `raw` is live; `out` is a valid out-pointer.
-        let code = unsafe { ffi::topolab_cgal_heap_bytes(self.raw.as_ptr(), &mut out) };
-        infallible("topolab_cgal_heap_bytes", code);
-        out as usize
     }
 
     fn explain(&self, w: &mut dyn Write) -> std::fmt::Result {

@@ -2,7 +2,7 @@
 //! installed; see README.md).
 
 #[cfg(has_openmesh)]
-topolab_structures::conformance!(openmesh, topolab::openmesh::OpenMesh);
+topolab_structures::conformance!(openmesh, topolab_baselines::openmesh::OpenMesh);
 
 #[cfg(not(has_openmesh))]
 mod common;
@@ -10,7 +10,7 @@ mod common;
 #[cfg(not(has_openmesh))]
 #[test]
 fn skipped_openmesh_not_compiled_in() {
-    common::report_skip("openmesh conformance", topolab::OPENMESH_MISSING);
+    common::report_skip("openmesh conformance", topolab_baselines::OPENMESH_MISSING);
     // Without OpenMesh the registry must not offer it.
-    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
+    assert!(!topolab_baselines::registry::NAMES.contains(&topolab_baselines::registry::OPENMESH));
 }

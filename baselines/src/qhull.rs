@@ -5,15 +5,15 @@
 //! way SciPy's `scipy.spatial.ConvexHull` calls it (`scipy/spatial/_qhull.pyx`): the command
 //! [`COMMAND`], `qh_new_qhull` on the points as given, the hull's vertices those of its
 //! triangles. SciPy 1.17 (the `.venv`'s) bundles the same Qhull release (`qhull_r` 8.0.2,
-//! 2020.2), so the two build the same hull; the tests check it (`tests/qhull.rs`).
+//! 2020.2), so the two build the same hull; the tests check it (`baselines/tests/qhull.rs`).
 //!
 //! [`convex_hull`] runs Qhull once and returns the shim's clock: `qh_new_qhull` (build, merge,
 //! triangulate) and the walk that collects the vertex ids, the way the lab's hull algorithms
 //! are timed around building their output. Copying the points, the volume (`qh_getarea`) and
-//! freeing the hull are outside it, as dropping the lab's hull is. [`add_to_benchmark`] times
-//! it as the benchmark times the lab's: a warm-up run, then the median of
-//! [`bench::timed_runs`] runs, one FFI call each (the clock is read inside the shim, so the
-//! FFI is not timed).
+//! freeing the hull are outside it, as dropping the lab's hull is. The harness's hull benchmark
+//! times it (through [`crate::hulls`]) as it times the lab's: a warm-up run, then the median of
+//! its timed runs, one FFI call each (the clock is read inside the shim, so the FFI is not
+//! timed).
 //!
 //! The FFI is a wall: the shim is C, so nothing unwinds; Qhull's errors (the exit code of
 //! `qh_new_qhull`, which catches its own `longjmp`, and a `setjmp` of the shim's around
@@ -23,21 +23,17 @@
 //! error while it reports another. State:
 //! `libqhull_r` keeps all of its state in the `qhT` its caller passes ("All global variables
 //! for qhull are in qhT", `libqhull_r.h`), and the shim makes and frees one per call, so there
-//! is no process-wide state to set up and threads may call in parallel (`tests/qhull.rs` does).
+//! is no process-wide state to set up and threads may call in parallel (`baselines/tests/qhull.rs` does).
 
 use glam::DVec3;
 use std::ffi::{c_char, CStr};
 use std::fmt;
-use topolab_harness::hull::bench::{self, HullRow};
 
 /// Qhull's command line: SciPy's for `ConvexHull` below five dimensions, mode `i` and the
 /// always-required `Qt` (triangulated output), no other option; `TOPOLAB_QHULL_COMMAND` of
 /// `qhull/shim.h` (a test reads it there). Qhull's defaults then merge coplanar facets, so the
 /// hull's vertices are its extreme points, as the lab's algorithms return them.
 pub const COMMAND: &str = "qhull i Qt";
-
-/// The name of Qhull's rows in the hull benchmark ([`HullRow::algorithm`]).
-pub const ALGORITHM: &str = "qhull";
 
 /// The declarations of `qhull/shim.h`.
 mod ffi {
@@ -271,109 +267,15 @@ pub fn version() -> String {
 /// How the report says Qhull was run, for its notes and the hull section.
 pub fn description() -> String {
     format!(
-        "Qhull {} (libqhull_r, in-process through the C shim qhull/shim.c), options \"{}\" as SciPy's ConvexHull passes them",
+        "Qhull {} (libqhull_r, in-process through the C shim c/qhull/shim.c), options \"{}\" as SciPy's ConvexHull passes them",
         version(),
         COMMAND.trim_start_matches("qhull ")
     )
 }
 
-/// Adds a row of Qhull to the hull benchmark `rows` for every point set of the lecture's
-/// randomized algorithm in them, right after that point set's rows: the same points
-/// ([`bench::PointSet::points`]), timed as the lab's hulls are ([`bench::warm_median`]: a
-/// warm-up run, then the median of [`bench::timed_runs`] runs). Qhull's hull must have the
-/// randomized hull's vertices (random points are in general position, and both keep only
-/// corner points: the same count and, where the row has it, the same
-/// [`bench::vertex_checksum`]) and be a closed triangulated surface (2h − 4 triangles for h
-/// vertices), in every run; else an error naming the point set.
-pub fn add_to_benchmark(rows: &mut Vec<HullRow>) -> Result<(), String> {
-    for set in bench::point_sets(rows) {
-        let points = set.points().map_err(|e| e.to_string())?;
-        let what = format!("Qhull's hull of {} points {}", set.n, set.shape);
-        let timed = bench::warm_median(set.n, |_warm_up| {
-            let hull = convex_hull(&points).map_err(|e| format!("{what}: {e}"))?;
-            Ok::<_, String>((hull.seconds, hull))
-        })?;
-        for hull in [&timed.warm_up, &timed.last] {
-            let checksum = bench::vertex_checksum(hull.vertices.iter().copied());
-            let h = hull.vertices.len();
-            if h != set.hull_vertices || set.vertex_checksum.is_some_and(|c| c != checksum) {
-                return Err(format!(
-                    "{what}: {h} vertices (checksum {checksum:#x}), the randomized algorithm's {} (checksum {:?})",
-                    set.hull_vertices, set.vertex_checksum
-                ));
-            }
-            if hull.facets + 4 != 2 * h {
-                return Err(format!(
-                    "{what}: {} triangles for {h} vertices, not a closed triangulated surface (2h - 4)",
-                    hull.facets
-                ));
-            }
-        }
-        eprintln!(
-            "topolab report: hull {} {} {ALGORITHM}: {:.3} s",
-            set.shape, set.n, timed.seconds
-        );
-        let row = HullRow {
-            hull_vertices: timed.last.vertices.len(),
-            vertex_checksum: Some(bench::vertex_checksum(timed.last.vertices.iter().copied())),
-            ..set.outside_row(ALGORITHM, &timed)
-        };
-        bench::insert_outside_row(rows, row);
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use topolab_harness::hull::bench::{vertex_checksum, POINTS_SEED};
-    use topolab_structures::hull::{convex_hull as lab_hull, random_points, Algorithm, Shape};
-
-    /// The randomized algorithm's row of the benchmark's ball of `n` points.
-    fn randomized_row(n: usize) -> HullRow {
-        let points = random_points(Shape::Ball, n, POINTS_SEED);
-        let hull = lab_hull(&points, Algorithm::Randomized { seed: 7 }).unwrap();
-        let vertices = hull.vertices();
-        HullRow {
-            shape: "ball".into(),
-            n,
-            algorithm: "randomized".into(),
-            hull_vertices: vertices.len(),
-            vertex_checksum: Some(vertex_checksum(vertices.iter().map(|v| v.0))),
-            ..HullRow::default()
-        }
-    }
-
-    #[test]
-    fn qhull_rows_follow_their_point_sets_and_must_have_the_randomized_hulls_vertices() {
-        let mut rows = vec![randomized_row(500), randomized_row(900)];
-        add_to_benchmark(&mut rows).unwrap();
-        let names: Vec<(&str, usize)> = rows.iter().map(|r| (r.algorithm.as_str(), r.n)).collect();
-        assert_eq!(
-            names,
-            [
-                ("randomized", 500),
-                (ALGORITHM, 500),
-                ("randomized", 900),
-                (ALGORITHM, 900)
-            ]
-        );
-        let q = &rows[1];
-        assert_eq!(
-            (q.hull_vertices, q.vertex_checksum, q.timed_runs),
-            (rows[0].hull_vertices, rows[0].vertex_checksum, 3)
-        );
-        assert!(q.seconds > 0.0 && q.faces_created.is_none() && q.peak_bytes.is_none());
-        // Another vertex set of the same size stops the benchmark, naming the point set.
-        let mut wrong = vec![randomized_row(500)];
-        wrong[0].vertex_checksum = wrong[0].vertex_checksum.map(|c| c ^ 1);
-        let e = add_to_benchmark(&mut wrong).unwrap_err();
-        assert!(e.contains("Qhull's hull of 500 points ball"), "{e}");
-        let mut fewer = vec![randomized_row(500)];
-        fewer[0].hull_vertices -= 1;
-        assert!(add_to_benchmark(&mut fewer).is_err());
-    }
-
     #[test]
     fn the_description_names_the_version_and_options() {
         let d = description();

@@ -11,6 +11,13 @@
 
 /// The forwarding layer from `MeshEdit` to the shims' edit functions.
 pub(crate) mod edit;
+pub(crate) mod topology;
+
+/// A C function of a shim's API with its name (for [`Error::Foreign`]).
+pub(crate) struct Call<F> {
+    pub(crate) name: &'static str,
+    pub(crate) f: F,
+}
 
 use glam::DVec3;
 use std::any::Any;
@@ -433,8 +440,8 @@ mod tests {
     #[test]
     fn codes_are_the_tables_of_both_shim_headers() {
         for header in [
-            include_str!("../openmesh/shim.h"),
-            include_str!("../cgal/shim.h"),
+            include_str!("../cpp/openmesh/shim.h"),
+            include_str!("../cpp/cgal/shim.h"),
         ] {
             let ops = shim_table(header, "Operator codes");
             assert_eq!(ops.len(), Operator::ALL.len(), "{ops:?}");

@@ -11,14 +11,14 @@ mod common;
 #[cfg(not(has_openmesh))]
 #[test]
 fn skipped_openmesh_not_compiled_in() {
-    common::report_skip("openmesh threads", topolab::OPENMESH_MISSING);
-    assert!(!topolab::registry::NAMES.contains(&topolab::registry::OPENMESH));
+    common::report_skip("openmesh threads", topolab_baselines::OPENMESH_MISSING);
+    assert!(!topolab_baselines::registry::NAMES.contains(&topolab_baselines::registry::OPENMESH));
 }
 
 #[cfg(has_openmesh)]
 mod threads {
     use std::sync::{Arc, Barrier};
-    use topolab::openmesh::OpenMesh;
+    use topolab_baselines::openmesh::OpenMesh;
     use topolab_structures::meshes;
     use topolab_structures::{MeshTopology, Operator, PolygonSoup};
 

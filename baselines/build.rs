@@ -1,13 +1,13 @@
-//! Build script of the `topolab` package: compiles the baselines (the C++ libraries and their
+//! Build script of the `topolab-baselines` package: compiles the baselines (the C++ libraries and their
 //! C API shims, and Qhull's C shim) with the `cc` crate at `-O3 -DNDEBUG` (the optimisation of
 //! our release code), links them, and sets a cfg per baseline:
 //!
 //! | baseline | compiled here | links | cfg | off switch |
 //! |---|---|---|---|---|
-//! | OpenMesh | its Core and the Decimater's `Observer.cc` from the pinned source tree (static), `openmesh/*.cpp` | nothing more | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
-//! | CGAL (header-only) | `cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
-//! | Qhull (reentrant C library) | `qhull/shim.c` | `libqhull_r` | `has_qhull` | `TOPOLAB_NO_QHULL=1` |
-//! | the C++ heap counting, with either | `heap/heap.cpp` (global `operator new` and `delete`) | | `has_cpp_heap` | both of the above |
+//! | OpenMesh | its Core and the Decimater's `Observer.cc` from the pinned source tree (static), `cpp/openmesh/*.cpp` | nothing more | `has_openmesh` | `TOPOLAB_NO_OPENMESH=1` |
+//! | CGAL (header-only) | `cpp/cgal/*.cpp`, one translation unit per piece | `libgmp` (the hull's exact kernel) | `has_cgal` (`has_cgal_decimate` when Eigen is found too) | `TOPOLAB_NO_CGAL=1` |
+//! | Qhull (reentrant C library) | `c/qhull/shim.c` | `libqhull_r` | `has_qhull` | `TOPOLAB_NO_QHULL=1` |
+//! | the C++ heap counting, with either | `cpp/heap/heap.cpp` (global `operator new` and `delete`) | | `has_cpp_heap` | both of the above |
 //!
 //! OpenMesh is compiled from its own source, not linked from a system package: Debian's
 //! `libopenmesh` is built without `-DNDEBUG`, so every handle step and status lookup of its
@@ -39,8 +39,9 @@ then rebuild";
 const CGAL_HOW_TO_GET: &str = "install it with `apt-get install libcgal-dev` (Debian/Ubuntu) \
 or `bash .ci/install-deps`, then rebuild";
 
-/// Where `third_party/fetch.py` unpacks OpenMesh's source, relative to the package.
-const OPENMESH_SOURCE: &str = "third_party/openmesh";
+/// Where `third_party/fetch.py` unpacks OpenMesh's source, relative to this package (the
+/// workspace's `third_party/`, at the repository's root).
+const OPENMESH_SOURCE: &str = "../third_party/openmesh";
 /// The variable that points the build at another OpenMesh source tree.
 const OPENMESH_SOURCE_VARIABLE: &str = "TOPOLAB_OPENMESH_SOURCE";
 /// The stamp `third_party/fetch.py` writes into the folder it unpacked: the package it came
@@ -55,22 +56,25 @@ or `bash .ci/install-deps`, then rebuild";
 
 /// The translation units of CGAL's shim, the slowest first (so the pool starts it first).
 const CGAL_UNITS: [&str; 4] = [
-    "cgal/hull.cpp",
-    "cgal/surface_mesh.cpp",
-    "cgal/polyhedron.cpp",
-    "cgal/shim.cpp",
+    "cpp/cgal/hull.cpp",
+    "cpp/cgal/surface_mesh.cpp",
+    "cpp/cgal/polyhedron.cpp",
+    "cpp/cgal/shim.cpp",
 ];
 
 /// The translation units of OpenMesh's shim: building, queries and workloads; the
-/// Decimater; `MeshEdit` (its Euler operations behind `openmesh/edit.h`).
+/// Decimater; `MeshEdit` (its Euler operations behind `cpp/openmesh/edit.h`).
 const OPENMESH_SHIM_UNITS: [&str; 3] = [
-    "openmesh/shim.cpp",
-    "openmesh/decimate.cpp",
-    "openmesh/edit.cpp",
+    "cpp/openmesh/shim.cpp",
+    "cpp/openmesh/decimate.cpp",
+    "cpp/openmesh/edit.cpp",
 ];
 // --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
-/// CGAL's changing workloads and editing operations (behind `cgal/edit.h`), one unit per class.
-const CGAL_EDIT_UNITS: &[&str] = &["cgal/edit_surface_mesh.cpp", "cgal/edit_polyhedron.cpp"];
+/// CGAL's changing workloads and editing operations (behind `cpp/cgal/edit.h`), one unit per class.
+const CGAL_EDIT_UNITS: &[&str] = &[
+    "cpp/cgal/edit_surface_mesh.cpp",
+    "cpp/cgal/edit_polyhedron.cpp",
+];
 // --- end of issue 18's block ---
 
 /// One static library compiled here (a shim, OpenMesh itself, or the heap counting): its
@@ -94,10 +98,10 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(has_cpp_heap)");
     println!("cargo::rustc-check-cfg=cfg(has_qhull)");
     println!("cargo::rerun-if-changed=build.rs");
-    println!("cargo::rerun-if-changed=openmesh");
-    println!("cargo::rerun-if-changed=cgal");
-    println!("cargo::rerun-if-changed=heap");
-    println!("cargo::rerun-if-changed=qhull");
+    println!("cargo::rerun-if-changed=cpp/openmesh");
+    println!("cargo::rerun-if-changed=cpp/cgal");
+    println!("cargo::rerun-if-changed=cpp/heap");
+    println!("cargo::rerun-if-changed=c/qhull");
     println!("cargo::rerun-if-env-changed={OPENMESH_SOURCE_VARIABLE}");
     // The libraries in the order their sources are compiled (CGAL's first: the slowest) and
     // linked (each shim before the library it calls; the heap counting, which every C++ unit
@@ -137,6 +141,7 @@ fn main() {
         println!("cargo::warning=Qhull's reentrant library not found, building without the in-process Qhull (the report's hull section then has no Qhull): {QHULL_HOW_TO_GET}");
     }
     let objects = compile_in_parallel(&shims);
+    let mut cfgs: Vec<&str> = shims.iter().filter_map(|s| s.cfg).collect();
     for (shim, objects) in shims.iter().zip(objects) {
         cc::Build::new()
             .cpp(true)
@@ -149,7 +154,15 @@ fn main() {
             println!("cargo::rustc-cfg={cfg}");
         }
     }
+    if CGAL_DECIMATE.load(std::sync::atomic::Ordering::Relaxed) {
+        cfgs.push("has_cgal_decimate");
+    }
+    // For the build scripts of the crates above (`links`): the same cfgs, comma-separated.
+    println!("cargo::metadata=cfgs={}", cfgs.join(","));
 }
+
+/// Whether `cgal_shim` compiled CGAL's decimater (Eigen was found).
+static CGAL_DECIMATE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// `true` (with a warning) when `variable` is set to switch `what` off.
 fn switched_off(variable: &str, what: &str) -> bool {
@@ -201,11 +214,12 @@ struct OpenMeshSource {
 }
 
 /// The OpenMesh source tree to compile: `TOPOLAB_OPENMESH_SOURCE` if set (relative to the
-/// package), else `third_party/openmesh`; or why there is none.
+/// repository's root, where the lab's commands run), else `third_party/openmesh`; or why there
+/// is none.
 fn find_openmesh() -> Result<OpenMeshSource, String> {
     let package = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").unwrap_or_default());
     let (root, fetched) = match std::env::var_os(OPENMESH_SOURCE_VARIABLE) {
-        Some(dir) if !dir.is_empty() => (package.join(dir), false),
+        Some(dir) if !dir.is_empty() => (package.join("..").join(dir), false),
         _ => (package.join(OPENMESH_SOURCE), true),
     };
     // Rerun when the tree changes (cargo scans a folder's files) or appears (its parent
@@ -340,7 +354,7 @@ fn openmesh_shim(source: &OpenMeshSource) -> Shim {
     let mut build = cc::Build::new();
     build
         .cpp(true)
-        .include("openmesh")
+        .include("cpp/openmesh")
         .flag("-isystem")
         .flag(source.root.join("src").display().to_string())
         .std("c++17")
@@ -359,15 +373,15 @@ fn openmesh_shim(source: &OpenMeshSource) -> Shim {
     }
 }
 
-/// The C++ side of the heap counting (`heap/heap.cpp`: the global `operator new` and `delete`,
-/// counting like `src/alloc.rs`), linked whenever a baseline is: a library of its own, because a
+/// The C++ side of the heap counting (`cpp/heap/heap.cpp`: the global `operator new` and `delete`,
+/// counting like `topolab-alloc`), linked whenever a baseline is: a library of its own, because a
 /// program defines those functions once and each baseline's shim is a separate library. Last in
 /// the list, so that it follows the shims that call `operator new` on the linker's line.
 fn heap_library() -> Shim {
     let mut build = cc::Build::new();
     build
         .cpp(true)
-        .include("heap")
+        .include("cpp/heap")
         .std("c++17")
         .opt_level(3)
         .define("NDEBUG", None)
@@ -375,7 +389,7 @@ fn heap_library() -> Shim {
     Shim {
         library: "topolab_heap",
         build,
-        sources: vec!["heap/heap.cpp".into()],
+        sources: vec!["cpp/heap/heap.cpp".into()],
         links: Vec::new(),
         cfg: Some("has_cpp_heap"),
     }
@@ -414,14 +428,14 @@ fn cgal_shim(include_dir: &Path) -> Shim {
     let mut build = cc::Build::new();
     build
         .cpp(true)
-        .include("cgal")
+        .include("cpp/cgal")
         .include(include_dir)
         .std("c++17")
         .opt_level(3)
         .define("NDEBUG", None)
         .warnings(true);
     let mut sources = CGAL_UNITS.to_vec();
-    // The Garland-Heckbert policies of cgal/decimate.cpp need Eigen (libeigen3-dev): without
+    // The Garland-Heckbert policies of cpp/cgal/decimate.cpp need Eigen (libeigen3-dev): without
     // it the CGAL decimater is left out and the report says so.
     let eigen = Path::new("/usr/include/eigen3");
     watch_for(&[PathBuf::from("/usr/include")], "eigen3/Eigen/Core");
@@ -429,8 +443,9 @@ fn cgal_shim(include_dir: &Path) -> Shim {
         build
             .flag("-isystem")
             .flag(eigen.to_str().unwrap_or("/usr/include/eigen3"));
-        sources.insert(0, "cgal/decimate.cpp");
+        sources.insert(0, "cpp/cgal/decimate.cpp");
         println!("cargo::rustc-cfg=has_cgal_decimate");
+        CGAL_DECIMATE.store(true, std::sync::atomic::Ordering::Relaxed);
     } else {
         println!("cargo::warning=Eigen not found, building without CGAL's decimater: apt-get install libeigen3-dev");
     }
@@ -479,7 +494,7 @@ fn find_qhull() -> Option<Vec<PathBuf>> {
 fn qhull_shim(include_dirs: &[PathBuf]) -> Shim {
     let mut build = cc::Build::new();
     build
-        .include("qhull")
+        .include("c/qhull")
         .includes(include_dirs)
         .std("c11")
         .opt_level(3)
@@ -488,7 +503,7 @@ fn qhull_shim(include_dirs: &[PathBuf]) -> Shim {
     Shim {
         library: "topolab_qhull_shim",
         build,
-        sources: vec!["qhull/shim.c".into()],
+        sources: vec!["c/qhull/shim.c".into()],
         links: vec!["qhull_r"],
         cfg: Some("has_qhull"),
     }

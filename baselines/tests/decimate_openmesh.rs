@@ -17,7 +17,7 @@
 #![cfg(has_openmesh)]
 
 use std::collections::HashMap;
-use topolab::native_decimate::NativeDecimater;
+use topolab_baselines::native_decimate::NativeDecimater;
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::algorithms::decimate::{decimate, Strategy};
 use topolab_structures::{

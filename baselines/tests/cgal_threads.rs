@@ -11,15 +11,16 @@ mod common;
 #[cfg(not(has_cgal))]
 #[test]
 fn skipped_cgal_not_compiled_in() {
-    common::report_skip("cgal threads", topolab::CGAL_MISSING);
-    assert!(!topolab::registry::NAMES.contains(&topolab::registry::CGAL_SURFACE_MESH));
+    common::report_skip("cgal threads", topolab_baselines::CGAL_MISSING);
+    assert!(!topolab_baselines::registry::NAMES
+        .contains(&topolab_baselines::registry::CGAL_SURFACE_MESH));
 }
 
 #[cfg(has_cgal)]
 mod threads {
     use super::common::broken_soups;
     use std::sync::{Arc, Barrier};
-    use topolab::cgal::{self, Cgal, CgalStructure, Polyhedron, SurfaceMesh};
+    use topolab_baselines::cgal::{self, Cgal, CgalStructure, Polyhedron, SurfaceMesh};
     use topolab_structures::hull::{random_points, Shape};
     use topolab_structures::meshes;
     use topolab_structures::{MeshTopology, Operator, PolygonSoup};

@@ -74,19 +74,9 @@ edit_api!(API: super::ffi::RawMesh = [
 ]);
 
 impl ForeignEdit for OpenMesh {
-    type Raw = super::ffi::RawMesh;
-    const LIBRARY: &'static str = "OpenMesh";
-    const API: crate::foreign::edit::EditApi<Self::Raw> = API;
+    const API: crate::foreign::edit::EditApi<super::ffi::RawMesh> = API;
     /// OpenMesh's handles are `int`s: no element count may pass `i32::MAX`.
     const MAX_ELEMENTS: u64 = i32::MAX as u64;
-
-    fn raw(&self) -> *mut Self::Raw {
-        self.raw.as_ptr()
-    }
-
-    fn counts(&self) -> [u32; 3] {
-        [self.vertices, self.edges, self.faces]
-    }
 
     fn refresh_counts(&mut self) -> Result<()> {
         self.read_counts()

@@ -126,23 +126,13 @@ edit_api!(POLYHEDRON: super::ffi::RawMesh = [
     topolab_cgal_ph_edit_reserve,
 ]);
 
-/// What CGAL's two classes share as [`ForeignEdit`]s: the mesh and its counts (the API is
-/// each class's).
+/// What CGAL's two classes share as [`ForeignEdit`]s: how they read their counts again (the
+/// API is each class's).
 macro_rules! cgal_edit {
     ($class:ty, $api:ident, $max:expr) => {
         impl ForeignEdit for Cgal<$class> {
-            type Raw = super::ffi::RawMesh;
-            const LIBRARY: &'static str = super::LIBRARY;
-            const API: EditApi<Self::Raw> = $api;
+            const API: EditApi<super::ffi::RawMesh> = $api;
             const MAX_ELEMENTS: u64 = $max;
-
-            fn raw(&self) -> *mut Self::Raw {
-                self.raw.as_ptr()
-            }
-
-            fn counts(&self) -> [u32; 3] {
-                [self.vertices, self.edges, self.faces]
-            }
 
             fn refresh_counts(&mut self) -> Result<()> {
                 Cgal::refresh_counts(self)

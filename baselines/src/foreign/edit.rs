@@ -18,11 +18,10 @@
 //! After every call, refused or not, the counts are read again from the mesh: a failure may
 //! have left part of an edit done, which the libraries do not undo.
 
-use super::status;
+use super::topology::ForeignMesh;
+use super::{status, Call};
 use glam::DVec3;
-use topolab_structures::{
-    Cost, EdgeId, EditOp, Error, FaceId, MeshTopology, Refusal, Result, VertexId,
-};
+use topolab_structures::{Cost, EdgeId, EditOp, Error, FaceId, Refusal, Result, VertexId};
 
 /// The shims' status of a refused edit (`TOPOLAB_OM_EDIT_REFUSED`, `TOPOLAB_CGAL_EDIT_REFUSED`).
 pub(crate) const EDIT_REFUSED: i32 = 5;
@@ -45,12 +44,6 @@ pub(crate) const REFUSALS: [Refusal; 11] = [
 /// The element kinds of the shims' `is_deleted`.
 const VERTEX: i32 = 0;
 const FACE: i32 = 2;
-
-/// A C function of an edit API with its name (for [`Error::Foreign`]).
-pub(crate) struct Call<F> {
-    pub(crate) name: &'static str,
-    pub(crate) f: F,
-}
 
 /// `(mesh, position, out)`: a new vertex.
 type AddVertex<R> = unsafe extern "C" fn(*mut R, *const f64, *mut u32) -> i32;
@@ -137,7 +130,7 @@ macro_rules! edit_api {
         }
 
         const $api: $crate::foreign::edit::EditApi<$raw> = {
-            use $crate::foreign::edit::Call;
+            use $crate::foreign::Call;
             $crate::foreign::edit::EditApi {
                 add_vertex: Call {
                     name: stringify!($add_vertex),
@@ -202,19 +195,11 @@ macro_rules! edit_api {
 pub(crate) use edit_api;
 
 /// A library mesh that edits through a shim's [`EditApi`]: what the layer needs of it.
-pub(crate) trait ForeignEdit: MeshTopology {
-    /// The shim's opaque mesh type.
-    type Raw;
-    /// The library's name in [`Error::Foreign`].
-    const LIBRARY: &'static str;
+pub(crate) trait ForeignEdit: ForeignMesh {
     /// The shim's edit functions.
     const API: EditApi<Self::Raw>;
     /// The largest element count the library's handles can number.
     const MAX_ELEMENTS: u64;
-    /// The live C++ mesh (owned by `self`; written through only with `self` borrowed mutably).
-    fn raw(&self) -> *mut Self::Raw;
-    /// The element counts kept on the Rust side: vertices, edges, faces.
-    fn counts(&self) -> [u32; 3];
     /// Reads the element counts from the mesh again.
     fn refresh_counts(&mut self) -> Result<()>;
 }
@@ -582,8 +567,8 @@ mod tests {
     #[test]
     fn refusal_codes_are_those_of_both_edit_headers() {
         for (header, prefix) in [
-            (include_str!("../../openmesh/edit.h"), "TOPOLAB_OM_"),
-            (include_str!("../../cgal/edit.h"), "TOPOLAB_CGAL_"),
+            (include_str!("../../cpp/openmesh/edit.h"), "TOPOLAB_OM_"),
+            (include_str!("../../cpp/cgal/edit.h"), "TOPOLAB_CGAL_"),
         ] {
             let defines: Vec<(String, i32)> = header
                 .lines()

@@ -1,4 +1,8 @@
-//! The process's allocator, and what the report's construction timing asks the system.
+//! # topolab-alloc
+//!
+//! The process's allocator, and what the report's construction timing asks the system. The
+//! crate declares no `#[global_allocator]`: a binary (the `topolab` crate's lib, an example or
+//! a test that measures) declares one of [`CountingAllocator`] itself.
 //!
 //! [`CountingAllocator`] is glibc's `malloc` (Rust's [`System`]) that counts the bytes of one
 //! thread only while that thread asked it to ([`CountingAllocator::start`]): the report measures
@@ -14,11 +18,12 @@
 //! Linux; whole pages for a block glibc maps by itself, which the report does not let it do,
 //! [`keep_freed_memory`]), without the 8-byte size field glibc keeps in front of each block.
 //! The C++
-//! baselines' allocations are counted by the same rule and the same switch: `heap/heap.cpp`,
-//! linked whenever a baseline is, replaces C++'s global `operator new` and `delete` (every
-//! variant) by `malloc` and `free` that count into a thread-local counter of their own, read
-//! and written here through a C API that cannot fail. Every count of [`CountingAllocator`] is
-//! the sum of the two sides. Usable sizes rather than requested ones, because only they can be
+//! baselines' allocations are counted by the same rule and the same switch: the baselines
+//! crate's `heap.cpp`, linked whenever a baseline is, replaces C++'s global `operator new` and
+//! `delete` (every variant) by `malloc` and `free` that count into a thread-local counter of
+//! their own, which an allocator made by [`CountingAllocator::with_foreign`] reads and writes
+//! through the [`ForeignHeap`] it is given (a C API that cannot fail). Every count of
+//! [`CountingAllocator`] is then the sum of the two sides. Usable sizes rather than requested ones, because only they can be
 //! had exactly on both sides: C++'s unsized `delete` does not say how many bytes it frees
 //! (libstdc++ calls the sized one for most of its containers, not all), so requested sizes
 //! would need each block's size kept somewhere, a header that changes every block or a table
@@ -38,14 +43,31 @@
 //! the thread's CPU time ([`thread_cpu_ns`]: user and system, so page faults count), which the
 //! other processes of a shared machine do not stretch as they stretch the wall-clock time.
 
+#![deny(missing_docs)]
+
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 /// The lab's global allocator: [`System`], counting this thread's bytes between
-/// [`CountingAllocator::start`] and [`CountingAllocator::stop`], together with the C++
-/// baselines' (see the module docs).
+/// [`CountingAllocator::start`] and [`CountingAllocator::stop`], together with a foreign
+/// heap's (the C++ baselines', see the module docs) when made with
+/// [`CountingAllocator::with_foreign`].
 #[derive(Debug, Default)]
-pub struct CountingAllocator;
+pub struct CountingAllocator {
+    /// The other side's counter, if any.
+    foreign: Option<ForeignHeap>,
+}
+
+/// The counter of a heap the allocator does not see (C++'s `operator new`, counting into a
+/// thread-local counter of its own by the same rule): how to read and write this thread's
+/// counts. Both functions must be callable at any time, from any thread, and never allocate.
+#[derive(Copy, Clone, Debug)]
+pub struct ForeignHeap {
+    /// This thread's counts.
+    pub read: fn() -> HeapCounts,
+    /// Replaces this thread's counts.
+    pub write: fn(HeapCounts),
+}
 
 /// Rust's counter of one thread. A `const` thread-local without a destructor is a plain TLS
 /// slot: the allocator may read it at any time, also while the thread exits.
@@ -65,20 +87,20 @@ thread_local! {
     };
 }
 
-/// One side's counts of this thread, Rust's or C++'s: the `topolab_heap_counts` of
-/// `heap/heap.h`, whose meaning both sides share.
+/// One side's counts of this thread, Rust's or a foreign heap's: the layout of
+/// `topolab_heap_counts` of the baselines' `heap.h`, whose meaning both sides share.
 #[repr(C)]
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
-struct Counts {
+pub struct HeapCounts {
     /// 1 while the thread counts, else 0.
-    on: i32,
+    pub on: i32,
     /// Bytes of the blocks counted and not freed since.
-    current: usize,
+    pub current: usize,
     /// The highest `current` since the counts were last written.
-    peak: usize,
+    pub peak: usize,
 }
 
-impl Counts {
+impl HeapCounts {
     /// Counting, from zero.
     const STARTED: Self = Self {
         on: 1,
@@ -87,89 +109,41 @@ impl Counts {
     };
 }
 
-/// The C++ side (`heap/heap.h`), when a baseline is linked.
-#[cfg(has_cpp_heap)]
-mod cpp {
-    use super::Counts;
-    #[cfg(test)]
-    use std::ffi::c_void;
-
-    extern "C" {
-        fn topolab_heap_read(out: *mut Counts);
-        fn topolab_heap_write(counts: *const Counts);
-        #[cfg(test)]
-        fn topolab_heap_test_vector(length: usize, data: *mut *const c_void) -> *mut c_void;
-        #[cfg(test)]
-        fn topolab_heap_test_free(vector: *mut c_void);
+impl CountingAllocator {
+    /// Counts Rust's allocations only.
+    pub const fn new() -> Self {
+        Self { foreign: None }
     }
 
-    /// This thread's C++ counts.
-    pub(super) fn read() -> Counts {
-        let mut out = Counts::default();
-        // SAFETY: `out` is a valid, writable `topolab_heap_counts` (same layout, `repr(C)`);
-        // the function only writes it.
-        unsafe { topolab_heap_read(&mut out) };
-        out
+    /// Counts Rust's allocations and, when given, those of `foreign`, by one switch.
+    pub const fn with_foreign(foreign: Option<ForeignHeap>) -> Self {
+        Self { foreign }
     }
 
-    /// Replaces this thread's C++ counts.
-    pub(super) fn write(counts: Counts) {
-        // SAFETY: `counts` is a valid `topolab_heap_counts`; the function only reads it.
-        unsafe { topolab_heap_write(&counts) }
+    /// This thread's counts: Rust's, then the foreign heap's (all zero without one). Rust's
+    /// read as all zero while the thread exits.
+    fn sides(&self) -> [HeapCounts; 2] {
+        let rust = COUNTER
+            .try_with(|c| HeapCounts {
+                on: c.on.get() as i32,
+                current: c.current.get(),
+                peak: c.peak.get(),
+            })
+            .unwrap_or_default();
+        [rust, self.foreign.map(|f| (f.read)()).unwrap_or_default()]
     }
 
-    /// A C++ `std::vector<uint32_t>` of `length` zeros, made by `operator new` in C++: the
-    /// vector and the address of its elements (two blocks). Freed by [`free_test_vector`].
-    #[cfg(test)]
-    pub(super) fn test_vector(length: usize) -> (*mut c_void, *const c_void) {
-        let mut data = std::ptr::null();
-        // SAFETY: `data` is a valid out-pointer; the function catches every exception.
-        let vector = unsafe { topolab_heap_test_vector(length, &mut data) };
-        assert!(!vector.is_null(), "out of memory");
-        (vector, data)
+    /// Replaces this thread's counts, Rust's and the foreign heap's.
+    fn set_sides(&self, [rust, foreign]: [HeapCounts; 2]) {
+        let _ = COUNTER.try_with(|c| {
+            c.on.set(rust.on != 0);
+            c.current.set(rust.current);
+            c.peak.set(rust.peak);
+        });
+        if let Some(f) = self.foreign {
+            (f.write)(foreign);
+        }
     }
-
-    /// Deletes a vector of [`test_vector`].
-    #[cfg(test)]
-    pub(super) fn free_test_vector(vector: *mut c_void) {
-        // SAFETY: `vector` came from `topolab_heap_test_vector` and is freed once, here.
-        unsafe { topolab_heap_test_free(vector) }
-    }
-}
-
-/// Without a C++ baseline nothing allocates through C++'s `operator new` that the lab could
-/// count: the C++ side reads as nothing counted.
-#[cfg(not(has_cpp_heap))]
-mod cpp {
-    use super::Counts;
-
-    pub(super) fn read() -> Counts {
-        Counts::default()
-    }
-
-    pub(super) fn write(_: Counts) {}
-}
-
-/// This thread's counts: Rust's, then C++'s. Rust's read as all zero while the thread exits.
-fn sides() -> [Counts; 2] {
-    let rust = COUNTER
-        .try_with(|c| Counts {
-            on: c.on.get() as i32,
-            current: c.current.get(),
-            peak: c.peak.get(),
-        })
-        .unwrap_or_default();
-    [rust, cpp::read()]
-}
-
-/// Replaces this thread's counts, Rust's and C++'s.
-fn set_sides([rust, cpp]: [Counts; 2]) {
-    let _ = COUNTER.try_with(|c| {
-        c.on.set(rust.on != 0);
-        c.current.set(rust.current);
-        c.peak.set(rust.peak);
-    });
-    cpp::write(cpp);
 }
 
 /// Whether this thread counts (Rust's side; both are switched together).
@@ -180,8 +154,13 @@ fn counting() -> bool {
 
 /// Bytes of the live block at `p` by the counting rule: `malloc_usable_size` with glibc; the
 /// `requested` size elsewhere, where the rule has no function to read it.
+///
+/// # Safety
+///
+/// `p` is a live block of glibc's `malloc` family (Rust's [`System`], or C++'s `operator new`
+/// as the baselines replace it).
 #[inline]
-fn block_bytes(p: *mut u8, requested: usize) -> usize {
+pub unsafe fn block_bytes(p: *mut u8, requested: usize) -> usize {
     #[cfg(all(target_os = "linux", target_env = "gnu"))]
     {
         let _ = requested;
@@ -262,29 +241,29 @@ unsafe impl GlobalAlloc for CountingAllocator {
 impl CountingAllocator {
     /// Starts counting this thread's allocations, Rust's and C++'s, from zero bytes.
     pub fn start(&self) {
-        set_sides([Counts::STARTED; 2]);
+        self.set_sides([HeapCounts::STARTED; 2]);
     }
 
     /// Stops counting this thread's allocations (the counts stay readable).
     pub fn stop(&self) {
-        set_sides(sides().map(|c| Counts { on: 0, ..c }));
+        self.set_sides(self.sides().map(|c| HeapCounts { on: 0, ..c }));
     }
 
     /// Bytes this thread allocated and did not free since [`CountingAllocator::start`], Rust's
     /// and C++'s.
     pub fn current(&self) -> usize {
-        sides().iter().map(|c| c.current).sum()
+        self.sides().iter().map(|c| c.current).sum()
     }
 
     /// The highest [`CountingAllocator::current`] since the start or the last reset: the sum of
     /// each side's highest (see the module docs).
     pub fn peak(&self) -> usize {
-        sides().iter().map(|c| c.peak).sum()
+        self.sides().iter().map(|c| c.peak).sum()
     }
 
     /// Starts a new peak at the current count.
     pub fn reset_peak(&self) {
-        set_sides(sides().map(|c| Counts {
+        self.set_sides(self.sides().map(|c| HeapCounts {
             peak: c.current,
             ..c
         }));
@@ -295,21 +274,21 @@ impl CountingAllocator {
     /// (another `measure`, or [`CountingAllocator::start`]) the outer region's counts and peak
     /// go on, `work`'s allocations included, as if nothing had been measured inside.
     pub fn measure<T>(&self, work: impl FnOnce() -> T) -> (T, usize) {
-        let outer = sides();
-        set_sides(outer.map(|c| Counts {
+        let outer = self.sides();
+        self.set_sides(outer.map(|c| HeapCounts {
             on: 1,
             peak: c.current,
             ..c
         }));
         let out = work();
-        let inner = sides();
+        let inner = self.sides();
         let peak = (0..2)
             .map(|i| inner[i].peak.saturating_sub(outer[i].current))
             .sum();
-        set_sides([0, 1].map(|i| {
+        self.set_sides([0, 1].map(|i| {
             let (before, after) = (outer[i], inner[i]);
             if before.on != 0 {
-                Counts {
+                HeapCounts {
                     peak: before.peak.max(after.peak),
                     ..after
                 }
@@ -414,53 +393,26 @@ pub fn cpu_seconds(who: Who) -> Option<f64> {
     Some(s(u.ru_utime) + s(u.ru_stime))
 }
 
-/// The lab's allocator as the harness's memory meter, for the report's measurements and the
-/// hull benchmark: it reads both counters, Rust's and the C++ baselines' (one rule for both,
-/// see the module docs); counting starts and stops with [`CountingAllocator::start`] and
-/// [`CountingAllocator::stop`], on the calling thread only.
-impl topolab_harness::measure::MemoryMeter for CountingAllocator {
-    fn current(&self) -> usize {
-        CountingAllocator::current(self)
-    }
-    fn peak(&self) -> usize {
-        CountingAllocator::peak(self)
-    }
-    fn reset_peak(&self) {
-        CountingAllocator::reset_peak(self)
-    }
-    fn counting(&self, on: bool) {
-        if on {
-            self.start()
-        } else {
-            self.stop()
-        }
-    }
-    fn minor_faults(&self) -> Option<u64> {
-        minor_faults()
-    }
-    fn release_free_memory(&self) {
-        release_free_memory()
-    }
-    fn thread_cpu_ns(&self) -> Option<u64> {
-        thread_cpu_ns()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// The tests' allocator: they read what it counted.
+    #[global_allocator]
+    static ALLOCATOR: CountingAllocator = CountingAllocator::new();
+
     /// The bytes a block counts for, by the rule (`block_bytes`), read independently of the
     /// counter: at least what was asked.
     fn bytes_of<T>(p: *const T, requested: usize) -> usize {
-        let bytes = block_bytes(p.cast_mut().cast(), requested);
+        // SAFETY: `p` is a live block of the test's allocator, `System`.
+        let bytes = unsafe { block_bytes(p.cast_mut().cast(), requested) };
         assert!(bytes >= requested, "{bytes} < {requested}");
         bytes
     }
 
     #[test]
     fn counts_only_between_start_and_stop_on_this_thread() {
-        let a = CountingAllocator;
+        let a = CountingAllocator::new();
         a.start();
         let v: Vec<u8> = Vec::with_capacity(1 << 20);
         let v_bytes = bytes_of(v.as_ptr(), 1 << 20);
@@ -489,7 +441,7 @@ mod tests {
     #[cfg(all(target_os = "linux", target_env = "gnu"))]
     #[test]
     fn a_block_counts_for_what_glibc_hands_out() {
-        let a = CountingAllocator;
+        let a = CountingAllocator::new();
         // glibc's chunks grow by 16 bytes, and a block gives its user all of its chunk but the
         // 8-byte size field in front: 24 usable bytes for 1 to 24 asked, 40 for 25 to 40.
         for (asked, counted) in [
@@ -508,55 +460,9 @@ mod tests {
         }
     }
 
-    /// The C++ side: a `std::vector<uint32_t>` made by the C++ `operator new` is counted by the
-    /// same rule, block by block, and only on the thread that counts.
-    #[cfg(has_cpp_heap)]
-    #[test]
-    fn a_cpp_vector_counts_for_its_blocks_on_the_counting_thread_only() {
-        let a = CountingAllocator;
-        a.start();
-        let (vector, data) = cpp::test_vector(1000);
-        // The vector (three pointers) and its 1000 elements of 4 bytes.
-        let blocks = bytes_of(vector, 24) + bytes_of(data, 4000);
-        assert_eq!(cpp::read().current, blocks);
-        assert_eq!(a.current(), blocks, "nothing in Rust meanwhile");
-        // Another thread, not counting, makes and frees a C++ vector of 4 MB: neither its own
-        // counts nor this thread's move.
-        let other = std::thread::spawn(|| {
-            let (vector, _) = cpp::test_vector(1 << 20);
-            cpp::free_test_vector(vector);
-            cpp::read()
-        })
-        .join()
-        .unwrap();
-        assert_eq!(other, Counts::default());
-        assert_eq!(cpp::read().current, blocks);
-        cpp::free_test_vector(vector);
-        assert_eq!(
-            cpp::read(),
-            Counts {
-                on: 1,
-                current: 0,
-                peak: blocks
-            }
-        );
-        // Stopped: C++ allocations are not counted.
-        a.stop();
-        let (vector, _) = cpp::test_vector(1000);
-        cpp::free_test_vector(vector);
-        assert_eq!(
-            cpp::read(),
-            Counts {
-                on: 0,
-                current: 0,
-                peak: blocks
-            }
-        );
-    }
-
     #[test]
     fn a_measure_inside_another_leaves_the_outer_counts_whole() {
-        let a = CountingAllocator;
+        let a = CountingAllocator::new();
         let (_, outer) = a.measure(|| {
             let kept: Vec<u8> = Vec::with_capacity(1 << 20);
             let (_, inner) = a.measure(|| Vec::<u8>::with_capacity(1 << 21).capacity());
