@@ -17,8 +17,5 @@ pub mod list;
 pub mod refine;
 pub mod repair;
 pub mod report;
-pub mod report_changing;
-pub mod report_decimate;
 pub mod report_sections;
-pub mod report_targets;
 pub mod subdivide;

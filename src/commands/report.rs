@@ -4,15 +4,14 @@
 //! ([`Host`]: its counting allocator, its baselines, its atomic writes). [`report_with`] is the
 //! same report with structures from outside the lab beside the lab's (see [`crate::extend`]).
 
-use topolab_baselines::Lab;
 use crate::input::Failure;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
+use topolab_baselines::Lab;
 use topolab_harness::baselines::BaselineRun;
 use topolab_harness::measure::MemoryMeter;
-use topolab_harness::report::clock::CpuSeconds;
 use topolab_harness::report::pipeline::{self, Host, Used};
-use topolab_harness::report::run::{MeshFamily, ReportError, Request, Run};
+use topolab_harness::report::run::{MeshFamily, ReportError, Request};
 use topolab_harness::report::sections::libigl::LIBIGL;
 use topolab_structures::registry::{duplicate_name, names, Structures};
 
@@ -153,16 +152,6 @@ fn report_error(f: Failure) -> ReportError {
     }
 }
 
-/// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
-/// zero CPU rather than failing the report).
-fn cpu_now() -> (f64, f64) {
-    use crate::alloc::{cpu_seconds, Who};
-    (
-        cpu_seconds(Who::Process).unwrap_or(0.0),
-        cpu_seconds(Who::Children).unwrap_or(0.0),
-    )
-}
-
 /// This program as the report's host, with the structures of `X` beside the lab's.
 struct Cli<X>(PhantomData<X>);
 
@@ -171,72 +160,9 @@ impl<X: Structures> Host for Cli<X> {
         &crate::ALLOCATOR
     }
 
-    fn cpu_seconds(&self) -> CpuSeconds {
-        cpu_now
-    }
-
-    fn keep_freed_memory(&self) -> bool {
-        crate::alloc::keep_freed_memory()
-    }
-
-    fn openmesh(&self) -> String {
-        crate::OPENMESH_BUILD
-            .map(str::to_string)
-            .unwrap_or_else(|| format!("not in this build: {}", crate::OPENMESH_MISSING))
-    }
-
-    fn note_absent(&self, notes: &mut Vec<String>) {
-        crate::registry::note_absent(notes)
-    }
-
-    fn is_editable(&self, name: &str) -> bool {
-        crate::registry::is_editable(name)
-    }
-
-    fn admit_refined(&self, faces: usize) -> Result<(), ReportError> {
+    fn admit_refined(&self, faces: usize, structures: &[String]) -> Result<(), ReportError> {
         // As a torus of as many triangles, with two builds of the largest structure.
-        let names: Vec<String> = names::<(Lab, X)>().iter().map(|s| s.to_string()).collect();
-        crate::limits::admit_report(&[faces], &["torus"], &names, 0).map_err(report_error)
-    }
-
-    fn measure(&self, section: &str, run: &mut Run) -> Result<(), ReportError> {
-        let req = run.request;
-        let (cases, names, results) = (run.cases, &req.names, &mut *run.results);
-        match section {
-            "hull" => {
-                results.hull = hull(HullSizes::of(req.quick, req.full), &mut results.notes)
-                    .map_err(report_error)?;
-                results.hull_fits = topolab_harness::hull::bench::fits(&results.hull);
-                results.qhull = crate::registry::qhull_description();
-            }
-            "changing" => {
-                results.changing = super::report_changing::measure(
-                    cases,
-                    names,
-                    req.quick,
-                    req.full,
-                    &mut results.notes,
-                )
-                .map_err(report_error)?
-            }
-            "decimate" => {
-                results.decimate =
-                    super::report_decimate::measure(cases, names, req.quick, &mut results.notes)
-                        .map_err(report_error)?
-            }
-            "targets" => {
-                results.targets = super::report_targets::measure::<X>(
-                    cases,
-                    names,
-                    &results.measurements,
-                    &results.probe,
-                    &mut results.notes,
-                )
-                .map_err(report_error)?
-            }
-            _ => {}
-        }
-        Ok(())
+        crate::limits::admit_report(&[faces], &["torus"], structures, 0).map_err(report_error)
     }
 
     fn baselines(&self, used: Used) -> Vec<BaselineRun> {
@@ -255,94 +181,6 @@ impl<X: Structures> Host for Cli<X> {
     }
 }
 
-/// How far the hull benchmark goes: the largest n in a ball and on a sphere, and the
-/// `Volume6` tests a slow algorithm's next size may be predicted to take
-/// ([`topolab_harness::hull::bench::run`]).
-#[derive(Copy, Clone, Debug, PartialEq)]
-struct HullSizes {
-    ball: usize,
-    sphere: usize,
-    max_tests: f64,
-}
-
-impl HullSizes {
-    /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
-    /// (h = n); its 1M points took 44 s alone (2026-12-01: CGAL 20 s, the randomized algorithm
-    /// 12, Qhull through SciPy 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
-    /// The slow algorithms stop at [`topolab_harness::hull::bench::MAX_TESTS`]. `--full` takes
-    /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
-    /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
-    fn of(quick: bool, full: bool) -> Self {
-        use topolab_harness::hull::bench::MAX_TESTS;
-        match (quick, full) {
-            (true, _) => HullSizes {
-                ball: 10_000,
-                sphere: 1_000,
-                max_tests: MAX_TESTS,
-            },
-            (false, false) => HullSizes {
-                ball: 1_000_000,
-                sphere: 100_000,
-                max_tests: MAX_TESTS,
-            },
-            (false, true) => HullSizes {
-                ball: 1_000_000,
-                sphere: 1_000_000,
-                max_tests: 1.5e10,
-            },
-        }
-    }
-}
-
-/// The hull benchmark: points in a ball and on a sphere ([`HullSizes`]), each row's peak heap
-/// measured by the process's counting allocator in its untimed warm-up run, then the outside
-/// hulls on the same points (Qhull in-process, CGAL), timed the same way.
-fn hull(
-    sizes: HullSizes,
-    notes: &mut Vec<String>,
-) -> Result<Vec<topolab_harness::hull::bench::HullRow>, Failure> {
-    use topolab_harness::hull::bench;
-    use topolab_structures::hull::Shape;
-    if !crate::HAS_QHULL {
-        notes.push(format!(
-            "The hull section has no Qhull: {}.",
-            crate::QHULL_MISSING
-        ));
-    }
-    let mut rows = Vec::new();
-    for (shape, name, max) in [
-        (Shape::Ball, "ball", sizes.ball),
-        (Shape::Sphere, "sphere", sizes.sphere),
-    ] {
-        let sizes_here: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
-            .into_iter()
-            .filter(|&n| n <= max)
-            .collect();
-        let run = bench::run(
-            shape,
-            name,
-            &sizes_here,
-            sizes.max_tests,
-            Some(&crate::ALLOCATOR),
-            |row| {
-                eprintln!(
-                    "topolab report: hull {} {} {}: {:.3} s",
-                    row.shape, row.n, row.algorithm, row.seconds
-                )
-            },
-        );
-        rows.extend(run.map_err(|e| Failure {
-            message: format!("hull benchmark: {e}"),
-            code: 1,
-        })?);
-    }
-    topolab_harness::hull::outside::add_outside_hulls(&mut rows).map_err(|e| Failure {
-        message: format!("hull benchmark: {e}"),
-        code: 1,
-    })?;
-    Ok(rows)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -353,34 +191,6 @@ mod tests {
             crate::cli::Command::Report(args) => args,
             _ => panic!("not a report"),
         })
-    }
-
-    #[test]
-    fn the_default_hull_stops_the_sphere_at_100k_and_full_lifts_it() {
-        let default = HullSizes::of(false, false);
-        assert_eq!((default.ball, default.sphere), (1_000_000, 100_000));
-        let full = HullSizes::of(false, true);
-        assert_eq!((full.ball, full.sphere), (1_000_000, 1_000_000));
-        assert!(full.max_tests > default.max_tests);
-        let quick = HullSizes::of(true, false);
-        assert!(quick.ball <= 10_000 && quick.sphere <= 1_000);
-        // The incremental algorithm's next sizes, predicted from the tests counted on
-        // 2026-12-01: its 100k sphere and 1M ball run with --full only.
-        use topolab_harness::hull::bench::predicted_tests;
-        let sphere = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
-        let ball = predicted_tests(Some((10_000, 5_830_028)), (100_000, 185_455_794), 1_000_000);
-        for next in [sphere, ball] {
-            assert!(next > default.max_tests && next <= full.max_tests, "{next}");
-        }
-        // Gift wrapping's 100k ball runs by default, its 1M ball not even with --full.
-        let gift = predicted_tests(Some((1_000, 525_737)), (10_000, 17_299_135), 100_000);
-        assert!(gift <= default.max_tests, "{gift}");
-        let gift = predicted_tests(
-            Some((10_000, 17_299_135)),
-            (100_000, 550_997_245),
-            1_000_000,
-        );
-        assert!(gift > full.max_tests, "{gift}");
     }
 
     #[test]

@@ -8,12 +8,18 @@
 use crate::phases::{Phase, PhaseTime};
 use std::time::Instant;
 
-/// The process's CPU seconds so far, its own and its waited-for subprocesses'.
-pub type CpuSeconds = fn() -> (f64, f64);
+/// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
+/// zero CPU rather than failing the report).
+fn cpu_now() -> (f64, f64) {
+    use topolab_alloc::{cpu_seconds, Who};
+    (
+        cpu_seconds(Who::Process).unwrap_or(0.0),
+        cpu_seconds(Who::Children).unwrap_or(0.0),
+    )
+}
 
 /// The times so far since the last lap.
 pub struct Clock {
-    cpu_now: CpuSeconds,
     wall: Instant,
     cpu: f64,
     children: f64,
@@ -22,12 +28,11 @@ pub struct Clock {
 }
 
 impl Clock {
-    /// Starts the clock (the first section starts now), reading the CPU time by `cpu_now`.
-    pub fn start(cpu_now: CpuSeconds) -> Clock {
+    /// Starts the clock (the first section starts now).
+    pub fn start() -> Clock {
         let (cpu, children) = cpu_now();
         let now = Instant::now();
         Clock {
-            cpu_now,
             wall: now,
             cpu,
             children,
@@ -39,7 +44,7 @@ impl Clock {
     /// Ends the current section as `phase` (of `mesh`, for a mesh's measurement), prints its
     /// line, and starts the next one.
     pub fn lap(&mut self, phase: Phase, mesh: Option<&str>) {
-        let (cpu, children) = (self.cpu_now)();
+        let (cpu, children) = cpu_now();
         let now = Instant::now();
         let t = PhaseTime {
             phase,

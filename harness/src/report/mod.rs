@@ -7,6 +7,7 @@
 pub(crate) mod cells;
 pub mod clock;
 pub mod format;
+pub mod listed;
 pub mod page;
 pub mod pipeline;
 pub mod refined;

@@ -11,8 +11,9 @@ use crate::kernels::sample_queries;
 use crate::limit::{self, MeshCounts};
 use crate::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use crate::phases::Phase;
-use crate::report::clock::{self, Clock, CpuSeconds};
-use crate::report::run::{Listed, MeshFamily, ReportError, Request, Run};
+use crate::report::clock::{self, Clock};
+use crate::report::listed::Listed;
+use crate::report::run::{MeshFamily, ReportError, Request, Run};
 use crate::report::section::{Real, Refined};
 use crate::report::sections::real_at_scale::FAMILY;
 use crate::report::selection::Selection;
@@ -45,22 +46,9 @@ pub struct Used<'a> {
 pub trait Host {
     /// The process's memory meter and clock: the counting allocator it declares.
     fn meter(&self) -> &dyn MemoryMeter;
-    /// The process's CPU seconds, its own and its subprocesses'.
-    fn cpu_seconds(&self) -> CpuSeconds;
-    /// Whether freed memory stays with the process (glibc's policy, set for the run), so that
-    /// warm builds reuse it whatever the run built before.
-    fn keep_freed_memory(&self) -> bool;
-    /// The OpenMesh this build measures, or why it measures none.
-    fn openmesh(&self) -> String;
-    /// Adds a note for each baseline this build does not have.
-    fn note_absent(&self, notes: &mut Vec<String>);
-    /// Whether the structure called `name` offers the editing operations.
-    fn is_editable(&self, name: &str) -> bool;
-    /// Refuses a refined mesh of `faces` triangles the machine cannot hold.
-    fn admit_refined(&self, faces: usize) -> Result<(), ReportError>;
-    /// The measurement of a section whose baselines only the host reaches (the hull, the
-    /// changing workloads, decimation, the Targets).
-    fn measure(&self, section: &str, run: &mut Run) -> Result<(), ReportError>;
+    /// Refuses a refined mesh of `faces` triangles the machine cannot hold with `structures`
+    /// built on it.
+    fn admit_refined(&self, faces: usize, structures: &[String]) -> Result<(), ReportError>;
     /// How each outside library the run used was built, used, timed and counted.
     fn baselines(&self, used: Used) -> Vec<BaselineRun>;
     /// Writes one file of the report, whole or not at all.
@@ -90,8 +78,7 @@ impl StructureVisitor for Describe {
         let info = StructureInfo {
             name: M::NAME.into(),
             family: M::FAMILY,
-            // The host knows which structures edit (`Host::is_editable`).
-            editable: false,
+            editable: topolab_baselines::registry::is_editable(M::NAME),
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()
@@ -142,7 +129,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     let samples = if req.quick { 64 } else { 128 };
     // The same glibc policy for every structure, C++ baselines included: freed memory stays
     // with the process, so warm builds reuse it whatever the run built before.
-    if !host.keep_freed_memory() {
+    if !topolab_alloc::keep_freed_memory() {
         eprintln!("topolab report: this allocator keeps its own policy (not glibc): warm builds may still fault in fresh pages");
     }
     let probe_mb = req.probe_mb;
@@ -153,7 +140,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         .map(|f| f.name())
         .collect();
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
-    let mut clock = Clock::start(host.cpu_seconds());
+    let mut clock = Clock::start();
     let probe = probe::measure(probe_mb, probe_mb);
     clock.lap(Phase::PROBE, None);
     let mut notes = Vec::new();
@@ -165,7 +152,13 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     let mut results = Results {
         format_version: FORMAT_VERSION,
         baselines: Vec::new(),
-        machine: machine::facts(&host.openmesh()),
+        machine: machine::facts(
+            &topolab_baselines::OPENMESH_BUILD
+                .map(str::to_string)
+                .unwrap_or_else(|| {
+                    format!("not in this build: {}", topolab_baselines::OPENMESH_MISSING)
+                }),
+        ),
         probe,
         settings: Settings {
             quick: req.quick,
@@ -192,14 +185,13 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         notes,
         phases: Vec::new(),
     };
-    host.note_absent(&mut results.notes);
+    topolab_baselines::registry::note_absent(&mut results.notes);
     results
         .notes
         .extend(clock::budget_notes(req.quick, req.full));
     for n in &req.names {
-        let (mut info, teach) = L::visit(n, Describe)
+        let (info, teach) = L::visit(n, Describe)
             .map_err(|_| ReportError::Usage(format!("no structure is called {n}")))?;
-        info.editable = host.is_editable(n);
         results.structures.push(info);
         results.teaching.push(teach);
     }
@@ -226,7 +218,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         } else {
             &refined::FULL
         };
-        let admit = |faces: usize| host.admit_refined(faces);
+        let admit = |faces: usize| host.admit_refined(faces, &req.names);
         let made = refined::refined_meshes(list, &admit, &mut results.notes)?;
         for (name, soup) in made {
             cases.push((name, FAMILY.into(), soup));
@@ -313,13 +305,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         let Some(phase) = section.phase() else {
             continue;
         };
-        match section.name() {
-            // Measured by the host until their baselines come from the crates below.
-            "hull" | "changing" | "decimate" | "targets" => {
-                host.measure(section.name(), &mut run)?
-            }
-            _ => section.measure(&mut run)?,
-        }
+        section.measure(&mut run)?;
         clock.lap(phase, None);
     }
     let libigl_version = run.libigl_version;

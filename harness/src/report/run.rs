@@ -4,10 +4,8 @@
 use crate::measure::{MeshCase, Plan};
 use crate::results::{Measurement, Results};
 use crate::timing::meter::MemoryMeter;
-use std::marker::PhantomData;
 use std::path::PathBuf;
-use topolab_structures::registry::{StructureVisitor, Structures};
-use topolab_structures::{MeshTopology, Operator, PolygonSoup};
+use topolab_structures::PolygonSoup;
 
 /// A family of meshes a report run measures (`--meshes`).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -123,7 +121,7 @@ impl std::error::Error for ReportError {}
 pub type Case = (String, String, PolygonSoup);
 
 /// The structures of a run, by name, for the sections that measure some of them themselves
-/// ([`Listed`] lists those of a [`Structures`] list).
+/// ([`Listed`](crate::report::listed::Listed) lists those of a list of structures).
 pub trait Roster {
     /// The vertex 1-ring sweep (R00 over every vertex) of the structure called `name` on
     /// `case`; `None` for a name not in the list.
@@ -133,45 +131,16 @@ pub trait Roster {
         case: &MeshCase,
         plan: &Plan,
     ) -> Option<Result<Measurement, String>>;
-}
 
-/// The structures of the list `L`, as a [`Roster`].
-pub struct Listed<L>(PhantomData<L>);
-
-impl<L> Listed<L> {
-    /// The list `L`.
-    pub fn new() -> Self {
-        Self(PhantomData)
-    }
-}
-
-impl<L> Default for Listed<L> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-struct Sweep<'a> {
-    case: &'a MeshCase<'a>,
-    plan: &'a Plan,
-}
-
-impl StructureVisitor for Sweep<'_> {
-    type Output = Result<Measurement, String>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        crate::measure::measure_sweep::<M>(self.case, Operator::R00, self.plan)
-    }
-}
-
-impl<L: Structures> Roster for Listed<L> {
-    fn sweep(
+    /// The turns of a target's group: the structure called `first` with the one called
+    /// `second`, or with the probe (`None` or [`PROBE`](crate::targets::plan::PROBE)); `None`
+    /// for a first name not in the list.
+    fn targets(
         &self,
-        name: &str,
-        case: &MeshCase,
-        plan: &Plan,
-    ) -> Option<Result<Measurement, String>> {
-        L::visit(name, Sweep { case, plan }).ok()
-    }
+        first: &str,
+        second: Option<&str>,
+        case: &crate::targets::group::Case,
+    ) -> Option<Result<Vec<crate::targets::plan::Turns>, String>>;
 }
 
 /// What a section's own measurement works with: the request, the run's structures and meshes,

@@ -25,6 +25,7 @@
 //! processes do not count. Every run's answer must agree with the first run's; a disagreement
 //! fails the report.
 
+pub mod group;
 pub mod measured;
 pub mod plan;
 pub mod probe;

@@ -1,10 +1,301 @@
-//! "Changing meshes": the changing workloads of the Surface_mesh benchmark (√3 subdivision,
-//! the collapse test) on the editable structures and the outside libraries.
+//! "Changing meshes": the changing workloads (√3 subdivision and the collapse test of the
+//! Surface_mesh benchmark; see [`crate::changing`]): every editable structure among
+//! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
+//! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
+//! on the closed tori of the run.
+//!
+//! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
+//! O(k·n), declared by `MeshEdit::edit_cost`) would run each workload in quadratic time: it is
+//! skipped, with a note giving the estimate, where that estimate exceeds [`MAX_SECONDS`]; so is
+//! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`).
+//! A structure whose workload edits cost O(n) each runs only on tori of at most
+//! [`LINEAR_EDIT_MAX_FACES`] faces: the estimate assumes 1 ns per element read, and the CHE
+//! levels' O(n) edits (an `EH` rebuild, a relabelling) cost far more per element.
 
-use crate::changing::ChangingRow;
+use crate::changing::{cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum};
 use crate::phases::Phase;
+use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
+use crate::skips::{self, Skip};
 use std::fmt::Write;
+#[cfg(has_openmesh)]
+use topolab_baselines::openmesh::OpenMesh;
+use topolab_baselines::registry::{self, EditVisitor};
+use topolab_structures::algorithms::changing::Changing;
+#[cfg(any(has_openmesh, has_cgal))]
+use topolab_structures::MeshTopology;
+use topolab_structures::{Cost, MeshEdit, PolygonSoup};
+
+// OpenMesh is built through MeshTopology::from_soup.
+#[cfg(has_openmesh)]
+const _: fn(&PolygonSoup) -> topolab_structures::Result<OpenMesh> =
+    <OpenMesh as MeshTopology>::from_soup;
+
+/// A structure's workload is skipped where its declared costs predict more than this
+/// (a tenth of it in a quick run).
+pub const MAX_SECONDS: f64 = 20.0;
+
+/// The time the estimate assumes per element a scan reads (a streaming read of a few bytes,
+/// optimistic, so that nothing is skipped that would have fitted).
+const SECONDS_PER_ELEMENT: f64 = 1e-9;
+
+/// The elements one operation of cost `c` reads on a mesh of `n` elements (valence k ≈ 6).
+fn elements(c: Cost, n: f64) -> f64 {
+    match c {
+        Cost::Constant | Cost::Log | Cost::Local | Cost::Boundary => 6.0,
+        Cost::Linear => n,
+        Cost::LocalTimesLinear => 6.0 * n,
+        Cost::Quadratic => n * n,
+    }
+}
+
+/// Tori larger than this (faces) are left out for a structure whose workload edits are
+/// declared O(n) or costlier: the CHE levels' edits rebuild `EH` or relabel curves (see their
+/// editing module), and on the 4k torus a run already takes seconds, some 2000x the index
+/// half-edge's.
+pub const LINEAR_EDIT_MAX_FACES: usize = 1_500;
+
+/// Why `M` does not run `w` on a mesh of `faces` faces, if it does not: the reason (the same
+/// words on every mesh, so that the notes group them) and what differs by mesh.
+fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, Option<String>)> {
+    let max = if quick {
+        MAX_SECONDS / 10.0
+    } else {
+        MAX_SECONDS
+    };
+    if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
+        return Some((
+            "its edge ids change when faces are split, and √3 flips the old edges by id".into(),
+            None,
+        ));
+    }
+    // The mesh grows to about three times its faces (corners, edges): n ≈ 3 faces.
+    let n = 3.0 * faces as f64;
+    let seconds: f64 = w
+        .operations()
+        .iter()
+        .map(|&(op, per_face)| {
+            per_face * faces as f64 * elements(M::edit_cost(op), n) * SECONDS_PER_ELEMENT
+        })
+        .sum();
+    if seconds > max {
+        return Some((
+            format!(
+                "its declared costs ({}) predict above {max} s at ≥ 1 ns per element read",
+                declared::<M>(w)
+            ),
+            Some(format!("about {} s", format_seconds(seconds))),
+        ));
+    }
+    let linear = w
+        .operations()
+        .iter()
+        .any(|&(op, per_face)| per_face > 0.0 && elements(M::edit_cost(op), n) >= n);
+    (linear && faces > LINEAR_EDIT_MAX_FACES).then(|| {
+        (
+            format!(
+                "its declared costs ({}) are O(n) per edit: run up to {LINEAR_EDIT_MAX_FACES} faces",
+                declared::<M>(w)
+            ),
+            None,
+        )
+    })
+}
+
+fn format_seconds(s: f64) -> String {
+    if s >= 1e4 {
+        format!("{s:.1e}")
+    } else {
+        format!("{s:.0}")
+    }
+}
+
+/// One workload timed on one editable structure, or why not.
+struct Timed<'a> {
+    soup: &'a PolygonSoup,
+    workload: Changing,
+    runs: usize,
+    quick: bool,
+}
+
+/// The outcome of [`Timed`]: the median time and the result, or the reason for the skip.
+enum Outcome {
+    Ran(Result<((f64, MeshChecksum), String), String>),
+    Skipped((String, Option<String>)),
+}
+
+impl EditVisitor for Timed<'_> {
+    type Output = Outcome;
+    fn visit<M: MeshEdit>(self) -> Outcome {
+        match skip::<M>(self.workload, self.soup.num_faces(), self.quick) {
+            Some(why) => Outcome::Skipped(why),
+            None => Outcome::Ran(
+                timed::<M>(self.soup, self.workload, self.runs)
+                    .map(|t| (t, declared::<M>(self.workload))),
+            ),
+        }
+    }
+}
+
+/// Tori larger than this (faces) are left out: the workloads triple the mesh.
+const MAX_FACES: usize = 4_000_000;
+
+fn timed<M: MeshEdit>(
+    soup: &PolygonSoup,
+    w: Changing,
+    runs: usize,
+) -> Result<(f64, MeshChecksum), String> {
+    time(runs, || M::from_soup(soup), |m| w.run(m), mesh_checksum)
+}
+
+#[cfg(has_openmesh)]
+fn timed_openmesh(
+    soup: &PolygonSoup,
+    w: Changing,
+    runs: usize,
+) -> Result<(f64, MeshChecksum), String> {
+    time(
+        runs,
+        || {
+            let mut m = <OpenMesh as MeshTopology>::from_soup(soup)?;
+            m.prepare_changing()?;
+            Ok(m)
+        },
+        |m| m.native_changing(w),
+        mesh_checksum,
+    )
+}
+
+/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction (told
+/// the exact counts, as OpenMesh's).
+#[cfg(has_cgal)]
+fn timed_cgal<S: topolab_baselines::cgal::CgalStructure>(
+    soup: &PolygonSoup,
+    runs: usize,
+    work: impl FnMut(&mut topolab_baselines::cgal::Cgal<S>) -> topolab_structures::Result<()>,
+) -> Result<(f64, MeshChecksum), String> {
+    time(
+        runs,
+        || <topolab_baselines::cgal::Cgal<S> as MeshTopology>::from_soup(soup),
+        work,
+        mesh_checksum,
+    )
+}
+
+/// A baseline's native run of `w` (the whole workload in C++).
+fn timed_native(
+    name: &str,
+    soup: &PolygonSoup,
+    w: Changing,
+    runs: usize,
+) -> Result<(f64, MeshChecksum), String> {
+    match name {
+        #[cfg(has_cgal)]
+        registry::CGAL_SURFACE_MESH => {
+            timed_cgal::<topolab_baselines::cgal::SurfaceMeshClass>(soup, runs, |m| {
+                m.native_changing(w)
+            })
+        }
+        #[cfg(has_cgal)]
+        registry::CGAL_POLYHEDRON => {
+            timed_cgal::<topolab_baselines::cgal::PolyhedronClass>(soup, runs, |m| {
+                m.native_changing(w)
+            })
+        }
+        #[cfg(has_openmesh)]
+        registry::OPENMESH => timed_openmesh(soup, w, runs),
+        _ => {
+            // Without the C++ baselines no arm above is compiled, and these go unread.
+            let _ = (soup, w, runs);
+            Err(format!(
+                "{name} has no native changing workloads in this build"
+            ))
+        }
+    }
+}
+
+/// Runs both workloads on every torus of `cases` (name, family, soup) for each structure of
+/// `names` that can edit, each [`changing_runs`](crate::report::clock::changing_runs) times; a disagreement
+/// between structures is an error.
+fn measure(
+    cases: &[Case],
+    names: &[String],
+    quick: bool,
+    full: bool,
+    notes: &mut Vec<String>,
+) -> Result<Vec<ChangingRow>, ReportError> {
+    let mut rows = Vec::new();
+    let mut skips = Vec::new();
+    let editing: Vec<&str> = names
+        .iter()
+        .map(String::as_str)
+        .filter(|s| registry::is_editable(s))
+        .collect();
+    for (mesh, family, soup) in cases {
+        if family != "torus" || editing.is_empty() {
+            continue;
+        }
+        if soup.num_faces() > MAX_FACES {
+            notes.push(format!(
+                "the changing workloads skipped {mesh}: above {MAX_FACES} faces"
+            ));
+            continue;
+        }
+        let runs = crate::report::clock::changing_runs(soup.num_faces(), quick, full);
+        for w in Changing::ALL {
+            for &s in &editing {
+                eprintln!("topolab report: {} on {mesh}: {s}", w.name());
+                let timed = Timed {
+                    soup,
+                    workload: w,
+                    runs,
+                    quick,
+                };
+                // The baselines run natively even where they implement MeshEdit: the
+                // protocol's whole loop in C++, not one FFI call per edit.
+                let got = if registry::NATIVE_CHANGING.contains(&s) {
+                    timed_native(s, soup, w, runs).map(|t| (t, String::new()))
+                } else {
+                    match registry::visit_editable(s, timed) {
+                        Some(Outcome::Ran(got)) => got,
+                        Some(Outcome::Skipped((reason, detail))) => {
+                            skips.push(Skip {
+                                what: w.name().to_string(),
+                                structure: s.to_string(),
+                                mesh: mesh.clone(),
+                                reason,
+                                detail,
+                            });
+                            continue;
+                        }
+                        None => Err(format!("{s} does not edit")),
+                    }
+                };
+                let ((seconds, result), declared) = got.map_err(|e| {
+                    ReportError::Measurement(format!("{} on {mesh} failed on {s}: {e}", w.name()))
+                })?;
+                rows.push(ChangingRow {
+                    workload: w,
+                    mesh: mesh.clone(),
+                    faces: soup.num_faces(),
+                    structure: s.to_string(),
+                    seconds,
+                    runs,
+                    ns_per_face: seconds * 1e9 / soup.num_faces().max(1) as f64,
+                    result,
+                    declared,
+                });
+            }
+        }
+        cross_check(&rows).map_err(|e| {
+            ReportError::Measurement(format!(
+                "{e}\nThe report stops: two structures changed a mesh differently."
+            ))
+        })?;
+    }
+    notes.extend(skips::group(&skips));
+    Ok(rows)
+}
 
 /// The report section.
 pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
@@ -39,9 +330,9 @@ pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
 
 /// The changing workloads (√3 subdivision, the collapse test) on the editable structures and
 /// OpenMesh, on the generated tori.
-pub struct Changing;
+pub struct ChangingMeshes;
 
-impl Section for Changing {
+impl Section for ChangingMeshes {
     fn name(&self) -> &'static str {
         "changing"
     }
@@ -54,7 +345,43 @@ impl Section for Changing {
         Some(Phase::new("changing", "changing workloads"))
     }
 
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        let (req, r) = (run.request, &mut *run.results);
+        r.changing = measure(run.cases, &req.names, req.quick, req.full, &mut r.notes)?;
+        Ok(())
+    }
+
     fn render(&self, h: &mut String, page: &Page) {
         render(h, &page.r.changing);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topolab_structures::{EdgeList, IndexHalfEdge, VertexList, WingedEdge};
+
+    #[test]
+    fn scanning_structures_are_skipped_with_an_estimate_where_it_would_take_too_long() {
+        for w in Changing::ALL {
+            for faces in [1_000, 1_000_000] {
+                assert_eq!(skip::<IndexHalfEdge>(w, faces, false), None);
+                assert_eq!(skip::<WingedEdge>(w, faces, false), None);
+            }
+            assert_eq!(skip::<EdgeList>(w, 1_000, false), None, "{w:?}");
+            let (why, estimate) = skip::<EdgeList>(w, 1_000_000, false).expect("quadratic at 1M");
+            assert!(
+                why.contains("predict above") && why.contains("O(n)"),
+                "{why}"
+            );
+            assert!(estimate.is_some_and(|e| e.starts_with("about ")));
+        }
+        assert_eq!(skip::<VertexList>(Changing::Collapse, 1_000, false), None);
+        assert!(skip::<VertexList>(Changing::Collapse, 1_000_000, false).is_some());
+        // The report test's quick 64k torus: skipped, not minutes of scans.
+        assert!(skip::<VertexList>(Changing::Collapse, 64_000, true).is_some());
+        let (why, _) =
+            skip::<VertexList>(Changing::Sqrt3, 1_000, false).expect("no stable edge ids");
+        assert!(why.contains("edge ids"), "{why}");
     }
 }

@@ -4,8 +4,11 @@
 use crate::phases::Phase;
 use crate::plot;
 use crate::report::format::esc;
+use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
+use crate::results::HullRow;
 use crate::results::Results;
+use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 use topolab_structures::Family;
 
@@ -158,6 +161,90 @@ fn hull_analysis(h: &mut String, r: &Results) {
     h.push_str("</table>");
 }
 
+/// How far the hull benchmark goes: the largest n in a ball and on a sphere, and the
+/// `Volume6` tests a slow algorithm's next size may be predicted to take
+/// ([`crate::hull::bench::run`]).
+#[derive(Copy, Clone, Debug, PartialEq)]
+struct HullSizes {
+    ball: usize,
+    sphere: usize,
+    max_tests: f64,
+}
+
+impl HullSizes {
+    /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
+    /// (h = n); its 1M points took 44 s alone (2026-12-01: CGAL 20 s, the randomized algorithm
+    /// 12, Qhull through SciPy 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
+    /// The slow algorithms stop at [`MAX_TESTS`](crate::hull::bench::MAX_TESTS). `--full` takes
+    /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
+    /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
+    fn of(quick: bool, full: bool) -> Self {
+        use crate::hull::bench::MAX_TESTS;
+        match (quick, full) {
+            (true, _) => HullSizes {
+                ball: 10_000,
+                sphere: 1_000,
+                max_tests: MAX_TESTS,
+            },
+            (false, false) => HullSizes {
+                ball: 1_000_000,
+                sphere: 100_000,
+                max_tests: MAX_TESTS,
+            },
+            (false, true) => HullSizes {
+                ball: 1_000_000,
+                sphere: 1_000_000,
+                max_tests: 1.5e10,
+            },
+        }
+    }
+}
+
+/// The hull benchmark: points in a ball and on a sphere ([`HullSizes`]), each row's peak heap
+/// measured by the process's counting allocator in its untimed warm-up run, then the outside
+/// hulls on the same points (Qhull in-process, CGAL), timed the same way.
+fn measure(
+    sizes: HullSizes,
+    meter: &dyn MemoryMeter,
+    notes: &mut Vec<String>,
+) -> Result<Vec<HullRow>, ReportError> {
+    use crate::hull::bench;
+    use topolab_structures::hull::Shape;
+    if !topolab_baselines::HAS_QHULL {
+        notes.push(format!(
+            "The hull section has no Qhull: {}.",
+            topolab_baselines::QHULL_MISSING
+        ));
+    }
+    let mut rows = Vec::new();
+    for (shape, name, max) in [
+        (Shape::Ball, "ball", sizes.ball),
+        (Shape::Sphere, "sphere", sizes.sphere),
+    ] {
+        let sizes_here: Vec<usize> = [1_000, 10_000, 100_000, 1_000_000]
+            .into_iter()
+            .filter(|&n| n <= max)
+            .collect();
+        let run = bench::run(
+            shape,
+            name,
+            &sizes_here,
+            sizes.max_tests,
+            Some(meter),
+            |row| {
+                eprintln!(
+                    "topolab report: hull {} {} {}: {:.3} s",
+                    row.shape, row.n, row.algorithm, row.seconds
+                )
+            },
+        );
+        rows.extend(run.map_err(|e| ReportError::Measurement(format!("hull benchmark: {e}")))?);
+    }
+    crate::hull::outside::add_outside_hulls(&mut rows)
+        .map_err(|e| ReportError::Measurement(format!("hull benchmark: {e}")))?;
+    Ok(rows)
+}
+
 /// The 3D convex hull algorithms beside Qhull and CGAL.
 pub struct Hull;
 
@@ -177,8 +264,49 @@ impl Section for Hull {
         Some(Phase::new("hull", "3D convex hulls"))
     }
 
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        let (req, r) = (run.request, &mut *run.results);
+        r.hull = measure(HullSizes::of(req.quick, req.full), run.meter, &mut r.notes)?;
+        r.hull_fits = crate::hull::bench::fits(&r.hull);
+        r.qhull = topolab_baselines::registry::qhull_description();
+        Ok(())
+    }
+
     fn render(&self, h: &mut String, page: &Page) {
         hull(h, page.r);
         hull_analysis(h, page.r);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_hull_stops_the_sphere_at_100k_and_full_lifts_it() {
+        let default = HullSizes::of(false, false);
+        assert_eq!((default.ball, default.sphere), (1_000_000, 100_000));
+        let full = HullSizes::of(false, true);
+        assert_eq!((full.ball, full.sphere), (1_000_000, 1_000_000));
+        assert!(full.max_tests > default.max_tests);
+        let quick = HullSizes::of(true, false);
+        assert!(quick.ball <= 10_000 && quick.sphere <= 1_000);
+        // The incremental algorithm's next sizes, predicted from the tests counted on
+        // 2026-12-01: its 100k sphere and 1M ball run with --full only.
+        use crate::hull::bench::predicted_tests;
+        let sphere = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
+        let ball = predicted_tests(Some((10_000, 5_830_028)), (100_000, 185_455_794), 1_000_000);
+        for next in [sphere, ball] {
+            assert!(next > default.max_tests && next <= full.max_tests, "{next}");
+        }
+        // Gift wrapping's 100k ball runs by default, its 1M ball not even with --full.
+        let gift = predicted_tests(Some((1_000, 525_737)), (10_000, 17_299_135), 100_000);
+        assert!(gift <= default.max_tests, "{gift}");
+        let gift = predicted_tests(
+            Some((10_000, 17_299_135)),
+            (100_000, 550_997_245),
+            1_000_000,
+        );
+        assert!(gift > full.max_tests, "{gift}");
     }
 }

@@ -37,7 +37,7 @@ pub static SECTIONS: &[&dyn Section] = &[
     &real_at_scale::RealAtScale,
     &libigl::Libigl,
     &hull::Hull,
-    &changing::Changing,
+    &changing::ChangingMeshes,
     &decimate::Decimate,
     &teaching::Teaching,
     &meshes::Meshes,

@@ -1,17 +1,176 @@
-//! "Targets": every target measured in turns on the largest torus of the run, its ratio
-//! beside its goal, with the same ratio one after another and, for a missed one, why.
+//! "Targets": the Targets table's measurement (see [`crate::targets`]): on
+//! the largest torus of the run, the structures of each target built once and run in turns,
+//! the changing workloads from fresh builds in turns (OpenMesh natively, as the changing
+//! section runs it), every run in the measuring thread's CPU time.
 
+use crate::changing::{mesh_checksum, MeshChecksum};
 use crate::phases::Phase;
+use crate::probe::Probe;
 use crate::report::cells::largest;
 use crate::report::format::{against_goal, class_of, esc};
+use crate::report::run::{Case as Mesh, ReportError, Roster, Run as SectionRun};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
-use crate::results::{Results, Status};
+use crate::results::{Measurement, Results, Status};
+use crate::targets::group::Case;
 use crate::targets::measured::measured;
-use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, ROUNDS, TARGETS};
+use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, PROBE, ROUNDS, TARGETS};
+use crate::targets::probe::ProbeTurns;
+use crate::targets::rounds::turns;
 use crate::targets::text::{
     chain_text, missed_limit_text, one_after_another, sequential, sequential_subject, versus_text,
 };
+use crate::timing::meter::MemoryMeter;
+use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::fmt::Write;
+use std::time::Instant;
+#[cfg(has_openmesh)]
+use topolab_baselines::openmesh::OpenMesh;
+use topolab_structures::algorithms::changing::Changing;
+use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup};
+
+/// One run of workload `w` on `structure` from a fresh build (not timed), as the changing
+/// section runs it (OpenMesh natively), timed by a [`Stopwatch`]: ns per face of the input and
+/// the resulting mesh.
+fn changing_run(
+    structure: &str,
+    soup: &PolygonSoup,
+    w: Changing,
+    meter: &dyn MemoryMeter,
+) -> Result<Run, String> {
+    let mesh = match structure {
+        "index-half-edge" => edit::<IndexHalfEdge>(soup, w, meter),
+        "pointer-half-edge" => edit::<PointerHalfEdge>(soup, w, meter),
+        #[cfg(has_openmesh)]
+        "openmesh" => {
+            let mut m = <OpenMesh as MeshTopology>::from_soup(soup).map_err(|e| e.to_string())?;
+            m.prepare_changing().map_err(|e| e.to_string())?;
+            timed(m, |m| m.native_changing(w), meter)
+        }
+        other => return Err(format!("{other} does not run the changing workloads")),
+    }?;
+    Ok(Run {
+        ns: mesh.0 / soup.num_faces().max(1) as f64,
+        answer: Answer::Mesh(mesh.1),
+    })
+}
+
+/// Builds `M` (not timed) and runs `w` on it.
+fn edit<M: MeshEdit>(
+    soup: &PolygonSoup,
+    w: Changing,
+    meter: &dyn MemoryMeter,
+) -> Result<(f64, MeshChecksum), String> {
+    let m = M::from_soup(soup).map_err(|e| e.to_string())?;
+    timed(m, |m| w.run(m), meter)
+}
+
+/// Runs `work` on `m`, timed; then the resulting mesh's checksum.
+fn timed<M: MeshTopology>(
+    mut m: M,
+    work: impl FnOnce(&mut M) -> topolab_structures::Result<()>,
+    meter: &dyn MemoryMeter,
+) -> Result<(f64, MeshChecksum), String> {
+    let watch = Stopwatch::start(meter);
+    work(&mut m).map_err(|e| e.to_string())?;
+    let ns = watch.ns();
+    Ok((ns, mesh_checksum(&m)))
+}
+
+/// Measures every target whose structures are among `names` on the largest torus of `cases`
+/// (name, family, soup), on the cells the size sweep measured there (`measurements`, their
+/// limits annotated from `probe`): nothing without a torus. A failed run or a checksum that differs
+/// between runs fails the report.
+fn measure(
+    cases: &[Mesh],
+    names: &[String],
+    measurements: &[Measurement],
+    probe: &Probe,
+    structures: &dyn Roster,
+    meter: &dyn MemoryMeter,
+    notes: &mut Vec<String>,
+) -> Result<Vec<Turns>, ReportError> {
+    let Some((mesh, _, soup)) = cases
+        .iter()
+        .filter(|c| c.1 == "torus")
+        .max_by_key(|c| c.2.num_faces())
+    else {
+        return Ok(Vec::new());
+    };
+    let (start, cpu) = (Instant::now(), meter.thread_cpu_ns());
+    let mut out = Vec::new();
+    // What the size sweep measured (a sweep it skipped as too long would be as long here); the
+    // changing workloads on the structures that run them.
+    let can = |s: &str, cell: Cell| {
+        names.iter().any(|n| n == s)
+            && match cell {
+                Cell::Changing(_) => topolab_baselines::registry::is_editable(s),
+                _ if s == PROBE => true,
+                _ => sequential(measurements, mesh, s, cell).is_some(),
+            }
+    };
+    for group in crate::targets::plan::plan(can) {
+        let who = group.structures.join(" and ");
+        eprintln!("topolab report: targets on {mesh}: {who} taking turns");
+        let fail = |e: String| {
+            ReportError::Measurement(format!("targets on {mesh}, {who}: {e}\nThe report stops."))
+        };
+        let (changing, built): (Vec<Cell>, Vec<Cell>) = group
+            .cells
+            .iter()
+            .partition(|c| matches!(c, Cell::Changing(_)));
+        // What the probe measures in turns beside the group's sweep, from its limit.
+        let held_to_limit = group.structures.get(1) == Some(&PROBE);
+        let probe_turns = held_to_limit
+            .then(|| {
+                let m = sequential(measurements, mesh, group.structures[0], built[0])?;
+                ProbeTurns::for_limit(m.limit.as_ref()?, probe)
+            })
+            .flatten();
+        if held_to_limit && probe_turns.is_none() {
+            notes.push(format!(
+                "Targets: {} has no limit on {mesh}, so it is not held to one.",
+                group.structures[0]
+            ));
+            continue;
+        }
+        if !built.is_empty() {
+            let case = Case {
+                mesh,
+                soup,
+                cells: &built,
+                probe: probe_turns,
+                meter,
+            };
+            let a = group.structures[0];
+            let second = group.structures.get(1).copied();
+            let turns = structures
+                .targets(a, second, &case)
+                .ok_or_else(|| fail(format!("no structure is called {a}")))?
+                .map_err(fail)?;
+            out.extend(turns);
+        }
+        for cell in changing {
+            let Cell::Changing(w) = cell else { continue };
+            let t = Instant::now();
+            let s = &group.structures;
+            let ns = take_turns(cell.warm_up(), cell.rounds(), s, |i| {
+                changing_run(s[i], soup, w, meter)
+            })
+            .map_err(fail)?;
+            out.push(turns(cell, mesh, soup, s, ns, t));
+        }
+    }
+    let cpu = meter
+        .thread_cpu_ns()
+        .zip(cpu)
+        .map(|(b, a)| format!(" ({:.1} s of CPU)", b.saturating_sub(a) as f64 * 1e-9))
+        .unwrap_or_default();
+    notes.push(format!(
+        "The Targets table's rounds took {:.1} s on {mesh}{cpu}.",
+        start.elapsed().as_secs_f64()
+    ));
+    Ok(out)
+}
 
 /// The Targets section: every target measured in turns, on the largest torus of the run.
 fn render(h: &mut String, r: &Results) {
@@ -141,6 +300,20 @@ impl Section for Targets {
 
     fn phase(&self) -> Option<Phase> {
         Some(Phase::new("targets", "Targets turns"))
+    }
+
+    fn measure(&self, run: &mut SectionRun) -> Result<(), ReportError> {
+        let r = &mut *run.results;
+        r.targets = measure(
+            run.cases,
+            &run.request.names,
+            &r.measurements,
+            &r.probe,
+            run.structures,
+            run.meter,
+            &mut r.notes,
+        )?;
+        Ok(())
     }
 
     fn render(&self, h: &mut String, page: &Page) {
