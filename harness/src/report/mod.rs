@@ -1,8 +1,9 @@
-//! The report: the run from its request to its files ([`pipeline`]), the page drawn from
-//! [`crate::results::Results`]: its shell ([`page`]), the formatting
-//! its sections share ([`format`](mod@format)), the look-ups of cells they share (`cells`), what a
-//! run is asked for and what a section measures with ([`run`]), what a section is ([`section`]), the sections in their one list ([`sections`]) and what a run
-//! measures for the sections it shows ([`selection`]).
+//! The report: the run from its request to its files ([`pipeline`]), what a run is asked for
+//! and what a section measures with ([`run`]), what a section is ([`section`]), the sections in
+//! their one list ([`sections`]), what a run measures for the sections it shows
+//! ([`selection`]), the meshes it repairs and refines ([`repair`], [`refined`]), its clock and
+//! budgets ([`clock`]), and the page: its shell ([`page`]), the formatting its sections share
+//! ([`format`](mod@format)) and the look-ups of cells they share (`cells`).
 
 pub(crate) mod cells;
 pub mod clock;

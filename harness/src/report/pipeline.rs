@@ -13,7 +13,7 @@ use crate::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use crate::phases::Phase;
 use crate::report::clock::{self, Clock};
 use crate::report::listed::Listed;
-use crate::report::run::{MeshFamily, ReportError, Request, Run};
+use crate::report::run::{Case, MeshFamily, ReportError, Request, Run};
 use crate::report::section::{Real, Refined};
 use crate::report::sections::real_at_scale::FAMILY;
 use crate::report::selection::Selection;
@@ -25,9 +25,11 @@ use crate::results::{
 use crate::timing::meter::MemoryMeter;
 use crate::{fit, machine, probe, svg};
 use indicatif::{ProgressBar, ProgressStyle};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use topolab_structures::registry::{StructureVisitor, Structures};
+use topolab_structures::repair::RepairLog;
 use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
 
 /// Which outside libraries a run used, for the rows of "How the baselines are run".
@@ -133,12 +135,6 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         eprintln!("topolab report: this allocator keeps its own policy (not glibc): warm builds may still fault in fresh pages");
     }
     let probe_mb = req.probe_mb;
-    let generated: Vec<&str> = req
-        .meshes
-        .iter()
-        .filter(|f| f.generated())
-        .map(|f| f.name())
-        .collect();
     eprintln!("topolab report: probing the machine's memory ({probe_mb} MiB)...");
     let mut clock = Clock::start();
     let probe = probe::measure(probe_mb, probe_mb);
@@ -195,35 +191,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         results.structures.push(info);
         results.teaching.push(teach);
     }
-    let mut cases: Vec<(String, String, PolygonSoup)> = Vec::new();
-    for size in req.sizes.iter().filter(|_| selection.generated()) {
-        for fam in &generated {
-            let spec = format!("{fam}:{size}");
-            let soup = meshes::from_spec(&spec)
-                .map_err(|e| ReportError::Usage(format!("cannot generate the mesh {spec}: {e}")))?;
-            cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
-        }
-    }
-    let mut repaired = std::collections::HashMap::new();
-    if req.meshes.contains(&MeshFamily::Real) && selection.needs.real != Real::None {
-        for (name, soup) in real_meshes(&mut results.notes) {
-            let (soup, log) = repair::measurable(&name, soup, &mut results.notes);
-            repaired.extend(log.map(|log| (name.clone(), log)));
-            cases.push((name, "real".into(), soup));
-        }
-    }
-    if req.meshes.contains(&MeshFamily::Refined) && selection.needs.refined != Refined::None {
-        let list: &[refined::Refined] = if req.quick {
-            &refined::QUICK
-        } else {
-            &refined::FULL
-        };
-        let admit = |faces: usize| host.admit_refined(faces, &req.names);
-        let made = refined::refined_meshes(list, &admit, &mut results.notes)?;
-        for (name, soup) in made {
-            cases.push((name, FAMILY.into(), soup));
-        }
-    }
+    let (cases, mut repaired) = make_meshes(req, &selection, host, &mut results.notes)?;
     clock.lap(Phase::MESHES, None);
     let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
     let bar = ProgressBar::new((measured * req.names.len()) as u64);
@@ -302,11 +270,10 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     // Each shown section's own measurement, in page order, timed as its phase (after the fits:
     // the Targets hold sweeps to their limits).
     for section in &selection.sections {
-        let Some(phase) = section.phase() else {
-            continue;
-        };
         section.measure(&mut run)?;
-        clock.lap(phase, None);
+        if let Some(phase) = section.phase() {
+            clock.lap(phase, None);
+        }
     }
     let libigl_version = run.libigl_version;
     let measured: Vec<&str> = req.names.iter().map(String::as_str).collect();
@@ -335,6 +302,53 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         cases.len(),
         req.out.join("index.html").display()
     ))
+}
+
+/// The meshes of the run, in the order measured: the generated ones at every size (when a shown
+/// section needs them), the real ones (repaired where the strict structures refuse them: the
+/// repairs by mesh name) and the refined ones, each as the request's families allow.
+fn make_meshes(
+    req: &Request,
+    selection: &Selection,
+    host: &dyn Host,
+    notes: &mut Vec<String>,
+) -> Result<(Vec<Case>, HashMap<String, RepairLog>), ReportError> {
+    let generated: Vec<&str> = req
+        .meshes
+        .iter()
+        .filter(|f| f.generated())
+        .map(|f| f.name())
+        .collect();
+    let mut cases: Vec<Case> = Vec::new();
+    for size in req.sizes.iter().filter(|_| selection.generated()) {
+        for fam in &generated {
+            let spec = format!("{fam}:{size}");
+            let soup = meshes::from_spec(&spec)
+                .map_err(|e| ReportError::Usage(format!("cannot generate the mesh {spec}: {e}")))?;
+            cases.push((format!("{fam}-{}", short(*size)), fam.to_string(), soup));
+        }
+    }
+    let mut repaired = HashMap::new();
+    if req.meshes.contains(&MeshFamily::Real) && selection.needs.real != Real::None {
+        for (name, soup) in real_meshes(notes) {
+            let (soup, log) = repair::measurable(&name, soup, notes);
+            repaired.extend(log.map(|log| (name.clone(), log)));
+            cases.push((name, "real".into(), soup));
+        }
+    }
+    if req.meshes.contains(&MeshFamily::Refined) && selection.needs.refined != Refined::None {
+        let list: &[refined::Refined] = if req.quick {
+            &refined::QUICK
+        } else {
+            &refined::FULL
+        };
+        let admit = |faces: usize| host.admit_refined(faces, &req.names);
+        let made = refined::refined_meshes(list, &admit, notes)?;
+        for (name, soup) in made {
+            cases.push((name, FAMILY.into(), soup));
+        }
+    }
+    Ok((cases, repaired))
 }
 
 fn short(n: usize) -> String {

@@ -27,18 +27,27 @@ pub enum Cell {
     Construction,
     /// A changing workload from a fresh build (the build not timed), per face of the input.
     Changing(Changing),
+    /// The 3D convex hull of [`HULL_POINTS`] random points in a ball, per point: the lab's
+    /// randomized algorithm against an outside library's hull, taking turns in the hull
+    /// section (each side's clock as the hull table's: around the call alone).
+    Hull,
 }
 
+/// The points of the hull's target ([`Cell::Hull`]).
+pub const HULL_POINTS: usize = 1_000_000;
+
 impl Cell {
-    /// The rounds a cell is timed: [`ROUNDS`], or [`CHANGING_ROUNDS`].
+    /// The rounds a cell is timed: [`ROUNDS`], or [`CHANGING_ROUNDS`] for the changing
+    /// workloads and the hull (each run seconds long).
     pub fn rounds(self) -> usize {
         match self {
-            Cell::Changing(_) => CHANGING_ROUNDS,
+            Cell::Changing(_) | Cell::Hull => CHANGING_ROUNDS,
             _ => ROUNDS,
         }
     }
 
-    /// Untimed rounds before them: one, but for the changing workloads.
+    /// Untimed rounds before them: one (the hull's too: hulls are timed warm), but for the
+    /// changing workloads, each run from a fresh build.
     pub fn warm_up(self) -> usize {
         match self {
             Cell::Changing(_) => 0,
@@ -53,6 +62,7 @@ impl Cell {
             Cell::Smoothing => "smoothing".into(),
             Cell::Construction => "construction (warm builds)".into(),
             Cell::Changing(w) => w.name().into(),
+            Cell::Hull => "3D convex hull (1M points in a ball)".into(),
         }
     }
 }
@@ -99,7 +109,7 @@ const fn limit(structure: &'static str) -> Target {
 
 /// The targets of the developers' guide, in the table's order. Every half-edge-family sweep is
 /// held within 2× its limit.
-pub const TARGETS: [Target; 13] = [
+pub const TARGETS: [Target; 14] = [
     versus(Cell::Construction, "che-l1", "openmesh", 0.3),
     versus(Cell::R00Sweep, "che-l2", "index-half-edge", 1.35),
     versus(Cell::Smoothing, "che-l2", "index-half-edge", 1.2),
@@ -124,6 +134,7 @@ pub const TARGETS: [Target; 13] = [
         "openmesh",
         0.7,
     ),
+    versus(Cell::Hull, "randomized", "qhull", 2.0),
 ];
 
 /// One group of structures that take turns on some cells.
@@ -142,7 +153,9 @@ pub struct Group {
 /// ([`PROBE`]).
 pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
     let mut groups: Vec<Group> = Vec::new();
-    for t in TARGETS.iter().filter(|t| can(t.structure, t.cell)) {
+    // The hull's target takes its turns in the hull section, on points, not structures.
+    let of_structures = TARGETS.iter().filter(|t| t.cell != Cell::Hull);
+    for t in of_structures.filter(|t| can(t.structure, t.cell)) {
         let structures = match t.against {
             Against::Structure(b) if can(b, t.cell) => vec![t.structure, b],
             Against::Structure(_) => continue,

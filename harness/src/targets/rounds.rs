@@ -3,7 +3,7 @@
 
 use crate::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
 use crate::measure::Builder;
-use crate::targets::plan::{Cell, Turns};
+use crate::targets::plan::{Cell, Turns, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
@@ -61,7 +61,7 @@ impl<M: MeshTopology> Built<M> {
                     Answer::Value(value),
                 )
             }
-            Cell::Construction | Cell::Changing(_) => {
+            Cell::Construction | Cell::Changing(_) | Cell::Hull => {
                 return Err(format!("{cell:?} is not run on a built structure"))
             }
         };
@@ -146,6 +146,7 @@ pub fn turns(
     let items = match cell {
         Cell::R00Sweep | Cell::Smoothing => soup.num_vertices(),
         Cell::Construction | Cell::Changing(_) => soup.num_faces(),
+        Cell::Hull => HULL_POINTS,
     };
     Turns {
         cell,

@@ -18,7 +18,7 @@ pub(crate) fn sequential_subject(cell: Cell) -> Option<(Subject, Kernel)> {
         Cell::R00Sweep => Some((Subject::Query(Operator::R00), Kernel::Sweep)),
         Cell::Smoothing => Some((Subject::Workload(Workload::Smoothing), Kernel::Workload)),
         Cell::Construction => Some((Subject::Construction, Kernel::Construction)),
-        Cell::Changing(_) => None,
+        Cell::Changing(_) | Cell::Hull => None,
     }
 }
 
@@ -48,6 +48,19 @@ pub(crate) fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f
             return None;
         };
         return crate::changing::ratio(&r.changing, w, t.structure, b);
+    }
+    if t.cell == Cell::Hull {
+        // The hull table's medians of the same points, one algorithm after the other.
+        let Against::Structure(b) = t.against else {
+            return None;
+        };
+        let seconds = |a: &str| {
+            let row = r.hull.iter().find(|x| {
+                x.shape == "ball" && x.n == crate::targets::plan::HULL_POINTS && x.algorithm == a
+            });
+            row.map(|x| x.seconds)
+        };
+        return Some(seconds(t.structure)? / seconds(b)?);
     }
     let a = sequential(&r.measurements, mesh, t.structure, t.cell)?;
     match t.against {

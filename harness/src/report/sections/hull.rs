@@ -1,6 +1,7 @@
 //! The 3D convex hulls: the lecture's three algorithms beside Qhull and CGAL, and the
 //! quantities of the lecture's analysis, counted in the same runs.
 
+use crate::hull::bench::vertex_checksum;
 use crate::phases::Phase;
 use crate::plot;
 use crate::report::format::esc;
@@ -8,8 +9,13 @@ use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
 use crate::results::HullRow;
 use crate::results::Results;
+use crate::targets::plan::{Cell, Turns, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
+use crate::timing::turns::{take_turns, Answer, Run as Turn};
 use std::fmt::Write;
+use std::time::Instant;
+use topolab_baselines::hulls::HullLibrary;
+use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
 use topolab_structures::Family;
 
 /// The structure the hull section's algorithms build on: the hull section runs when
@@ -245,6 +251,58 @@ fn measure(
     Ok(rows)
 }
 
+/// The hull's target ([`Cell::Hull`]): the lab's randomized algorithm and Qhull taking turns on
+/// the same [`HULL_POINTS`] points in a ball, after a warm-up round, each run by the clock of
+/// the table above (around the call alone; Qhull's inside its shim), when both ran that size in
+/// the table (`rows`). Both must find the same hull vertices in every run.
+fn in_turns(rows: &[HullRow]) -> Result<Option<Turns>, ReportError> {
+    let qhull = HullLibrary::Qhull;
+    let ran = |a: &str| {
+        rows.iter()
+            .any(|r| r.shape == "ball" && r.n == HULL_POINTS && r.algorithm == a)
+    };
+    if !ran("randomized") || !ran(qhull.name()) {
+        return Ok(None);
+    }
+    eprintln!("topolab report: hull ball {HULL_POINTS}: randomized and qhull taking turns");
+    let points = random_points(Shape::Ball, HULL_POINTS, crate::hull::bench::POINTS_SEED);
+    let names = ["randomized", qhull.name()];
+    let (cell, start) = (Cell::Hull, Instant::now());
+    let run = |i: usize| -> Result<Turn, String> {
+        let (seconds, ids) = if i == 0 {
+            let start = Instant::now();
+            let randomized = Algorithm::Randomized {
+                seed: crate::hull::bench::RANDOMIZED_SEED,
+            };
+            let hull = convex_hull(&points, randomized).map_err(|e| e.to_string())?;
+            let seconds = start.elapsed().as_secs_f64();
+            (seconds, hull.vertices().iter().map(|v| v.0).collect())
+        } else {
+            let hull = qhull.hull(&points)?;
+            let ids = hull.vertex_ids.ok_or("Qhull returned no vertex ids")?;
+            (hull.seconds, ids)
+        };
+        Ok(Turn {
+            ns: seconds * 1e9 / HULL_POINTS as f64,
+            answer: Answer::Sum(vertex_checksum(ids)),
+        })
+    };
+    let ns = take_turns(cell.warm_up(), cell.rounds(), &names, run).map_err(|e| {
+        ReportError::Measurement(format!(
+            "the hull's target in turns: {e}\nThe report stops."
+        ))
+    })?;
+    Ok(Some(Turns {
+        cell,
+        mesh: format!("ball-{HULL_POINTS}"),
+        items: HULL_POINTS,
+        structures: names.iter().map(|s| s.to_string()).collect(),
+        ns_per_item: ns,
+        warm_up: cell.warm_up(),
+        seconds: start.elapsed().as_secs_f64(),
+    }))
+}
+
 /// The 3D convex hull algorithms beside Qhull and CGAL.
 pub struct Hull;
 
@@ -269,6 +327,7 @@ impl Section for Hull {
         r.hull = measure(HullSizes::of(req.quick, req.full), run.meter, &mut r.notes)?;
         r.hull_fits = crate::hull::bench::fits(&r.hull);
         r.qhull = topolab_baselines::registry::qhull_description();
+        r.targets.extend(in_turns(&r.hull)?);
         Ok(())
     }
 
@@ -308,5 +367,37 @@ mod tests {
             1_000_000,
         );
         assert!(gift > full.max_tests, "{gift}");
+    }
+
+    #[test]
+    fn the_hull_target_takes_turns_only_where_the_table_ran_both_at_1m_in_a_ball() {
+        let row = |shape: &str, n: usize, algorithm: &str| HullRow {
+            shape: shape.into(),
+            n,
+            algorithm: algorithm.into(),
+            ..HullRow::default()
+        };
+        // No Qhull at 1M, or 1M on a sphere only: nothing to time (and nothing built).
+        for rows in [
+            vec![row("ball", HULL_POINTS, "randomized")],
+            vec![
+                row("ball", 10_000, "randomized"),
+                row("ball", 10_000, "qhull"),
+            ],
+            vec![
+                row("sphere", HULL_POINTS, "randomized"),
+                row("sphere", HULL_POINTS, "qhull"),
+            ],
+        ] {
+            assert!(matches!(in_turns(&rows), Ok(None)), "{rows:?}");
+        }
+        // The plan of the structures' turns leaves the hull's target to this section.
+        let plan = crate::targets::plan::plan(|_, _| true);
+        assert!(plan.iter().all(|g| !g.cells.contains(&Cell::Hull)));
+        let hull = crate::targets::plan::TARGETS
+            .iter()
+            .find(|t| t.cell == Cell::Hull)
+            .expect("the guide's hull target");
+        assert_eq!((hull.structure, hull.goal), ("randomized", 2.0));
     }
 }

@@ -177,12 +177,15 @@ fn render(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let ran = |s: &str| r.structures.iter().any(|x| x.name == s);
+    // A structure of the run, or a hull algorithm of the hull section.
+    let ran = |s: &str| {
+        r.structures.iter().any(|x| x.name == s) || r.hull.iter().any(|x| x.algorithm == s)
+    };
     // Measured on the largest torus of the cases, which is this one.
     let turns: Vec<Turns> = r
         .targets
         .iter()
-        .filter(|t| t.mesh == mesh)
+        .filter(|t| t.mesh == mesh || t.cell == Cell::Hull)
         .cloned()
         .collect();
     let _ = write!(
@@ -304,7 +307,8 @@ impl Section for Targets {
 
     fn measure(&self, run: &mut SectionRun) -> Result<(), ReportError> {
         let r = &mut *run.results;
-        r.targets = measure(
+        // After the hull section's own turns, if it ran.
+        let turns = measure(
             run.cases,
             &run.request.names,
             &r.measurements,
@@ -313,6 +317,7 @@ impl Section for Targets {
             run.meter,
             &mut r.notes,
         )?;
+        r.targets.extend(turns);
         Ok(())
     }
 
