@@ -22,11 +22,11 @@
 //! (arithmetic on the chain, branches, the structure's own bookkeeping) is what "× limit"
 //! measures. One part of it is measured beside the limit, not in it: the chain when each step
 //! also does the arithmetic the model declares ([`Step`](topolab_structures::Step)), at the probe's chase of that kind
-//! ([`Limit::chain_ns_per_item`]). In the reference run (2026-12-02) the CHE's `prev(h)`
-//! before each `O[]` load made a step 2.0 times a plain load's latency in L1 (2.71 against
-//! 1.35 ns), the half-edges' `h ^ 1` 1.2 times (1.62 ns). Neither is a floor: both count one
+//! ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load
+//! makes a step about twice a plain load's latency in L1, the half-edges' `h ^ 1` about 1.2
+//! times (the page's probe table gives this run's figures). Neither is a floor: both count one
 //! query's chain after another, and a processor can overlap the chains of consecutive queries
-//! (the index half-edge ran 0.81 times its chain in that run's Targets turns). The limit
+//! (the index half-edge has run below its chain in the Targets turns). The limit
 //! counts plain loads, as the model declares them, and the Targets show each sweep held to
 //! its limit whose steps do arithmetic against its chain too.
 

@@ -1,65 +1,133 @@
-//! SVG drawings of the report: bar charts, mesh thumbnails ([`crate::thumbnail`]) and the CHE
-//! thesis chapter's Figure 4.10 (the log-log plots are [`crate::plot`]'s). Everything is
-//! inline SVG with real `<text>`, no fonts or network.
+//! SVG drawings of the report: bar charts (drawn with plotters, like [`crate::plot`]'s log-log
+//! plots), mesh thumbnails ([`crate::thumbnail`]) and the CHE thesis chapter's Figure 4.10.
+//! Everything is inline SVG with real `<text>`, no fonts or network. The thumbnails and the
+//! figure are drawings, not charts, and are written by hand: they place polygons and labels in
+//! their own geometry (a shaded projection of a mesh, an unfolded tetrahedron), which a chart
+//! library's axes and series do not describe.
 
-use crate::plot::Style;
+use crate::plot::{self, Style};
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::fmt::Write;
 use topolab_structures::PolygonSoup;
 
 /// Horizontal bars: (label, style (its colour fills the bar), value, optional second value
 /// drawn as a tick).
 pub fn bars(title: &str, unit: &str, rows: &[(String, Style, f64, Option<f64>)]) -> String {
+    draw_bars(title, unit, rows).unwrap_or_else(|e| {
+        format!(
+            "<p class=\"empty\">{}: the chart could not be drawn ({})</p>",
+            plot::esc(title),
+            plot::esc(&e.to_string())
+        )
+    })
+}
+
+/// Average advance of a 12 px sans-serif character, generous so the longest label fits.
+const LABEL_CHAR_W: f64 = 7.2;
+
+/// [`bars`] drawn with plotters: each row is two units of the y axis (first row on top),
+/// labelled at its middle by the structure's name; each bar's value is written at its end. plotters writes
+/// no `<title>`, so each tick's hover title ("containers: …") is an invisible rectangle over
+/// it, added after plotters' drawing (`plot::finish`).
+fn draw_bars(
+    title: &str,
+    unit: &str,
+    rows: &[(String, Style, f64, Option<f64>)],
+) -> Result<String, Box<dyn std::error::Error>> {
     let max = rows
         .iter()
         .map(|r| r.2.max(r.3.unwrap_or(0.0)))
         .fold(0.0, f64::max)
         .max(1e-9);
-    let (w, row_h, left, right) = (560.0, 22.0, 150.0, 110.0);
-    let h = 36.0 + row_h * rows.len() as f64;
-    let mut s = String::new();
-    let _ = write!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif"><text x="{}" y="18" font-size="15" text-anchor="middle">{title}</text>"#,
-        w / 2.0
+    if rows.is_empty() {
+        return Ok(format!(
+            "<p class=\"empty\">{}: nothing measured</p>",
+            plot::esc(title)
+        ));
+    }
+    let n = rows.len() as u32;
+    let longest = rows.iter().map(|r| r.0.chars().count()).max().unwrap_or(0);
+    let (left, bars_w, right, row_h, top) = (
+        (12.0 + longest as f64 * LABEL_CHAR_W).ceil() as u32,
+        300,
+        80,
+        22,
+        30,
     );
-    for (i, (label, style, v, tick)) in rows.iter().enumerate() {
-        let y = 30.0 + i as f64 * row_h;
-        let bw = (w - left - right) * v / max;
-        let _ = write!(
-            s,
-            r#"<text x="{}" y="{}" font-size="12" text-anchor="end">{label}</text><rect x="{left}" y="{}" width="{bw:.1}" height="{}" fill="{}"/><text x="{}" y="{}" font-size="12">{} {unit}</text>"#,
-            left - 6.0,
-            y + 14.0,
-            y + 3.0,
-            row_h - 6.0,
-            style.hex(),
-            left + bw + 4.0,
-            y + 14.0,
-            trim_num(*v)
-        );
-        if let Some(t) = tick {
-            let tx = left + (w - left - right) * t / max;
-            let _ = write!(
-                s,
-                r#"<line x1="{tx:.1}" x2="{tx:.1}" y1="{}" y2="{}" stroke="black" stroke-width="2"><title>containers: {} {unit}</title></line>"#,
-                y + 1.0,
-                y + row_h - 1.0,
-                trim_num(*t)
+    let size = (left + bars_w + right, top + row_h * n + 6);
+    let mut svg = String::new();
+    let mut marks = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE)?;
+        root.draw(&Text::new(
+            title.to_string(),
+            (size.0 as i32 / 2, 6),
+            plot::font(15.0).pos(Pos::new(HPos::Center, VPos::Top)),
+        ))?;
+        let region = root.clone().shrink((0, top), (left + bars_w, row_h * n));
+        // Row i spans y from 2(n-1-i) to 2(n-i) (plotters' y axis grows upwards, the rows are
+        // read downwards); its label sits at the middle, an integer so that the axis, whose
+        // values are integers, can write it (plotters' float axes take no chosen ticks).
+        let bottom = |i: usize| 2 * (rows.len() - 1 - i) as i32;
+        let label = |y: &i32| {
+            let row = rows.len() as i32 - 1 - y.div_euclid(2);
+            usize::try_from(row)
+                .ok()
+                .and_then(|r| rows.get(r))
+                .map_or(String::new(), |r| r.0.clone())
+        };
+        let mut chart = ChartBuilder::on(&region)
+            .y_label_area_size(left)
+            .build_cartesian_2d(
+                0.0..max,
+                (0..2 * n as i32).with_key_points((0..rows.len()).map(|i| bottom(i) + 1).collect()),
+            )?;
+        chart
+            .configure_mesh()
+            .disable_x_mesh()
+            .disable_y_mesh()
+            .disable_x_axis()
+            .y_label_formatter(&label)
+            .label_style(plot::font(12.0))
+            .axis_style(RGBColor(153, 153, 153))
+            .draw()?;
+        chart.draw_series(rows.iter().enumerate().map(|(i, (_, style, v, _))| {
+            let mut bar = Rectangle::new(
+                [(0.0, bottom(i)), (*v, bottom(i) + 2)],
+                plot::colour(style).filled(),
             );
+            bar.set_margin(3, 3, 0, 0);
+            bar
+        }))?;
+        for (i, (_, _, v, tick)) in rows.iter().enumerate() {
+            let (x, y) = chart.backend_coord(&(*v, bottom(i) + 1));
+            root.draw(&Text::new(
+                format!("{} {unit}", plot::value(*v)),
+                (x + 4, y),
+                plot::font(12.0).pos(Pos::new(HPos::Left, VPos::Center)),
+            ))?;
+            if let Some(t) = tick {
+                let (tx, y0) = chart.backend_coord(&(*t, bottom(i) + 2));
+                let (_, y1) = chart.backend_coord(&(*t, bottom(i)));
+                root.draw(&PathElement::new(
+                    vec![(tx, y0 + 1), (tx, y1 - 1)],
+                    BLACK.stroke_width(2),
+                ))?;
+                let _ = write!(
+                    marks,
+                    r#"<rect x="{}" y="{y0}" width="6" height="{}" fill="none" pointer-events="all"><title>containers: {} {}</title></rect>"#,
+                    tx - 3,
+                    y1 - y0,
+                    plot::value(*t),
+                    plot::esc(unit)
+                );
+            }
         }
+        root.present()?;
     }
-    s.push_str("</svg>");
-    s
-}
-
-fn trim_num(v: f64) -> String {
-    if v >= 100.0 {
-        format!("{v:.0}")
-    } else if v >= 10.0 {
-        format!("{v:.1}")
-    } else {
-        format!("{v:.2}")
-    }
+    plot::finish(&svg, size, "bars", &marks)
 }
 
 /// A shaded orthographic thumbnail of a mesh, at every size (see [`crate::thumbnail`]).
@@ -152,6 +220,8 @@ mod tests {
         assert_eq!(t.matches("<polygon").count(), 48);
         let style = crate::plot::styles(&[topolab_structures::Family::Che])[0];
         let b = bars("m", "B", &[("x".into(), style, 24.0, Some(20.0))]);
-        assert!(b.contains("24.0 B") && b.contains(&style.hex()));
+        // plotters writes colours in capitals.
+        assert!(b.contains("24.0 B") && b.to_lowercase().contains(&style.hex()));
+        assert!(b.contains("<title>containers: 20.0 B</title>") && b.contains(">\nx\n</text>"));
     }
 }

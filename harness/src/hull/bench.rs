@@ -274,7 +274,7 @@ pub fn run(
 
 /// The `Volume6` tests a slow algorithm's next size may be predicted to take ([`run`]): 2·10⁹,
 /// some 6 to 30 s on the 2-core reference machine (gift wrapping about 15 ns a test,
-/// incremental 3). Counted on 2026-12-01, it keeps gift wrapping's 100k ball (551 million
+/// incremental 3). As counted, it keeps gift wrapping's 100k ball (551 million
 /// tests) and leaves out the incremental algorithm's 1M ball (6 billion, 17 s) and 100k sphere
 /// (10 billion, 36 s): their O(n²) shows on the sizes before (the ball to 100k, the sphere to
 /// 10k).
@@ -513,7 +513,7 @@ mod tests {
         // Work that grew 32-fold from 1k to 10k points grows 32-fold again to 100k.
         let p = predicted_tests(Some((1_000, 1_000)), (10_000, 32_000), 100_000);
         assert!((p - 1_024_000.0).abs() < 1e-6, "{p}");
-        // The incremental algorithm on a sphere, as counted (2026-12-01): 995,004 tests at
+        // The incremental algorithm on a sphere, as counted: 995,004 tests at
         // 1k, 99,950,004 at 10k, 9,999,500,004 at 100k.
         let p = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
         assert!((p / 9_999_500_004.0 - 1.0).abs() < 0.01, "{p}");

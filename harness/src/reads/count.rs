@@ -257,8 +257,8 @@ mod tests {
     }
 
     /// The declared costs against the counted reads, for every structure and operator, on
-    /// three sizes: every row matches, or is a finding listed here with its reason (see the
-    /// README's "Reads per query").
+    /// three sizes: every row matches, or is a finding listed here with its reason (see
+    /// `docs/report.md`).
     #[test]
     fn fitted_read_exponents_are_the_declared_costs() {
         // Small sizes, so that the O(n²) boundary curves of the scanning structures are

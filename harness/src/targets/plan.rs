@@ -5,7 +5,7 @@ use topolab_structures::algorithms::changing::Changing;
 
 /// Timed rounds of every target, after one warm-up round. With 7, the median of one run
 /// moved by more than the margins it was judged on: on one binary, seven runs of the che-l2 /
-/// index-half-edge R00 target (torus-1M, 2026-12-01) read 1.16 to 1.26, their rounds 1.05 to
+/// index-half-edge R00 target (torus-1M) read 1.16 to 1.26, their rounds 1.05 to
 /// 1.38; with 21, two runs read 1.23 and 1.23, for about 4 s more in the report.
 pub const ROUNDS: usize = 21;
 

@@ -179,8 +179,8 @@ struct HullSizes {
 
 impl HullSizes {
     /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
-    /// (h = n); its 1M points took 44 s alone (2026-12-01: CGAL 20 s, the randomized algorithm
-    /// 12, Qhull through SciPy 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
+    /// (h = n); its 1M points took about 44 s alone (CGAL about 20 s, the randomized algorithm
+    /// 12, Qhull 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
     /// The slow algorithms stop at [`MAX_TESTS`](crate::hull::bench::MAX_TESTS). `--full` takes
     /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
     /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
@@ -350,8 +350,7 @@ mod tests {
         assert!(full.max_tests > default.max_tests);
         let quick = HullSizes::of(true, false);
         assert!(quick.ball <= 10_000 && quick.sphere <= 1_000);
-        // The incremental algorithm's next sizes, predicted from the tests counted on
-        // 2026-12-01: its 100k sphere and 1M ball run with --full only.
+        // The incremental algorithm's next sizes, predicted from the tests counted: its 100k sphere and 1M ball run with --full only.
         use crate::hull::bench::predicted_tests;
         let sphere = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
         let ball = predicted_tests(Some((10_000, 5_830_028)), (100_000, 185_455_794), 1_000_000);
