@@ -1,11 +1,12 @@
 //! Formatting shared by the report's pages: escaping, times and sizes with their units, ratios
 //! beside their goals. Nothing here reads the results: the sections pass the numbers in.
 
-/// `s` with `&`, `<` and `>` escaped, for HTML text.
+/// `s` with `&`, `<`, `>` and `"` escaped, for HTML text and quoted attribute values alike.
 pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// A time in nanoseconds with its unit (ns, µs, ms).
