@@ -20,9 +20,9 @@
 //! The sweep also reads what the harness's checksum asks for: the end vertices of every edge
 //! it mixes in (an R10 of the structure: see [`checksum_keys`]). What the model leaves out
 //! (arithmetic on the chain, branches, the structure's own bookkeeping) is what "× limit"
-//! measures. One part of it is measured beside the limit, not in it: the chain when each step
-//! also does the arithmetic the model declares ([`Step`](topolab_structures::Step)), at the probe's chase of that kind
-//! ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load
+//! measures. One part of it is measured beside the limit, not in it: the chain when each step also
+//! does the arithmetic the model declares ([`Step`](topolab_structures::Step)), at the probe's
+//! chase of that kind ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load
 //! makes a step about twice a plain load's latency in L1, the half-edges' `h ^ 1` about 1.2
 //! times (the page's probe table gives this run's figures). Neither is a floor: both count one
 //! query's chain after another, and a processor can overlap the chains of consecutive queries

@@ -3,7 +3,8 @@
 //! stderr line as each finishes, all of them into `results.json` and the page's run facts.
 //!
 //! The full report is meant to take under 15 minutes alone on the 2-core reference machine
-//! (`docs/report.md`). What was cut to keep it there is here, with the reasons the page's notes give.
+//! (`docs/report.md`). What was cut to keep it there is here, with the reasons the page's notes
+//! give.
 
 use crate::phases::{Phase, PhaseTime};
 use std::time::Instant;

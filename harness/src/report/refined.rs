@@ -34,10 +34,11 @@ pub fn light(name: &str) -> bool {
     FULL.iter().any(|r| r.light && r.name() == name)
 }
 
-/// The full report's refined meshes: CGAL's bunny (75,408 triangles) to 1.2M and the
-/// armadillo (52,000) to 3.3M. Measured alone on the 2-core machine (see `docs/report.md`), these two took about what the tori of 256k and 1M take together; the armadillo is
-/// now measured light (construction, memory, the 1-ring sweep: the numbers a 3.3M mesh adds to
-/// the 1.2M bunny's), which saves about 45 of its 140 s alone.
+/// The full report's refined meshes: CGAL's bunny (75,408 triangles) to 1.2M and the armadillo
+/// (52,000) to 3.3M. Measured alone on the 2-core machine (see `docs/report.md`), these two took
+/// about what the tori of 256k and 1M take together; the armadillo is now measured light
+/// (construction, memory, the 1-ring sweep: the numbers a 3.3M mesh adds to the 1.2M bunny's),
+/// which saves about 45 of its 140 s alone.
 pub const FULL: [Refined; 2] = [
     Refined {
         source: "bunny00",

@@ -1,10 +1,27 @@
 //! The ratio a target measured in turns, per round: against another structure, against its
 //! limit at the probe's figures of that round, or against its chain.
 
-use crate::results::Limit;
-use crate::targets::plan::{Against, Target, Turns, PROBE, PROBE_CHECKSUM, PROBE_LOAD, PROBE_STEP};
+use crate::results::{Limit, Results};
+use crate::targets::plan::{
+    Against, Cell, Target, Turns, PROBE, PROBE_CHECKSUM, PROBE_LOAD, PROBE_STEP,
+};
 use crate::timing::turns::Spread;
 use topolab_structures::Step;
+
+/// Whether `name` ran in `r`: a structure of the run, or an algorithm of the hull section.
+pub fn ran(r: &Results, name: &str) -> bool {
+    r.structures.iter().any(|x| x.name == name) || r.hull.iter().any(|x| x.algorithm == name)
+}
+
+/// The turns the Targets show for the largest torus `mesh`: those taken on it, and the hull's,
+/// taken on its own points.
+pub fn shown_turns(r: &Results, mesh: &str) -> Vec<Turns> {
+    r.targets
+        .iter()
+        .filter(|t| t.mesh == mesh || t.cell == Cell::Hull)
+        .cloned()
+        .collect()
+}
 
 /// The ratio a target measured in turns: per round, `structure`'s run over `against`'s. Against
 /// its limit (the size sweep's cell's, `limit`), over the limit of that round: its bandwidth,

@@ -6,8 +6,9 @@
 //!
 //! The size sweep times structures one after another, so on a shared machine a change of load
 //! between two structures shows up in their ratio (one structure's own runs of one sweep have
-//! ranged over more than a factor of two in a single report). Here each target's two structures are built once on the largest torus
-//! of the run and then run A, B, A, B, … for [`ROUNDS`] rounds, after one warm-up round; every
+//! ranged over more than a factor of two in a single report). Here each target's two
+//! structures are built once on the largest torus of the run and then run A, B, A, B, … for
+//! [`ROUNDS`] rounds, after one warm-up round; every
 //! round gives one ratio, the table shows their median and their spread (the smallest and the
 //! largest), and a load change hits both sides of a round alike. A target against a limit
 //! (the vertex 1-ring sweep of the half-edge family against its access model, see

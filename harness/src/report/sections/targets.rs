@@ -12,7 +12,7 @@ use crate::report::run::{Case as Mesh, ReportError, Roster, Run as SectionRun};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status};
 use crate::targets::group::Case;
-use crate::targets::measured::measured;
+use crate::targets::measured::{measured, ran, shown_turns};
 use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, PROBE, ROUNDS, TARGETS};
 use crate::targets::probe::ProbeTurns;
 use crate::targets::rounds::turns;
@@ -177,17 +177,9 @@ fn render(h: &mut String, r: &Results) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    // A structure of the run, or a hull algorithm of the hull section.
-    let ran = |s: &str| {
-        r.structures.iter().any(|x| x.name == s) || r.hull.iter().any(|x| x.algorithm == s)
-    };
-    // Measured on the largest torus of the cases, which is this one.
-    let turns: Vec<Turns> = r
-        .targets
-        .iter()
-        .filter(|t| t.mesh == mesh || t.cell == Cell::Hull)
-        .cloned()
-        .collect();
+    let ran = |s: &str| ran(r, s);
+    // Measured on the largest torus of the cases, which is this one (the hull's on its points).
+    let turns = shown_turns(r, mesh);
     let _ = write!(
         h,
         "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe: its sequential read of the working set that sets the limit's bandwidth bound, its chase through the working set that sets the latency bound (plain loads, and steps doing the chain's own arithmetic), and its checksum arithmetic; each round's sweep is divided by the limit at the bandwidth, load latency and time per term of that round. <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
