@@ -23,6 +23,7 @@
 
 use topolab::alloc::{keep_freed_memory, minor_faults, release_free_memory, thread_cpu_ns};
 use topolab_harness::measure::Builder;
+use topolab_harness::timing::turns::{take_turns, Answer, Run as Turn};
 use topolab_structures::{
     che, meshes, CheL1, CheL2, CheL3, Constructed, IndexHalfEdge, MeshTopology, PointerHalfEdge,
     PolygonSoup,
@@ -115,27 +116,30 @@ fn main() {
             .collect::<Vec<_>>()
             .join(" ")
     );
-    // One build each to warm up (and to leave the freed pages the timed builds reuse).
-    for (name, b) in &all {
-        assert_eq!(
-            b(&soup).faces,
-            soup.num_faces(),
-            "{name} built another mesh"
-        );
-    }
-    let mut times = vec![Vec::new(); all.len()];
+    // The structures take turns, one build each per round after one round to warm up (and to
+    // leave the freed pages the timed builds reuse); every build must hold the soup's faces.
+    let names: Vec<&str> = all.iter().map(|(name, _)| *name).collect();
     let mut faults = vec![Vec::new(); all.len()];
-    for _ in 0..rounds {
-        for (s, (_, b)) in all.iter().enumerate() {
-            if cold {
-                release_free_memory();
-            }
-            let t = b(&soup);
-            faults[s].push(t.faults as f64);
-            assert_eq!(t.faces, soup.num_faces());
-            times[s].push(t.ns as f64 / t.faces as f64);
+    let mut warming = all.len();
+    let times = take_turns(1, rounds, &names, |s| {
+        if cold {
+            release_free_memory();
         }
-    }
+        let t = (all[s].1)(&soup);
+        if t.faces != soup.num_faces() {
+            return Err(format!("built {} faces of {}", t.faces, soup.num_faces()));
+        }
+        if warming > 0 {
+            warming -= 1;
+        } else {
+            faults[s].push(t.faults as f64);
+        }
+        Ok(Turn {
+            ns: t.ns as f64 / t.faces as f64,
+            answer: Answer::Counts([0, 0, t.faces]),
+        })
+    })
+    .unwrap_or_else(|e| panic!("{e}"));
     println!("{:<28}{:>12}", "page faults per build", "median");
     for ((name, _), f) in all.iter().zip(&faults) {
         println!("{name:<28}{:>12.0}", median(f.clone()));

@@ -19,6 +19,7 @@
 
 use std::time::Instant;
 use topolab_harness::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
+use topolab_harness::timing::turns::{take_turns, Answer, Run as Turn};
 use topolab_structures::{
     meshes, BoundaryCurves, CheL2, IndexHalfEdge, MeshTopology, Operator, PointerHalfEdge,
     PolygonSoup, WingedEdge,
@@ -153,29 +154,24 @@ fn main() {
             .collect::<Vec<_>>()
             .join(" ")
     );
-    // times[s][c]: the runs of structure s on cell c; sums[c]: the first structure's result.
+    // times[s][c]: the runs of structure s on cell c, the structures taking turns on each cell
+    // (no warm-up round: each structure was just built and its queries drawn), every run's
+    // checksum compared with the first's (sweeps exactly, smoothing's float sum within 1e-6,
+    // since each structure sums in its own order).
+    let names: Vec<&str> = built.iter().map(|b| b.name()).collect();
     let mut times = vec![vec![Vec::new(); cells.len()]; built.len()];
-    let mut sums: Vec<Option<u64>> = vec![None; cells.len()];
-    for _ in 0..rounds {
-        for (c, &cell) in cells.iter().enumerate() {
-            for (s, b) in built.iter_mut().enumerate() {
-                let (ns, bits) = b.run(cell);
-                times[s][c].push(ns);
-                // Sweeps must agree exactly; smoothing sums floats in each structure's order.
-                let same = |x: u64| match cell {
-                    Cell::Sweep(_) => x == bits,
-                    Cell::Smoothing => {
-                        let (a, b) = (f64::from_bits(x), f64::from_bits(bits));
-                        (a - b).abs() <= 1e-6 * a.abs().max(1.0)
-                    }
-                };
-                assert!(
-                    same(*sums[c].get_or_insert(bits)),
-                    "{} {}: checksum differs",
-                    b.name(),
-                    cell.name()
-                );
-            }
+    for (c, &cell) in cells.iter().enumerate() {
+        let ns = take_turns(0, rounds, &names, |s| {
+            let (ns, bits) = built[s].run(cell);
+            let answer = match cell {
+                Cell::Sweep(_) => Answer::Sum(bits),
+                Cell::Smoothing => Answer::Value(f64::from_bits(bits)),
+            };
+            Ok(Turn { ns, answer })
+        })
+        .unwrap_or_else(|e| panic!("{}: {e}", cell.name()));
+        for (s, runs) in ns.into_iter().enumerate() {
+            times[s][c] = runs;
         }
     }
     let stat = |pick: fn(Vec<f64>) -> f64| -> Vec<Vec<f64>> {

@@ -78,7 +78,9 @@ fn an_unknown_section_is_a_usage_error_listing_the_known() {
     let stderr = text(&run.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(
-        stderr.contains("'nope'") && stderr.contains("known: chooser, targets, table-4-1"),
+        stderr.contains("'nope'")
+            && stderr.contains("known: chooser, table-4-1, plots")
+            && stderr.contains("targets"),
         "{stderr}"
     );
 }

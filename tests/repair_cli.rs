@@ -9,7 +9,7 @@ use common::run::{scratch, text, topolab};
 use glam::DVec3;
 use std::path::{Path, PathBuf};
 use std::process::Output;
-use topolab::commands::report_repair::measurable;
+use topolab_harness::report::repair::measurable;
 use topolab_structures::{meshes, PolygonSoup};
 
 /// The findings repair removes, by their names in `topolab check --json`.

@@ -1,5 +1,5 @@
 //! The lab's conformance suite on CGAL's two halfedge structures (compiled in when CGAL is
-//! installed; see README.md).
+//! installed; see `docs/fairness.md`).
 
 #[cfg(has_cgal)]
 topolab_structures::conformance!(cgal_surface_mesh, topolab_baselines::cgal::SurfaceMesh);

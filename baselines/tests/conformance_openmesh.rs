@@ -1,5 +1,5 @@
 //! The lab's conformance suite on the OpenMesh baseline (compiled in when OpenMesh is
-//! installed; see README.md).
+//! installed; see `docs/fairness.md`).
 
 #[cfg(has_openmesh)]
 topolab_structures::conformance!(openmesh, topolab_baselines::openmesh::OpenMesh);

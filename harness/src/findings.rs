@@ -5,6 +5,7 @@
 
 use crate::kernels::Kernel;
 use crate::results::{Measurement, Results, Status, Subject};
+use crate::targets::measured::{ran, shown_turns};
 use crate::targets::{measured, sequential, Against, TARGETS};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
@@ -141,13 +142,8 @@ fn targets(md: &mut String, r: &Results) {
     let Some((mesh, _)) = largest(r, "torus") else {
         return;
     };
-    let ran = |s: &str| r.structures.iter().any(|x| x.name == s);
-    let turns: Vec<_> = r
-        .targets
-        .iter()
-        .filter(|t| t.mesh == mesh)
-        .cloned()
-        .collect();
+    let ran = |s: &str| ran(r, s);
+    let turns = shown_turns(r, mesh);
     let mut lines = Vec::new();
     for t in TARGETS.iter().filter(|t| ran(t.structure)) {
         let against = match t.against {
@@ -181,7 +177,7 @@ fn targets(md: &mut String, r: &Results) {
     let met = lines.iter().filter(|l| l.ends_with("| met |")).count();
     let _ = writeln!(
         md,
-        "## Targets on {mesh}\n\n{met} of {} met. Each ratio is the median of per-round ratios, the two sides taking turns (the page's Targets section says how).\n\n| target | in turns (spread) | goal | |\n|---|--:|--:|---|",
+        "## Targets\n\nOn {mesh} (the hull's on its own points): {met} of {} met. Each ratio is the median of per-round ratios, the two sides taking turns (the page's Targets section says how).\n\n| target | in turns (spread) | goal | |\n|---|--:|--:|---|",
         lines.len()
     );
     for l in lines {

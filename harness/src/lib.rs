@@ -1,9 +1,10 @@
 //! # topolab-harness
 //!
 //! The operator catalogue (what each operator takes and answers), the kernels that time it on
-//! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)), timing with
-//! medians, complexity fits, the machine probe, the results model and HTML report and its
-//! [`sections`](mod@sections), and [`compare`](mod@compare): two runs side by side.
+//! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)),
+//! [`timing`] (medians, contenders taking turns, the memory meter), complexity fits, the machine
+//! probe, the [`results`] schema, the HTML [`report`] and its sections, the
+//! [`targets`] measured in turns, and [`compare`](mod@compare): two runs side by side.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
@@ -12,7 +13,6 @@ pub mod bench;
 pub mod catalogue;
 pub mod changing;
 pub mod checksum;
-pub mod chooser;
 pub mod compare;
 pub mod counting;
 pub mod decimate;
@@ -29,9 +29,8 @@ pub mod plot;
 pub mod probe;
 pub mod reads;
 pub mod repaired;
+pub mod report;
 pub mod results;
-pub mod scale;
-pub mod sections;
 pub mod skips;
 pub mod svg;
 pub mod targets;

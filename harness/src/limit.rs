@@ -20,35 +20,21 @@
 //! The sweep also reads what the harness's checksum asks for: the end vertices of every edge
 //! it mixes in (an R10 of the structure: see [`checksum_keys`]). What the model leaves out
 //! (arithmetic on the chain, branches, the structure's own bookkeeping) is what "× limit"
-//! measures. One part of it is measured beside the limit, not in it: the chain when each step
-//! also does the arithmetic the model declares ([`Step`]), at the probe's chase of that kind
-//! ([`Limit::chain_ns_per_item`]). In the reference run (2026-12-02) the CHE's `prev(h)`
-//! before each `O[]` load made a step 2.0 times a plain load's latency in L1 (2.71 against
-//! 1.35 ns), the half-edges' `h ^ 1` 1.2 times (1.62 ns). Neither is a floor: both count one
+//! measures. One part of it is measured beside the limit, not in it: the chain when each step also
+//! does the arithmetic the model declares ([`Step`](topolab_structures::Step)), at the probe's
+//! chase of that kind ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load
+//! makes a step about twice a plain load's latency in L1, the half-edges' `h ^ 1` about 1.2
+//! times (the page's probe table gives this run's figures). Neither is a floor: both count one
 //! query's chain after another, and a processor can overlap the chains of consecutive queries
-//! (the index half-edge ran 0.81 times its chain in that run's Targets turns). The limit
+//! (the index half-edge has run below its chain in the Targets turns). The limit
 //! counts plain loads, as the model declares them, and the Targets show each sweep held to
 //! its limit whose steps do arithmetic against its chain too.
 
 use crate::kernels::Kernel;
 use crate::probe::Probe;
+pub use crate::results::{Bound, Limit, MeshCounts};
 use crate::results::{Results, Status, Subject};
-use topolab_structures::{Access, Operator, PolygonSoup, Step, Unit};
-
-/// The element counts a mesh's containers and a sweep's answers follow.
-#[derive(Copy, Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct MeshCounts {
-    /// Vertices.
-    pub vertices: usize,
-    /// Edges.
-    pub edges: usize,
-    /// Faces.
-    pub faces: usize,
-    /// Corners (the sum of the faces' sizes).
-    pub corners: usize,
-    /// Edges with one face.
-    pub boundary_edges: usize,
-}
+use topolab_structures::{Access, Operator, PolygonSoup, Unit};
 
 impl MeshCounts {
     /// The counts of `soup`; `None` when its edges cannot be analysed (a soup no structure with
@@ -120,57 +106,6 @@ pub fn checksum_terms(op: Operator, queries: f64, answers: f64) -> f64 {
     } else {
         answers
     }
-}
-
-/// Which bound sets a limit.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Bound {
-    /// The bytes at the bandwidth.
-    Bandwidth,
-    /// The chain at the load latency.
-    Latency,
-    /// The harness's checksum arithmetic, per answer.
-    Checksum,
-}
-
-/// The limit of one sweep cell.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Limit {
-    /// The limit, ns per item: the largest of the three bounds.
-    pub ns_per_item: f64,
-    /// Which bound it is.
-    pub bound: Bound,
-    /// Bytes read per item (containers capped at their size, scans in full), over the
-    /// bandwidth of `bandwidth_level`.
-    pub bytes_per_item: f64,
-    /// The bandwidth bound, ns per item.
-    pub bandwidth_ns_per_item: f64,
-    /// The probe level whose bandwidth it uses (the working set of the containers read).
-    pub bandwidth_level: String,
-    /// Dependent loads on the chain per item, at the latency of `latency_level`.
-    pub loads_per_item: f64,
-    /// The latency bound, ns per item.
-    pub latency_ns_per_item: f64,
-    /// The probe level whose latency it uses (the working set of one query).
-    pub latency_level: String,
-    /// The checksum's arithmetic, ns per item: its terms at the probe's time per term.
-    pub checksum_ns_per_item: f64,
-    /// Checksum terms per item (one per answer; one per edge for R10).
-    #[serde(default)]
-    pub checksum_terms_per_item: f64,
-    /// The work of each step of the chain, as the model declares it.
-    #[serde(default)]
-    pub step: Step,
-    /// The chain at the latency of a step doing that work, ns per item: the loads at the
-    /// probe's chase of that kind at `latency_level` ([`crate::probe::Level::step_ns`]). Not a
-    /// bound of the limit, which counts plain loads as the model declares them: shown beside
-    /// it, it measures what the arithmetic on the chain costs.
-    #[serde(default)]
-    pub chain_ns_per_item: f64,
-    /// What the structure says the model leaves out, if it knows.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub note: Option<String>,
 }
 
 /// The limit of a sweep of `op` over `items` queries of a mesh of `counts`, for a structure
@@ -307,7 +242,7 @@ pub fn annotate(results: &mut Results) {
 mod tests {
     use super::*;
     use crate::probe::Level;
-    use topolab_structures::{meshes, Container, Read};
+    use topolab_structures::{meshes, Container, Read, Step};
 
     /// A machine of two levels, 1 MB at 100 GB/s and 2 ns a load, memory at 10 GB/s and
     /// 100 ns (a twin step 1.25 times a load, a corner step twice); half a nanosecond a

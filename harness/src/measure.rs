@@ -18,6 +18,7 @@
 
 use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
 use crate::results::{Measurement, Status, Subject};
+pub use crate::timing::meter::MemoryMeter;
 use crate::timing::{median, time, Budget, Timing};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -25,36 +26,6 @@ use topolab_structures::{
     BoundaryCurves, BuildFacts, Constructed, Input, MeshTopology, NativeKernels, Operator,
     PolygonSoup,
 };
-
-/// Reads the process's heap use (the report binary's counting allocator, which counts the C++
-/// baselines' blocks by the same rule as Rust's) and page faults.
-pub trait MemoryMeter {
-    /// Bytes allocated now.
-    fn current(&self) -> usize;
-    /// Highest `current()` since the last reset.
-    fn peak(&self) -> usize;
-    /// Starts a new peak at `current()`.
-    fn reset_peak(&self);
-    /// Starts (`true`) or stops counting allocations. The report's allocator counts only while
-    /// asked, so the timed builds pay nothing for the memory measurement. The default does
-    /// nothing (a meter that always counts).
-    fn counting(&self, on: bool) {
-        let _ = on;
-    }
-    /// Minor page faults of the measuring thread so far; `None` (the default) when unknown.
-    fn minor_faults(&self) -> Option<u64> {
-        None
-    }
-    /// Returns the memory the allocator holds free to the kernel, so that the next build
-    /// touches fresh pages (a cold build). The default does nothing.
-    fn release_free_memory(&self) {}
-    /// The measuring thread's CPU time so far, user and system, ns: when known, builds are
-    /// timed by it, so that the other processes of a shared machine do not count. `None` (the
-    /// default): builds are timed by the wall clock.
-    fn thread_cpu_ns(&self) -> Option<u64> {
-        None
-    }
-}
 
 /// How the harness builds `M` from a soup, decided before any clock: a baseline's own
 /// construction ([`NativeKernels::construction`]) told the facts its

@@ -9,66 +9,56 @@
 //! exception: its cells repeat until a wall-time budget, so under load they repeat less, and
 //! its CPU time falls short of its time alone.
 
-use crate::html::esc;
+use crate::report::format::esc;
 use std::fmt::Write;
 
-/// A section of a report run, as timed (the page's sections are drawn from several of them).
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Phase {
-    /// The machine's memory probe.
-    Probe,
-    /// Describing the structures; generating, reading, repairing and refining the meshes.
-    Meshes,
-    /// Every structure measured on one mesh (one entry per mesh, the mesh named).
-    Measure,
-    /// The vertex 1-ring sweep of a torus in each element order.
-    Orderings,
-    /// libigl's functions, in a Python subprocess.
-    Libigl,
-    /// The 3D convex hulls, the lab's and the outside ones (Qhull, CGAL) in-process.
-    Hull,
-    /// The changing workloads.
-    Changing,
-    /// Decimation and reconstruction.
-    Decimate,
-    /// Fitting exponents and putting limits on the sweeps.
-    Fits,
-    /// Counting reads per query (the measured Table 4.1).
-    Reads,
-    /// The Targets table's structures taking turns.
-    Targets,
-    /// Rendering the page and `results.json` (the writing of the files themselves is not in
-    /// the file).
-    Writing,
+/// A phase of a report run, as timed: one of the run's own steps ([`Phase::PROBE`],
+/// [`Phase::MESHES`], [`Phase::MEASURE`], [`Phase::FITS`], [`Phase::WRITING`]) or a section's
+/// own measurement ([`crate::report::section::Section::phase`]). `results.json` writes its name.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Phase {
+    /// Its kebab-case name in `results.json`.
+    pub name: &'static str,
+    /// What the page calls it.
+    pub label: &'static str,
 }
 
 impl Phase {
+    /// The machine's memory probe.
+    pub const PROBE: Phase = Phase::new("probe", "memory probe");
+    /// Describing the structures; generating, reading, repairing and refining the meshes.
+    pub const MESHES: Phase = Phase::new("meshes", "structures and meshes");
+    /// Every structure measured on one mesh (one entry per mesh, the mesh named).
+    pub const MEASURE: Phase = Phase::new("measure", "measurement");
+    /// Fitting exponents and putting limits on the sweeps.
+    pub const FITS: Phase = Phase::new("fits", "fits and limits");
+    /// Rendering the page and `results.json` (the writing of the files themselves is not in
+    /// the file).
+    pub const WRITING: Phase = Phase::new("writing", "rendering the page");
+
+    /// The phase called `name`, which the page calls `label`.
+    pub const fn new(name: &'static str, label: &'static str) -> Phase {
+        Phase { name, label }
+    }
+
     /// What the page calls it.
     pub fn label(self) -> &'static str {
-        match self {
-            Phase::Probe => "memory probe",
-            Phase::Meshes => "structures and meshes",
-            Phase::Measure => "measurement",
-            Phase::Orderings => "orderings",
-            Phase::Libigl => "libigl",
-            Phase::Hull => "3D convex hulls",
-            Phase::Changing => "changing workloads",
-            Phase::Decimate => "decimation",
-            Phase::Fits => "fits and limits",
-            Phase::Reads => "reads per query (Table 4.1)",
-            Phase::Targets => "Targets turns",
-            Phase::Writing => "rendering the page",
-        }
+        self.label
     }
 }
 
-/// The time one section took.
+impl serde::Serialize for Phase {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name)
+    }
+}
+
+/// The time one phase took.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct PhaseTime {
-    /// Which section.
+    /// Which phase.
     pub phase: Phase,
-    /// The mesh, for [`Phase::Measure`].
+    /// The mesh, for [`Phase::MEASURE`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mesh: Option<String>,
     /// Elapsed wall time, seconds.
@@ -155,6 +145,8 @@ pub fn render(h: &mut String, times: &[PhaseTime]) {
 mod tests {
     use super::*;
 
+    const HULL: Phase = Phase::new("hull", "3D convex hulls");
+
     fn t(phase: Phase, mesh: Option<&str>, wall_s: f64, cpu_s: f64) -> PhaseTime {
         PhaseTime {
             phase,
@@ -168,17 +160,19 @@ mod tests {
     #[test]
     fn phases_of_one_kind_are_summed_in_first_run_order() {
         let times = [
-            t(Phase::Probe, None, 2.0, 1.0),
-            t(Phase::Measure, Some("torus-1k"), 3.0, 2.0),
-            t(Phase::Measure, Some("grid-1k"), 5.0, 4.0),
-            t(Phase::Hull, None, 1.0, 1.0),
+            t(Phase::PROBE, None, 2.0, 1.0),
+            t(Phase::MEASURE, Some("torus-1k"), 3.0, 2.0),
+            t(Phase::MEASURE, Some("grid-1k"), 5.0, 4.0),
+            t(HULL, None, 1.0, 1.0),
         ];
         let rows = by_phase(&times);
         assert_eq!(rows.len(), 3);
-        assert_eq!((rows[1].0, rows[1].1), (Phase::Measure, 2));
+        assert_eq!((rows[1].0, rows[1].1), (Phase::MEASURE, 2));
         assert_eq!(rows[1].2, 8.0);
         assert_eq!(rows[1].3, 7.0);
-        assert_eq!(rows[2].0, Phase::Hull);
+        assert_eq!(rows[2].0, HULL);
+        // results.json writes a phase by its name.
+        assert_eq!(serde_json::to_value(HULL).unwrap(), "hull");
         let mut h = String::new();
         render(&mut h, &times);
         assert!(h.contains("measurement (2 meshes)"), "{h}");

@@ -20,6 +20,7 @@
 //!   `<title>` (nor `class`), so these are added to its output by `finish`: one invisible
 //!   circle over each marker holds the point's title.
 
+use crate::report::format::esc;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -297,13 +298,6 @@ pub(crate) fn value(y: f64) -> String {
     } else {
         format!("{y:.2}")
     }
-}
-
-pub(crate) fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 /// Tick values of a log axis over [lo, hi]: the powers of ten inside, with 2 and 5 times them

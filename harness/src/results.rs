@@ -3,7 +3,7 @@
 use crate::kernels::Kernel;
 use crate::machine::Machine;
 use crate::probe::Probe;
-use topolab_structures::{Capabilities, Cost, Family, Operator, Workload};
+use topolab_structures::{Capabilities, Cost, Family, Operator, Step, Workload};
 
 /// The version of `results.json`'s format, written as its `format_version`: raised when a
 /// field that readers rely on (`topolab compare` reads the machine, the settings' command, the
@@ -36,23 +36,23 @@ pub struct Results {
     /// libigl's reference timings, when it ran.
     pub libigl: Vec<LibiglRow>,
     /// The 3D convex hull algorithms (and Qhull) against n.
-    pub hull: Vec<crate::hull::bench::HullRow>,
+    pub hull: Vec<HullRow>,
     /// Fitted exponents of the hull rows against n, next to the lecture's bounds.
-    pub hull_fits: Vec<crate::hull::bench::HullFit>,
+    pub hull_fits: Vec<HullFit>,
     /// How the hull section ran Qhull (its library's version and options), when it did.
     pub qhull: Option<String>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
-    pub targets: Vec<crate::targets::Turns>,
+    pub targets: Vec<crate::targets::plan::Turns>,
     /// Decimation by quadric error (the lab's, OpenMesh's, CGAL's) and the reconstruction.
     pub decimate: Vec<crate::decimate::DecimateRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Reads per query of every operator on every structure against mesh size, counted
     /// ([`crate::reads::count`]).
-    pub reads: Vec<crate::reads::count::ReadsRow>,
+    pub reads: Vec<ReadsRow>,
     /// Anything the reader should know (skipped baselines, missing data).
     pub notes: Vec<String>,
     /// How long each section of the run took, wall and CPU ([`crate::phases`]).
@@ -74,8 +74,9 @@ pub struct Settings {
     pub cell_max_s: f64,
     /// The command that produced the results.
     pub command: String,
-    /// The sections of the report this run measured and shows (`--sections`).
-    pub sections: Vec<crate::sections::Section>,
+    /// The sections of the report this run measured and shows (`--sections`), by name, in
+    /// page order.
+    pub sections: Vec<&'static str>,
 }
 
 /// A structure and its declared costs.
@@ -129,7 +130,7 @@ pub struct MeshInfo {
     /// Its element counts, for the limits of its sweeps (`None` when its edges cannot be
     /// analysed).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub counts: Option<crate::limit::MeshCounts>,
+    pub counts: Option<MeshCounts>,
     /// What `topolab repair` changed, when the file as read was refused by the structures
     /// that need an oriented manifold and its repaired version was measured instead.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -267,7 +268,7 @@ pub struct Measurement {
     /// Sweeps of a structure that declares its access model: the time the model allows
     /// ([`crate::limit`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub limit: Option<crate::limit::Limit>,
+    pub limit: Option<Limit>,
 }
 
 impl Measurement {
@@ -358,6 +359,174 @@ pub struct Teaching {
     pub structure: String,
     /// Its `explain` text.
     pub text: String,
+}
+
+// The rows whose modules compute them from the records above (limits, hulls, reads per
+// query) are defined here, so that those modules read the schema and the schema names none
+// of them.
+
+/// The element counts a mesh's containers and a sweep's answers follow.
+#[derive(Copy, Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct MeshCounts {
+    /// Vertices.
+    pub vertices: usize,
+    /// Edges.
+    pub edges: usize,
+    /// Faces.
+    pub faces: usize,
+    /// Corners (the sum of the faces' sizes).
+    pub corners: usize,
+    /// Edges with one face.
+    pub boundary_edges: usize,
+}
+
+/// Which bound sets a limit.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Bound {
+    /// The bytes at the bandwidth.
+    Bandwidth,
+    /// The chain at the load latency.
+    Latency,
+    /// The harness's checksum arithmetic, per answer.
+    Checksum,
+}
+
+/// The limit of one sweep cell.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Limit {
+    /// The limit, ns per item: the largest of the three bounds.
+    pub ns_per_item: f64,
+    /// Which bound it is.
+    pub bound: Bound,
+    /// Bytes read per item (containers capped at their size, scans in full), over the
+    /// bandwidth of `bandwidth_level`.
+    pub bytes_per_item: f64,
+    /// The bandwidth bound, ns per item.
+    pub bandwidth_ns_per_item: f64,
+    /// The probe level whose bandwidth it uses (the working set of the containers read).
+    pub bandwidth_level: String,
+    /// Dependent loads on the chain per item, at the latency of `latency_level`.
+    pub loads_per_item: f64,
+    /// The latency bound, ns per item.
+    pub latency_ns_per_item: f64,
+    /// The probe level whose latency it uses (the working set of one query).
+    pub latency_level: String,
+    /// The checksum's arithmetic, ns per item: its terms at the probe's time per term.
+    pub checksum_ns_per_item: f64,
+    /// Checksum terms per item (one per answer; one per edge for R10).
+    #[serde(default)]
+    pub checksum_terms_per_item: f64,
+    /// The work of each step of the chain, as the model declares it.
+    #[serde(default)]
+    pub step: Step,
+    /// The chain at the latency of a step doing that work, ns per item: the loads at the
+    /// probe's chase of that kind at `latency_level` ([`crate::probe::Level::step_ns`]). Not a
+    /// bound of the limit, which counts plain loads as the model declares them: shown beside
+    /// it, it measures what the arithmetic on the chain costs.
+    #[serde(default)]
+    pub chain_ns_per_item: f64,
+    /// What the structure says the model leaves out, if it knows.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// One timed hull. (`Default`, so that a row of an outside hull, such as CGAL's, names only
+/// what it has.)
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct HullRow {
+    /// `cube`, `ball` or `sphere`.
+    pub shape: String,
+    /// Number of points.
+    pub n: usize,
+    /// `gift`, `incremental`, `randomized`, or an outside hull's name (`qhull`, CGAL's
+    /// `cgal-convex-hull-3`).
+    pub algorithm: String,
+    /// The median of the timed runs after a warm-up run ([`warm_median`](crate::hull::bench::warm_median)), seconds.
+    pub seconds: f64,
+    /// How many timed runs `seconds` is the median of ([`timed_runs`](crate::hull::bench::timed_runs)).
+    pub timed_runs: usize,
+    /// Faces created during the construction (`None` for an outside hull).
+    pub faces_created: Option<usize>,
+    /// Vertices of the hull.
+    pub hull_vertices: usize,
+    /// [`vertex_checksum`](crate::hull::bench::vertex_checksum) of the hull's vertices (`None` for CGAL's, whose shim returns
+    /// counts only).
+    pub vertex_checksum: Option<u64>,
+    /// `Volume6` evaluations ([`topolab_structures::hull::Work::volume6_tests`]; `None` for an outside hull).
+    pub volume6_tests: Option<u64>,
+    /// Of those, the ones decided in exact arithmetic ([`topolab_structures::hull::Work::exact_tests`]; `None` for an
+    /// outside hull).
+    pub exact_tests: Option<u64>,
+    /// Σ|P(e)|, the conflict-list work ([`topolab_structures::hull::Work::conflict_work`]; randomized only).
+    pub conflict_work: Option<u64>,
+    /// Peak heap bytes allocated during the call beyond what was allocated before it (the
+    /// input points are not counted), counted in the warm-up run, which is not timed; `None`
+    /// for an outside hull or without a memory meter.
+    pub peak_bytes: Option<usize>,
+}
+
+/// The fitted exponents (t ∝ n^e, least squares on log-log axes) of one algorithm on one
+/// shape, against n.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct HullFit {
+    /// `ball`, `sphere` or `cube`.
+    pub shape: String,
+    /// The algorithm (an outside hull too).
+    pub algorithm: String,
+    /// How many sizes the fits used.
+    pub sizes: usize,
+    /// Exponent of the time.
+    pub time_exponent: f64,
+    /// Exponent of the `Volume6` tests (`None` for an outside hull).
+    pub tests_exponent: Option<f64>,
+    /// Exponent of Σ|P(e)| (randomized only).
+    pub conflict_exponent: Option<f64>,
+    /// The lecture's bound ([`bound`](crate::hull::bench::bound)): `n·h`, `n²` or `n lg n`; `None` for an outside hull.
+    pub bound: Option<String>,
+    /// The bound's exponent at the sizes and hull sizes measured.
+    pub bound_exponent: Option<f64>,
+    /// Does the work grow no faster than the bound (the work's exponent, Σ|P(e)| for the
+    /// randomized algorithm and `Volume6` tests for the others, at most the bound's + 0.1)?
+    pub within_bound: Option<bool>,
+}
+
+/// The reads of one operator on one structure, against mesh size (counted in the counting
+/// build of the structures, whose operators and costs are its own types).
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct ReadsRow {
+    /// The structure.
+    pub structure: String,
+    /// The operator.
+    pub operator: topolab_structures_counted::Operator,
+    /// The mesh family counted on (`torus` or `grid`).
+    pub family: String,
+    /// The declared cost.
+    pub cost: topolab_structures_counted::Cost,
+    /// The exponent the declared cost predicts.
+    pub expected_exponent: f64,
+    /// Per size counted: (faces, mean reads per query, queries).
+    pub points: Vec<(usize, f64, usize)>,
+    /// Sizes (triangles asked for) skipped by the budget.
+    pub skipped: Vec<usize>,
+    /// The exponent fitted to the reads against the faces (two sizes or more with reads).
+    pub exponent: Option<f64>,
+    /// How the reads compare with the declared cost.
+    pub verdict: Verdict,
+}
+
+/// How a row's reads compare with its declared cost.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Verdict {
+    /// The fitted exponent is the declared cost's (within [`TOLERANCE`](crate::reads::count::TOLERANCE)).
+    Matches,
+    /// It is not: a finding about the code or the declared cost.
+    Differs,
+    /// Nothing is read (the grids' arithmetic).
+    NoReads,
+    /// Fewer than two sizes counted.
+    TooFew,
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@
 //! library's axes and series do not describe.
 
 use crate::plot::{self, Style};
+use crate::report::format::esc;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::fmt::Write;
@@ -17,8 +18,8 @@ pub fn bars(title: &str, unit: &str, rows: &[(String, Style, f64, Option<f64>)])
     draw_bars(title, unit, rows).unwrap_or_else(|e| {
         format!(
             "<p class=\"empty\">{}: the chart could not be drawn ({})</p>",
-            plot::esc(title),
-            plot::esc(&e.to_string())
+            esc(title),
+            esc(&e.to_string())
         )
     })
 }
@@ -43,7 +44,7 @@ fn draw_bars(
     if rows.is_empty() {
         return Ok(format!(
             "<p class=\"empty\">{}: nothing measured</p>",
-            plot::esc(title)
+            esc(title)
         ));
     }
     let n = rows.len() as u32;
@@ -121,7 +122,7 @@ fn draw_bars(
                     tx - 3,
                     y1 - y0,
                     plot::value(*t),
-                    plot::esc(unit)
+                    esc(unit)
                 );
             }
         }

@@ -9,8 +9,9 @@
 
 use crate::checksum::mix;
 use crate::fit::fit_exponent;
-use crate::measure::MemoryMeter;
+pub use crate::results::{HullFit, HullRow};
 use crate::timing::median;
+use crate::timing::meter::MemoryMeter;
 use glam::DVec3;
 use std::time::Instant;
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape, Work};
@@ -20,40 +21,9 @@ use topolab_structures::Result;
 /// lab's algorithms and for the outside hulls added afterwards alike.
 pub const POINTS_SEED: u64 = 42;
 
-/// One timed hull. (`Default`, so that a row of an outside hull, such as CGAL's, names only
-/// what it has.)
-#[derive(Clone, Debug, Default, serde::Serialize)]
-pub struct HullRow {
-    /// `cube`, `ball` or `sphere`.
-    pub shape: String,
-    /// Number of points.
-    pub n: usize,
-    /// `gift`, `incremental`, `randomized`, or an outside hull's name (`qhull`, CGAL's
-    /// `cgal-convex-hull-3`).
-    pub algorithm: String,
-    /// The median of the timed runs after a warm-up run ([`warm_median`]), seconds.
-    pub seconds: f64,
-    /// How many timed runs `seconds` is the median of ([`timed_runs`]).
-    pub timed_runs: usize,
-    /// Faces created during the construction (`None` for an outside hull).
-    pub faces_created: Option<usize>,
-    /// Vertices of the hull.
-    pub hull_vertices: usize,
-    /// [`vertex_checksum`] of the hull's vertices (`None` for CGAL's, whose shim returns
-    /// counts only).
-    pub vertex_checksum: Option<u64>,
-    /// `Volume6` evaluations ([`Work::volume6_tests`]; `None` for an outside hull).
-    pub volume6_tests: Option<u64>,
-    /// Of those, the ones decided in exact arithmetic ([`Work::exact_tests`]; `None` for an
-    /// outside hull).
-    pub exact_tests: Option<u64>,
-    /// Σ|P(e)|, the conflict-list work ([`Work::conflict_work`]; randomized only).
-    pub conflict_work: Option<u64>,
-    /// Peak heap bytes allocated during the call beyond what was allocated before it (the
-    /// input points are not counted), counted in the warm-up run, which is not timed; `None`
-    /// for an outside hull or without a memory meter.
-    pub peak_bytes: Option<usize>,
-}
+/// The seed of the randomized algorithm's insertion order in the benchmark (and in the hull's
+/// target, which times the same hulls).
+pub const RANDOMIZED_SEED: u64 = 7;
 
 /// The checksum of a hull's vertex set: Σ mix(v, 1) over its input indices v (wrapping; the
 /// terms of [`crate::checksum`]), the same in any order, so two hulls with the same vertices
@@ -269,7 +239,7 @@ pub fn run(
     let mut last_work: [Option<(usize, u64)>; 3] = [None; 3];
     for &n in sizes {
         let points = random_points(shape, n, POINTS_SEED);
-        for (a, algorithm) in Algorithm::all(7).into_iter().enumerate() {
+        for (a, algorithm) in Algorithm::all(RANDOMIZED_SEED).into_iter().enumerate() {
             if too_slow[a] {
                 continue;
             }
@@ -304,7 +274,7 @@ pub fn run(
 
 /// The `Volume6` tests a slow algorithm's next size may be predicted to take ([`run`]): 2·10⁹,
 /// some 6 to 30 s on the 2-core reference machine (gift wrapping about 15 ns a test,
-/// incremental 3). Counted on 2026-12-01, it keeps gift wrapping's 100k ball (551 million
+/// incremental 3). As counted, it keeps gift wrapping's 100k ball (551 million
 /// tests) and leaves out the incremental algorithm's 1M ball (6 billion, 17 s) and 100k sphere
 /// (10 billion, 36 s): their O(n²) shows on the sizes before (the ball to 100k, the sphere to
 /// 10k).
@@ -343,31 +313,6 @@ pub fn bound(algorithm: &str, n: usize, h: usize) -> Option<(&'static str, f64)>
         "randomized" => Some(("n lg n", n_lg_n(n))),
         _ => None,
     }
-}
-
-/// The fitted exponents (t ∝ n^e, least squares on log-log axes) of one algorithm on one
-/// shape, against n.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct HullFit {
-    /// `ball`, `sphere` or `cube`.
-    pub shape: String,
-    /// The algorithm (an outside hull too).
-    pub algorithm: String,
-    /// How many sizes the fits used.
-    pub sizes: usize,
-    /// Exponent of the time.
-    pub time_exponent: f64,
-    /// Exponent of the `Volume6` tests (`None` for an outside hull).
-    pub tests_exponent: Option<f64>,
-    /// Exponent of Σ|P(e)| (randomized only).
-    pub conflict_exponent: Option<f64>,
-    /// The lecture's bound ([`bound`]): `n·h`, `n²` or `n lg n`; `None` for an outside hull.
-    pub bound: Option<String>,
-    /// The bound's exponent at the sizes and hull sizes measured.
-    pub bound_exponent: Option<f64>,
-    /// Does the work grow no faster than the bound (the work's exponent, Σ|P(e)| for the
-    /// randomized algorithm and `Volume6` tests for the others, at most the bound's + 0.1)?
-    pub within_bound: Option<bool>,
 }
 
 /// [`HullFit`] of every (shape, algorithm) with at least two sizes in `rows`, in the order
@@ -568,7 +513,7 @@ mod tests {
         // Work that grew 32-fold from 1k to 10k points grows 32-fold again to 100k.
         let p = predicted_tests(Some((1_000, 1_000)), (10_000, 32_000), 100_000);
         assert!((p - 1_024_000.0).abs() < 1e-6, "{p}");
-        // The incremental algorithm on a sphere, as counted (2026-12-01): 995,004 tests at
+        // The incremental algorithm on a sphere, as counted: 995,004 tests at
         // 1k, 99,950,004 at 10k, 9,999,500,004 at 100k.
         let p = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
         assert!((p / 9_999_500_004.0 - 1.0).abs() < 0.01, "{p}");

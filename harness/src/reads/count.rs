@@ -14,11 +14,11 @@
 
 use super::trace::{run, Answer};
 use crate::fit;
+pub use crate::results::{ReadsRow, Verdict};
 use topolab_structures_counted::core::reads;
 use topolab_structures_counted::registry::{self, StructureVisitor};
 use topolab_structures_counted::{
-    meshes, BoundaryCurves, Cost, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup,
-    VertexId,
+    meshes, BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,
 };
 
 /// Evenly spaced query elements per operator and size.
@@ -38,43 +38,6 @@ impl Default for Budget {
             reads_per_cell: 5.0e7,
         }
     }
-}
-
-/// The reads of one operator on one structure, against mesh size.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct ReadsRow {
-    /// The structure.
-    pub structure: String,
-    /// The operator.
-    pub operator: Operator,
-    /// The mesh family counted on (`torus` or `grid`).
-    pub family: String,
-    /// The declared cost.
-    pub cost: Cost,
-    /// The exponent the declared cost predicts.
-    pub expected_exponent: f64,
-    /// Per size counted: (faces, mean reads per query, queries).
-    pub points: Vec<(usize, f64, usize)>,
-    /// Sizes (triangles asked for) skipped by the budget.
-    pub skipped: Vec<usize>,
-    /// The exponent fitted to the reads against the faces (two sizes or more with reads).
-    pub exponent: Option<f64>,
-    /// How the reads compare with the declared cost.
-    pub verdict: Verdict,
-}
-
-/// How a row's reads compare with its declared cost.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Verdict {
-    /// The fitted exponent is the declared cost's (within [`TOLERANCE`]).
-    Matches,
-    /// It is not: a finding about the code or the declared cost.
-    Differs,
-    /// Nothing is read (the grids' arithmetic).
-    NoReads,
-    /// Fewer than two sizes counted.
-    TooFew,
 }
 
 /// How far a fitted exponent of reads may be from the declared one: the reads of a query are
@@ -294,8 +257,8 @@ mod tests {
     }
 
     /// The declared costs against the counted reads, for every structure and operator, on
-    /// three sizes: every row matches, or is a finding listed here with its reason (see the
-    /// README's "Reads per query").
+    /// three sizes: every row matches, or is a finding listed here with its reason (see
+    /// `docs/report.md`).
     #[test]
     fn fitted_read_exponents_are_the_declared_costs() {
         // Small sizes, so that the O(n²) boundary curves of the scanning structures are

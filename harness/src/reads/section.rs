@@ -5,17 +5,12 @@
 use super::count::{ReadsRow, Verdict};
 use super::trace::{self, counted_soup, Query, SoupEdges};
 use crate::kernels::Kernel;
+use crate::report::format::esc;
 use crate::results::Results;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use topolab_structures_counted::core::reads::Event;
 use topolab_structures_counted::Operator;
-
-fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
 
 /// How far the timed exponent may be from the counted one before the cell says the memory
 /// hierarchy is speaking (the timed table's own tolerance, [`crate::fit::agrees`]).

@@ -1,4 +1,4 @@
-//! The decimation section of `topolab report` (see `topolab_harness::decimate`): on the closed
+//! "Decimation by quadric error, and reconstruction" (see [`crate::decimate`]): on the closed
 //! tori of the run up to [`MAX_FACES`], each mesh decimated to 10% of its faces by the lab's
 //! decimater on the editable structures asked for, with each [`Strategy`] (eager: OpenMesh's
 //! Decimater step for step; lazy: the lab's), the reconstruction by vertex splits timed and
@@ -19,12 +19,16 @@
 //! each collapse's edges in a `std::set`: about a third of its instructions in callgrind are
 //! `malloc`, `free` and the tree, none of it a setting of ours).
 
-use crate::input::Failure;
-use crate::native_decimate::NativeDecimater;
+use crate::decimate::{distance, result_checksum, DecimateRow};
+use crate::phases::Phase;
+use crate::report::run::{Case, ReportError, Run as SectionRun};
+use crate::report::section::{Needs, Page, Section};
+use crate::timing::median;
+use crate::timing::meter::MemoryMeter;
+use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use glam::DVec3;
-use topolab_harness::decimate::{distance, result_checksum, DecimateRow};
-use topolab_harness::targets::{take_turns, Answer, Run, Stopwatch};
-use topolab_harness::timing::median;
+use std::fmt::Write;
+use topolab_baselines::native_decimate::NativeDecimater;
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh, Strategy};
 use topolab_structures::{
@@ -41,7 +45,7 @@ const EDITABLE: [&str; 2] = ["index-half-edge", "pointer-half-edge"];
 
 /// The decimaters of the Targets row, which take turns on the run's largest torus: the index
 /// half-edge with the eager strategy (OpenMesh's algorithm, [`PAIR_STRATEGY`]) and OpenMesh.
-const PAIR: [&str; 2] = ["index-half-edge", crate::registry::OPENMESH];
+const PAIR: [&str; 2] = ["index-half-edge", topolab_baselines::registry::OPENMESH];
 
 /// The strategy of the Targets row's lab decimater: the one that runs OpenMesh's algorithm.
 const PAIR_STRATEGY: Strategy = Strategy::Eager;
@@ -58,20 +62,21 @@ fn ours<M: MeshEdit>(
     target: usize,
     runs: usize,
     strategy: Strategy,
+    meter: &dyn MemoryMeter,
 ) -> topolab_structures::Result<(f64, PolygonSoup, f64, bool)> {
     let mut times = Vec::with_capacity(runs);
     let mut result = None;
     let (mut rebuilt_seconds, mut exact) = (0.0, false);
     for run in 0..runs.max(2) {
         let mut m = M::from_soup(soup)?;
-        let watch = Stopwatch::start(&crate::ALLOCATOR);
+        let watch = Stopwatch::start(meter);
         let d = decimate(&mut m, target, strategy)?;
         times.push(watch.ns() * 1e-9);
         if run == 0 {
             m.garbage_collection();
             result = Some(to_soup(&m));
         } else {
-            let watch = Stopwatch::start(&crate::ALLOCATOR);
+            let watch = Stopwatch::start(meter);
             let r = reconstruct(&mut m, &d.collapses)?;
             rebuilt_seconds = watch.ns() * 1e-9;
             exact = same_mesh(soup, &m, &r).is_ok();
@@ -88,12 +93,13 @@ fn ours<M: MeshEdit>(
 
 /// Decimates every torus of `cases` (name, family, soup) up to the size cap with each
 /// decimater among `names`.
-pub fn measure(
-    cases: &[(String, String, PolygonSoup)],
+fn measure(
+    cases: &[Case],
     names: &[String],
     quick: bool,
+    meter: &dyn MemoryMeter,
     notes: &mut Vec<String>,
-) -> Result<Vec<DecimateRow>, Failure> {
+) -> Result<Vec<DecimateRow>, ReportError> {
     let cap = if quick { MAX_FACES_QUICK } else { MAX_FACES };
     let asked = |s: &str| names.iter().any(|n| n == s);
     let natives: Vec<NativeDecimater> = NativeDecimater::ALL
@@ -128,12 +134,11 @@ pub fn measure(
             continue;
         }
         let target = faces / 10;
-        let failed = |s: &str, e: topolab_structures::Error| Failure {
-            message: format!("decimating {mesh} failed on {s}: {e}"),
-            code: 1,
+        let failed = |s: &str, e: topolab_structures::Error| {
+            ReportError::Measurement(format!("decimating {mesh} failed on {s}: {e}"))
         };
         if in_turns {
-            rows.extend(pair_in_turns(mesh, soup, target)?);
+            rows.extend(pair_in_turns(mesh, soup, target, meter)?);
             if faces > cap {
                 notes.push(format!(
                     "The decimation section ran {mesh} (above {cap} faces) for the Targets row only: {} and {} in turns; the other decimaters stop at {cap} faces.",
@@ -152,8 +157,8 @@ pub fn measure(
             eprintln!("topolab report: decimate {mesh}: {s} ({strategy})");
             let runs = if faces <= 16_384 { 3 } else { 2 };
             let (seconds, result, rebuilt, exact) = match s {
-                "pointer-half-edge" => ours::<PointerHalfEdge>(soup, target, runs, strategy),
-                _ => ours::<IndexHalfEdge>(soup, target, runs, strategy),
+                "pointer-half-edge" => ours::<PointerHalfEdge>(soup, target, runs, strategy, meter),
+                _ => ours::<IndexHalfEdge>(soup, target, runs, strategy, meter),
             }
             .map_err(|e| failed(s, e))?;
             if !exact {
@@ -207,11 +212,8 @@ pub fn measure(
 }
 
 /// The failure of a reconstruction that did not give `mesh` back on `structure`.
-fn not_undone(mesh: &str, structure: &str) -> Failure {
-    Failure {
-        message: format!("the reconstruction of {mesh} on {structure} did not give the original back\nThe report stops: a decimation that cannot be undone is a bug."),
-        code: 1,
-    }
+fn not_undone(mesh: &str, structure: &str) -> ReportError {
+    ReportError::Measurement(format!("the reconstruction of {mesh} on {structure} did not give the original back\nThe report stops: a decimation that cannot be undone is a bug."))
 }
 
 /// The Targets row's pair on `soup`: the index half-edge with [`PAIR_STRATEGY`] and OpenMesh's
@@ -223,7 +225,8 @@ fn pair_in_turns(
     mesh: &str,
     soup: &PolygonSoup,
     target: usize,
-) -> Result<Vec<DecimateRow>, Failure> {
+    meter: &dyn MemoryMeter,
+) -> Result<Vec<DecimateRow>, ReportError> {
     eprintln!(
         "topolab report: decimate {mesh}: {} ({PAIR_STRATEGY}) and {} taking turns",
         PAIR[0], PAIR[1]
@@ -236,7 +239,7 @@ fn pair_in_turns(
         let (seconds, checksum) = if i == 0 {
             let mut m =
                 <IndexHalfEdge as MeshTopology>::from_soup(soup).map_err(|e| e.to_string())?;
-            let watch = Stopwatch::start(&crate::ALLOCATOR);
+            let watch = Stopwatch::start(meter);
             let d = decimate(&mut m, target, PAIR_STRATEGY).map_err(|e| e.to_string())?;
             let seconds = watch.ns() * 1e-9;
             let checksum = result_checksum(live_triangles(&m));
@@ -244,7 +247,7 @@ fn pair_in_turns(
                 m.garbage_collection();
                 results[i] = Some(to_soup(&m));
             } else if runs[i] == TURNS {
-                let watch = Stopwatch::start(&crate::ALLOCATOR);
+                let watch = Stopwatch::start(meter);
                 let r = reconstruct(&mut m, &d.collapses).map_err(|e| e.to_string())?;
                 let s = watch.ns() * 1e-9;
                 rebuilt = Some((s, same_mesh(soup, &m, &r).is_ok()));
@@ -270,9 +273,10 @@ fn pair_in_turns(
             answer: Answer::Sum(checksum),
         })
     })
-    .map_err(|e| Failure {
-        message: format!("decimating {mesh} in turns: {e}\nThe report stops."),
-        code: 1,
+    .map_err(|e| {
+        ReportError::Measurement(format!(
+            "decimating {mesh} in turns: {e}\nThe report stops."
+        ))
     })?;
     if rebuilt.is_some_and(|(_, exact)| !exact) {
         return Err(not_undone(mesh, PAIR[0]));
@@ -352,4 +356,77 @@ fn per_removed_face(rows: &[DecimateRow]) -> Option<String> {
         "Decimation, the thread's CPU time per removed face on the largest torus each decimater ran: {}. OpenMesh's Decimater runs as OpenMesh ships it, compiled from its source in release (see Machine); its design tests the legality of every outgoing half-edge of every vertex it heaps again, which the lab's eager strategy does too, through each structure's own test (the lazy strategy tests a candidate when it leaves the heap). CGAL's edge_collapse builds an Edge_profile, with vectors allocated each time, for every cost and placement it computes, and gathers each collapse's edges in a std::set: about a third of its instructions are malloc, free and the tree, none of it a setting of the report's.",
         times.join(", ")
     ))
+}
+
+/// The report section.
+fn render(h: &mut String, rows: &[DecimateRow]) {
+    if rows.is_empty() {
+        return;
+    }
+    h.push_str(concat!(
+        "<h2>Decimation by quadric error, and reconstruction</h2><div class=read><b>How to read it.</b> Thinning for level of detail, as the lecture on polygon-mesh data structures asks, with reconstruction possible again. ",
+        "Each mesh is decimated to 10% of its faces by Garland and Heckbert's quadric error. ",
+        "The lab's decimater runs on the editable structures with two strategies, both with OpenMesh's area-weighted plane quadrics, a heap of vertices keyed by their best half-edge collapse (the error rounded to <code>f32</code>), the removed vertex collapsed onto its neighbour (no optimal placement), the link condition of the structure's collapse test, and boundary vertices kept. ",
+        "<b>eager</b> rows run OpenMesh's <code>DecimaterT</code> with <code>ModQuadricT</code> step for step: every neighbour of a vertex tested for legality (<code>MeshEdit::check_collapse</code>, the structure's own test) before it is priced, only legal collapses heaped, one refused when it leaves the heap dropped, every neighbour of the removed vertex heaped again, no geometric test. ",
+        "They and OpenMesh's Decimater run one algorithm, so their time ratio compares the structures: the Targets row is the index half-edge's eager decimation against OpenMesh. ",
+        "<b>lazy</b> rows run the lab's own variant: collapses priced without a legality test and tested when they leave the heap (a refused vertex heaped again with its next-best neighbour), and a collapse that would flip or flatten a face skipped (OpenMesh's <code>ModNormalFlippingT</code> at 90°, which OpenMesh's row does not run): another algorithm, with fewer legality tests, shown beside but not a structure comparison. ",
+        "OpenMesh's own Decimater and CGAL's <code>edge_collapse</code> with the Garland–Heckbert plane policies on a <code>Surface_mesh</code> (edges keyed, the new vertex at the quadric's minimiser) run in C++. ",
+        "Time: the decimation alone, median of fresh builds (the build not timed); on the run's largest torus the index half-edge (eager) and OpenMesh take turns, round by round, and must give the same mesh, triangle for triangle, in every round (the report stops otherwise); the Targets table gives the median of their per-round ratios. ",
+        "The library functions OpenMesh's Decimater calls (its legality test <code>is_collapse_ok</code>, <code>find_halfedge</code>, <code>valence</code>, and <code>collapse</code>) are compiled with the report's shim, in release: Debian's library has its assertions compiled in, which cost 90% of the Decimater's instructions (callgrind, 16k torus: 2.71 G as shipped, 0.28 G so), with the same result mesh. ",
+        "Error, computed by the lab on every result the same way: the distance from each vertex of the original to the decimated surface, its maximum (one-sided Hausdorff at the vertices) and mean, in % of the bounding-box diagonal. ",
+        "Reconstruction: the recorded collapses replayed backwards by vertex splits, and the result compared with the original (positions bit for bit, the same oriented faces through the id mapping).</div>",
+    ));
+    h.push_str("<table><tr><th class=l>mesh</th><th>faces</th><th>target</th><th class=l>decimater</th><th>ms</th><th>× OpenMesh</th><th>faces after</th><th>max error %</th><th>mean error %</th><th>reconstruction ms</th><th>exact</th></tr>");
+    for r in rows {
+        let om = rows
+            .iter()
+            .find(|o| o.mesh == r.mesh && o.structure == "openmesh")
+            .map(|o| format!("{:.2}", r.seconds / o.seconds))
+            .unwrap_or_else(|| "–".into());
+        let (rec, exact) = match r.reconstruction {
+            Some((s, ok)) => (format!("{:.1}", s * 1e3), if ok { "yes" } else { "NO" }),
+            None => ("–".into(), "–"),
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td>{om}</td><td>{}</td><td>{:.4}</td><td>{:.4}</td><td>{rec}</td><td>{exact}</td></tr>",
+            r.mesh,
+            r.faces,
+            r.target,
+            r.decimater(),
+            r.seconds * 1e3,
+            r.faces_after,
+            r.error.max * 100.0,
+            r.error.mean * 100.0,
+        );
+    }
+    h.push_str("</table>");
+}
+
+/// Decimation by quadric error against OpenMesh's and CGAL's decimaters, and the
+/// reconstruction by vertex splits, on the generated tori.
+pub struct Decimate;
+
+impl Section for Decimate {
+    fn name(&self) -> &'static str {
+        "decimate"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::GENERATED
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("decimate", "decimation"))
+    }
+
+    fn measure(&self, run: &mut SectionRun) -> Result<(), ReportError> {
+        let (req, r) = (run.request, &mut *run.results);
+        r.decimate = measure(run.cases, &req.names, req.quick, run.meter, &mut r.notes)?;
+        Ok(())
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        render(h, &page.r.decimate);
+    }
 }

@@ -1,4 +1,4 @@
-//! Real meshes at scale for `topolab report`: two meshes of `bench-data/cache/` refined by Loop
+//! Real meshes at scale for the report: two meshes of `bench-data/cache/` refined by Loop
 //! subdivision to the sizes where the structures differ most, measured like the tori (every
 //! operator, sampled and swept, the workloads, construction and memory; family `refined`).
 //!
@@ -6,12 +6,9 @@
 //! keeps the input order a subdivided scan really has: far from the ideal the generated tori
 //! have. The element-order section runs on the smallest of them too.
 
-use crate::input::Failure;
+use crate::report::run::ReportError;
 use topolab_structures::refine::{subdivide_levels, Scheme};
 use topolab_structures::PolygonSoup;
-
-/// The mesh family of the refined meshes in results and on the page.
-pub use topolab_harness::scale::FAMILY;
 
 /// One refined mesh: the file stem in `bench-data/cache/` and the Loop levels.
 #[derive(Copy, Clone, Debug)]
@@ -21,7 +18,7 @@ pub struct Refined {
     /// Loop subdivision levels (each multiplies the triangles by four).
     pub levels: usize,
     /// Measured light: construction, memory and the vertex 1-ring sweep only (the full
-    /// report's time budget, see [`super::report_timing`]).
+    /// report's time budget, see [`crate::report::clock`]).
     pub light: bool,
 }
 
@@ -37,11 +34,11 @@ pub fn light(name: &str) -> bool {
     FULL.iter().any(|r| r.light && r.name() == name)
 }
 
-/// The full report's refined meshes: CGAL's bunny (75,408 triangles) to 1.2M and the
-/// armadillo (52,000) to 3.3M. Measured alone on the 2-core machine (see the README's report
-/// section), these two took about what the tori of 256k and 1M take together; the armadillo is
-/// now measured light (construction, memory, the 1-ring sweep: the numbers a 3.3M mesh adds to
-/// the 1.2M bunny's), which saves about 45 of its 140 s alone.
+/// The full report's refined meshes: CGAL's bunny (75,408 triangles) to 1.2M and the armadillo
+/// (52,000) to 3.3M. Measured alone on the 2-core machine (see `docs/report.md`), these two took
+/// about what the tori of 256k and 1M take together; the armadillo is now measured light
+/// (construction, memory, the 1-ring sweep: the numbers a 3.3M mesh adds to the 1.2M bunny's),
+/// which saves about 45 of its 140 s alone.
 pub const FULL: [Refined; 2] = [
     Refined {
         source: "bunny00",
@@ -64,12 +61,14 @@ pub const QUICK: [Refined; 1] = [Refined {
 
 /// The refined meshes, smallest first (so the skip-by-estimate of the larger extrapolates from
 /// the smaller), named `SOURCE-loopLEVELS`. A source that is missing or cannot be read or
-/// refined is left out with a note; the report goes on.
+/// refined is left out with a note; the report goes on. Each is admitted before it is refined
+/// (`admit`: its triangles, checked as a torus of as many with two builds of the largest
+/// structure: within u32 ids and the memory there is).
 pub fn refined_meshes(
     list: &[Refined],
-    structures: &[String],
+    admit: &dyn Fn(usize) -> Result<(), ReportError>,
     notes: &mut Vec<String>,
-) -> Result<Vec<(String, PolygonSoup)>, Failure> {
+) -> Result<Vec<(String, PolygonSoup)>, ReportError> {
     let dir = std::path::Path::new("bench-data/cache");
     let mut out: Vec<(String, PolygonSoup)> = Vec::new();
     for r in list {
@@ -93,10 +92,8 @@ pub fn refined_meshes(
                 continue;
             }
         };
-        // Checked before refining, as a torus of as many triangles (4^levels times the faces)
-        // with two builds of the largest structure: within u32 ids and the memory there is.
-        let faces = soup.num_faces().saturating_mul(1 << (2 * r.levels));
-        crate::limits::admit_report(&[faces], &["torus"], structures, 0)?;
+        // Checked before refining: 4^levels times the faces.
+        admit(soup.num_faces().saturating_mul(1 << (2 * r.levels)))?;
         eprintln!(
             "topolab report: refining {} by {} Loop levels",
             r.source, r.levels

@@ -2,14 +2,16 @@
 //! `bench-data/cache/` refined by Loop subdivision, new vertices appended after the old ones)
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
-use crate::html::ns;
 use crate::kernels::Kernel;
+use crate::report::format::ns;
+use crate::report::run::MeshFamily;
+use crate::report::section::{Needs, Page, Refined, Section};
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
 
 /// The family name of the refined meshes.
-pub const FAMILY: &str = "refined";
+pub const FAMILY: &str = MeshFamily::Refined.name();
 
 /// The torus whose triangle count is nearest (in ratio) to `triangles`.
 fn nearest_torus(r: &Results, triangles: usize) -> Option<&MeshInfo> {
@@ -33,7 +35,7 @@ fn find<'a>(
 }
 
 /// The section: one table per refined mesh; nothing when there is none.
-pub fn section(h: &mut String, r: &Results, names: &[&str]) {
+fn section(h: &mut String, r: &Results, names: &[&str]) {
     let refined: Vec<&MeshInfo> = r.meshes.iter().filter(|m| m.family == FAMILY).collect();
     if refined.is_empty() {
         return;
@@ -107,5 +109,25 @@ pub fn section(h: &mut String, r: &Results, names: &[&str]) {
             h.push_str("</tr>");
         }
         h.push_str("</table>");
+    }
+}
+
+/// Real meshes refined to 1M triangles and more (family [`FAMILY`]), measured like the tori.
+pub struct RealAtScale;
+
+impl Section for RealAtScale {
+    fn name(&self) -> &'static str {
+        "real-at-scale"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            refined: Refined::Measured,
+            ..Needs::NOTHING
+        }
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        section(h, page.r, &page.names);
     }
 }

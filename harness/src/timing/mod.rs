@@ -1,4 +1,8 @@
-//! Repeated timing with a warm-up, a time budget and medians.
+//! Timing: repeated runs with a warm-up, a time budget and medians ([`time`]); contenders
+//! taking turns ([`turns`]); the memory meter and the measuring thread's clock ([`meter`]).
+
+pub mod meter;
+pub mod turns;
 
 use std::time::{Duration, Instant};
 

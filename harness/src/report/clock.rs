@@ -1,14 +1,23 @@
-//! The clock of `topolab report`'s sections ([`topolab_harness::phases`]): the wall time and the
+//! The clock of the report's phases ([`crate::phases`]): the wall time and the
 //! process's CPU time (its own threads and the subprocesses it waited for) of each section, one
 //! stderr line as each finishes, all of them into `results.json` and the page's run facts.
-
 //!
 //! The full report is meant to take under 15 minutes alone on the 2-core reference machine
-//! (README). What was cut to keep it there is here, with the reasons the page's notes give.
+//! (`docs/report.md`). What was cut to keep it there is here, with the reasons the page's notes
+//! give.
 
-use crate::alloc::{cpu_seconds, Who};
+use crate::phases::{Phase, PhaseTime};
 use std::time::Instant;
-use topolab_harness::phases::{Phase, PhaseTime};
+
+/// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
+/// zero CPU rather than failing the report).
+fn cpu_now() -> (f64, f64) {
+    use topolab_alloc::{cpu_seconds, Who};
+    (
+        cpu_seconds(Who::Process).unwrap_or(0.0),
+        cpu_seconds(Who::Children).unwrap_or(0.0),
+    )
+}
 
 /// The times so far since the last lap.
 pub struct Clock {
@@ -17,15 +26,6 @@ pub struct Clock {
     children: f64,
     started: Instant,
     times: Vec<PhaseTime>,
-}
-
-/// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
-/// zero CPU rather than failing the report).
-fn cpu_now() -> (f64, f64) {
-    (
-        cpu_seconds(Who::Process).unwrap_or(0.0),
-        cpu_seconds(Who::Children).unwrap_or(0.0),
-    )
 }
 
 impl Clock {
@@ -107,7 +107,7 @@ pub fn budget_notes(quick: bool, full: bool) -> Vec<String> {
     let mut notes = vec![format!(
         "To keep the full report within 15 minutes alone on the 2-core machine, a cell is timed at most {MAX_REPS} times after its warm-up ({FULL_MAX_REPS} with `topolab report --full`): the medians of 25 runs were within 1% of the fastest run in half the cells, within 7% in nine of ten."
     )];
-    let light: Vec<String> = super::report_scale::FULL
+    let light: Vec<String> = crate::report::refined::FULL
         .iter()
         .filter(|r| r.light)
         .map(|r| r.name())
@@ -120,7 +120,7 @@ pub fn budget_notes(quick: bool, full: bool) -> Vec<String> {
     }
     notes.push(format!(
         "For the same budget, the 3D convex hulls stop at 100k points on the sphere (1M in a ball): on a sphere every point is on the hull, and 1M points there took 44 s alone for the n log n growth the smaller sizes show. Gift wrapping and the incremental algorithm run a size only when its predicted Volume6 tests are at most {:.0e}: the incremental algorithm's 1M ball and 100k sphere (53 s alone) are left out, its O(n²) shown on the sizes before. The changing workloads run {} times on the 1M torus (5 on the smaller ones). `--full` runs all of these further.",
-        topolab_harness::hull::bench::MAX_TESTS,
+        crate::hull::bench::MAX_TESTS,
         changing_runs(1_000_000, false, false)
     ));
     notes

@@ -1,5 +1,5 @@
-//! The changing workloads of `topolab report` (√3 subdivision and the collapse test of the
-//! Surface_mesh benchmark; see `topolab_harness::changing`): every editable structure among
+//! "Changing meshes": the changing workloads (√3 subdivision and the collapse test of the
+//! Surface_mesh benchmark; see [`crate::changing`]): every editable structure among
 //! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
 //! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
 //! on the closed tori of the run.
@@ -12,14 +12,15 @@
 //! [`LINEAR_EDIT_MAX_FACES`] faces: the estimate assumes 1 ns per element read, and the CHE
 //! levels' O(n) edits (an `EH` rebuild, a relabelling) cost far more per element.
 
-use crate::input::Failure;
+use crate::changing::{cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum};
+use crate::phases::Phase;
+use crate::report::run::{Case, ReportError, Run};
+use crate::report::section::{Needs, Page, Section};
+use crate::skips::{self, Skip};
+use std::fmt::Write;
 #[cfg(has_openmesh)]
-use crate::openmesh::OpenMesh;
-use crate::registry::{self, EditVisitor};
-use topolab_harness::changing::{
-    cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum,
-};
-use topolab_harness::skips::{self, Skip};
+use topolab_baselines::openmesh::OpenMesh;
+use topolab_baselines::registry::{self, EditVisitor};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(any(has_openmesh, has_cgal))]
 use topolab_structures::MeshTopology;
@@ -168,14 +169,14 @@ fn timed_openmesh(
 /// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction (told
 /// the exact counts, as OpenMesh's).
 #[cfg(has_cgal)]
-fn timed_cgal<S: crate::cgal::CgalStructure>(
+fn timed_cgal<S: topolab_baselines::cgal::CgalStructure>(
     soup: &PolygonSoup,
     runs: usize,
-    work: impl FnMut(&mut crate::cgal::Cgal<S>) -> topolab_structures::Result<()>,
+    work: impl FnMut(&mut topolab_baselines::cgal::Cgal<S>) -> topolab_structures::Result<()>,
 ) -> Result<(f64, MeshChecksum), String> {
     time(
         runs,
-        || <crate::cgal::Cgal<S> as MeshTopology>::from_soup(soup),
+        || <topolab_baselines::cgal::Cgal<S> as MeshTopology>::from_soup(soup),
         work,
         mesh_checksum,
     )
@@ -191,11 +192,15 @@ fn timed_native(
     match name {
         #[cfg(has_cgal)]
         registry::CGAL_SURFACE_MESH => {
-            timed_cgal::<crate::cgal::SurfaceMeshClass>(soup, runs, |m| m.native_changing(w))
+            timed_cgal::<topolab_baselines::cgal::SurfaceMeshClass>(soup, runs, |m| {
+                m.native_changing(w)
+            })
         }
         #[cfg(has_cgal)]
         registry::CGAL_POLYHEDRON => {
-            timed_cgal::<crate::cgal::PolyhedronClass>(soup, runs, |m| m.native_changing(w))
+            timed_cgal::<topolab_baselines::cgal::PolyhedronClass>(soup, runs, |m| {
+                m.native_changing(w)
+            })
         }
         #[cfg(has_openmesh)]
         registry::OPENMESH => timed_openmesh(soup, w, runs),
@@ -210,15 +215,15 @@ fn timed_native(
 }
 
 /// Runs both workloads on every torus of `cases` (name, family, soup) for each structure of
-/// `names` that can edit, each [`super::report_timing::changing_runs`] times; a disagreement
+/// `names` that can edit, each [`changing_runs`](crate::report::clock::changing_runs) times; a disagreement
 /// between structures is an error.
-pub fn measure(
-    cases: &[(String, String, PolygonSoup)],
+fn measure(
+    cases: &[Case],
     names: &[String],
     quick: bool,
     full: bool,
     notes: &mut Vec<String>,
-) -> Result<Vec<ChangingRow>, Failure> {
+) -> Result<Vec<ChangingRow>, ReportError> {
     let mut rows = Vec::new();
     let mut skips = Vec::new();
     let editing: Vec<&str> = names
@@ -236,7 +241,7 @@ pub fn measure(
             ));
             continue;
         }
-        let runs = super::report_timing::changing_runs(soup.num_faces(), quick, full);
+        let runs = crate::report::clock::changing_runs(soup.num_faces(), quick, full);
         for w in Changing::ALL {
             for &s in &editing {
                 eprintln!("topolab report: {} on {mesh}: {s}", w.name());
@@ -266,9 +271,8 @@ pub fn measure(
                         None => Err(format!("{s} does not edit")),
                     }
                 };
-                let ((seconds, result), declared) = got.map_err(|e| Failure {
-                    message: format!("{} on {mesh} failed on {s}: {e}", w.name()),
-                    code: 1,
+                let ((seconds, result), declared) = got.map_err(|e| {
+                    ReportError::Measurement(format!("{} on {mesh} failed on {s}: {e}", w.name()))
                 })?;
                 rows.push(ChangingRow {
                     workload: w,
@@ -283,13 +287,73 @@ pub fn measure(
                 });
             }
         }
-        cross_check(&rows).map_err(|e| Failure {
-            message: format!("{e}\nThe report stops: two structures changed a mesh differently."),
-            code: 1,
+        cross_check(&rows).map_err(|e| {
+            ReportError::Measurement(format!(
+                "{e}\nThe report stops: two structures changed a mesh differently."
+            ))
         })?;
     }
     notes.extend(skips::group(&skips));
     Ok(rows)
+}
+
+/// The report section.
+pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
+    if rows.is_empty() {
+        return;
+    }
+    h.push_str("<h2>Changing meshes: √3 subdivision and the collapse test (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The two workloads of the published Surface_mesh benchmark that change the mesh, run as its protocol runs them: <i>sqrt3</i> is one step of √3 subdivision (new positions of the old interior vertices, every old face split at its centroid, every old edge flipped where a flip is allowed); <i>collapse-test</i> splits every face at a new vertex, collapses every new vertex back and garbage-collects the deleted elements. The lab's structures run them through their editing operations (<code>MeshEdit</code>: checked flips and collapses, the link condition included); OpenMesh runs the protocol's loop in C++ (its collapse unchecked, as the protocol calls it), and so do CGAL's Surface_mesh and Polyhedron_3, through CGAL's Euler operations as CGAL's own Surface_mesh benchmark does. Each time is the median of fresh builds (the build not timed), per face of the input. Every resulting mesh is compared (counts and a hash of the face list) across structures; a disagreement stops the report. <i>Declared costs</i>: what each structure declares for the operations the workload does (all of them: <code>topolab explain NAME</code>); a structure whose declared costs predict more than 20 s (2 s in a quick run) (the vertex list's and the edge list's scans on large meshes) is skipped, with the estimate in the notes.</div>");
+    h.push_str("<table><tr><th class=l>workload</th><th class=l>mesh</th><th>faces</th><th class=l>structure</th><th>ms</th><th>ns per face</th><th>× OpenMesh</th><th>result V / E / F</th><th class=l>declared costs</th></tr>");
+    for r in rows {
+        let om = rows
+            .iter()
+            .find(|o| o.workload == r.workload && o.mesh == r.mesh && o.structure == "openmesh")
+            .map(|o| format!("{:.2}", r.seconds / o.seconds))
+            .unwrap_or_else(|| "–".into());
+        let _ = write!(
+            h,
+            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td>{:.1}</td><td>{om}</td><td>{} / {} / {}</td><td class=l>{}</td></tr>",
+            r.workload.name(),
+            r.mesh,
+            r.faces,
+            r.structure,
+            r.seconds * 1e3,
+            r.ns_per_face,
+            r.result.vertices,
+            r.result.edges,
+            r.result.faces,
+            if r.declared.is_empty() { "native" } else { &r.declared }
+        );
+    }
+    h.push_str("</table>");
+}
+
+/// The changing workloads (√3 subdivision, the collapse test) on the editable structures and
+/// OpenMesh, on the generated tori.
+pub struct ChangingMeshes;
+
+impl Section for ChangingMeshes {
+    fn name(&self) -> &'static str {
+        "changing"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::GENERATED
+    }
+
+    fn phase(&self) -> Option<Phase> {
+        Some(Phase::new("changing", "changing workloads"))
+    }
+
+    fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
+        let (req, r) = (run.request, &mut *run.results);
+        r.changing = measure(run.cases, &req.names, req.quick, req.full, &mut r.notes)?;
+        Ok(())
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        render(h, &page.r.changing);
+    }
 }
 
 #[cfg(test)]

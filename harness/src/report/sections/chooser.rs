@@ -8,6 +8,7 @@
 //! state what the design gives; the numbers beside them say what it measured on this machine.
 
 use crate::kernels::Kernel;
+use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status, StructureInfo, Subject};
 use std::fmt::Write;
 use topolab_structures::{Family, Operator, Workload};
@@ -77,7 +78,7 @@ fn ns(x: Option<f64>) -> String {
 }
 
 /// The section: nothing when no structure was measured on a torus or grid.
-pub fn section(h: &mut String, r: &Results) {
+fn section(h: &mut String, r: &Results) {
     if !r
         .measurements
         .iter()
@@ -154,6 +155,28 @@ pub fn section(h: &mut String, r: &Results) {
         );
     }
     h.push_str("</table>");
+}
+
+/// "Choosing a structure", at the top: per structure its memory, construction, R00 sweep
+/// and smoothing on the largest torus, what it stores and when to pick it.
+pub struct Chooser;
+
+impl Section for Chooser {
+    fn name(&self) -> &'static str {
+        "chooser"
+    }
+
+    fn needs(&self) -> Needs {
+        Needs::size_sweep(SizeSweep::Full)
+    }
+
+    fn before_machine(&self) -> bool {
+        true
+    }
+
+    fn render(&self, h: &mut String, page: &Page) {
+        section(h, page.r);
+    }
 }
 
 #[cfg(test)]

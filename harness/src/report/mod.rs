@@ -1,0 +1,19 @@
+//! The report: the run from its request to its files ([`pipeline`]), what a run is asked for
+//! and what a section measures with ([`run`]), what a section is ([`section`]), the sections in
+//! their one list ([`sections`]), what a run measures for the sections it shows
+//! ([`selection`]), the meshes it repairs and refines ([`repair`], [`refined`]), its clock and
+//! budgets ([`clock`]), and the page: its shell ([`page`]), the formatting its sections share
+//! ([`format`](mod@format)) and the look-ups of cells they share (`cells`).
+
+pub(crate) mod cells;
+pub mod clock;
+pub mod format;
+pub mod listed;
+pub mod page;
+pub mod pipeline;
+pub mod refined;
+pub mod repair;
+pub mod run;
+pub mod section;
+pub mod sections;
+pub mod selection;
