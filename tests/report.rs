@@ -173,6 +173,14 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
 fn findings_are_written_from_the_results(out: &Path, ms: &[serde_json::Value]) {
     let md = std::fs::read_to_string(out.join("FINDINGS.md")).expect("FINDINGS.md is written");
     assert!(md.starts_with("# Findings of this run"), "{md}");
+    // The Targets' decimation row, timed in its own section, is in the findings when the page
+    // shows it.
+    let html = std::fs::read_to_string(out.join("index.html")).expect("the page is written");
+    assert_eq!(
+        html.contains("timed in turns in the Decimation section"),
+        md.contains("(in the Decimation section)"),
+        "{md}"
+    );
     let sweeps: Vec<(&str, f64)> = ms
         .iter()
         .filter(|m| {

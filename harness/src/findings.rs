@@ -171,6 +171,23 @@ fn targets(md: &mut String, r: &Results) {
             None => format!("| {what} | not measured | ≤ {}× | – |", t.goal),
         });
     }
+    // Decimation's row, timed in turns in its own section (as on the page).
+    for row in crate::decimate::targets(&r.decimate) {
+        let what = format!("{} (in the Decimation section)", row.what);
+        let Some(v) = row.value else {
+            lines.push(format!("| {what} | not measured | ≤ {}× | – |", row.goal));
+            continue;
+        };
+        let spread = match row.spread {
+            Some(s) => format!("{:.2}–{:.2}, {} rounds", s.min, s.max, s.rounds),
+            None => "one after the other".into(),
+        };
+        let met = if v <= row.goal { "met" } else { "**missed**" };
+        lines.push(format!(
+            "| {what} | {v:.2}× ({spread}) | ≤ {}× | {met} |",
+            row.goal
+        ));
+    }
     if lines.is_empty() {
         return;
     }
