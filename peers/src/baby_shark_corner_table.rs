@@ -365,7 +365,8 @@ impl MeshTopology for BabySharkCornerTable {
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         writeln!(
             w,
-            "baby_shark 0.3.12 CornerTable<f64>: {} vertices (corner, position), {} corners (opposite corner, vertex); corner c's edge is the side opposite it",
+            "baby_shark {} CornerTable<f64>: {} vertices (corner, position), {} corners (opposite corner, vertex); corner c's edge is the side opposite it",
+            crate::BABY_SHARK_VERSION,
             self.vertices.len() - self.isolated.len(),
             3 * self.faces.len()
         )?;

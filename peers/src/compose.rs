@@ -6,6 +6,33 @@ use topolab_structures::{
     BoundaryCurves, Connectivity, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, Result,
 };
 
+/// The `MeshTopology` methods an adapter answers by composition alike: `boundary_curves`,
+/// `edge_successor` and `edge_predecessor` from [`boundary_curves`], [`edge_successor`] and
+/// [`edge_predecessor`], and `validate` by [`validate_answers`]. Used inside an
+/// `impl MeshTopology` block (its file imports `compose`, `BoundaryCurves`, `EdgeId`, `FaceId`
+/// and `Result`).
+#[macro_export]
+macro_rules! composed_queries {
+    () => {
+        #[inline]
+        fn boundary_curves(&self, out: &mut BoundaryCurves) {
+            compose::boundary_curves(self, out);
+        }
+        #[inline]
+        fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+            compose::edge_successor(self, e, face)
+        }
+        #[inline]
+        fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
+            compose::edge_predecessor(self, e, face)
+        }
+
+        fn validate(&self) -> Result<()> {
+            compose::validate_answers(self)
+        }
+    };
+}
+
 /// Refuses what the crates mis-handle, before the crate sees it: indices out of range and
 /// repeated corners ([`PolygonSoup::check`]), an edge with more than two faces or two faces
 /// running one way along their edge ([`PolygonSoup::connectivity`]), a vertex whose faces form

@@ -53,23 +53,30 @@ pub struct PeerCrate {
     pub used_as: &'static str,
 }
 
+/// lox's version, pinned in `peers/Cargo.toml`.
+pub const LOX_VERSION: &str = "0.1.1";
+/// baby_shark's version, pinned in `peers/Cargo.toml`.
+pub const BABY_SHARK_VERSION: &str = "0.3.12";
+/// tri-mesh's version, pinned in `peers/Cargo.toml`.
+pub const TRI_MESH_VERSION: &str = "0.6.1";
+
 /// Every crate of this build, in registry order.
 pub const CRATES: [PeerCrate; 3] = [
     PeerCrate {
         name: "lox",
-        version: "0.1.1",
+        version: LOX_VERSION,
         structures: &[lox_half_edge::NAME, lox_directed_edge::NAME],
         used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits (is_isolated_vertex beside is_boundary_vertex, which says true of an isolated vertex)",
     },
     PeerCrate {
         name: "baby_shark",
-        version: "0.3.12",
+        version: BABY_SHARK_VERSION,
         structures: &[baby_shark_corner_table::NAME],
         used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges",
     },
     PeerCrate {
         name: "tri-mesh",
-        version: "0.6.1",
+        version: TRI_MESH_VERSION,
         structures: &[tri_mesh::NAME],
         used_as: "Mesh::new from a three_d_asset::TriMesh with f64 positions and u32 indices; queried with vertex_halfedge_iter, face_halfedge_iter, edge_iter and its walkers",
     },

@@ -217,22 +217,9 @@ impl MeshTopology for LoxDirectedEdge {
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.twin(e.0).is_none()
     }
-    #[inline]
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
-        compose::boundary_curves(self, out);
-    }
-    #[inline]
-    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_successor(self, e, face)
-    }
-    #[inline]
-    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_predecessor(self, e, face)
-    }
-
-    fn validate(&self) -> Result<()> {
-        compose::validate_answers(self)
-    }
+    // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
+    // checks of the answers as `validate`.
+    crate::composed_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per half-edge its twin and target (8), plus the positions
@@ -246,7 +233,8 @@ impl MeshTopology for LoxDirectedEdge {
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         writeln!(
             w,
-            "lox 0.1.1 DirectedEdgeMesh: {} vertices (outgoing half-edge), {} faces of three half-edges (twin, target)",
+            "lox {} DirectedEdgeMesh: {} vertices (outgoing half-edge), {} faces of three half-edges (twin, target)",
+            crate::LOX_VERSION,
             self.num_vertices(),
             self.num_faces()
         )?;

@@ -164,22 +164,9 @@ impl MeshTopology for LoxHalfEdge {
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.mesh.is_boundary_edge(EdgeHandle::new(e.0))
     }
-    #[inline]
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
-        compose::boundary_curves(self, out);
-    }
-    #[inline]
-    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_successor(self, e, face)
-    }
-    #[inline]
-    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_predecessor(self, e, face)
-    }
-
-    fn validate(&self) -> Result<()> {
-        compose::validate_answers(self)
-    }
+    // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
+    // checks of the answers as `validate`.
+    crate::composed_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per face one half-edge (4), per half-edge face, target,
@@ -195,7 +182,8 @@ impl MeshTopology for LoxHalfEdge {
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         writeln!(
             w,
-            "lox 0.1.1 HalfEdgeMesh<PolyConfig>: {} vertices (outgoing half-edge), {} faces (one half-edge), {} half-edges (face, target, next, prev; twin = h ^ 1)",
+            "lox {} HalfEdgeMesh<PolyConfig>: {} vertices (outgoing half-edge), {} faces (one half-edge), {} half-edges (face, target, next, prev; twin = h ^ 1)",
+            crate::LOX_VERSION,
             self.num_vertices(),
             self.num_faces(),
             2 * self.num_edges()

@@ -204,22 +204,9 @@ impl MeshTopology for TriMesh {
     fn is_boundary_edge(&self, e: EdgeId) -> bool {
         self.mesh.is_edge_on_boundary(self.half_edge(e))
     }
-    #[inline]
-    fn boundary_curves(&self, out: &mut BoundaryCurves) {
-        compose::boundary_curves(self, out);
-    }
-    #[inline]
-    fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_successor(self, e, face)
-    }
-    #[inline]
-    fn edge_predecessor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId> {
-        compose::edge_predecessor(self, e, face)
-    }
-
-    fn validate(&self) -> Result<()> {
-        compose::validate_answers(self)
-    }
+    // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
+    // checks of the answers as `validate`.
+    crate::composed_queries!();
 
     /// From tri-mesh's record layout (its arrays are private): per vertex an
     /// `Option<HalfEdgeID>` and an f64 position (8 + 24 bytes), per half-edge four
@@ -233,7 +220,8 @@ impl MeshTopology for TriMesh {
     fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         writeln!(
             w,
-            "tri-mesh 0.6.1 Mesh: {} vertices (position, half-edge), {} faces (half-edge), {} half-edges (vertex, twin, next, face; boundary half-edges have no face and no next)",
+            "tri-mesh {} Mesh: {} vertices (position, half-edge), {} faces (half-edge), {} half-edges (vertex, twin, next, face; boundary half-edges have no face and no next)",
+            crate::TRI_MESH_VERSION,
             self.num_vertices(),
             self.num_faces(),
             self.mesh.no_halfedges()
