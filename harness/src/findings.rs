@@ -7,6 +7,7 @@ use crate::kernels::Kernel;
 use crate::results::{Measurement, Results, Status, Subject};
 use crate::targets::measured::{ran, shown_turns};
 use crate::targets::{measured, sequential, Against, TARGETS};
+use crate::timing::turns::Spread;
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
 
@@ -137,6 +138,20 @@ fn choosing(md: &mut String, r: &Results) {
     md.push('\n');
 }
 
+/// One row of the Targets: the ratio (`None`: not measured) with its spread in turns, when it
+/// has one, against its goal.
+fn target_line(what: &str, ratio: Option<f64>, spread: Option<&Spread>, goal: f64) -> String {
+    let Some(v) = ratio else {
+        return format!("| {what} | not measured | ≤ {goal}× | – |");
+    };
+    let spread = match spread {
+        Some(s) => format!("{:.2}–{:.2}, {} rounds", s.min, s.max, s.rounds),
+        None => "one after the other".into(),
+    };
+    let met = if v <= goal { "met" } else { "**missed**" };
+    format!("| {what} | {v:.2}× ({spread}) | ≤ {goal}× | {met} |")
+}
+
 /// The Targets: each ratio measured in turns on the largest torus, against its goal.
 fn targets(md: &mut String, r: &Results) {
     let Some((mesh, _)) = largest(r, "torus") else {
@@ -154,39 +169,13 @@ fn targets(md: &mut String, r: &Results) {
         let limit =
             sequential(&r.measurements, mesh, t.structure, t.cell).and_then(|m| m.limit.as_ref());
         let what = format!("{} {} / {against}", t.structure, t.cell.text());
-        lines.push(match measured(&turns, t, limit) {
-            Some(s) => format!(
-                "| {what} | {:.2}× ({:.2}–{:.2}, {} rounds) | ≤ {}× | {} |",
-                s.median,
-                s.min,
-                s.max,
-                s.rounds,
-                t.goal,
-                if s.median <= t.goal {
-                    "met"
-                } else {
-                    "**missed**"
-                }
-            ),
-            None => format!("| {what} | not measured | ≤ {}× | – |", t.goal),
-        });
+        let s = measured(&turns, t, limit);
+        lines.push(target_line(&what, s.map(|s| s.median), s.as_ref(), t.goal));
     }
     // Decimation's row, timed in turns in its own section (as on the page).
     for row in crate::decimate::targets(&r.decimate) {
         let what = format!("{} (in the Decimation section)", row.what);
-        let Some(v) = row.value else {
-            lines.push(format!("| {what} | not measured | ≤ {}× | – |", row.goal));
-            continue;
-        };
-        let spread = match row.spread {
-            Some(s) => format!("{:.2}–{:.2}, {} rounds", s.min, s.max, s.rounds),
-            None => "one after the other".into(),
-        };
-        let met = if v <= row.goal { "met" } else { "**missed**" };
-        lines.push(format!(
-            "| {what} | {v:.2}× ({spread}) | ≤ {}× | {met} |",
-            row.goal
-        ));
+        lines.push(target_line(&what, row.value, row.spread.as_ref(), row.goal));
     }
     if lines.is_empty() {
         return;

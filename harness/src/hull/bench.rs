@@ -10,6 +10,7 @@
 use crate::checksum::mix;
 use crate::fit::fit_exponent;
 pub use crate::results::{HullFit, HullRow};
+use crate::targets::plan::HULL_POINTS;
 use crate::timing::median;
 use crate::timing::meter::MemoryMeter;
 use glam::DVec3;
@@ -24,6 +25,12 @@ pub const POINTS_SEED: u64 = 42;
 /// The seed of the randomized algorithm's insertion order in the benchmark (and in the hull's
 /// target, which times the same hulls).
 pub const RANDOMIZED_SEED: u64 = 7;
+
+/// The hull table's row of `algorithm` on the hull target's [`HULL_POINTS`] points in a ball.
+pub fn hull_target_row<'a>(rows: &'a [HullRow], algorithm: &str) -> Option<&'a HullRow> {
+    rows.iter()
+        .find(|r| r.shape == "ball" && r.n == HULL_POINTS && r.algorithm == algorithm)
+}
 
 /// The checksum of a hull's vertex set: Σ mix(v, 1) over its input indices v (wrapping; the
 /// terms of [`crate::checksum`]), the same in any order, so two hulls with the same vertices

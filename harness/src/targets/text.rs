@@ -54,12 +54,7 @@ pub(crate) fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f
         let Against::Structure(b) = t.against else {
             return None;
         };
-        let seconds = |a: &str| {
-            let row = r.hull.iter().find(|x| {
-                x.shape == "ball" && x.n == crate::targets::plan::HULL_POINTS && x.algorithm == a
-            });
-            row.map(|x| x.seconds)
-        };
+        let seconds = |a: &str| crate::hull::bench::hull_target_row(&r.hull, a).map(|x| x.seconds);
         return Some(seconds(t.structure)? / seconds(b)?);
     }
     let a = sequential(&r.measurements, mesh, t.structure, t.cell)?;

@@ -1,6 +1,7 @@
 //! The 3D convex hulls: the lecture's three algorithms beside Qhull and CGAL, and the
 //! quantities of the lecture's analysis, counted in the same runs.
 
+use crate::hull::bench::hull_target_row;
 use crate::hull::bench::vertex_checksum;
 use crate::phases::Phase;
 use crate::plot;
@@ -257,10 +258,7 @@ fn measure(
 /// the table (`rows`). Both must find the same hull vertices in every run.
 fn in_turns(rows: &[HullRow]) -> Result<Option<Turns>, ReportError> {
     let qhull = HullLibrary::Qhull;
-    let ran = |a: &str| {
-        rows.iter()
-            .any(|r| r.shape == "ball" && r.n == HULL_POINTS && r.algorithm == a)
-    };
+    let ran = |a: &str| hull_target_row(rows, a).is_some();
     if !ran("randomized") || !ran(qhull.name()) {
         return Ok(None);
     }
