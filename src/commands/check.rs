@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use topolab_structures::checks::{self, Options, Report};
 use topolab_structures::io::RawSoup;
+use topolab_structures::summary::shown;
 
 /// Findings of one kind printed in the text report before "... and N more".
 const SHOWN_PER_KIND: usize = 10;
@@ -132,7 +133,12 @@ fn text(name: &str, report: &Report) -> String {
     let _ = writeln!(
         out,
         "  vertices {}, faces {} ({} usable), edges {}, boundary edges {}, boundary curves {}",
-        s.vertices, s.faces, s.usable_faces, s.edges, s.boundary_edges, s.boundary_curves
+        s.vertices,
+        s.faces,
+        s.usable_faces,
+        s.edges,
+        s.boundary_edges,
+        shown(s.boundary_curves, s.boundary_curves_undefined)
     );
     let _ = writeln!(
         out,
@@ -148,7 +154,8 @@ fn text(name: &str, report: &Report) -> String {
             c.faces,
             c.vertices,
             c.edges,
-            c.boundary_curves,
+            c.boundary_curves
+                .map_or("undefined".to_string(), |n| n.to_string()),
             c.euler_characteristic,
             if c.manifold { "manifold" } else { "non-manifold" },
             if c.orientable { "orientable" } else { "non-orientable" },

@@ -4,7 +4,7 @@
 use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::summary::{summarize, Summary};
+use topolab_structures::summary::{shown, summarize, Summary};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
 struct InfoVisit<'a>(&'a PolygonSoup);
@@ -70,18 +70,18 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
         }
     );
     let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
-    let _ = writeln!(out, "boundary curves:      {}", s.boundary_curves);
+    let _ = writeln!(
+        out,
+        "boundary curves:      {}",
+        shown(s.boundary_curves, s.boundary_curves_undefined)
+    );
     let _ = writeln!(out, "components:           {}", s.components);
     let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
-    match s.genus {
-        Some(g) => writeln!(out, "genus:                {g}"),
-        None => writeln!(
-            out,
-            "genus:                undefined ({} components)",
-            s.components
-        ),
-    }
-    .ok();
+    let _ = writeln!(
+        out,
+        "genus:                {}",
+        shown(s.genus, s.genus_undefined)
+    );
     let _ = writeln!(
         out,
         "manifold:             {}",

@@ -6,7 +6,8 @@ use proptest::prelude::*;
 use topolab_structures::checks::{check, FindingKind, Options, Report};
 use topolab_structures::io::{read_bytes_raw, RawSoup};
 use topolab_structures::meshes::{self, RandomMeshParams};
-use topolab_structures::summary::summarize;
+use topolab_structures::summary::{summarize, Summary};
+use topolab_structures::testing::{differential, oracle::Oracle};
 use topolab_structures::{Format, MeshTopology, PolygonSoup, VertexList};
 
 fn report(soup: &PolygonSoup) -> Report {
@@ -23,20 +24,33 @@ fn kinds(r: &Report) -> Vec<FindingKind> {
     k
 }
 
-/// The summary of `check` agrees with `summarize` through the vertex list.
+/// The summary of `check` agrees with `summarize` through the vertex list, and both with the
+/// oracle, on every field they share.
 fn agrees_with_the_structure(soup: &PolygonSoup, r: &Report) {
     let s = summarize(&VertexList::from_soup(soup).unwrap());
+    let mut oracle = Oracle::new(soup).summary();
+    oracle.structure = s.structure;
+    assert_eq!(s, oracle);
+    agrees_with_info(&oracle, r);
+}
+
+/// The fields `check`'s summary shares with `info`'s (`expected`) are equal.
+fn agrees_with_info(expected: &Summary, r: &Report) {
     let c = &r.summary;
-    assert_eq!(c.edges, s.edges);
-    assert_eq!(c.boundary_edges, s.boundary_edges);
-    assert_eq!(c.components.len(), s.components);
-    assert_eq!(c.euler_characteristic, s.euler_characteristic);
-    if !kinds(r).contains(&FindingKind::NonManifoldVertex) {
-        assert_eq!(c.boundary_curves, s.boundary_curves);
-    }
-    // The check leaves the genus of a non-manifold component undefined; summarize does not.
-    if c.components.len() == 1 && c.components[0].manifold {
-        assert_eq!(c.components[0].genus, s.genus);
+    assert_eq!(c.vertices, expected.vertices);
+    assert_eq!(c.faces, expected.faces);
+    assert_eq!(c.edges, expected.edges);
+    assert_eq!(c.boundary_edges, expected.boundary_edges);
+    assert_eq!(c.boundary_curves, expected.boundary_curves);
+    assert_eq!(
+        c.boundary_curves_undefined,
+        expected.boundary_curves_undefined
+    );
+    assert_eq!(c.components.len(), expected.components);
+    assert_eq!(c.euler_characteristic, expected.euler_characteristic);
+    // One component: its genus is the mesh's, where info defines it.
+    if expected.genus.is_some() {
+        assert_eq!(c.components[0].genus, expected.genus);
     }
 }
 
@@ -55,10 +69,31 @@ fn canonical_meshes_are_clean_except_the_bowtie_and_agree_with_summarize() {
     let torus = report(&meshes::torus(5, 4));
     assert_eq!(torus.summary.components[0].genus, Some(1));
     let annulus = report(&meshes::annulus(6));
-    assert_eq!(annulus.summary.boundary_curves, 2);
+    assert_eq!(annulus.summary.boundary_curves, Some(2));
+}
+
+/// The soup of issue #38 (five vertices of two fans): four boundary curves, per fan.
+#[test]
+fn check_counts_boundary_curves_per_fan() {
+    let soup = differential::two_fan_soup();
+    let r = report(&soup);
+    assert_eq!(r.summary.boundary_curves, Some(4));
+    agrees_with_the_structure(&soup, &r);
 }
 
 proptest! {
+    /// On the differential test's soups that every structure may store (they pass
+    /// `PolygonSoup::check`, and no face repeats another, which `check` sets aside), `check`'s
+    /// summary says what `info` says.
+    #[test]
+    fn check_and_info_agree_on_the_fields_they_share(soup in differential::info_soups()) {
+        let r = report(&soup);
+        let duplicates = r.findings.iter().any(|f| f.kind == FindingKind::DuplicateFace);
+        if soup.check().is_ok() && !duplicates {
+            agrees_with_info(&Oracle::new(&soup).summary(), &r);
+        }
+    }
+
     #[test]
     fn random_meshes_agree_with_summarize(seed in any::<u64>()) {
         let soup = meshes::random_mesh(seed, RandomMeshParams::default());
@@ -111,7 +146,7 @@ fn a_mobius_strip_is_a_non_orientable_manifold_with_one_boundary_curve() {
     assert_eq!((c.orientable, c.manifold), (false, true));
     assert_eq!(
         (c.euler_characteristic, c.boundary_curves, c.genus),
-        (0, 1, None)
+        (0, Some(1), None)
     );
     // A flipped face of an orientable strip is inconsistent but orientable.
     let mut band = PolygonSoup::new();

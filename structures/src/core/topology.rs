@@ -186,7 +186,9 @@ pub trait MeshTopology: Sized {
     fn is_boundary_vertex(&self, v: VertexId) -> bool;
     /// Is `e` on the boundary (one face only)?
     fn is_boundary_edge(&self, e: EdgeId) -> bool;
-    /// Writes every boundary curve into `out` (cleared first).
+    /// Writes every boundary curve into `out` (cleared first), as the lab defines them (see
+    /// [`crate::summary`]): at a vertex whose faces form several fans, each fan's two boundary
+    /// edges follow each other, so each fan's boundary continues within that fan.
     fn boundary_curves(&self, out: &mut BoundaryCurves);
     /// The edge after `e` in `face`'s cycle, `None` if `e` is not an edge of `face`.
     fn edge_successor(&self, e: EdgeId, face: FaceId) -> Option<EdgeId>;

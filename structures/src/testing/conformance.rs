@@ -295,7 +295,7 @@ fn check_boundary_curves<M: MeshTopology>(
         sorted(all.clone()) == boundary,
         "boundary curves cover {all:?}, expected each boundary edge once: {boundary:?}"
     );
-    if let Some(n) = o.boundary_curve_count() {
+    if let Ok(n) = o.boundary_curve_count() {
         ensure!(
             curves.len() == n,
             "{} boundary curves, expected {n}",

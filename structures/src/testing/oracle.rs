@@ -3,6 +3,7 @@
 //! can be compared with it. Slow and obviously right, on purpose.
 
 use crate::core::soup::PolygonSoup;
+use crate::summary::{ManifoldFacts, Summary, Undefined};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// An undirected edge by its end vertices, smaller first.
@@ -132,35 +133,162 @@ impl Oracle {
             .collect()
     }
 
-    /// The number of boundary curves, when every boundary vertex has exactly two boundary
-    /// edges (so the curves are well defined); `None` otherwise.
-    pub fn boundary_curve_count(&self) -> Option<usize> {
-        let edges = self.boundary_edges();
-        let mut adj: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
-        for &(a, b) in &edges {
-            adj.entry(a).or_default().push(b);
-            adj.entry(b).or_default().push(a);
+    /// The fans of vertex `v` (see [`crate::summary`]): its faces grouped by walking across
+    /// edges at `v` that have exactly two faces. Naively: repeated merging of groups.
+    pub fn fans(&self, v: u32) -> Vec<Vec<u32>> {
+        let mut fans: Vec<Vec<u32>> = self.vertex_faces[v as usize]
+            .iter()
+            .map(|&f| vec![f])
+            .collect();
+        let links: Vec<(u32, u32)> = self.vertex_edges[v as usize]
+            .iter()
+            .filter_map(|e| match self.edge_faces[e][..] {
+                [f, g] => Some((f, g)),
+                _ => None,
+            })
+            .collect();
+        let mut merged = true;
+        while merged {
+            merged = false;
+            'search: for i in 0..fans.len() {
+                for j in i + 1..fans.len() {
+                    let joined = links.iter().any(|&(f, g)| {
+                        (fans[i].contains(&f) && fans[j].contains(&g))
+                            || (fans[i].contains(&g) && fans[j].contains(&f))
+                    });
+                    if joined {
+                        let other = fans.remove(j);
+                        fans[i].extend(other);
+                        merged = true;
+                        break 'search;
+                    }
+                }
+            }
         }
-        if adj.values().any(|n| n.len() != 2) {
-            return None;
+        fans
+    }
+
+    /// Edges with more than two faces.
+    pub fn non_manifold_edges(&self) -> usize {
+        self.edge_faces.values().filter(|f| f.len() > 2).count()
+    }
+
+    /// The number of boundary curves by the lab's definition (see [`crate::summary`]): the two
+    /// boundary edges of each open fan follow each other; a curve is a cycle of boundary edges
+    /// linked that way. Undefined where an edge has more than two faces.
+    pub fn boundary_curve_count(&self) -> Result<usize, Undefined> {
+        let non_manifold = self.non_manifold_edges();
+        if non_manifold > 0 {
+            return Err(Undefined::NonManifoldEdges(non_manifold));
+        }
+        let edges = self.boundary_edges();
+        // Per boundary edge, the boundary edges it is linked to (at either end).
+        let mut linked: BTreeMap<Pair, Vec<Pair>> = BTreeMap::new();
+        for v in 0..self.vertex_faces.len() as u32 {
+            for fan in self.fans(v) {
+                let ends: Vec<Pair> = edges
+                    .iter()
+                    .copied()
+                    .filter(|&(a, b)| {
+                        (a == v || b == v) && fan.contains(&self.edge_faces[&(a, b)][0])
+                    })
+                    .collect();
+                assert!(
+                    ends.is_empty() || ends.len() == 2,
+                    "an open fan of a mesh without non-manifold edges has two boundary ends"
+                );
+                if let [x, y] = ends[..] {
+                    linked.entry(x).or_default().push(y);
+                    linked.entry(y).or_default().push(x);
+                }
+            }
         }
         let mut seen = BTreeSet::new();
         let mut curves = 0;
-        for &start in adj.keys() {
+        for &start in &edges {
             if !seen.insert(start) {
                 continue;
             }
             curves += 1;
             let mut stack = vec![start];
-            while let Some(v) = stack.pop() {
-                for &w in &adj[&v] {
-                    if seen.insert(w) {
-                        stack.push(w);
+            while let Some(e) = stack.pop() {
+                for &next in &linked[&e] {
+                    if seen.insert(next) {
+                        stack.push(next);
                     }
                 }
             }
         }
-        Some(curves)
+        Ok(curves)
+    }
+
+    /// Can the faces be oriented consistently? Naively: give the first face of each component
+    /// its own orientation, then spread across two-face edges (a face that traverses the
+    /// shared edge the same way as its neighbour is flipped), and look for a contradiction.
+    pub fn orientable(&self) -> bool {
+        // flipped[f]: None until reached.
+        let mut flipped: Vec<Option<bool>> = vec![None; self.faces.len()];
+        let direction = |f: u32, (a, b): Pair| {
+            let face = &self.faces[f as usize];
+            let i = face.iter().position(|&x| x == a).expect("edge of its face");
+            face[(i + 1) % face.len()] == b
+        };
+        for start in 0..self.faces.len() {
+            if flipped[start].is_some() {
+                continue;
+            }
+            flipped[start] = Some(false);
+            let mut stack = vec![start as u32];
+            while let Some(f) = stack.pop() {
+                for e in self.face_edges(f as usize) {
+                    if let [g0, g1] = self.edge_faces[&e][..] {
+                        let g = if g0 == f { g1 } else { g0 };
+                        // Same direction in both faces: one of them must be flipped.
+                        let wanted =
+                            flipped[f as usize].unwrap() ^ (direction(f, e) == direction(g, e));
+                        match flipped[g as usize] {
+                            None => {
+                                flipped[g as usize] = Some(wanted);
+                                stack.push(g);
+                            }
+                            Some(was) if was != wanted => return false,
+                            Some(_) => {}
+                        }
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// What `topolab info` should say of the soup, by the lab's definitions (see
+    /// [`crate::summary`]), computed naively: every structure that accepts the soup must
+    /// answer this (apart from its name, `structure` here is `"oracle"`).
+    pub fn summary(&self) -> Summary {
+        let facts = ManifoldFacts {
+            non_manifold_edges: self.non_manifold_edges(),
+            non_manifold_vertices: (0..self.vertex_faces.len() as u32)
+                .filter(|&v| self.fans(v).len() > 1)
+                .count(),
+            orientable: self.orientable(),
+        };
+        let nv = self.vertex_faces.len();
+        // The count the definition leaves undefined is never used: `Summary::new` asks the facts.
+        let curves = self.boundary_curve_count().unwrap_or(0);
+        Summary::new(
+            "oracle",
+            [
+                nv,
+                self.vertex_faces.iter().filter(|f| f.is_empty()).count(),
+                self.edge_faces.len(),
+                self.faces.len(),
+                self.boundary_edges().len(),
+                curves,
+                self.face_components(),
+            ],
+            !self.faces.is_empty() && self.faces.iter().all(|f| f.len() == 3),
+            &facts,
+        )
     }
 
     /// Number of connected components of the faces (through shared vertices), ignoring unused vertices.

@@ -4,6 +4,7 @@
 use super::{CheckSummary, Component, FindingKind, Push, UnionFind};
 use crate::core::error::Error;
 use crate::core::soup::{Connectivity, PolygonSoup};
+use crate::summary::Undefined;
 use std::collections::{BTreeMap, HashSet};
 
 /// The edge analysis (non-manifold edges and vertices, orientation), components, boundary
@@ -37,10 +38,14 @@ pub(super) fn topology(
                 .or_insert(original(f));
         }
     };
+    // Components where an edge has more than two faces: their boundary curves are undefined.
+    let mut with_non_manifold_edge = HashSet::new();
     for problem in problems {
         match problem {
             Error::NonManifoldEdge { a, b, faces } => {
-                component(&mut components, joined.find(a).0).manifold = false;
+                let root = joined.find(a).0;
+                component(&mut components, root).manifold = false;
+                with_non_manifold_edge.insert(root);
                 let faces: Vec<u32> = faces.into_iter().map(original).collect();
                 push(
                     FindingKind::NonManifoldEdge,
@@ -81,8 +86,11 @@ pub(super) fn topology(
     for &e in &conn.corner_edge {
         corners_per_edge[e as usize] += 1;
     }
-    // Boundary curves: the connected sets of boundary edges.
-    let mut curves = UnionFind::new(clean.num_vertices());
+    // Boundary curves per fan (the definition of `crate::summary`): each boundary edge joins
+    // the fan of its face at one end with the fan of its face at the other; a curve is a
+    // connected set of fans so joined (each open fan holds two boundary ends).
+    let fans = conn.corner_fans(clean);
+    let mut curves = UnionFind::new(clean.num_corners());
     let mut boundary_edges = 0;
     for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
         let (f, c0) = (conn.corner_face[c0 as usize], c0 as usize);
@@ -97,17 +105,18 @@ pub(super) fn topology(
             );
         } else if corners_per_edge[e] == 1 {
             let next = clean.next_corner(c0, f as usize);
-            curves.union(clean.indices()[c0], clean.indices()[next], false);
+            curves.union(fans[c0], fans[next], false);
             boundary_edges += 1;
         }
     }
     let mut counted_curves = HashSet::new();
     for (e, &[c0, _]) in conn.edge_corners.iter().enumerate() {
         if corners_per_edge[e] == 1 {
-            let curve = curves.find(clean.indices()[c0 as usize]).0;
+            let curve = curves.find(fans[c0 as usize]).0;
             if counted_curves.insert(curve) {
                 let f = conn.corner_face[c0 as usize];
-                component(&mut components, root_of_face[f as usize]).boundary_curves += 1;
+                let c = component(&mut components, root_of_face[f as usize]);
+                c.boundary_curves = c.boundary_curves.map(|n| n + 1);
             }
         }
     }
@@ -131,13 +140,17 @@ pub(super) fn topology(
         );
     }
     let components: Vec<Component> = components
-        .into_values()
-        .map(|mut c| {
+        .into_iter()
+        .map(|(root, mut c)| {
             c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.faces as i64;
+            if with_non_manifold_edge.contains(&root) {
+                c.boundary_curves = None;
+            }
             // χ = 2 - 2g - b for a connected orientable surface.
-            let twice_genus = 2 - c.euler_characteristic - c.boundary_curves as i64;
-            c.genus = (c.manifold && c.orientable && twice_genus >= 0 && twice_genus % 2 == 0)
-                .then_some(twice_genus / 2);
+            c.genus = match (c.manifold && c.orientable, c.boundary_curves) {
+                (true, Some(b)) => Some((2 - c.euler_characteristic - b as i64) / 2),
+                _ => None,
+            };
             c
         })
         .collect();
@@ -148,6 +161,9 @@ pub(super) fn topology(
         edges: conn.num_edges(),
         boundary_edges,
         boundary_curves: components.iter().map(|c| c.boundary_curves).sum(),
+        boundary_curves_undefined: (!with_non_manifold_edge.is_empty()).then(|| {
+            Undefined::NonManifoldEdges(corners_per_edge.iter().filter(|&&n| n > 2).count())
+        }),
         euler_characteristic: components.iter().map(|c| c.euler_characteristic).sum(),
         components,
         counts: BTreeMap::new(),
@@ -160,7 +176,7 @@ fn component(components: &mut BTreeMap<u32, Component>, root: u32) -> &mut Compo
         faces: 0,
         vertices: 0,
         edges: 0,
-        boundary_curves: 0,
+        boundary_curves: Some(0),
         euler_characteristic: 0,
         orientable: true,
         manifold: true,

@@ -30,6 +30,7 @@ mod polygon;
 pub use polygon::MAX_SIMPLICITY_CORNERS;
 
 use crate::io::RawSoup;
+use crate::summary::Undefined;
 use duplicates::{duplicate_faces, duplicate_vertices};
 use manifold::topology;
 use polygon::polygon_checks;
@@ -168,8 +169,9 @@ pub struct Component {
     pub vertices: usize,
     /// Its edges.
     pub edges: usize,
-    /// Its boundary curves (connected sets of boundary edges).
-    pub boundary_curves: usize,
+    /// Its boundary curves (per fan, as `crate::summary` defines them); `None` where an edge
+    /// of it has more than two faces.
+    pub boundary_curves: Option<usize>,
     /// V - E + F.
     pub euler_characteristic: i64,
     /// Its faces can be oriented consistently.
@@ -193,8 +195,11 @@ pub struct CheckSummary {
     pub edges: usize,
     /// Edges with exactly one face.
     pub boundary_edges: usize,
-    /// Boundary curves over all components.
-    pub boundary_curves: usize,
+    /// Boundary curves over all components (per fan, as `crate::summary` defines them);
+    /// `None` where an edge has more than two faces.
+    pub boundary_curves: Option<usize>,
+    /// Why `boundary_curves` is not defined, when it is not (the words of `info`).
+    pub boundary_curves_undefined: Option<Undefined>,
     /// V - E + F over used vertices and usable faces.
     pub euler_characteristic: i64,
     /// Each connected component.

@@ -181,14 +181,18 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
         },
         &Options::default(),
     );
-    let mut closed: Vec<usize> = check
+    let mut closed: Vec<Option<usize>> = check
         .summary
         .components
         .iter()
         .map(|c| c.boundary_curves)
         .collect();
     closed.sort_unstable();
-    assert_eq!(closed, [0, 1], "the tetrahedron closed, the fin a triangle");
+    assert_eq!(
+        closed,
+        [Some(0), Some(1)],
+        "the tetrahedron closed, the fin a triangle"
+    );
 }
 
 #[test]
