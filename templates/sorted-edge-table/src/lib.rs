@@ -32,10 +32,11 @@
 //! | R20 | read the face's corners | O(k) |
 //! | R21, R22, R11 | a binary search per side of the face(s) | O(k log n) |
 //! | successor, predecessor | find the edge in the face's corners, one binary search | O(k + log n) |
-//! | boundary curves | one scan of the rows, then a walk from row to row | O(n) |
+//! | boundary curves | one scan of the rows, then a walk from outer row to outer row, turning around each end within its fan | O(n + ∂n k log n) |
 //!
 //! Non-manifold vertices (several fans) are stored and answered correctly: a vertex's rows are
-//! its edges whatever its fans; an open fan has exactly one outer row leaving the vertex. Like
+//! its edges whatever its fans; an open fan has exactly one outer row leaving the vertex, and
+//! the boundary curves continue each fan's boundary within the fan, as the lab defines them. Like
 //! every structure of the lab it refuses non-manifold edges and inconsistent orientation (the
 //! edge's two directions would not each have one face) with the soup's typed errors.
 //!
@@ -106,6 +107,27 @@ impl SortedEdgeTable {
     #[inline]
     fn face(&self, f: usize) -> &[u32] {
         &self.corners[self.offsets[f] as usize..self.offsets[f + 1] as usize]
+    }
+
+    /// The outer row that follows outer row `h` on its boundary curve, as the lab defines the
+    /// curves (per fan): from `h`'s other direction, turn around `h`'s end `b` through the
+    /// faces of that fan (each face's edge into `b`, then its other direction) until the row
+    /// leaving `b` is an outer one. At a vertex of several fans this stays in `h`'s fan.
+    #[inline]
+    fn next_outer(&self, h: usize) -> Option<usize> {
+        let b = self.ends[h][1];
+        let mut inner = self.reverse(h)?;
+        for _ in 0..self.ends.len() {
+            let face = self.face(self.left[inner] as usize);
+            let i = face.iter().position(|&v| v == b)?;
+            let before = face[(i + face.len() - 1) % face.len()];
+            let leaving = self.row(b, before)?;
+            if self.left[leaving] == NO_FACE {
+                return Some(leaving);
+            }
+            inner = leaving;
+        }
+        None
     }
 
     /// The faces on the two sides of edge `e` (`NO_FACE` on the outer side of a boundary).
@@ -327,24 +349,19 @@ impl MeshTopology for SortedEdgeTable {
             if self.left[first] != NO_FACE || walked(&out.starts, first) {
                 continue;
             }
-            // Outer rows run around the hole: from the end of one, the next leaves. The curve
-            // closes when it comes back to its first vertex (at a vertex where several fans
-            // meet, any unwalked outer row leaving it continues the curve).
-            let start = self.ends[first][0];
+            // Outer rows run around the hole: from the end of one, the next leaves it in the
+            // same fan ([`SortedEdgeTable::next_outer`]). The curve closes when it comes back
+            // to its first row.
             let mut h = first;
             loop {
                 out.starts[h / 32] |= 1 << (h % 32);
                 let [a, b] = self.ends[h];
                 out.edges.extend(self.edge(a, b));
-                if b == start {
-                    break;
-                }
-                let next = self
-                    .leaving(b)
-                    .find(|&g| self.left[g] == NO_FACE && !walked(&out.starts, g));
-                match next {
-                    Some(g) => h = g,
-                    None => break, // only on a broken table (`validate` says why)
+                match self.next_outer(h) {
+                    Some(g) if !walked(&out.starts, g) => h = g,
+                    // Back at the first row (or, on a broken table, a dead end: `validate`
+                    // says why).
+                    _ => break,
                 }
             }
             out.starts.push(out.edges.len() as u32);

@@ -258,36 +258,56 @@ impl<K: Copy + PartialEq + Traced> Corners<K> {
         Some(EdgeId::new(self.canonical(x)))
     }
 
-    /// Boundary curves by scans: every corner's twin is searched (O(n²)), then each curve is
-    /// walked from boundary corner to the boundary corner leaving its end vertex.
+    /// Boundary curves by scans, per fan (the definition of [`crate::summary`]): each curve is
+    /// walked from a boundary corner to the boundary edge that ends the same fan at the far
+    /// vertex (`next_on_curve`), so a vertex with several fans continues each
+    /// fan's boundary in that fan. Every step searches twins (O(n)), so O(n²) in all.
     pub fn boundary_curves(&self, out: &mut BoundaryCurves) {
         out.clear();
-        let is_boundary = |c: usize| self.twin(c).is_none();
         for start in 0..self.keys.len() {
-            if !is_boundary(start) || out.edges.contains(&EdgeId::new(self.canonical(start))) {
+            if self.twin(start).is_some() || out.edges.contains(&EdgeId::new(self.canonical(start)))
+            {
                 continue;
             }
-            let first_key = read!("corners", self.keys, start);
-            let mut cur = start;
+            let (mut cur, mut at) = (start, self.ends(start).1);
             loop {
                 out.edges.push(EdgeId::new(self.canonical(cur)));
-                let (_, end) = self.ends(cur);
-                if end == first_key {
+                // `None`, or an edge already on a curve, only where an edge has more than two
+                // faces (the count is undefined there): the curve ends.
+                let Some(next) = self.next_on_curve(cur, at) else {
+                    break;
+                };
+                if out.edges.contains(&EdgeId::new(self.canonical(next))) {
                     break;
                 }
-                // The unused boundary corner that leaves `end`.
-                let next = (0..self.keys.len()).find(|&c| {
-                    read!("corners", self.keys, c) == end
-                        && is_boundary(c)
-                        && !out.edges.contains(&EdgeId::new(self.canonical(c)))
-                });
-                match next {
-                    Some(c) => cur = c,
-                    None => break, // cannot happen on an oriented manifold; ends the curve
-                }
+                let (a, b) = self.ends(next);
+                at = if a == at { b } else { a };
+                cur = next;
             }
             out.end_curve();
         }
+    }
+
+    /// The boundary edge (as its corner) that follows boundary edge `c` at its end `at`: the
+    /// walk turns around `at` through the faces, crossing edges at `at` that have a second
+    /// face, until the edge it reaches has none. Orientation does not matter: in each face
+    /// the walk takes the edge at `at` it did not come by.
+    fn next_on_curve(&self, c: usize, at: K) -> Option<usize> {
+        let mut edge = c;
+        for _ in 0..self.keys.len() {
+            let face = self.face_of(edge);
+            // The corner of `at` in this face, and the face's other edge there.
+            let other = if read!("corners", self.keys, edge) == at {
+                self.prev_in(edge, face)
+            } else {
+                self.next_in(edge, face)
+            };
+            match self.twin(other) {
+                None => return Some(other),
+                Some(t) => edge = t,
+            }
+        }
+        None
     }
 
     /// Every edge id once, in increasing order, with whether it is a boundary edge. An
