@@ -67,6 +67,59 @@ fn info_reads_obj_off_and_ply_files_with_every_structure() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The soup of issue #38: five triangles on nine vertices, five vertices with two fans.
+const TWO_FANS: &str = "v 0.489 0.908 0.338\nv 0.459 0.350 0.807\nv 0.333 0.137 0.488\n\
+    v 0.805 0.072 0.618\nv 0.046 0.757 0.986\nv 0.349 0.004 0.378\nv 0.089 0.465 0.541\n\
+    v 0.024 0.362 0.010\nv 0.110 0.924 0.916\nf 3 7 6\nf 4 7 9\nf 5 1 4\nf 2 5 6\nf 3 1 7\n";
+
+/// Every structure of this build that stores the two-fan soup prints the same `info --json`
+/// apart from its name (the others refuse it with exit code 1): four boundary curves, one per
+/// fan's boundary, and a genus that is undefined, with the same reason for all.
+#[test]
+fn info_gives_one_answer_from_every_structure_that_stores_a_non_manifold_mesh() {
+    let dir = temp_dir("two-fans");
+    let path = dir.join("two-fans.obj");
+    std::fs::write(&path, TWO_FANS).unwrap();
+    let mut answers = Vec::new();
+    for &structure in topolab::registry::NAMES {
+        let (code, stdout) = topolab(&[
+            "info",
+            path.to_str().unwrap(),
+            "--structure",
+            structure,
+            "--json",
+        ]);
+        if code == 1 {
+            continue;
+        }
+        assert_eq!(code, 0, "{structure}: {stdout}");
+        let mut v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        v["structure"] = "".into();
+        answers.push((structure, v));
+    }
+    let stored: Vec<&str> = answers.iter().map(|(s, _)| *s).collect();
+    assert!(
+        stored.contains(&"explicit") && stored.contains(&"edge-list"),
+        "{stored:?}"
+    );
+    let (first, expected) = &answers[0];
+    assert_eq!(expected["boundary_curves"], 4);
+    assert_eq!(expected["genus"], serde_json::Value::Null);
+    assert_eq!(
+        expected["genus_undefined"],
+        "5 vertices whose faces form several fans"
+    );
+    for (structure, v) in &answers {
+        assert_eq!(v, expected, "{structure} and {first} differ");
+    }
+    let (_, text) = topolab(&["info", path.to_str().unwrap(), "--structure", "vertex-list"]);
+    assert!(
+        text.contains("genus:                undefined (5 vertices whose faces form several fans)"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn info_exits_2_on_an_unreadable_file_and_1_on_a_non_manifold_mesh() {
     let dir = temp_dir("exit-codes");

@@ -1,11 +1,12 @@
 //! What the structures are checked against and tested on: the naive [`oracle`] built from the
 //! face list, the shared [`conformance`](mod@conformance) suite that compares every operator
 //! with it, the [`editing`] suite of random edit sequences against a naive model with its
-//! [`weld`] tests, the [`decimating`] suite (decimation, then reconstruction by vertex
+//! [`weld`] tests, the [`differential`] test of `topolab info`, the [`decimating`] suite (decimation, then reconstruction by vertex
 //! splits), and the canonical and generated [`meshes`].
 
 pub mod conformance;
 pub mod decimating;
+pub mod differential;
 pub mod editing;
 pub mod meshes;
 pub mod oracle;
