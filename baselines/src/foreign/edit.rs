@@ -27,7 +27,7 @@ use topolab_structures::{Cost, EdgeId, EditOp, Error, FaceId, Refusal, Result, V
 pub(crate) const EDIT_REFUSED: i32 = 5;
 
 /// The shims' refusal codes (`TOPOLAB_OM_REFUSAL_*`, `TOPOLAB_CGAL_REFUSAL_*`), in their order.
-pub(crate) const REFUSALS: [Refusal; 11] = [
+pub(crate) const REFUSALS: [Refusal; 12] = [
     Refusal::NoSuchElement,
     Refusal::BadFace,
     Refusal::NonManifoldEdge,
@@ -39,6 +39,7 @@ pub(crate) const REFUSALS: [Refusal; 11] = [
     Refusal::LinkCondition,
     Refusal::NotImplemented,
     Refusal::SameVertex,
+    Refusal::TetrahedronTest,
 ];
 
 /// The element kinds of the shims' `is_deleted`.

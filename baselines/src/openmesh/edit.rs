@@ -16,8 +16,11 @@
 //! Every check runs in C++ before OpenMesh is called, so a refused edit changes nothing and
 //! OpenMesh is never called outside its preconditions (its own checks of them are assertions,
 //! compiled out of the release build `build.rs` makes): the lab's rules (an oriented manifold with one fan per
-//! vertex after every edit; pmp's `is_collapse_ok`, which adds the tetrahedron test to
-//! OpenMesh's) and OpenMesh's own predicates. Where OpenMesh allows more than the lab (a face
+//! vertex after every edit; pmp's `is_collapse_ok`, the tests of OpenMesh's own, refused as
+//! [`Refusal::LinkCondition`](topolab_structures::Refusal::LinkCondition), with the
+//! tetrahedron test OpenMesh's Decimater adds in `is_collapse_legal`, refused as
+//! [`Refusal::TetrahedronTest`](topolab_structures::Refusal::TetrahedronTest)) and OpenMesh's
+//! own predicates. Where OpenMesh allows more than the lab (a face
 //! making a second fan at a vertex, a deletion splitting a vertex's fan, the collapse that
 //! leaves two triangles on three vertices), the edit is refused with the lab's reason.
 //!
