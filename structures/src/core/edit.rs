@@ -44,6 +44,13 @@ pub enum Deletion {
     /// [`MeshEdit::garbage_collection`] (the structures edited through
     /// [`FaceRewrite`](crate::core::rewrite::FaceRewrite)).
     LastMoves,
+    /// Deleted triangles leave at once and the triangle arrays are compacted, so triangle
+    /// (and half-edge) ids change: a deleted triangle's slot is taken by the last triangle
+    /// (a face deletion, a collapse), or the triangles after a deleted vertex's star shift
+    /// down (a vertex deletion); deleted vertices keep their slots, marked, until
+    /// [`MeshEdit::garbage_collection`]. No triangle is ever marked (the CHE levels, whose
+    /// arrays are indexed by triangle and half-edge).
+    Compacted,
 }
 
 /// The editing operations; see the module docs for what every edit promises.
