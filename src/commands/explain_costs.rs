@@ -44,6 +44,9 @@ mod tests {
         assert!(list.contains("collapse-edge       O(k·n)"), "{list}");
         let half = edit_costs("index-half-edge");
         assert!(half.contains("weld-vertices       O(k)"), "{half}");
+        // The link condition looks each neighbour of one end up around the other.
+        assert!(half.contains("collapse-edge       O(k²)"), "{half}");
+        assert!(winged.contains("collapse-edge       O(k²)"), "{winged}");
         let che = edit_costs("che-l2");
         assert!(che.contains("flip-edge           O(n)"), "{che}");
         assert!(

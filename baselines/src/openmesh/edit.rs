@@ -50,7 +50,7 @@
 //! | flip edge | `find_halfedge`, `is_flip_ok`, `flip` | O(k) |
 //! | split edge | `add_vertex`, `split(e, v)` | O(1) |
 //! | split face | `add_vertex`, `split(f, v)` | O(k) |
-//! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `is_collapse_ok`, `collapse` | O(k) |
+//! | collapse edge | the lab's link condition and tetrahedron test (each neighbour of one end looked for by `find_halfedge` around the other, O(k²)), `is_collapse_ok`, `collapse` | O(k²) |
 //! | split vertex | `add_vertex`, `vertex_split` | O(k) |
 //! | weld vertices | the faces around `b` and the neighbours of both (checks), the halfedges into `b` renamed, one or two boundary edge pairs merged | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |
