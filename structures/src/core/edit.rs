@@ -22,8 +22,10 @@
 //!   [`Error::EditRefused`](crate::Error::EditRefused) with the reason ([`Refusal`]) and
 //!   changes nothing.
 //! - After every operation `validate()` holds.
-//! - Ids are stable: new elements are appended (vertex `num_vertices()` before the call, and
-//!   so on), nothing is renumbered until [`MeshEdit::garbage_collection`].
+//! - New elements are appended (vertex `num_vertices()` before the call, and so on). Vertex
+//!   ids are stable until [`MeshEdit::garbage_collection`] in every structure; face (and
+//!   edge) ids are too where the structure marks its deletions ([`Deletion::Marked`]), not
+//!   where faces leave at once ([`Deletion::LastMoves`], [`Deletion::Compacted`]).
 //! - Deletion: a structure that marks ([`Deletion::Marked`]) keeps deleted elements' slots,
 //!   so counts, enumerations and ids include them until `garbage_collection`, which removes
 //!   them keeping the survivors' order (vertex `i` before vertex `j` stays before it). Queries
