@@ -111,7 +111,7 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
     let out = dir.join("out.off");
     // mesh, target, more arguments, exit code, what the message says.
     type Case<'a> = (&'a str, Vec<&'a str>, Vec<&'a str>, i32, &'a str);
-    let cases: [Case; 8] = [
+    let cases: [Case; 9] = [
         ("quad-grid", vec!["--faces", "4"], vec![], 1, "corners"),
         ("bowtie", vec!["--faces", "1"], vec![], 1, "cannot decimate"),
         ("torus", vec!["--faces", "13"], vec![], 1, "at least 14"),
@@ -129,6 +129,14 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
             vec!["--structure", "che-l2"],
             2,
             "editable",
+        ),
+        // The winged-edge is editable: the refusal says why decimation does not run on it.
+        (
+            "torus",
+            vec!["--faces", "10"],
+            vec!["--structure", "winged-edge"],
+            2,
+            "only these two are enrolled in the decimation suite",
         ),
         (
             "torus",

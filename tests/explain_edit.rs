@@ -223,21 +223,30 @@ fn a_split_on_the_face_rewrite_structures_names_their_records() {
 
 #[test]
 fn a_refused_collapse_on_the_face_rewrite_structures_exits_with_its_reason() {
-    // Edge 1 of the open tetrahedron joins the apex to a boundary vertex through the interior:
-    // its collapse would pinch the boundary.
+    // On the open tetrahedron, edge 1 = v1 - v3 (a boundary vertex to the apex) passes the link
+    // condition, and its collapse would leave one valid triangle, (2, 0, 3); the third corners
+    // v0 and v2 of its two triangles are neighbours of valence 3, so OpenMesh's tetrahedron
+    // test refuses it. Edge 0 = v0 - v1, a boundary edge, fails the link condition: the rings
+    // of v0 and v1 share v2, which is on no triangle of the edge (the collapse would close the
+    // boundary into two triangles on v1, v2, v3).
     for name in ["winged-edge", "edge-list", "vertex-list"] {
-        let out = topolab(&["explain", name, "--op", "collapse", "--edge", "1"]);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
-        assert!(
-            stderr.contains(&format!("{name} refuses collapse-edge")),
-            "{stderr}"
-        );
-        assert!(stderr.contains("the link condition fails"), "{stderr}");
-        assert!(
-            out.stdout.is_empty(),
-            "{name}: nothing printed before the refusal"
-        );
+        for (edge, reason) in [
+            ("1", "OpenMesh's tetrahedron test fails"),
+            ("0", "the link condition fails"),
+        ] {
+            let out = topolab(&["explain", name, "--op", "collapse", "--edge", edge]);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(1), "{name}, edge {edge}: {stderr}");
+            assert!(
+                stderr.contains(&format!("{name} refuses collapse-edge")),
+                "{stderr}"
+            );
+            assert!(stderr.contains(reason), "{name}, edge {edge}: {stderr}");
+            assert!(
+                out.stdout.is_empty(),
+                "{name}: nothing printed before the refusal"
+            );
+        }
     }
 }
 

@@ -1,15 +1,16 @@
 //! `topolab decimate`: decimation by quadric error
 //! ([`topolab_structures::algorithms::decimate`], after OpenMesh's `DecimaterT` with
 //! `ModQuadricT`: area-weighted face quadrics, half-edge collapses onto an end vertex, the
-//! link condition through [`topolab_structures::MeshEdit`]'s collapse test) on an editable
-//! structure, to a face count, and the result written. `--strategy` chooses how candidates
+//! link condition through [`topolab_structures::MeshEdit`]'s collapse test) on the index or
+//! the pointer half-edge (the editable structures the decimation suite enrols), to a face
+//! count, and the result written. `--strategy` chooses how candidates
 //! are kept ([`Strategy`]): `lazy`, the default, because its normal-flipping test keeps flat
 //! regions from decimating into zero-area triangles, which `topolab check` would report in
 //! the file written; `eager` runs OpenMesh's Decimater step for step, as the report compares
 //! it with OpenMesh's own.
 //!
-//! Refused before any work, nothing written (exit 2): a bad `--ratio`, an unknown or
-//! non-editable `--structure`, an unknown `--strategy`, an unwritable output, a mesh past
+//! Refused before any work, nothing written (exit 2): a bad `--ratio`, a `--structure` other
+//! than those two, an unknown `--strategy`, an unwritable output, a mesh past
 //! `u32` ids or the available memory. Refused once read, nothing written (exit 1): polygons (the decimater collapses
 //! triangles), input the half-edge cannot store (non-manifold, inconsistently oriented), and
 //! a target below what the topology allows
@@ -59,7 +60,9 @@ fn parse_strategy(name: &str) -> Result<Strategy, String> {
     })
 }
 
-/// The structures `--structure` takes.
+/// The structures `--structure` takes: the editable structures the decimation suite enrols
+/// (`structures/tests/decimating.rs`); the decimater is generic over [`MeshEdit`], the others
+/// are not tested with it.
 const EDITABLE: [&str; 2] = ["index-half-edge", "pointer-half-edge"];
 
 /// Runs `topolab decimate`.
@@ -73,9 +76,9 @@ pub fn run(args: &DecimateArgs) -> Result<String, Failure> {
     }
     if !EDITABLE.contains(&args.structure.as_str()) {
         return Err(Failure::usage(format!(
-            "--structure {}: decimation needs an editable structure: {}",
+            "--structure {}: decimation runs on {} only: the decimater is written over MeshEdit, but of the editable structures only these two are enrolled in the decimation suite, which tests decimation and the reconstruction by vertex splits on them",
             args.structure,
-            EDITABLE.join(", ")
+            EDITABLE.join(" and ")
         )));
     }
     check_mesh_out(&args.out)?;

@@ -20,6 +20,9 @@ pub fn edit_costs(name: &str) -> String {
         Deletion::LastMoves => {
             "deleted faces and edges leave at once, the last one taking the slot; deleted vertices stay, marked, until garbage collection"
         }
+        Deletion::Compacted => {
+            "deleted triangles leave at once, the arrays compacted (the last triangle taking a deleted one's slot, or the triangles after a deleted vertex's star shifting down), so triangle and half-edge ids change; deleted vertices stay, marked, until garbage collection"
+        }
     };
     let _ = writeln!(out, "\nediting (MeshEdit): {deletion}");
     for (op, cost) in &row.costs {
@@ -41,8 +44,16 @@ mod tests {
         assert!(list.contains("collapse-edge       O(k·n)"), "{list}");
         let half = edit_costs("index-half-edge");
         assert!(half.contains("weld-vertices       O(k)"), "{half}");
+        // The link condition looks each neighbour of one end up around the other.
+        assert!(half.contains("collapse-edge       O(k²)"), "{half}");
+        assert!(winged.contains("collapse-edge       O(k²)"), "{winged}");
         let che = edit_costs("che-l2");
         assert!(che.contains("flip-edge           O(n)"), "{che}");
+        assert!(
+            che.contains("deleted triangles leave at once")
+                && !che.contains("deleted elements stay"),
+            "the CHE compacts its triangles at once, it marks only vertices: {che}"
+        );
         assert!(che.contains("weld-vertices       O(n)"), "a rebuild: {che}");
         assert!(edit_costs("regular-grid").contains("does not implement MeshEdit"));
         // The C++ baselines edit through their own Euler operations, with declared costs.

@@ -250,7 +250,7 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
             "V[] of the edge's one or two triangles, O[h] (level 0: a scan of V[]), O[] of their outer half-edges, the fans of their corners for VH[]; EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the edge is on the boundary (level 3, Algorithm 4)"
         }
         (Family::Che, ExplainOp::Collapse) => {
-            "the stars of both ends and of the two opposite corners (the link condition: from VH[] and O[] at levels 2-3, scans of V[] at levels 0-1), V[] and O[] of the star of the removed vertex, the last triangles (moved into the removed ones' slots); EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the boundary is touched (level 3, Algorithm 4)"
+            "the stars of both ends and of the two opposite corners (the link condition and OpenMesh's tetrahedron test: from VH[] and O[] at levels 2-3, scans of V[] at levels 0-1), V[] and O[] of the star of the removed vertex, the last triangles (moved into the removed ones' slots); EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the boundary is touched (level 3, Algorithm 4)"
         }
         (Family::HalfEdge, ExplainOp::Flip) => {
             "the edge's two half-edges and their next, prev, vert and face; the corners' rotation (next of twin) to check that the new edge is not there; the vertices' and faces' edge fields it repoints"
@@ -259,7 +259,7 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
             "the edge's half-edges and their next, prev, vert and face, and the face records of its triangles"
         }
         (Family::HalfEdge, ExplainOp::Collapse) => {
-            "the rotations around both ends and the two opposite corners (the link condition), then every half-edge leaving the removed vertex (its vert) and the next/prev/face of the two removed triangles"
+            "the rotations around both ends and the two opposite corners (the link condition and OpenMesh's tetrahedron test), then every half-edge leaving the removed vertex (its vert) and the next/prev/face of the two removed triangles"
         }
         (Family::WingedEdge, ExplainOp::Flip) => {
             "the edge record (v1, v2, fccw, fcw) and its two triangles' cycles through the wings (pccw, nccw in fccw; pcw, ncw in fcw); the fan of the far corner from its av through the wings, to check that the new edge is not there; the fans of the four corners for the rewrite's manifold check; then the two faces are rewritten, the edge record in place, the wings of the four outer edges re-pointed"
@@ -268,7 +268,7 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
             "the edge record (v1, v2, fccw, fcw) and the cycles of its one or two triangles through the wings; the fans of their corners from av for the rewrite's manifold check; then the triangles are rewritten in two, the new edge records appended and the outer edges' wings re-pointed"
         }
         (Family::WingedEdge, ExplainOp::Collapse) => {
-            "the fans of both ends and of the two far corners from av through the wings (the link condition), the cycles of the faces around the removed vertex; then those faces are rewritten around the kept vertex, the edges of the two removed triangles leave (the last edge and face records moving into their slots) and the wings around them are re-pointed"
+            "the fans of both ends and of the two far corners from av through the wings (the link condition and OpenMesh's tetrahedron test), the cycles of the faces around the removed vertex; then those faces are rewritten around the kept vertex, the edges of the two removed triangles leave (the last edge and face records moving into their slots) and the wings around them are re-pointed"
         }
         (Family::EdgeList, ExplainOp::Flip) => {
             "the edge E = (start, end, left, right), its two polygons P (lists of edge indices) and their edges' start and end; a scan of all of E for the far corner's edges (is the new edge there?) and for each corner's fan; then the two polygons are rewritten, the edge in place, and a scan of E finds the edges they share with the rest"
@@ -277,7 +277,7 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
             "the edge E = (start, end, left, right), its one or two polygons P and their edges' ends; a scan of all of E for each corner's fan and for the edges the new polygons share with the rest; then the polygons are rewritten and the new edges appended"
         }
         (Family::EdgeList, ExplainOp::Collapse) => {
-            "a scan of all of E per vertex of the link condition (the rings of both ends and of the two far corners), the polygons around the removed vertex; then they are rewritten around the kept vertex, the edges and polygons of the two removed triangles leave (the last ones moving into their slots)"
+            "a scan of all of E per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), the polygons around the removed vertex; then they are rewritten around the kept vertex, the edges and polygons of the two removed triangles leave (the last ones moving into their slots)"
         }
         (Family::VertexList, ExplainOp::Flip) => {
             "a scan of all faces (lists of vertex indices) for the two that hold the edge, and for the far corner's neighbours (is the new edge there?); the faces around each of the four corners, a scan each; then the two faces' corners are rewritten in place"
@@ -286,7 +286,7 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
             "a scan of all faces for the one or two that hold the edge, and for the faces around each corner; then each triangle's corners are rewritten and one new triangle appended per side"
         }
         (Family::VertexList, ExplainOp::Collapse) => {
-            "a scan of all faces per vertex of the link condition (the rings of both ends and of the two far corners), then the faces around the removed vertex; they are rewritten around the kept vertex and the two removed triangles leave (the last faces moving into their slots)"
+            "a scan of all faces per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), then the faces around the removed vertex; they are rewritten around the kept vertex and the two removed triangles leave (the last faces moving into their slots)"
         }
         (Family::Other, _) => {
             "not described for this structure: the records it writes are listed below"

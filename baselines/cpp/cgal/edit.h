@@ -40,6 +40,7 @@ int topolab_cgal_polyhedron_changing(topolab_cgal_mesh *mesh, int workload) TOPO
 #define TOPOLAB_CGAL_REFUSAL_LINK_CONDITION 8
 #define TOPOLAB_CGAL_REFUSAL_NOT_IMPLEMENTED 9
 #define TOPOLAB_CGAL_REFUSAL_SAME_VERTEX 10
+#define TOPOLAB_CGAL_REFUSAL_TETRAHEDRON_TEST 11
 
 /* add_vertex(p) (p = 3 doubles); *out = the new vertex (appended). */
 int topolab_cgal_sm_edit_add_vertex(topolab_cgal_mesh *mesh, const double *p,

@@ -335,36 +335,37 @@ int split_face(Adapter &a, uint32_t fi, const Point &p, uint32_t *out) {
   return OK_EDIT;
 }
 
-// pmp's (and the half-edge family's) is_collapse_ok for the halfedge h from v0 to v1, as in
-// edit_surface_mesh.cpp.
-bool lab_collapse_ok(const Polyhedron &m, HH h) {
+// pmp's (and the half-edge family's) is_collapse_ok for the halfedge h from v0 to v1, with
+// OpenMesh's tetrahedron test, as in edit_surface_mesh.cpp: the refusal code, OK_EDIT when the
+// collapse may be done.
+int lab_collapse_refusal(const Polyhedron &m, HH h) {
   const HH o = h->opposite();
   const VH v0 = o->vertex(), v1 = h->vertex();
   VH vl, vr;  // none
   if (!h->is_border()) {
     const HH h1 = h->next(), h2 = h1->next();
     vl = h1->vertex();
-    if (h1->opposite()->is_border() && h2->opposite()->is_border()) return false;
+    if (h1->opposite()->is_border() && h2->opposite()->is_border()) return LINK_CONDITION;
   }
   if (!o->is_border()) {
     const HH o1 = o->next(), o2 = o1->next();
     vr = o1->vertex();
-    if (o1->opposite()->is_border() && o2->opposite()->is_border()) return false;
+    if (o1->opposite()->is_border() && o2->opposite()->is_border()) return LINK_CONDITION;
   }
-  if (vl == vr) return false;
+  if (vl == vr) return LINK_CONDITION;
   if (vl != VH() && vr != VH() && find(vl, vr) != NO_HALFEDGE && vl->vertex_degree() == 3 &&
       vr->vertex_degree() == 3)
-    return false;
+    return TETRAHEDRON_TEST;
   if (boundary_vertex(m, v0) && boundary_vertex(m, v1) && !h->is_border() && !o->is_border())
-    return false;
+    return LINK_CONDITION;
   const HH start = v0->halfedge();
   HH g = start;
   do {
     const VH w = g->opposite()->vertex();
-    if (w != v1 && w != vl && w != vr && find(w, v1) != NO_HALFEDGE) return false;
+    if (w != v1 && w != vl && w != vr && find(w, v1) != NO_HALFEDGE) return LINK_CONDITION;
     g = g->next()->opposite();
   } while (g != start);
-  return true;
+  return OK_EDIT;
 }
 
 int collapse(Adapter &a, uint32_t from, uint32_t to) {
@@ -377,7 +378,8 @@ int collapse(Adapter &a, uint32_t from, uint32_t to) {
     if (!g->is_border() && !triangle(g)) return NOT_TRIANGLES;
     g = rotate(g);
   } while (g != h);
-  if (!lab_collapse_ok(m, h)) return LINK_CONDITION;
+  const int refused = lab_collapse_refusal(m, h);
+  if (refused != OK_EDIT) return refused;
   const auto e = edge(h, m);  // made from h: its halfedge is h, whose source goes
   if (!CGAL::Euler::does_satisfy_link_condition(e, m)) return LINK_CONDITION;
   // What CGAL may erase: the edge, its triangles and their other sides (see the file's

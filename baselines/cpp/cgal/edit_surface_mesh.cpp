@@ -318,31 +318,34 @@ int split_face(SurfaceMesh &m, uint32_t fi, const Point &p, uint32_t *out) {
   return OK_EDIT;
 }
 
-// pmp's (and the half-edge family's) is_collapse_ok for the halfedge h from v0 to v1.
-bool lab_collapse_ok(const SurfaceMesh &m, HI h) {
+// pmp's (and the half-edge family's) is_collapse_ok for the halfedge h from v0 to v1
+// (LINK_CONDITION), with the tetrahedron test of OpenMesh's Decimater (is_collapse_legal) after
+// the vl == vr rule (TETRAHEDRON_TEST, not the link condition: vl and vr neighbours of valence
+// 3): the refusal code, OK_EDIT when the collapse may be done.
+int lab_collapse_refusal(const SurfaceMesh &m, HI h) {
   const HI o = m.opposite(h);
   const VI v0 = m.source(h), v1 = m.target(h);
   VI vl, vr;  // default: null vertex
   if (!m.is_border(h)) {
     const HI h1 = m.next(h), h2 = m.next(h1);
     vl = m.target(h1);
-    if (m.is_border(m.opposite(h1)) && m.is_border(m.opposite(h2))) return false;
+    if (m.is_border(m.opposite(h1)) && m.is_border(m.opposite(h2))) return LINK_CONDITION;
   }
   if (!m.is_border(o)) {
     const HI o1 = m.next(o), o2 = m.next(o1);
     vr = m.target(o1);
-    if (m.is_border(m.opposite(o1)) && m.is_border(m.opposite(o2))) return false;
+    if (m.is_border(m.opposite(o1)) && m.is_border(m.opposite(o2))) return LINK_CONDITION;
   }
-  if (vl == vr) return false;
+  if (vl == vr) return LINK_CONDITION;
   const VI none;
   if (vl != none && vr != none && find(m, vl, vr) != NO_HALFEDGE && m.degree(vl) == 3 &&
       m.degree(vr) == 3)
-    return false;
+    return TETRAHEDRON_TEST;
   if (boundary_vertex(m, v0) && boundary_vertex(m, v1) && !m.is_border(h) && !m.is_border(o))
-    return false;
+    return LINK_CONDITION;
   for (VI w : m.vertices_around_target(m.halfedge(v0)))
-    if (w != v1 && w != vl && w != vr && find(m, w, v1) != NO_HALFEDGE) return false;
-  return true;
+    if (w != v1 && w != vl && w != vr && find(m, w, v1) != NO_HALFEDGE) return LINK_CONDITION;
+  return OK_EDIT;
 }
 
 int collapse(SurfaceMesh &m, uint32_t from, uint32_t to) {
@@ -354,7 +357,8 @@ int collapse(SurfaceMesh &m, uint32_t from, uint32_t to) {
     if (!m.is_border(g) && !triangle(m, g)) return NOT_TRIANGLES;
     g = rotate(m, g);
   } while (g != h);
-  if (!lab_collapse_ok(m, h)) return LINK_CONDITION;
+  const int refused = lab_collapse_refusal(m, h);
+  if (refused != OK_EDIT) return refused;
   const EI e = m.edge(h);  // made from h: its halfedge is h, whose source goes
   if (!CGAL::Euler::does_satisfy_link_condition(e, m)) return LINK_CONDITION;
   const VI kept = CGAL::Euler::collapse_edge(e, m);

@@ -17,7 +17,8 @@
 // vertex with two new edges as a second fan of that vertex; delete_face and delete_vertex
 // leave a vertex with two fans; its is_collapse_ok passes the collapse of an edge of a closed
 // tetrahedron's kind (vl and vr neighbours of valence 3), which leaves two triangles on the
-// same three vertices.
+// same three vertices: refused with TETRAHEDRON_TEST, the test OpenMesh's own Decimater adds
+// (BaseDecimaterT::is_collapse_legal), not the link condition.
 //
 // A PolyMesh (polygon input) has no flip, no 2-to-4 edge split and no vertex split (they are
 // TriConnectivity's): those edits are refused there with NOT_IMPLEMENTED after the other
@@ -50,6 +51,7 @@ enum Refusal {
   LINK_CONDITION = TOPOLAB_OM_REFUSAL_LINK_CONDITION,
   NOT_IMPLEMENTED = TOPOLAB_OM_REFUSAL_NOT_IMPLEMENTED,
   SAME_VERTEX = TOPOLAB_OM_REFUSAL_SAME_VERTEX,
+  TETRAHEDRON_TEST = TOPOLAB_OM_REFUSAL_TETRAHEDRON_TEST,
 };
 
 template <class M> constexpr bool is_tri() { return std::is_same<M, Tri>::value; }
@@ -221,8 +223,10 @@ template <class M> int split_face(M &m, uint32_t fi, const double *p, uint32_t *
 }
 
 // pmp's (and the half-edge family's) is_collapse_ok for the halfedge h from v0 to v1, both
-// sides triangles: OpenMesh's is_collapse_ok plus the tetrahedron test.
-template <class M> bool lab_collapse_ok(const M &m, HH h) {
+// sides triangles (the tests of OpenMesh's is_collapse_ok: LINK_CONDITION), with the
+// tetrahedron test OpenMesh's Decimater adds in is_collapse_legal (TETRAHEDRON_TEST) after the
+// vl == vr rule, as the half-edge family orders them; OK_EDIT when the collapse may be done.
+template <class M> int lab_collapse_refusal(const M &m, HH h) {
   const HH o = m.opposite_halfedge_handle(h);
   const VH v0 = m.from_vertex_handle(h), v1 = m.to_vertex_handle(h);
   VH vl, vr;
@@ -231,25 +235,26 @@ template <class M> bool lab_collapse_ok(const M &m, HH h) {
     vl = m.to_vertex_handle(h1);
     if (m.is_boundary(m.opposite_halfedge_handle(h1)) &&
         m.is_boundary(m.opposite_halfedge_handle(h2)))
-      return false;
+      return LINK_CONDITION;
   }
   if (!m.is_boundary(o)) {
     const HH o1 = m.next_halfedge_handle(o), o2 = m.next_halfedge_handle(o1);
     vr = m.to_vertex_handle(o1);
     if (m.is_boundary(m.opposite_halfedge_handle(o1)) &&
         m.is_boundary(m.opposite_halfedge_handle(o2)))
-      return false;
+      return LINK_CONDITION;
   }
-  if (vl == vr) return false;
+  if (vl == vr) return LINK_CONDITION;
   if (vl.is_valid() && vr.is_valid() && m.find_halfedge(vl, vr).is_valid() &&
       valence(m, vl) == 3 && valence(m, vr) == 3)
-    return false;
+    return TETRAHEDRON_TEST;
   if (boundary_vertex(m, v0) && boundary_vertex(m, v1) && !m.is_boundary(h) &&
       !m.is_boundary(o))
-    return false;
+    return LINK_CONDITION;
   for (VH w : m.vv_range(v0))
-    if (w != v1 && w != vl && w != vr && m.find_halfedge(w, v1).is_valid()) return false;
-  return true;
+    if (w != v1 && w != vl && w != vr && m.find_halfedge(w, v1).is_valid())
+      return LINK_CONDITION;
+  return OK_EDIT;
 }
 
 template <class M> int collapse(M &m, uint32_t from, uint32_t to) {
@@ -263,7 +268,8 @@ template <class M> int collapse(M &m, uint32_t from, uint32_t to) {
     if (!m.is_boundary(g) && !triangle(m, g)) return NOT_TRIANGLES;
     g = rotate(m, g);
   } while (g != h);
-  if (!lab_collapse_ok(m, h)) return LINK_CONDITION;
+  const int refused = lab_collapse_refusal(m, h);
+  if (refused != OK_EDIT) return refused;
   // OpenMesh's own test too (it tags the one-rings: status bits, not the topology).
   if (!m.is_collapse_ok(h)) return LINK_CONDITION;
   m.collapse(h);

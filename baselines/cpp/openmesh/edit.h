@@ -33,6 +33,7 @@ extern "C" {
 #define TOPOLAB_OM_REFUSAL_LINK_CONDITION 8
 #define TOPOLAB_OM_REFUSAL_NOT_IMPLEMENTED 9
 #define TOPOLAB_OM_REFUSAL_SAME_VERTEX 10
+#define TOPOLAB_OM_REFUSAL_TETRAHEDRON_TEST 11
 
 /* add_vertex(p) (p = 3 doubles); *out = the new vertex (appended). */
 int topolab_om_edit_add_vertex(topolab_om_mesh *mesh, const double *p,

@@ -42,7 +42,7 @@
 //! | flip edge | `halfedge(x, y)`, `Euler::flip_edge` | O(k) |
 //! | split edge | `Euler::split_edge`, `Euler::split_face` twice | O(1) |
 //! | split face | `Euler::add_center_vertex` | O(k) |
-//! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `does_satisfy_link_condition`, `Euler::collapse_edge` | O(k) |
+//! | collapse edge | the lab's link condition and tetrahedron test (each neighbour of one end looked for around the other, O(k²)), `does_satisfy_link_condition`, `Euler::collapse_edge` | O(k²) |
 //! | split vertex | `Euler::split_vertex` (O(k)), `Euler::split_face` twice | O(k) |
 //! | weld vertices | the faces around `b` and the neighbours of both (checks), `PMP::stitch_borders` on one or two pairs, or `set_target` around `b` | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |
@@ -81,7 +81,7 @@
 //! | flip edge | halfedge search, `Euler::flip_edge` | O(k) |
 //! | split edge | `Euler::split_edge`, `Euler::split_face` twice, ids for the new elements | O(1) |
 //! | split face | `Euler::add_center_vertex`, ids for the new elements | O(k) |
-//! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `does_satisfy_link_condition`, `Euler::collapse_edge`, the erased ids buried | O(k) |
+//! | collapse edge | the lab's link condition and tetrahedron test (O(k²), as for `Surface_mesh`), `does_satisfy_link_condition`, `Euler::collapse_edge`, the erased ids buried | O(k²) |
 //! | split vertex | `Euler::split_vertex` (O(k)), `Euler::split_face` twice | O(k) |
 //! | weld vertices | as for `Surface_mesh`, the ids of the one or two edges and the vertex `stitch_borders` removes buried first | O(k) |
 //! | garbage collection | ids and tables again in list order | O(n) |

@@ -27,7 +27,7 @@ use topolab_structures::{Cost, EdgeId, EditOp, Error, FaceId, Refusal, Result, V
 pub(crate) const EDIT_REFUSED: i32 = 5;
 
 /// The shims' refusal codes (`TOPOLAB_OM_REFUSAL_*`, `TOPOLAB_CGAL_REFUSAL_*`), in their order.
-pub(crate) const REFUSALS: [Refusal; 11] = [
+pub(crate) const REFUSALS: [Refusal; 12] = [
     Refusal::NoSuchElement,
     Refusal::BadFace,
     Refusal::NonManifoldEdge,
@@ -39,6 +39,7 @@ pub(crate) const REFUSALS: [Refusal; 11] = [
     Refusal::LinkCondition,
     Refusal::NotImplemented,
     Refusal::SameVertex,
+    Refusal::TetrahedronTest,
 ];
 
 /// The element kinds of the shims' `is_deleted`.
@@ -206,8 +207,9 @@ pub(crate) trait ForeignEdit: ForeignMesh {
 
 /// The cost of each operation in the three libraries: their Euler operations (and the vertex
 /// weld: CGAL's `stitch_borders` on one or two pairs, OpenMesh's connectivity setters around
-/// the two fans) are local and append, and the garbage collection (a rebuild in order, or ids
-/// given again in list order) reads every element; see each library's table.
+/// the two fans) are local and append; the collapse's check (the lab's, in C++) looks each
+/// neighbour of one end up around the other, O(k²); the garbage collection (a rebuild in
+/// order, or ids given again in list order) reads every element; see each library's table.
 pub(crate) fn edit_cost(op: EditOp) -> Cost {
     match op {
         EditOp::AddVertex | EditOp::SplitEdge => Cost::Constant,
@@ -219,8 +221,9 @@ pub(crate) fn edit_cost(op: EditOp) -> Cost {
         | EditOp::DeleteVertex
         | EditOp::FlipEdge
         | EditOp::SplitFace
-        | EditOp::CollapseEdge
         | EditOp::SplitVertex => Cost::Local,
+        // The shims' link condition: each neighbour of one end looked for around the other.
+        EditOp::CollapseEdge => Cost::LocalSquared,
     }
 }
 

@@ -16,8 +16,11 @@
 //! Every check runs in C++ before OpenMesh is called, so a refused edit changes nothing and
 //! OpenMesh is never called outside its preconditions (its own checks of them are assertions,
 //! compiled out of the release build `build.rs` makes): the lab's rules (an oriented manifold with one fan per
-//! vertex after every edit; pmp's `is_collapse_ok`, which adds the tetrahedron test to
-//! OpenMesh's) and OpenMesh's own predicates. Where OpenMesh allows more than the lab (a face
+//! vertex after every edit; pmp's `is_collapse_ok`, the tests of OpenMesh's own, refused as
+//! [`Refusal::LinkCondition`](topolab_structures::Refusal::LinkCondition), with the
+//! tetrahedron test OpenMesh's Decimater adds in `is_collapse_legal`, refused as
+//! [`Refusal::TetrahedronTest`](topolab_structures::Refusal::TetrahedronTest)) and OpenMesh's
+//! own predicates. Where OpenMesh allows more than the lab (a face
 //! making a second fan at a vertex, a deletion splitting a vertex's fan, the collapse that
 //! leaves two triangles on three vertices), the edit is refused with the lab's reason.
 //!
@@ -47,7 +50,7 @@
 //! | flip edge | `find_halfedge`, `is_flip_ok`, `flip` | O(k) |
 //! | split edge | `add_vertex`, `split(e, v)` | O(1) |
 //! | split face | `add_vertex`, `split(f, v)` | O(k) |
-//! | collapse edge | the link condition (O(k²), declared O(k) as for the half-edges), `is_collapse_ok`, `collapse` | O(k) |
+//! | collapse edge | the lab's link condition and tetrahedron test (each neighbour of one end looked for by `find_halfedge` around the other, O(k²)), `is_collapse_ok`, `collapse` | O(k²) |
 //! | split vertex | `add_vertex`, `vertex_split` | O(k) |
 //! | weld vertices | the faces around `b` and the neighbours of both (checks), the halfedges into `b` renamed, one or two boundary edge pairs merged | O(k) |
 //! | garbage collection | rebuild from the live elements in order | O(n) |

@@ -1,23 +1,31 @@
-//! [`MeshEdit`]: the editing operations the lecture on polygon-mesh data structures asks for
-//! under "which operations must be available" (insert and delete vertices, edges and faces;
-//! refine; thin out, with reconstruction possible again), as one trait beside
-//! [`MeshTopology`], with the cost each structure declares for each operation ([`EditOp`]).
+//! [`MeshEdit`]: editing operations as one trait beside [`MeshTopology`], with the cost each
+//! structure declares for each operation ([`EditOp`]). Of the operations the lecture on
+//! polygon-mesh data structures asks for under "which operations must be available" (select,
+//! insert, delete, weld, rotate and scale vertices, edges and faces; weld whole meshes) they
+//! cover the insertion and deletion of vertices and faces and the weld of vertices (and, by
+//! [`weld_meshes`](crate::algorithms::weld::weld_meshes), of whole meshes); refinement and
+//! thinning, which the lecture lists as what is changed in a mesh, are written over them
+//! ([`crate::algorithms::changing::sqrt3_step`], [`crate::algorithms::decimate`]).
 //!
 //! The operations are the Euler operations of the half-edge libraries (pmp-library's
 //! `SurfaceMesh`, OpenMesh): add a vertex or a face, delete a face or a vertex with its faces,
 //! flip an edge between two triangles, split an edge or a face at a new vertex, collapse an
-//! edge (checked with the link condition) and its inverse, the vertex split; structures that
-//! mark deleted elements compact them in [`MeshEdit::garbage_collection`].
+//! edge (checked with the link condition and OpenMesh's tetrahedron test) and its inverse, the
+//! vertex split; structures that mark deleted elements compact them in
+//! [`MeshEdit::garbage_collection`].
 //!
 //! ## What an edit promises
 //!
 //! - An operation that cannot be done (a flip of a boundary edge, a collapse that fails the
-//!   link condition, a face that would make a vertex or an edge non-manifold) returns
+//!   link condition or the tetrahedron test, a face that would make a vertex or an edge
+//!   non-manifold) returns
 //!   [`Error::EditRefused`](crate::Error::EditRefused) with the reason ([`Refusal`]) and
 //!   changes nothing.
 //! - After every operation `validate()` holds.
-//! - Ids are stable: new elements are appended (vertex `num_vertices()` before the call, and
-//!   so on), nothing is renumbered until [`MeshEdit::garbage_collection`].
+//! - New elements are appended (vertex `num_vertices()` before the call, and so on). Vertex
+//!   ids are stable until [`MeshEdit::garbage_collection`] in every structure; face (and
+//!   edge) ids are too where the structure marks its deletions ([`Deletion::Marked`]), not
+//!   where faces leave at once ([`Deletion::LastMoves`], [`Deletion::Compacted`]).
 //! - Deletion: a structure that marks ([`Deletion::Marked`]) keeps deleted elements' slots,
 //!   so counts, enumerations and ids include them until `garbage_collection`, which removes
 //!   them keeping the survivors' order (vertex `i` before vertex `j` stays before it). Queries
@@ -44,6 +52,13 @@ pub enum Deletion {
     /// [`MeshEdit::garbage_collection`] (the structures edited through
     /// [`FaceRewrite`](crate::core::rewrite::FaceRewrite)).
     LastMoves,
+    /// Deleted triangles leave at once and the triangle arrays are compacted, so triangle
+    /// (and half-edge) ids change: a deleted triangle's slot is taken by the last triangle
+    /// (a face deletion, a collapse), or the triangles after a deleted vertex's star shift
+    /// down (a vertex deletion); deleted vertices keep their slots, marked, until
+    /// [`MeshEdit::garbage_collection`]. No triangle is ever marked (the CHE levels, whose
+    /// arrays are indexed by triangle and half-edge).
+    Compacted,
 }
 
 /// The editing operations; see the module docs for what every edit promises.
@@ -85,7 +100,9 @@ pub trait MeshEdit: MeshTopology {
     /// Splits face `f` into a fan of triangles around a new vertex at `p`.
     fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId>;
     /// Collapses the edge from `from` to `to` into `to`: `from` and the one or two triangles
-    /// of the edge are deleted. Refused unless the link condition holds.
+    /// of the edge are deleted. Refused unless the link condition holds
+    /// ([`Refusal::LinkCondition`]) and OpenMesh's tetrahedron test passes
+    /// ([`Refusal::TetrahedronTest`]).
     fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()>;
     /// Would `collapse_edge(from, to)` be done? Its tests alone, nothing changed: `Ok(())`,
     /// or the refusal it would return. A decimater that keeps only legal candidates asks

@@ -20,7 +20,8 @@ pub enum EditOp {
     SplitEdge,
     /// Split a face into a fan of triangles around a new vertex.
     SplitFace,
-    /// Collapse an edge into one of its end vertices, with the link condition checked.
+    /// Collapse an edge into one of its end vertices, with the link condition and OpenMesh's
+    /// tetrahedron test checked.
     CollapseEdge,
     /// Split a vertex into an edge and two triangles: the inverse of a collapse.
     SplitVertex,
@@ -96,11 +97,35 @@ pub enum Refusal {
     EdgeExists,
     /// The vertices asked for are not neighbours as the operation needs.
     NotNeighbours,
-    /// A collapse that fails the link condition (the one-rings of the two vertices share a
-    /// vertex that is not on a triangle of the edge), or that would join two boundaries
-    /// through an interior edge or close a boundary triangle: the result would not be a
-    /// manifold.
+    /// A collapse of the edge from `v0` to `v1` refused by the link condition as pmp-library's
+    /// `SurfaceMesh::is_collapse_ok` (and OpenMesh's `TriConnectivity::is_collapse_ok`) state
+    /// it, with `vl` and `vr` the third corners of the edge's one or two triangles:
+    /// - the link condition proper: the one-rings of `v0` and `v1` share a vertex other than
+    ///   `vl` and `vr` (on the canonical `torus`, edge 1 = v3 - v4, whose rings share v5 as
+    ///   well: edge v4 - v5 would have four triangles);
+    /// - and the rules `is_collapse_ok` adds for the boundary and degenerate cases: a triangle
+    ///   of the edge whose two other edges are both boundary edges (the collapse would leave an
+    ///   edge without faces), `vl` equal to `vr` (the edge's two triangles share their third
+    ///   corner), and an interior edge between two boundary vertices (the collapse would pinch
+    ///   the boundary at one vertex).
+    ///
+    /// The C++ baselines also return it where the library's own test, asked after the lab's,
+    /// fails (OpenMesh's `is_collapse_ok`, CGAL's `Euler::does_satisfy_link_condition`), and the
+    /// CHE's edge split where the edge's two triangles share their third corner (the new edge
+    /// to it would have four triangles). OpenMesh's tetrahedron test is
+    /// [`Refusal::TetrahedronTest`], not this. See `docs/editing.md` for an allowed and a
+    /// refused example.
     LinkCondition,
+    /// A collapse refused by OpenMesh's tetrahedron test, which is not the link condition:
+    /// the third corners `vl` and `vr` of the edge's two triangles are neighbours and both have
+    /// valence 3. OpenMesh's Decimater asks it in `BaseDecimaterT::is_collapse_legal`, after
+    /// `is_collapse_ok`; pmp-library's `is_collapse_ok` does not have it. On a closed
+    /// tetrahedron it refuses a collapse that would leave two triangles on the same three
+    /// vertices, which the one-ring test passes. It refuses more than that: on the open
+    /// tetrahedron (the CHE thesis chapter's Figure 4.10) the collapse of edge 1 (v1 into the
+    /// apex v3) passes the link condition and would leave one valid triangle, (2, 0, 3), but
+    /// v0 and v2 are neighbours of valence 3, so it is refused. See `docs/editing.md`.
+    TetrahedronTest,
     /// Boundary curves to weld run the same way where they meet: the result would not be
     /// oriented.
     Orientation,
@@ -124,7 +149,10 @@ impl Refusal {
             Refusal::EdgeExists => "the edge it would create exists already",
             Refusal::NotNeighbours => "the vertices are not neighbours as required",
             Refusal::LinkCondition => {
-                "the link condition fails: the result would not be a manifold"
+                "the link condition fails: the result would not be a manifold with the mesh's topology"
+            }
+            Refusal::TetrahedronTest => {
+                "OpenMesh's tetrahedron test fails (it is not the link condition): the third corners of the edge's two triangles are neighbours and both have valence 3"
             }
             Refusal::Orientation => {
                 "the boundary curves run the same way where they meet: the result would not be oriented"

@@ -111,7 +111,8 @@ pub(crate) fn is_boundary_vertex<M: MeshTopology>(m: &M, v: VertexId) -> bool {
 pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
 
 /// The test of [`MeshEdit::collapse_edge`](crate::core::edit::MeshEdit::collapse_edge) over
-/// the queries alone (pmp-library's `is_collapse_ok` with OpenMesh's tetrahedron test), so that
+/// the queries alone (pmp-library's `is_collapse_ok`, refused as [`Refusal::LinkCondition`],
+/// with OpenMesh's tetrahedron test, refused as [`Refusal::TetrahedronTest`]), so that
 /// any structure can run it (`is_deleted` tells the vertices an edit deleted): the faces around
 /// `from` with their corners when the collapse may be done, the refusal otherwise.
 /// [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse)'s default, and the
@@ -155,10 +156,11 @@ pub fn check_collapse<M: MeshTopology>(
     if left == right {
         return no(Refusal::LinkCondition);
     }
+    // OpenMesh's tetrahedron test (its Decimater's `is_collapse_legal`), not the link condition.
     if let (Some(l), Some(r)) = (left, right) {
         let valence = |v: VertexId| neighbours(m, v).len();
         if neighbours(m, l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
-            return no(Refusal::LinkCondition);
+            return no(Refusal::TetrahedronTest);
         }
     }
     if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {

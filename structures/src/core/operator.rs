@@ -170,6 +170,9 @@ pub enum Cost {
     Log,
     /// O(k): proportional to the local neighbourhood (deg v, or the k of a k-gon).
     Local,
+    /// O(k²): a local search for each of the k local elements (e.g. each neighbour of one
+    /// vertex looked for in the ring of another, as a collapse's link condition does).
+    LocalSquared,
     /// O(∂n1): proportional to the boundary.
     Boundary,
     /// O(n): a scan of one of the element lists.
@@ -187,6 +190,7 @@ impl Cost {
             Cost::Constant => "O(1)",
             Cost::Log => "O(log n)",
             Cost::Local => "O(k)",
+            Cost::LocalSquared => "O(k²)",
             Cost::Boundary => "O(∂n1)",
             Cost::Linear => "O(n)",
             Cost::LocalTimesLinear => "O(k·n)",
@@ -199,7 +203,7 @@ impl Cost {
     /// generated meshes' boundaries grow like √n, so 0.5.
     pub const fn expected_exponent(self) -> f64 {
         match self {
-            Cost::Constant | Cost::Log | Cost::Local => 0.0,
+            Cost::Constant | Cost::Log | Cost::Local | Cost::LocalSquared => 0.0,
             Cost::Boundary => 0.5,
             Cost::Linear | Cost::LocalTimesLinear => 1.0,
             Cost::Quadratic => 2.0,

@@ -1,15 +1,19 @@
 //! The editing operations of [`MeshEdit`] written once over one primitive, [`FaceRewrite`]:
-//! replace a few faces by a few others. That is how the lecture on polygon-mesh data
-//! structures describes editing for the structures whose records are faces and edges rather
-//! than half-edges (the winged-edge, the edge list, the vertex list): an operation reads the
-//! neighbourhood it changes through the structure's own queries, checks that the result is an
-//! oriented manifold, and rewrites the faces of that neighbourhood. Each operation costs what
-//! its queries cost in that structure plus the rewrite: O(k) where the queries are local (the
-//! winged-edge), O(n) where a neighbour is found by a scan (the vertex list).
+//! replace a few faces by a few others, for the structures whose records are faces and edges
+//! rather than half-edges (the winged-edge, the edge list, the vertex list). The procedure is
+//! the lab's own: the lecture on polygon-mesh data structures lists the operations a structure
+//! must offer and gives these structures' query costs, but describes no way of carrying an
+//! edit out; the operations and their checks are those of pmp-library and OpenMesh. An
+//! operation reads the neighbourhood it changes through the structure's own queries, checks
+//! that the result is an oriented manifold, and rewrites the faces of that neighbourhood. Each
+//! operation costs what its queries cost in that structure plus the rewrite: O(k) where the
+//! queries are local (the winged-edge), O(n) where a neighbour is found by a scan (the vertex
+//! list).
 //!
 //! Every operation checks first and refuses with [`Error::EditRefused`](crate::Error::EditRefused) before its first
 //! write, so a refused edit changes nothing. The checks are those of the half-edge libraries
-//! (pmp-library's `is_collapse_ok` for a collapse, no existing edge for a flip), and the
+//! (pmp-library's `is_collapse_ok` with the tetrahedron test of OpenMesh's Decimater for a
+//! collapse, no existing edge for a flip as in pmp-library's `is_flip_ok`), and the
 //! manifold check of a rewrite is local: only the vertices of the faces removed or added can
 //! change their fans, so for each the faces around it after the rewrite must meet every
 //! directed edge at most once (no edge with three faces, none run twice the same way) and form

@@ -1,6 +1,7 @@
 //! The editing suite: random sequences of [`MeshEdit`] operations on a structure, each
 //! applied as well to a naive [`Model`] (a face list edited by hand), with every refusal
-//! checked against the model's own reason and, after every edit, `validate()`, the live faces
+//! checked against the model (which says whether an edit must be refused, not for which
+//! [`Refusal`](crate::Refusal)) and, after every edit, `validate()`, the live faces
 //! compared with the model's, and, when nothing is marked deleted, every relation compared
 //! with the [`Oracle`](crate::testing::oracle::Oracle) rebuilt from the structure's face list
 //! ([`compare`]). The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
@@ -128,8 +129,8 @@ impl Model {
     }
 
     /// The model after collapsing `v0` into `v1`, or `None` when the collapse must be refused
-    /// (pmp-library's `is_collapse_ok` with OpenMesh's tetrahedron test, worked out on the
-    /// face list).
+    /// (pmp-library's `is_collapse_ok` with the tetrahedron test of OpenMesh's Decimater,
+    /// worked out on the face list).
     pub fn collapse(&self, v0: u32, v1: u32) -> Option<Model> {
         expect(self, &Edit::Collapse(v0, v1), false)
     }
@@ -410,7 +411,8 @@ fn expect(model: &Model, edit: &Edit, weld: bool) -> Option<Model> {
             if around.iter().any(|&f| !model.triangle(f)) {
                 return None;
             }
-            // pmp's is_collapse_ok, naively.
+            // pmp's is_collapse_ok, naively, with OpenMesh's tetrahedron test after its
+            // `left == right` rule (the model tells no refusal's reason).
             let left = model.face_with(v0, v1).map(|(f, c)| model.third(f, c));
             let right = model.face_with(v1, v0).map(|(f, c)| model.third(f, c));
             for (side, a, b) in [(left, v1, v0), (right, v0, v1)] {

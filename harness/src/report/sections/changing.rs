@@ -43,6 +43,7 @@ const SECONDS_PER_ELEMENT: f64 = 1e-9;
 fn elements(c: Cost, n: f64) -> f64 {
     match c {
         Cost::Constant | Cost::Log | Cost::Local | Cost::Boundary => 6.0,
+        Cost::LocalSquared => 36.0,
         Cost::Linear => n,
         Cost::LocalTimesLinear => 6.0 * n,
         Cost::Quadratic => n * n,

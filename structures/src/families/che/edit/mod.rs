@@ -21,11 +21,13 @@
 //!   boundary half-edge; otherwise the curves are relabelled from scratch (Algorithm 4, O(n)):
 //!   a boundary change can join or split curves, which no local patch of `CH[]` tells.
 //!
-//! Deleting a triangle compacts the arrays at once: the last triangle moves into its slot (its
-//! three `V[]` and `O[]` entries, the `O[]` of its up to three neighbours, the `VH[]` and `CH[]`
-//! entries that named its half-edges), so face ids change and no face is ever marked. Vertices
-//! are marked ([`Deletion::Marked`]): a deleted vertex keeps its slot in `G[]` (and `VH[v] =
-//! -1`) until [`MeshEdit::garbage_collection`] renumbers `V[]`.
+//! Deleting a triangle compacts the arrays at once ([`Deletion::Compacted`]): the last triangle
+//! moves into its slot (its three `V[]` and `O[]` entries, the `O[]` of its up to three
+//! neighbours, the `VH[]` and `CH[]` entries that named its half-edges; a face deletion and a
+//! collapse), or, where a vertex is deleted with its star, the rebuild keeps the other
+//! triangles in order and those after the star shift down; so face ids change and no face is
+//! ever marked. Only vertices are marked: a deleted vertex keeps its slot in `G[]` (and `VH[v]
+//! = -1`) until [`MeshEdit::garbage_collection`] renumbers `V[]`.
 //!
 //! Add face, delete face, delete vertex, split vertex and weld vertices are done by rebuilding
 //! `O[]`, `VH[]`, `EH` and `CH[]` from an edited copy of `V[]` with the fast construction
@@ -232,7 +234,7 @@ macro_rules! che_edit {
         }
 
         impl MeshEdit for $ty {
-            const DELETION: Deletion = Deletion::Marked;
+            const DELETION: Deletion = Deletion::Compacted;
 
             fn edit_cost(op: EditOp) -> Cost {
                 edit_cost($level, op)

@@ -418,8 +418,10 @@ impl Parts<'_> {
         Ok(n)
     }
 
-    /// The link condition as pmp-library's `is_collapse_ok` states it (see the half-edge's
-    /// collapse), asked through this level's relations.
+    /// The link condition as pmp-library's `is_collapse_ok` states it
+    /// ([`Refusal::LinkCondition`]), with OpenMesh's tetrahedron test after its `vl == vr` rule
+    /// ([`Refusal::TetrahedronTest`]; see the half-edge's collapse), asked through this level's
+    /// relations.
     fn collapse_ok(&self, from: u32, to: u32) -> Result<(), Refusal> {
         let third = |a: u32, b: u32| self.find(a, b).map(|h| self.v[pv(h) as usize]);
         let (left, right) = (third(from, to), third(to, from));
@@ -436,7 +438,7 @@ impl Parts<'_> {
         if let (Some(l), Some(r)) = (left, right) {
             let valence = |x: u32| self.neighbours(x).len();
             if self.neighbours(l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
-                return Err(Refusal::LinkCondition);
+                return Err(Refusal::TetrahedronTest);
             }
         }
         if self.is_boundary_vertex(from)

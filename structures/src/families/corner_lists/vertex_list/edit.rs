@@ -1,6 +1,20 @@
 //! [`MeshEdit`](crate::MeshEdit) for the vertex list: the operations of
 //! [`crate::core::rewrite`] over its one array of corners.
 //!
+//! ## The lecture's operations
+//!
+//! The lecture on polygon-mesh data structures lists the operations a structure must offer:
+//! select, insert, delete, weld, rotate and scale vertices, edges and faces, and weld whole
+//! meshes (smoothing, refinement and thinning it lists apart, as what is changed in a mesh,
+//! and they are not operations of this module). Of that list the structure offers the insertion
+//! and deletion of vertices and faces, the vertex weld and the weld of whole meshes
+//! ([`weld_meshes`](crate::algorithms::weld::weld_meshes)). Not implemented: selection,
+//! rotation and scaling (only [`MeshEdit::set_position`](crate::MeshEdit::set_position) moves
+//! one vertex), the insertion or deletion of an edge on its own (a diagonal splitting a face,
+//! or removing an edge to merge its two faces), and the weld of edges or faces. The flip, the
+//! edge and face splits, the collapse and the vertex split are pmp-library's and OpenMesh's
+//! operations, not the lecture's.
+//!
 //! ## Costs
 //!
 //! The lecture on polygon-mesh data structures says of the vertex list that "finding shared
@@ -8,8 +22,8 @@
 //! vertex or an edge scans all faces (the queries' O(n), see the module docs), once per
 //! vertex it checks. Writing the faces is cheap when a face keeps its number of corners (in
 //! place) or is appended, and shifts the corners after it (O(n)) when a polygon becomes a
-//! triangle. Every operation of the lecture's list is implemented; none is refused for being
-//! unsupported.
+//! triangle. Every operation of [`MeshEdit`](crate::MeshEdit) is implemented; none is refused
+//! for being unsupported.
 //!
 //! | operation | reads | cost |
 //! |---|---|---|

@@ -1,6 +1,20 @@
 //! [`MeshEdit`](crate::MeshEdit) for the edge list: the operations of
 //! [`crate::core::rewrite`] over its edge arrays and polygon lists.
 //!
+//! ## The lecture's operations
+//!
+//! The lecture on polygon-mesh data structures lists the operations a structure must offer:
+//! select, insert, delete, weld, rotate and scale vertices, edges and faces, and weld whole
+//! meshes (smoothing, refinement and thinning it lists apart, as what is changed in a mesh,
+//! and they are not operations of this module). Of that list the structure offers the insertion
+//! and deletion of vertices and faces, the vertex weld and the weld of whole meshes
+//! ([`weld_meshes`](crate::algorithms::weld::weld_meshes)). Not implemented: selection,
+//! rotation and scaling (only [`MeshEdit::set_position`](crate::MeshEdit::set_position) moves
+//! one vertex), the insertion or deletion of an edge on its own (a diagonal splitting a face,
+//! or removing an edge to merge its two faces), and the weld of edges or faces. The flip, the
+//! edge and face splits, the collapse and the vertex split are pmp-library's and OpenMesh's
+//! operations, not the lecture's.
+//!
 //! ## Costs
 //!
 //! From the lecture's table *Operationen in der Kantenliste*: what is around an edge or a
@@ -8,7 +22,7 @@
 //! whatever is around a vertex is a scan of all n edges. So an edit costs one scan per vertex
 //! whose fan it checks, and a rewrite finds the edges its new polygons share with the rest of
 //! the mesh by one more scan of the edges (those of the polygons it replaces are found
-//! without one). Every operation of the lecture's list is implemented.
+//! without one).
 //!
 //! | operation | reads | cost |
 //! |---|---|---|

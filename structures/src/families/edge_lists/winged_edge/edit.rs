@@ -23,7 +23,7 @@
 //! | flip edge | the two triangles (`fccw`, `fcw`), the ring of one far corner | two faces and the edge rewritten in place | O(k) |
 //! | split edge | the one or two triangles | a vertex, up to three edges and two faces | O(k) |
 //! | split face | the face's cycle | a vertex, k spokes, k − 1 faces | O(k) |
-//! | collapse edge | the link condition on the two rings (O(k²), declared O(k) as for the half-edges) | the faces around the removed vertex | O(k) |
+//! | collapse edge | the link condition on the two rings (each neighbour of one end looked for in the other's ring, O(k²)) and the tetrahedron test | the faces around the removed vertex | O(k²) |
 //! | split vertex | one side of the fan | the moved faces, three edges, two faces | O(k) |
 //! | weld vertices | the two fans and their neighbours' | the faces around the welded vertex | O(k) |
 //! | garbage collection | every record | vertices renumbered | O(n) |
@@ -55,9 +55,10 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::FlipEdge
         | EditOp::SplitEdge
         | EditOp::SplitFace
-        | EditOp::CollapseEdge
         | EditOp::SplitVertex
         | EditOp::WeldVertices => Cost::Local,
+        // The link condition compares the two rings (see the table).
+        EditOp::CollapseEdge => Cost::LocalSquared,
     }
 }
 

@@ -568,8 +568,12 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
 
     // --- collapse and its inverse ----------------------------------------------------------
 
-    /// pmp's `is_collapse_ok` for the half-edge `h` from v0 to v1 (both sides triangles).
-    fn is_collapse_ok(&self, h: u32) -> bool {
+    /// pmp's `is_collapse_ok` for the half-edge `h` from v0 to v1 (both sides triangles), with
+    /// OpenMesh's tetrahedron test (its Decimater's `is_collapse_legal`) after pmp's `vl == vr`
+    /// rule: `None` when the collapse may be done, else the refusal,
+    /// [`Refusal::TetrahedronTest`] for the tetrahedron test and [`Refusal::LinkCondition`]
+    /// for every other test.
+    fn collapse_refusal(&self, h: u32) -> Option<Refusal> {
         let o = h ^ 1;
         let (v0, v1) = (self.start_v(h), self.to_v(h));
         let (mut vl, mut vr) = (NONE, NONE);
@@ -579,7 +583,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             vl = self.to_v(h1);
             // The edges v1-vl and vl-v0 must not both be boundary edges.
             if self.is_bnd(h1 ^ 1) && self.is_bnd(h2 ^ 1) {
-                return false;
+                return Some(Refusal::LinkCondition);
             }
         }
         if !self.is_bnd(o) {
@@ -587,21 +591,23 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             let o2 = self.nx(o1);
             vr = self.to_v(o1);
             if self.is_bnd(o1 ^ 1) && self.is_bnd(o2 ^ 1) {
-                return false;
+                return Some(Refusal::LinkCondition);
             }
         }
         if vl == vr {
-            return false;
+            return Some(Refusal::LinkCondition);
         }
-        // OpenMesh's tetrahedron test: collapsing an edge of a closed tetrahedron would leave
-        // two triangles on the same three vertices.
+        // OpenMesh's tetrahedron test, not the link condition: collapsing an edge of a closed
+        // tetrahedron would leave two triangles on the same three vertices, which the one-ring
+        // test below passes; the test refuses every collapse whose vl and vr are neighbours of
+        // valence 3 (on the open tetrahedron too, where the result would be one triangle).
         if vl != NONE
             && vr != NONE
             && self.find_half_edge(vl, vr) != NONE
             && self.has_valence(vl, 3)
             && self.has_valence(vr, 3)
         {
-            return false;
+            return Some(Refusal::TetrahedronTest);
         }
         // An edge between two boundary vertices must be a boundary edge.
         if self.is_boundary_vertex_id(v0)
@@ -609,7 +615,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
             && !self.is_bnd(h)
             && !self.is_bnd(o)
         {
-            return false;
+            return Some(Refusal::LinkCondition);
         }
         // The link condition: the one-rings of v0 and v1 share only vl and vr.
         let start = self.out_of(v0);
@@ -617,11 +623,11 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         loop {
             let vv = self.to_v(g);
             if vv != v1 && vv != vl && vv != vr && self.find_half_edge(vv, v1) != NONE {
-                return false;
+                return Some(Refusal::LinkCondition);
             }
             g = self.cw(g);
             if g == start {
-                return true;
+                return None;
             }
         }
     }
@@ -648,8 +654,8 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
                 break;
             }
         }
-        if !self.is_collapse_ok(h) {
-            return Err(Self::refuse(op, Refusal::LinkCondition));
+        if let Some(reason) = self.collapse_refusal(h) {
+            return Err(Self::refuse(op, reason));
         }
         Ok(h)
     }

@@ -23,7 +23,7 @@
 //! | flip edge | relink two triangles; refuse if the new edge exists (a rotation) | O(k) |
 //! | split edge | one new vertex, up to three edges and two faces, relinked in place | O(1) with `prev`, O(k) without |
 //! | split face | a fan of k triangles around the new vertex | O(k) |
-//! | collapse edge | the link condition (each neighbour of one end against the other's ring, O(k²), declared O(k)), then re-point the removed vertex's half-edges | O(k) |
+//! | collapse edge | the link condition (each neighbour of one end looked for by `find_halfedge` around the other, O(k²)) and the tetrahedron test, then re-point the removed vertex's half-edges (O(k)) | O(k²) |
 //! | split vertex | move the half-edges of one side of the fan, add three edges and two triangles | O(k) |
 //! | garbage collection | rebuild the storage from the survivors | O(n) |
 //! | weld vertices | the lecture's "weld vertices": checks, rename the half-edges leaving one vertex, merge the one or two pairs of boundary edges where the fans meet (the freed pair marked) | O(k) + O(1) per merged edge (O(k) without `prev`) |
@@ -151,8 +151,9 @@ fn edit_cost(op: EditOp, predecessor: Cost) -> Cost {
         | EditOp::DeleteVertex
         | EditOp::FlipEdge
         | EditOp::SplitFace
-        | EditOp::CollapseEdge
         | EditOp::SplitVertex => Cost::Local,
+        // Each neighbour of one end looked for in the other's rotation (see the table).
+        EditOp::CollapseEdge => Cost::LocalSquared,
     }
 }
 
