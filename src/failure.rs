@@ -13,7 +13,7 @@ pub struct Failure {
 
 impl Failure {
     /// An input that cannot be read as a mesh (exit code 2).
-    pub fn unreadable(what: &str, e: Error) -> Self {
+    pub fn unreadable(what: &str, e: &Error) -> Self {
         Self {
             message: format!("cannot read {what}: {e}"),
             code: 2,

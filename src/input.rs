@@ -5,7 +5,7 @@ pub use crate::failure::Failure;
 use crate::{limits, registry};
 use std::path::Path;
 use topolab_structures::meshes::{self, MeshSize, SpecError};
-use topolab_structures::PolygonSoup;
+use topolab_structures::{Error, PolygonSoup};
 
 /// Refuses an input path that is not a regular file: a directory cannot be read as a mesh, and
 /// a device or pipe (`/dev/zero`) may never end. Returns the file's size in bytes.
@@ -30,11 +30,48 @@ pub fn input_file(path: &Path) -> Result<u64, Failure> {
 }
 
 /// Reads a mesh file for a command, refusing before reading one whose reading would exceed the
-/// available memory ([`limits::read_bytes`]).
+/// available memory ([`limits::read_bytes`]). What the reader skipped (it does not change the
+/// mesh: an unknown OBJ statement, bytes after a binary PLY's last element) is one warning line
+/// on stderr per kind.
 fn read_file(spec: &str, path: &Path) -> Result<PolygonSoup, Failure> {
     let bytes = input_file(path)?;
     limits::admit(&format!("reading {spec}"), limits::read_bytes(bytes))?;
-    topolab_structures::io::read(path).map_err(|e| Failure::unreadable(spec, e))
+    let (soup, skipped) = topolab_structures::io::read_with_skips(path).map_err(|e| {
+        let mut failure = Failure::unreadable(spec, &e);
+        failure.message += &invalid_mesh_hint(spec, &e);
+        failure
+    })?;
+    warn_skipped(spec, &skipped);
+    Ok(soup)
+}
+
+/// One warning line on stderr per kind of thing the reader skipped in `spec`.
+pub fn warn_skipped(spec: &str, skipped: &[topolab_structures::io::Skipped]) {
+    for s in skipped {
+        eprintln!("topolab: warning: {spec}: {s}");
+    }
+}
+
+/// Where to go next when `spec` reads but is not a mesh the command can use (`e` says why): an
+/// empty string unless `spec` is a file and `e` a problem of the mesh itself (a face repeating
+/// a vertex, a non-manifold edge or vertex, faces that disagree on orientation), which
+/// `topolab check` lists in full and, for the manifold problems, `topolab repair` fixes.
+pub fn invalid_mesh_hint(spec: &str, e: &Error) -> String {
+    if !Path::new(spec).is_file() {
+        return String::new();
+    }
+    if e.is_non_manifold() {
+        format!(
+            " (`topolab check {spec}` lists every problem; `topolab repair {spec} --out FIXED.obj` repairs it)"
+        )
+    } else if matches!(
+        e,
+        Error::RepeatedVertex { .. } | Error::TooFewCorners { .. } | Error::IndexOutOfRange { .. }
+    ) {
+        format!(" (`topolab check {spec}` lists every problem of the file)")
+    } else {
+        String::new()
+    }
 }
 
 /// The failure for a name that is no file and no built-in mesh it can generate.

@@ -52,6 +52,7 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
         message: format!("cannot read {name}: {e}"),
         code: 2,
     })?;
+    crate::input::warn_skipped(&name, &raw.skipped);
     let sample = limits::sample_mesh();
     let corners = raw.soup.num_corners() as u64;
     let sample_corners = sample.num_corners() as u64;
@@ -59,6 +60,7 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
         let sample = RawSoup {
             soup: sample,
             unrepresentable: Vec::new(),
+            skipped: Vec::new(),
         };
         let ((), peak) = limits::peak_of(|| {
             checks::check(&sample, options);

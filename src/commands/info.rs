@@ -1,7 +1,7 @@
 //! `topolab info`: counts, boundary curves, Euler characteristic and genus of a mesh, computed
 //! through a structure.
 
-use crate::input::{load_mesh, refuse_empty, unknown_structure, Failure};
+use crate::input::{invalid_mesh_hint, load_mesh, refuse_empty, unknown_structure, Failure};
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
 use topolab_structures::summary::{shown, summarize, Summary};
@@ -40,7 +40,10 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
     let (summary, non_manifold_vertices) =
         summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
     let summary = summary.map_err(|e| Failure {
-        message: format!("{structure} cannot store {spec}: {e}"),
+        message: format!(
+            "{structure} cannot store {spec}: {e}{}",
+            invalid_mesh_hint(spec, &e)
+        ),
         code: 1,
     })?;
     if json {

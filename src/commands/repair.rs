@@ -59,6 +59,7 @@ fn check_output(soup: &PolygonSoup) -> Report {
     let raw = RawSoup {
         soup: soup.clone(),
         unrepresentable: Vec::new(),
+        skipped: Vec::new(),
     };
     checks::check(&raw, &Options::default())
 }

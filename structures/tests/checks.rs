@@ -14,6 +14,7 @@ fn report(soup: &PolygonSoup) -> Report {
     let raw = RawSoup {
         soup: soup.clone(),
         unrepresentable: vec![],
+        skipped: Vec::new(),
     };
     check(&raw, &Options::default())
 }
@@ -218,6 +219,7 @@ fn duplicate_vertices_are_found_within_the_tolerance_across_grid_cells() {
     let raw = |s: PolygonSoup| RawSoup {
         soup: s,
         unrepresentable: vec![],
+        skipped: Vec::new(),
     };
     let duplicates = |r: &Report| -> Vec<Vec<u32>> {
         r.findings
@@ -284,6 +286,7 @@ fn polygon_checks_tell_planar_convex_and_simple_apart() {
     let raw = RawSoup {
         soup: bent,
         unrepresentable: vec![],
+        skipped: Vec::new(),
     };
     assert!(check(&raw, &loose).findings.is_empty());
 }

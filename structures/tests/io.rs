@@ -100,6 +100,46 @@ fn ply_ascii_keeps_double_precision() {
     );
 }
 
+/// What loses nothing of the mesh is skipped and listed: OBJ statements the lab does not know
+/// (per keyword, with a count and the first line), bytes after a binary PLY's last element.
+#[test]
+fn unknown_obj_statements_and_trailing_ply_bytes_are_skipped_and_listed() {
+    let obj = "v 0 0 0\nvc 1 0 0\nv 1 0 0\nvc 0 1 0\nv 0 1 0\nfoo\nvc 0 0 1\nf 1 2 3\n";
+    let raw = read_bytes_raw(obj.as_bytes(), Format::Obj).unwrap();
+    assert_eq!(raw.soup.num_faces(), 1);
+    let shown: Vec<String> = raw.skipped.iter().map(|s| s.to_string()).collect();
+    assert_eq!(
+        shown,
+        [
+            "skipped 3 times unknown OBJ statement \"vc\", first at line 2",
+            "skipped unknown OBJ statement \"foo\" at line 6",
+        ]
+    );
+    let soup = meshes::quad_cube();
+    for trailing in [&b"\n"[..], b"\r\n", b"\0\0\0"] {
+        let mut ply = binary_ply(&soup, false);
+        let end = ply.len();
+        ply.extend_from_slice(trailing);
+        let raw = read_bytes_raw(&ply, Format::Ply).unwrap();
+        assert_eq!(raw.soup, soup);
+        assert_eq!(raw.skipped.len(), 1);
+        assert_eq!(raw.skipped[0].first, Location::Byte(end as u64));
+        assert!(raw.skipped[0]
+            .what
+            .starts_with(&format!("{} byte", trailing.len())));
+    }
+    // What would change the mesh stays an error: a short body, a malformed number.
+    let ply = binary_ply(&soup, false);
+    assert!(matches!(
+        error(&ply[..ply.len() - 1], Format::Ply),
+        Error::Truncated { .. }
+    ));
+    assert!(matches!(
+        error(b"v 0 0 0\nvc 1 0 0\nv 1 x 0\n", Format::Obj),
+        Error::Syntax { .. }
+    ));
+}
+
 fn error(bytes: &[u8], format: Format) -> Error {
     read_bytes(bytes, format).expect_err("the file is bad")
 }
@@ -108,7 +148,7 @@ fn error(bytes: &[u8], format: Format) -> Error {
 fn syntax_errors_name_their_line() {
     for (text, format, line) in [
         ("v 0 0 0\nv 1 x 0\n", Format::Obj, 2),
-        ("v 0 0 0\n\nfoo bar\n", Format::Obj, 3),
+        ("v 0 0 0\n\nv 1 2\n", Format::Obj, 3),
         ("v 0 0 0\nf 1 a 1\n", Format::Obj, 2),
         ("OFF\n1 0 0\n0 zero 0\n", Format::Off, 3),
         ("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n3 0 1 2\n", Format::Off, 6),

@@ -7,8 +7,15 @@
 //!
 //! [`read_raw`] and [`read_bytes_raw`] stop short of that check and return a [`RawSoup`]: the
 //! file as written, so that `topolab check` can report every problem instead of the first.
+//!
+//! Tolerant where tolerance loses nothing of the mesh, as other readers are (OpenMesh's, tobj):
+//! OBJ statements the lab does not know (`vc`, vendor extensions) and bytes after a binary
+//! PLY's last element (a trailing newline, padding) are skipped and listed in
+//! [`RawSoup::skipped`] ([`read_with_skips`] returns them, for a warning line); anything that
+//! would change the mesh (a short body, an index out of range, a malformed number) stays an
+//! error with its line or byte.
 
-use crate::core::error::{Error, Format, Result};
+use crate::core::error::{Error, Format, Location, Result};
 use crate::core::soup::PolygonSoup;
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -39,6 +46,14 @@ mod text;
 /// ([`RawSoup::into_checked`]).
 pub fn read(path: &Path) -> Result<PolygonSoup> {
     read_raw(path)?.into_checked()
+}
+
+/// [`read`], with what the reader skipped because it does not change the mesh (for a
+/// warning: see the module docs).
+pub fn read_with_skips(path: &Path) -> Result<(PolygonSoup, Vec<Skipped>)> {
+    let mut raw = read_raw(path)?;
+    let skipped = std::mem::take(&mut raw.skipped);
+    Ok((raw.into_checked()?, skipped))
 }
 
 /// Reads a mesh from memory and checks it ([`RawSoup::into_checked`]).
@@ -92,6 +107,33 @@ pub struct RawSoup {
     pub soup: PolygonSoup,
     /// Every index that did not fit a `u32`, in file order.
     pub unrepresentable: Vec<UnrepresentableIndex>,
+    /// What the reader skipped because it does not change the mesh, in file order.
+    pub skipped: Vec<Skipped>,
+}
+
+/// Something of a file a reader skipped because it does not change the mesh (see the module
+/// docs): a warning for the user, not an error.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Skipped {
+    /// What was skipped, e.g. `unknown OBJ statement "vc"`.
+    pub what: String,
+    /// How many times.
+    pub count: usize,
+    /// Where the first one is.
+    pub first: Location,
+}
+
+impl std::fmt::Display for Skipped {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.count {
+            1 => write!(f, "skipped {} at {}", self.what, self.first),
+            n => write!(
+                f,
+                "skipped {n} times {}, first at {}",
+                self.what, self.first
+            ),
+        }
+    }
 }
 
 impl RawSoup {
@@ -124,6 +166,7 @@ impl SoupBuilder {
             raw: RawSoup {
                 soup: PolygonSoup::with_capacity(vertices, faces, faces.saturating_mul(3)),
                 unrepresentable: Vec::new(),
+                skipped: Vec::new(),
             },
             face: Vec::new(),
         }

@@ -4,13 +4,15 @@
 //! Read: `v x y z` (extra `w` or colour values ignored) and `f` with corners `v`, `v/vt`,
 //! `v//vn`, `v/vt/vn`, 1-based or negative (relative to the vertices read so far). Every
 //! other statement of the OBJ specification (`vt`, `vn`, `o`, `g`, `s`, `usemtl`, `mtllib`,
-//! `l`, `p`, free-form geometry, ...) and comments are skipped; an unknown keyword is a syntax
-//! error, because it usually means the file is not OBJ at all. Line continuations (`\`) are
+//! `l`, `p`, free-form geometry, ...) and comments are skipped; so is a statement the
+//! specification does not have (`vc` vertex colours, vendor extensions), as tobj and OpenMesh
+//! skip it, but listed in [`RawSoup::skipped`] (per keyword: how often, and the first line), so
+//! that a file that is not OBJ at all does not pass unnoticed. Line continuations (`\`) are
 //! not supported.
 
 use super::text::{lines, parse_int, parse_or_syntax, position, strip_comment, syntax, tokens};
-use super::{RawSoup, SoupBuilder};
-use crate::core::error::{Format, Result};
+use super::{RawSoup, Skipped, SoupBuilder};
+use crate::core::error::{Format, Location, Result};
 
 /// OBJ statements that carry nothing a polygon soup stores.
 const SKIPPED: &[&[u8]] = &[
@@ -89,11 +91,15 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
             }
             other if SKIPPED.contains(&other) => {}
             other => {
-                return Err(syntax(
-                    OBJ,
-                    line.number,
-                    format!("unknown statement {:?}", String::from_utf8_lossy(other)),
-                ))
+                let what = format!("unknown OBJ statement {:?}", String::from_utf8_lossy(other));
+                match out.raw.skipped.iter_mut().find(|s| s.what == what) {
+                    Some(seen) => seen.count += 1,
+                    None => out.raw.skipped.push(Skipped {
+                        what,
+                        count: 1,
+                        first: Location::Line(line.number),
+                    }),
+                }
             }
         }
     }

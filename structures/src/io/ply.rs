@@ -7,7 +7,7 @@
 use super::text::{
     lines, parse_count, parse_f64, parse_int, parse_or_syntax, plausible, syntax, tokens, truncated,
 };
-use super::{RawSoup, SoupBuilder};
+use super::{RawSoup, Skipped, SoupBuilder};
 use crate::core::error::{Error, Format, Location, Result};
 use glam::DVec3;
 
@@ -116,7 +116,7 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
         remaining = plausible(PLY, what, e.count, min_bytes(e, header.encoding), remaining)?;
     }
     let mut out = SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize);
-    match header.encoding {
+    let skipped = match header.encoding {
         Encoding::Ascii => read_body(
             &mut AsciiValues {
                 bytes: body,
@@ -135,7 +135,8 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
             &header.elements,
             &mut out,
         )?,
-    }
+    };
+    out.raw.skipped.extend(skipped);
     Ok(out.finish())
 }
 
@@ -276,12 +277,17 @@ trait Values {
     fn skip(&mut self, ty: Scalar, n: u64) -> Result<()>;
     /// Where the next value starts.
     fn location(&self) -> Location;
-    /// Fails when anything but whitespace (ASCII) or anything at all (binary) is left: the
-    /// header's counts or types do not describe the body.
-    fn finish(&mut self) -> Result<()>;
+    /// Fails when anything but whitespace is left (ASCII: the header's counts or types do not
+    /// describe the body); in a binary body the bytes left (a trailing newline, padding) do
+    /// not change the mesh and are returned as skipped.
+    fn finish(&mut self) -> Result<Option<Skipped>>;
 }
 
-fn read_body(values: &mut impl Values, elements: &[Element], out: &mut SoupBuilder) -> Result<()> {
+fn read_body(
+    values: &mut impl Values,
+    elements: &[Element],
+    out: &mut SoupBuilder,
+) -> Result<Option<Skipped>> {
     for e in elements {
         for _ in 0..e.count {
             let mut xyz = [0.0; 3];
@@ -371,7 +377,7 @@ impl Values for AsciiValues<'_> {
     fn location(&self) -> Location {
         Location::Line(self.line)
     }
-    fn finish(&mut self) -> Result<()> {
+    fn finish(&mut self) -> Result<Option<Skipped>> {
         match self.token() {
             Ok(word) => Err(syntax(
                 PLY,
@@ -381,7 +387,7 @@ impl Values for AsciiValues<'_> {
                     String::from_utf8_lossy(word)
                 ),
             )),
-            Err(_) => Ok(()),
+            Err(_) => Ok(None),
         }
     }
 }
@@ -462,15 +468,15 @@ impl Values for BinaryValues<'_> {
     fn location(&self) -> Location {
         Location::Byte(self.pos as u64)
     }
-    fn finish(&mut self) -> Result<()> {
+    fn finish(&mut self) -> Result<Option<Skipped>> {
         let left = self.bytes.len() - self.pos;
-        if left == 0 {
-            return Ok(());
-        }
-        Err(Error::Syntax {
-            format: PLY,
-            location: self.location(),
-            message: format!("{left} bytes after the last element the header announces"),
-        })
+        Ok((left > 0).then(|| Skipped {
+            what: format!(
+                "{left} byte{} after the last element the header announces",
+                if left == 1 { "" } else { "s" }
+            ),
+            count: 1,
+            first: self.location(),
+        }))
     }
 }

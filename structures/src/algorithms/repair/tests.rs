@@ -22,6 +22,7 @@ fn kinds(soup: &PolygonSoup) -> Vec<FindingKind> {
     let raw = RawSoup {
         soup: soup.clone(),
         unrepresentable: Vec::new(),
+        skipped: Vec::new(),
     };
     let mut kinds: Vec<FindingKind> = checks::check(&raw, &Options::default())
         .findings
@@ -178,6 +179,7 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
         &RawSoup {
             soup: r.soup.clone(),
             unrepresentable: Vec::new(),
+            skipped: Vec::new(),
         },
         &Options::default(),
     );
