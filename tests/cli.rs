@@ -120,6 +120,49 @@ fn info_gives_one_answer_from_every_structure_that_stores_a_non_manifold_mesh() 
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// A file that reads but is not a mesh the structure can store: the message says why and
+/// where to go next (`check` for every problem, `repair` for the manifold ones); a file with
+/// statements the reader skips says so on stderr and is read.
+#[test]
+fn messages_point_to_check_and_repair_and_skipped_statements_are_warned() {
+    let dir = temp_dir("hints");
+    let bowtie = dir.join("bowtie.obj");
+    std::fs::write(
+        &bowtie,
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["info", bowtie.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("non-manifold"), "{stderr}");
+    assert!(stderr.contains("`topolab check "), "{stderr}");
+    assert!(stderr.contains("`topolab repair "), "{stderr}");
+    let coloured = dir.join("coloured.obj");
+    std::fs::write(
+        &coloured,
+        "v 0 0 0\nvc 1 0 0\nv 1 0 0\nvc 0 1 0\nv 0 1 0\nvc 0 0 1\nf 1 2 3\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["info", coloured.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        stderr.trim(),
+        format!(
+            "topolab: warning: {}: skipped 3 times unknown OBJ statement \"vc\", first at line 2",
+            coloured.display()
+        )
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn info_exits_2_on_an_unreadable_file_and_1_on_a_non_manifold_mesh() {
     let dir = temp_dir("exit-codes");
