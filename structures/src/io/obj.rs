@@ -10,7 +10,7 @@
 //! that a file that is not OBJ at all does not pass unnoticed. Line continuations (`\`) are
 //! not supported.
 
-use super::text::{lines, parse_int, parse_or_syntax, position, strip_comment, syntax, tokens};
+use super::text::{lines, parse_int, parse_or_syntax, position, strip_comment, tokens};
 use super::{RawSoup, Skipped, SoupBuilder};
 use crate::core::error::{Format, Location, Result};
 
