@@ -23,10 +23,6 @@ use topolab_structures::PolygonSoup;
 /// Files the two readers treat differently on purpose, and why; each must still differ.
 const DELIBERATE: &[(&str, &str)] = &[
     (
-        "obj-unknown-statement.obj",
-        "an unknown keyword (`face`) is a syntax error for the lab; tobj ignores the line",
-    ),
-    (
         "obj-index-out-of-range.obj",
         "the lab's raw reader keeps the index for `check` to report; tobj refuses the file",
     ),
