@@ -32,16 +32,24 @@ pub fn input_file(path: &Path) -> Result<u64, Failure> {
 /// Reads a mesh file for a command, refusing before reading one whose reading would exceed the
 /// available memory ([`limits::read_bytes`]). What the reader skipped (it does not change the
 /// mesh: an unknown OBJ statement, bytes after a binary PLY's last element) is one warning line
-/// on stderr per kind.
+/// on stderr per kind; the STL corners it welded into shared vertices, one note line.
 fn read_file(spec: &str, path: &Path) -> Result<PolygonSoup, Failure> {
     let bytes = input_file(path)?;
     limits::admit(&format!("reading {spec}"), limits::read_bytes(bytes))?;
-    let (soup, skipped) = topolab_structures::io::read_with_skips(path).map_err(|e| {
+    let (soup, notes) = topolab_structures::io::read_with_notes(path).map_err(|e| {
         let mut failure = Failure::unreadable(spec, &e);
         failure.message += &invalid_mesh_hint(spec, &e);
         failure
     })?;
-    warn_skipped(spec, &skipped);
+    warn_skipped(spec, &notes.skipped);
+    if notes.welded_corners > 0 {
+        eprintln!(
+            "topolab: note: {spec}: {} of {} STL corners welded to an earlier corner at exactly the same position ({} vertices)",
+            notes.welded_corners,
+            soup.num_corners(),
+            soup.num_vertices()
+        );
+    }
     Ok(soup)
 }
 

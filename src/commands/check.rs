@@ -16,7 +16,7 @@ const SHOWN_PER_KIND: usize = 10;
 /// Arguments of `topolab check`.
 #[derive(clap::Args, Debug)]
 pub struct CheckArgs {
-    /// The mesh file (.obj, .off, .ply).
+    /// The mesh file (.obj, .off, .ply, .stl).
     pub file: PathBuf,
     /// Print the findings and summary as JSON.
     #[arg(long)]
@@ -59,8 +59,7 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
     if corners > sample_corners {
         let sample = RawSoup {
             soup: sample,
-            unrepresentable: Vec::new(),
-            skipped: Vec::new(),
+            ..RawSoup::default()
         };
         let ((), peak) = limits::peak_of(|| {
             checks::check(&sample, options);

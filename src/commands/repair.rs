@@ -28,9 +28,9 @@ const TOPOLOGICAL: [FindingKind; 6] = [
 /// Arguments of `topolab repair`.
 #[derive(clap::Args, Debug)]
 pub struct RepairArgs {
-    /// The mesh file (.obj, .off, .ply).
+    /// The mesh file (.obj, .off, .ply, .stl).
     pub file: String,
-    /// The repaired mesh (.obj or .off).
+    /// The repaired mesh (.obj, .off or .stl).
     #[arg(long)]
     pub out: PathBuf,
     /// Steps not to run, comma separated: duplicate-faces, split-edges, split-vertices,
@@ -58,8 +58,7 @@ fn work(soup: &PolygonSoup, steps: &[Step]) -> u64 {
 fn check_output(soup: &PolygonSoup) -> Report {
     let raw = RawSoup {
         soup: soup.clone(),
-        unrepresentable: Vec::new(),
-        skipped: Vec::new(),
+        ..RawSoup::default()
     };
     checks::check(&raw, &Options::default())
 }

@@ -13,8 +13,7 @@ use topolab_structures::{Format, MeshTopology, PolygonSoup, VertexList};
 fn report(soup: &PolygonSoup) -> Report {
     let raw = RawSoup {
         soup: soup.clone(),
-        unrepresentable: vec![],
-        skipped: Vec::new(),
+        ..RawSoup::default()
     };
     check(&raw, &Options::default())
 }
@@ -218,8 +217,7 @@ fn duplicate_vertices_are_found_within_the_tolerance_across_grid_cells() {
     };
     let raw = |s: PolygonSoup| RawSoup {
         soup: s,
-        unrepresentable: vec![],
-        skipped: Vec::new(),
+        ..RawSoup::default()
     };
     let duplicates = |r: &Report| -> Vec<Vec<u32>> {
         r.findings
@@ -285,8 +283,7 @@ fn polygon_checks_tell_planar_convex_and_simple_apart() {
     };
     let raw = RawSoup {
         soup: bent,
-        unrepresentable: vec![],
-        skipped: Vec::new(),
+        ..RawSoup::default()
     };
     assert!(check(&raw, &loose).findings.is_empty());
 }

@@ -15,6 +15,8 @@ pub enum Format {
     Off,
     /// Stanford polygon file format (ASCII or binary).
     Ply,
+    /// STL, ASCII or binary (triangles with their corners' positions, welded on reading).
+    Stl,
 }
 
 impl std::fmt::Display for Format {
@@ -23,6 +25,7 @@ impl std::fmt::Display for Format {
             Format::Obj => "OBJ",
             Format::Off => "OFF",
             Format::Ply => "PLY",
+            Format::Stl => "STL",
         })
     }
 }
@@ -59,7 +62,7 @@ pub enum Error {
         source: std::io::Error,
     },
     /// The file name does not tell which format to read.
-    #[error("cannot tell the format of {path}: expected an .obj, .off or .ply file")]
+    #[error("cannot tell the format of {path}: expected an .obj, .off, .ply or .stl file")]
     UnknownFormat {
         /// The file.
         path: PathBuf,

@@ -1,4 +1,5 @@
-//! Reading and writing meshes: OBJ, OFF and PLY (ASCII and binary) in, OBJ and OFF out.
+//! Reading and writing meshes: OBJ, OFF, PLY and STL (ASCII and binary) in; OBJ, OFF and
+//! binary STL out.
 //!
 //! Readers return a [`PolygonSoup`] in file order (vertex i of the file is vertex i of the
 //! soup), already checked with [`PolygonSoup::check`]. Bad files give a typed [`Error`] with
@@ -11,7 +12,7 @@
 //! Tolerant where tolerance loses nothing of the mesh, as other readers are (OpenMesh's, tobj):
 //! OBJ statements the lab does not know (`vc`, vendor extensions) and bytes after a binary
 //! PLY's last element (a trailing newline, padding) are skipped and listed in
-//! [`RawSoup::skipped`] ([`read_with_skips`] returns them, for a warning line); anything that
+//! [`RawSoup::skipped`] ([`read_with_notes`] returns them, for a warning line); anything that
 //! would change the mesh (a short body, an index out of range, a malformed number) stays an
 //! error with its line or byte.
 
@@ -31,6 +32,7 @@ pub fn format_of(path: &Path) -> Result<Format> {
         Some(e) if e == "obj" => Ok(Format::Obj),
         Some(e) if e == "off" => Ok(Format::Off),
         Some(e) if e == "ply" => Ok(Format::Ply),
+        Some(e) if e == "stl" => Ok(Format::Stl),
         _ => Err(Error::UnknownFormat {
             path: path.to_path_buf(),
         }),
@@ -40,6 +42,7 @@ pub fn format_of(path: &Path) -> Result<Format> {
 mod obj;
 mod off;
 mod ply;
+mod stl;
 mod text;
 
 /// Reads a mesh file, choosing the reader by extension, and checks it
@@ -48,12 +51,24 @@ pub fn read(path: &Path) -> Result<PolygonSoup> {
     read_raw(path)?.into_checked()
 }
 
-/// [`read`], with what the reader skipped because it does not change the mesh (for a
-/// warning: see the module docs).
-pub fn read_with_skips(path: &Path) -> Result<(PolygonSoup, Vec<Skipped>)> {
+/// What a reader tells beside the mesh, for the user: what it skipped because it does not
+/// change the mesh (see the module docs), and how many STL corners it welded.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Notes {
+    /// [`RawSoup::skipped`].
+    pub skipped: Vec<Skipped>,
+    /// [`RawSoup::welded_corners`].
+    pub welded_corners: usize,
+}
+
+/// [`read`], with the reader's [`Notes`].
+pub fn read_with_notes(path: &Path) -> Result<(PolygonSoup, Notes)> {
     let mut raw = read_raw(path)?;
-    let skipped = std::mem::take(&mut raw.skipped);
-    Ok((raw.into_checked()?, skipped))
+    let notes = Notes {
+        skipped: std::mem::take(&mut raw.skipped),
+        welded_corners: raw.welded_corners,
+    };
+    Ok((raw.into_checked()?, notes))
 }
 
 /// Reads a mesh from memory and checks it ([`RawSoup::into_checked`]).
@@ -79,6 +94,7 @@ pub fn read_bytes_raw(bytes: &[u8], format: Format) -> Result<RawSoup> {
         Format::Obj => obj::read(bytes),
         Format::Off => off::read(bytes),
         Format::Ply => ply::read(bytes),
+        Format::Stl => stl::read(bytes),
     }
 }
 
@@ -109,6 +125,9 @@ pub struct RawSoup {
     pub unrepresentable: Vec<UnrepresentableIndex>,
     /// What the reader skipped because it does not change the mesh, in file order.
     pub skipped: Vec<Skipped>,
+    /// Corners that named a vertex already read at the same position: STL stores positions
+    /// per corner, and its reader welds equal ones (0 for the other formats).
+    pub welded_corners: usize,
 }
 
 /// Something of a file a reader skipped because it does not change the mesh (see the module
@@ -165,8 +184,7 @@ impl SoupBuilder {
         Self {
             raw: RawSoup {
                 soup: PolygonSoup::with_capacity(vertices, faces, faces.saturating_mul(3)),
-                unrepresentable: Vec::new(),
-                skipped: Vec::new(),
+                ..RawSoup::default()
             },
             face: Vec::new(),
         }
@@ -230,19 +248,31 @@ pub fn write_off(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> 
     Ok(())
 }
 
-/// Writes `soup` to `path` as OBJ or OFF, by extension, through [`write_atomically`].
+/// Writes `soup` as binary STL (little endian; a face of more than three corners as a fan of
+/// triangles from its first corner; positions as `f32`, as the format stores them).
+pub fn write_stl(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> {
+    stl::write_binary(w, soup)
+}
+
+/// Writes `soup` to `path` as OBJ, OFF or binary STL (faces of more than three corners as
+/// fans of triangles), by extension, through [`write_atomically`].
 pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
+    write_as(path, soup, format_of(path)?)
+}
+
+/// [`write`] in `format`, whatever the extension of `path`.
+pub fn write_as(path: &Path, soup: &PolygonSoup, format: Format) -> Result<()> {
     // Refuse before creating anything, so a refused write leaves no empty file behind.
-    let write_as: fn(&mut BufWriter<File>, &PolygonSoup) -> std::io::Result<()> =
-        match format_of(path)? {
-            Format::Obj => |w, s| write_obj(w, s),
-            Format::Off => |w, s| write_off(w, s),
-            Format::Ply => {
-                return Err(Error::Unsupported(
-                    "writing PLY is not supported; use .obj or .off".into(),
-                ))
-            }
-        };
+    let write_as: fn(&mut BufWriter<File>, &PolygonSoup) -> std::io::Result<()> = match format {
+        Format::Obj => |w, s| write_obj(w, s),
+        Format::Off => |w, s| write_off(w, s),
+        Format::Stl => |w, s| write_stl(w, s),
+        Format::Ply => {
+            return Err(Error::Unsupported(
+                "writing PLY is not supported; use .obj, .off or .stl".into(),
+            ))
+        }
+    };
     write_atomically(path, |w| write_as(w, soup)).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,

@@ -21,8 +21,7 @@ const REPAIRED: [FindingKind; 5] = [
 fn kinds(soup: &PolygonSoup) -> Vec<FindingKind> {
     let raw = RawSoup {
         soup: soup.clone(),
-        unrepresentable: Vec::new(),
-        skipped: Vec::new(),
+        ..RawSoup::default()
     };
     let mut kinds: Vec<FindingKind> = checks::check(&raw, &Options::default())
         .findings
@@ -178,8 +177,7 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
     let check = checks::check(
         &RawSoup {
             soup: r.soup.clone(),
-            unrepresentable: Vec::new(),
-            skipped: Vec::new(),
+            ..RawSoup::default()
         },
         &Options::default(),
     );
