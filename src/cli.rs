@@ -34,7 +34,7 @@ pub enum Command {
     },
     /// Counts, boundary curves, Euler characteristic and genus of a mesh, computed through a structure.
     Info {
-        /// A mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`):
+        /// A mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`):
         /// a canonical mesh name such as `open-tetrahedron`, or `torus:N`, `sphere:N`,
         /// `grid:N`, `quad-grid:N`, `mixed:N`, `genus:G:N`, `holes:K:N`, `surface:G:K:N`
         /// for about N faces.
@@ -97,7 +97,7 @@ pub enum Command {
     Compare(commands::compare::CompareArgs),
     /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
     Refine {
-        /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
+        /// A triangle mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`).
         mesh: String,
         /// Number of levels.
         #[arg(long)]
@@ -105,7 +105,7 @@ pub enum Command {
         /// Where new vertices go: `midpoint` (same shape) or `loop` (smooth).
         #[arg(long, default_value = "midpoint")]
         scheme: String,
-        /// The output file (.obj or .off).
+        /// The output file (.obj, .off or .stl).
         #[arg(long)]
         out: PathBuf,
         /// Renumber the result: `input` (as refined: new vertices appended), `random`,
@@ -119,7 +119,7 @@ pub enum Command {
     /// Subdivide a mesh N times and write it: `sqrt3` (√3 through the editing operations,
     /// 3 triangles per triangle and level), `midpoint` or `loop` (4 per level).
     Subdivide {
-        /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
+        /// A triangle mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`).
         mesh: String,
         /// `sqrt3`, `midpoint` or `loop`.
         #[arg(long)]
@@ -127,9 +127,20 @@ pub enum Command {
         /// Number of levels.
         #[arg(long, default_value_t = 1)]
         levels: usize,
-        /// The output file (.obj or .off).
+        /// The output file (.obj, .off or .stl).
         #[arg(long)]
         out: PathBuf,
+    },
+    /// Convert a mesh between the formats the lab reads (.obj, .off, .ply, .stl) and writes
+    /// (.obj, .off, binary .stl).
+    Convert {
+        /// A mesh file or a built-in mesh (see `topolab info --help`).
+        mesh: String,
+        /// The output file; its extension gives the format unless `--to` names it.
+        out: PathBuf,
+        /// The output format: `obj`, `off` or `stl` (binary).
+        #[arg(long)]
+        to: Option<String>,
     },
     /// Decimate a triangle mesh by quadric error (as OpenMesh's Decimater with ModQuadric) to
     /// `--faces N` or `--ratio R` of its faces and write it.
@@ -192,6 +203,9 @@ pub fn run(cli: Cli) -> u8 {
             levels,
             out,
         } => commands::subdivide::subdivide(&mesh, &scheme, levels, &out),
+        Command::Convert { mesh, out, to } => {
+            commands::convert::convert(&mesh, &out, to.as_deref())
+        }
         Command::Decimate(args) => commands::decimate::run(&args),
     };
     match result {

@@ -101,26 +101,37 @@ pub fn check_folder(dir: &Path, files: &[&str]) -> Result<(), Failure> {
     })
 }
 
-/// Checks, before the work, an output mesh file: a format the lab writes (.obj or .off), then
-/// [`check_file`].
+/// Checks, before the work, an output mesh file: a format the lab writes (.obj, .off or .stl),
+/// then [`check_file`].
 pub fn check_mesh_out(path: &Path) -> Result<(), Failure> {
     match topolab_structures::io::format_of(path) {
-        Ok(Format::Obj | Format::Off) => {}
-        Ok(format) => {
-            return Err(Failure::usage(format!(
-                "cannot write {format} ({}); use .obj or .off",
-                path.display()
-            )))
-        }
+        Ok(format) => check_writable(format, path)?,
         Err(e) => return Err(Failure::usage(format!("cannot write: {e}"))),
     }
     check_file(path)
 }
 
+/// Refuses a format the lab does not write (PLY), naming `path`.
+pub fn check_writable(format: Format, path: &Path) -> Result<(), Failure> {
+    match format {
+        Format::Obj | Format::Off | Format::Stl => Ok(()),
+        Format::Ply => Err(Failure::usage(format!(
+            "cannot write {format} ({}); use .obj, .off or .stl",
+            path.display()
+        ))),
+    }
+}
+
 /// Writes a mesh file (by extension, atomically: [`topolab_structures::io::write`]); a failure
 /// names the file (exit code 2).
 pub fn write_mesh(path: &Path, soup: &PolygonSoup) -> Result<(), Failure> {
-    topolab_structures::io::write(path, soup).map_err(|e| match e {
+    let format = topolab_structures::io::format_of(path).map_err(|e| cannot(path, e))?;
+    write_mesh_as(path, soup, format)
+}
+
+/// Writes a mesh file in `format`, whatever its extension ([`topolab_structures::io::write_as`]).
+pub fn write_mesh_as(path: &Path, soup: &PolygonSoup, format: Format) -> Result<(), Failure> {
+    topolab_structures::io::write_as(path, soup, format).map_err(|e| match e {
         Error::Io { source, .. } => cannot(path, source),
         e => cannot(path, e),
     })

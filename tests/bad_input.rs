@@ -205,6 +205,16 @@ const CORPUS: &[(&str, &str, Check)] = &[
         "too-few-corners",
         Finds("too-few-vertices"),
     ),
+    // STL
+    ("stl-binary-count-too-large.stl", "truncated", Unreadable),
+    ("stl-binary-bytes-after-count.stl", "syntax", Unreadable),
+    ("stl-ascii-truncated.stl", "truncated", Unreadable),
+    ("stl-ascii-four-vertices.stl", "syntax", Unreadable),
+    (
+        "stl-degenerate-facet.stl",
+        "repeated-vertex",
+        Finds("repeated-vertex"),
+    ),
 ];
 
 /// What `topolab check` says about a file.

@@ -163,6 +163,55 @@ fn messages_point_to_check_and_repair_and_skipped_statements_are_warned() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `convert` writes every format the lab writes and reads back what it wrote: a torus through
+/// binary STL (corners welded back into its vertices, which `info` notes), then OBJ, then OFF
+/// named by `--to`; PLY output and unknown formats are usage errors.
+#[test]
+fn convert_round_trips_through_stl_obj_and_off() {
+    let dir = temp_dir("convert");
+    let stl = dir.join("torus.stl");
+    let (code, stdout) = topolab(&["convert", "torus:200", stl.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(stdout.contains("as STL"), "{stdout}");
+    let original = info_json(Path::new("torus:200"), "index-half-edge");
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["info", stl.to_str().unwrap(), "--json"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("STL corners welded"), "{stderr}");
+    let from_stl: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for field in ["vertices", "edges", "faces", "genus", "boundary_curves"] {
+        assert_eq!(from_stl[field], original[field], "{field}");
+    }
+    let obj = dir.join("torus.obj");
+    let txt = dir.join("torus.txt");
+    assert_eq!(
+        topolab(&["convert", stl.to_str().unwrap(), obj.to_str().unwrap()]).0,
+        0
+    );
+    let (code, stdout) = topolab(&[
+        "convert",
+        obj.to_str().unwrap(),
+        txt.to_str().unwrap(),
+        "--to",
+        "off",
+    ]);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(std::fs::read_to_string(&txt).unwrap().starts_with("OFF"));
+    let ply = dir.join("torus.ply");
+    assert_eq!(
+        topolab(&["convert", "torus:200", ply.to_str().unwrap()]).0,
+        2
+    );
+    assert!(!ply.exists(), "a refused write leaves no file");
+    assert_eq!(
+        topolab(&["convert", "torus:200", txt.to_str().unwrap(), "--to", "dxf"]).0,
+        2
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn info_exits_2_on_an_unreadable_file_and_1_on_a_non_manifold_mesh() {
     let dir = temp_dir("exit-codes");

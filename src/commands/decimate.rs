@@ -31,7 +31,7 @@ use topolab_structures::{IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge,
 #[derive(clap::Args, Debug, Clone)]
 #[command(group = clap::ArgGroup::new("target").required(true).args(["faces", "ratio"]))]
 pub struct DecimateArgs {
-    /// A triangle mesh file (.obj, .off, .ply) or a built-in mesh (see `topolab info --help`).
+    /// A triangle mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`).
     pub mesh: String,
     /// Decimate to at most this many faces.
     #[arg(long)]
@@ -39,7 +39,7 @@ pub struct DecimateArgs {
     /// Decimate to this fraction of the faces (0 < R ≤ 1).
     #[arg(long)]
     pub ratio: Option<f64>,
-    /// The output file (.obj or .off).
+    /// The output file (.obj, .off or .stl).
     #[arg(long)]
     pub out: PathBuf,
     /// The editable structure that decimates: `index-half-edge` or `pointer-half-edge`.

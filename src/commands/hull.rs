@@ -15,7 +15,7 @@ use topolab_structures::MeshTopology;
 /// Options of `topolab hull`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct HullArgs {
-    /// A mesh or point file (.obj, .off, .ply): only its vertices are used; an OBJ of `v`
+    /// A mesh or point file (.obj, .off, .ply, .stl): only its vertices are used; an OBJ of `v`
     /// lines only (a point cloud) works.
     #[arg(required_unless_present = "random", conflicts_with = "random")]
     pub file: Option<String>,
@@ -28,7 +28,7 @@ pub struct HullArgs {
     /// The algorithm: gift (wrapping), incremental, randomized (incremental).
     #[arg(long, default_value = "randomized")]
     pub algo: String,
-    /// Write the hull here (.obj or .off).
+    /// Write the hull here (.obj, .off or .stl).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Seed of the random points and of the randomized algorithm's insertion order.

@@ -4,6 +4,7 @@
 
 pub mod check;
 pub mod compare;
+pub mod convert;
 pub mod decimate;
 pub mod explain;
 pub mod explain_che;

@@ -64,7 +64,7 @@ fn admit_levels(
 }
 
 /// Refines `spec` (a file or built-in mesh) `levels` times with `scheme` (a name), renumbers
-/// it in `order` (an ordering name) and writes it to `out` (.obj or .off). Progress per level
+/// it in `order` (an ordering name) and writes it to `out` (.obj, .off or .stl). Progress per level
 /// goes to stderr as it happens.
 pub fn refine(
     spec: &str,

@@ -80,7 +80,7 @@ fn admit_sqrt3(what: &str, faces: u128) -> Result<(), Failure> {
 }
 
 /// Subdivides `spec` (a file or built-in mesh) `levels` times with `scheme` (a name) and
-/// writes it to `out` (.obj or .off).
+/// writes it to `out` (.obj, .off or .stl).
 pub fn subdivide(spec: &str, scheme: &str, levels: usize, out: &Path) -> Result<String, Failure> {
     let scheme = Scheme::ALL
         .into_iter()

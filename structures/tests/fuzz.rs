@@ -26,7 +26,7 @@ fn config() -> Config {
     }
 }
 
-const FORMATS: [Format; 3] = [Format::Obj, Format::Off, Format::Ply];
+const FORMATS: [Format; 4] = [Format::Obj, Format::Off, Format::Ply, Format::Stl];
 
 /// Everything downstream of the readers on `bytes` read as `format`: the raw reader, the
 /// checker on what it read, the checked reader, and every structure on what passes.
@@ -77,6 +77,12 @@ fn seeds() -> Vec<(Vec<u8>, Format)> {
         out.push((support::ascii_ply(&soup).into_bytes(), Format::Ply));
         out.push((support::binary_ply(&soup, false), Format::Ply));
         out.push((support::binary_ply(&soup, true), Format::Ply));
+        if soup.is_triangle_mesh() {
+            let mut stl = Vec::new();
+            io::write_stl(&mut stl, &soup).unwrap();
+            out.push((stl, Format::Stl));
+            out.push((support::ascii_stl(&soup).into_bytes(), Format::Stl));
+        }
     }
     out
 }

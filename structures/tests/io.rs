@@ -8,7 +8,7 @@ use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{Error, Format, Location, PolygonSoup};
 
 mod support;
-use support::{ascii_ply, binary_ply};
+use support::{ascii_ply, ascii_stl, binary_ply};
 
 fn round_trip(soup: &PolygonSoup) {
     let mut obj = Vec::new();
@@ -137,6 +137,85 @@ fn unknown_obj_statements_and_trailing_ply_bytes_are_skipped_and_listed() {
     assert!(matches!(
         error(b"v 0 0 0\nvc 1 0 0\nv 1 x 0\n", Format::Obj),
         Error::Syntax { .. }
+    ));
+}
+
+/// STL, both encodings, told apart by content: the triangles come back as written, face j of
+/// the file is face j, and corners at exactly the same position are one vertex (numbered in
+/// order of first appearance), counted in `welded_corners`.
+#[test]
+fn stl_reads_ascii_and_binary_welding_corners_by_exact_position() {
+    for soup in [
+        meshes::open_tetrahedron(),
+        meshes::torus(5, 4),
+        meshes::grid(3, 2, true),
+    ] {
+        let mut binary = Vec::new();
+        io::write_stl(&mut binary, &soup).unwrap();
+        for (bytes, encoding) in [(binary, "binary"), (ascii_stl(&soup).into_bytes(), "ascii")] {
+            let raw = read_bytes_raw(&bytes, Format::Stl).unwrap();
+            let read = raw.soup.clone();
+            assert_eq!(read.num_faces(), soup.num_faces(), "{encoding}");
+            assert_eq!(
+                read.num_vertices(),
+                soup.num_vertices(),
+                "{encoding}: welded"
+            );
+            assert_eq!(
+                raw.welded_corners,
+                soup.num_corners() - soup.num_vertices(),
+                "{encoding}"
+            );
+            // The same faces, on the same positions (f32 in binary).
+            for (a, b) in read.faces().zip(soup.faces()) {
+                for (&x, &y) in a.iter().zip(b) {
+                    let (p, q) = (read.positions[x as usize], soup.positions[y as usize]);
+                    assert!((p - q).abs().max_element() < 1e-6, "{encoding}: {p} vs {q}");
+                }
+            }
+        }
+    }
+    // A binary header may start with "solid": the length decides.
+    let mut binary = Vec::new();
+    io::write_stl(&mut binary, &meshes::open_tetrahedron()).unwrap();
+    binary[..5].copy_from_slice(b"solid");
+    assert_eq!(read_bytes(&binary, Format::Stl).unwrap().num_faces(), 3);
+    // Polygons are written as fans of triangles.
+    let mut cube = Vec::new();
+    io::write_stl(&mut cube, &meshes::quad_cube()).unwrap();
+    assert_eq!(read_bytes(&cube, Format::Stl).unwrap().num_faces(), 12);
+}
+
+#[test]
+fn bad_stl_files_are_typed_errors_with_their_place() {
+    let mut binary = Vec::new();
+    io::write_stl(&mut binary, &meshes::open_tetrahedron()).unwrap();
+    assert!(matches!(
+        error(&binary[..binary.len() - 1], Format::Stl),
+        Error::Truncated { .. }
+    ));
+    let mut long = binary.clone();
+    long.extend_from_slice(b"xx");
+    assert!(matches!(error(&long, Format::Stl), Error::Syntax { .. }));
+    let ascii = ascii_stl(&meshes::open_tetrahedron());
+    for (text, line) in [
+        (ascii.replacen("      vertex ", "      vertex x", 1), 4),
+        (ascii.replacen("endfacet", "vertex 1 1 1\nendfacet", 1), 8),
+        (ascii.clone() + "garbage\n", 24),
+    ] {
+        match error(text.as_bytes(), Format::Stl) {
+            Error::Syntax { location, .. } => assert_eq!(location, Location::Line(line), "{text}"),
+            other => panic!("{text}: expected a syntax error, got {other}"),
+        }
+    }
+    let cut = &ascii[..ascii.find("endfacet").unwrap()];
+    assert!(matches!(
+        error(cut.as_bytes(), Format::Stl),
+        Error::Truncated { .. }
+    ));
+    assert!(matches!(
+        error(b"hello", Format::Stl),
+        Error::Truncated { .. }
     ));
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the bad-input corpus: small OBJ, OFF and PLY files (ASCII and binary), each broken
+"""Writes the bad-input corpus: small OBJ, OFF, PLY and STL files (ASCII and binary), each broken
 in one way. The files are committed; run this again only to change them:
 
     python3 tests/bad-input/generate.py
@@ -140,3 +140,32 @@ write("ply-binary-index-overflows-u32.ply",
 write("ply-binary-negative-list-count.ply",
       ply_binary("<", SQUARE[:3], [(0, 1, 2)], count_type="b").replace(b"\x03\x00\x00\x00\x00", b"\xff\x00\x00\x00\x00", 1))
 write("ply-binary-one-vertex-face.ply", ply_binary("<", SQUARE[:3], [(0, 1, 2), (2,)]))
+
+
+def stl_binary(triangles, count=None):
+    out = b"binary STL of the bad-input corpus".ljust(80, b" ")
+    out += struct.pack("<I", len(triangles) if count is None else count)
+    for t in triangles:
+        out += struct.pack("<3f", 0, 0, 0)
+        for p in t:
+            out += struct.pack("<3f", *p)
+        out += struct.pack("<H", 0)
+    return out
+
+
+def stl_ascii(triangles):
+    out = "solid corpus\n"
+    for t in triangles:
+        out += "facet normal 0 0 0\nouter loop\n"
+        out += "".join(f"vertex {x} {y} {z}\n" for x, y, z in t)
+        out += "endloop\nendfacet\n"
+    return out + "endsolid corpus\n"
+
+
+STL_TRIANGLE = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+write("stl-binary-count-too-large.stl", stl_binary([STL_TRIANGLE], count=2))
+write("stl-binary-bytes-after-count.stl", stl_binary([STL_TRIANGLE]) + b"\0\0")
+write("stl-ascii-truncated.stl", stl_ascii([STL_TRIANGLE])[:-30])
+write("stl-ascii-four-vertices.stl",
+      stl_ascii([STL_TRIANGLE]).replace("endloop", "vertex 1 1 0\nendloop", 1))
+write("stl-degenerate-facet.stl", stl_binary([STL_TRIANGLE, [(0, 0, 0), (1, 0, 0), (0, 0, 0)]]))

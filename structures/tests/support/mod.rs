@@ -1,4 +1,5 @@
-//! Test helpers shared by the reader tests: PLY files of a soup (the lab writes no PLY).
+//! Test helpers shared by the reader tests: PLY files of a soup (the lab writes no PLY), and
+//! ASCII STL (the lab writes binary STL).
 
 use topolab_structures::PolygonSoup;
 
@@ -66,4 +67,19 @@ pub fn ascii_ply(soup: &PolygonSoup) -> String {
         out += "\n";
     }
     out
+}
+
+/// An ASCII STL of the triangles of `soup` (a solid named `test`, facet normals zero), as
+/// exporters write it.
+pub fn ascii_stl(soup: &PolygonSoup) -> String {
+    let mut out = String::from("solid test\n");
+    for f in soup.faces() {
+        out += "  facet normal 0 0 0\n    outer loop\n";
+        for &v in f {
+            let p = soup.positions[v as usize];
+            out += &format!("      vertex {} {} {}\n", p.x, p.y, p.z);
+        }
+        out += "    endloop\n  endfacet\n";
+    }
+    out + "endsolid test\n"
 }
