@@ -366,10 +366,15 @@ fn files_are_read_by_extension() {
         io::write(&path, &soup).unwrap();
         assert_eq!(io::read(&path).unwrap(), soup);
     }
+    // STL: polygons as fans of triangles.
+    let stl = dir.join("mesh.stl");
+    io::write(&stl, &soup).unwrap();
+    let triangles: usize = soup.faces().map(|f| f.len() - 2).sum();
+    assert_eq!(io::read(&stl).unwrap().num_faces(), triangles);
     let missing = io::read(&dir.join("none.obj")).unwrap_err();
     assert_eq!(missing.kind(), "io");
     assert_eq!(
-        io::read(&dir.join("mesh.stl")).unwrap_err().kind(),
+        io::read(&dir.join("mesh.dxf")).unwrap_err().kind(),
         "unknown-format"
     );
     std::fs::remove_dir_all(&dir).unwrap();
