@@ -69,6 +69,7 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("faces", vec!["--faces", "20"]),
             ("out", vec!["--out", "@DIR/decimated.obj"]),
         ],
+        "convert" => vec![("mesh", vec!["torus"]), ("out", vec!["@DIR/converted.stl"])],
         _ => return None,
     })
 }
@@ -143,6 +144,8 @@ fn curated() -> Vec<Vec<&'static str>> {
             "--out",
             "@DIR/x.off",
         ],
+        vec!["convert", "torus:1073741824", "@DIR/x.stl"],
+        vec!["convert", "@DIR/far.obj", "@DIR/x.ply"],
         // Past u32 after two levels; the input alone (17 GB) might fit: refused ungenerated.
         vec![
             "refine",
