@@ -63,11 +63,13 @@ const CGAL_UNITS: [&str; 4] = [
 ];
 
 /// The translation units of OpenMesh's shim: building, queries and workloads; the
-/// Decimater; `MeshEdit` (its Euler operations behind `cpp/openmesh/edit.h`).
-const OPENMESH_SHIM_UNITS: [&str; 3] = [
+/// Decimater; `MeshEdit` (its Euler operations behind `cpp/openmesh/edit.h`); its own file
+/// readers, for the differential test of the lab's readers.
+const OPENMESH_SHIM_UNITS: [&str; 4] = [
     "cpp/openmesh/shim.cpp",
     "cpp/openmesh/decimate.cpp",
     "cpp/openmesh/edit.cpp",
+    "cpp/openmesh/read.cpp",
 ];
 // --- issue 18 (phase 2c): the baselines' editing operations, one translation unit each ---
 /// CGAL's changing workloads and editing operations (behind `cpp/cgal/edit.h`), one unit per class.

@@ -82,6 +82,7 @@ use topolab_structures::{
 mod access;
 /// `MeshEdit` through OpenMesh's own operations (`openmesh/edit.h`).
 mod edit;
+pub mod read;
 
 mod ffi {
     /// The C++ `topolab_om_mesh` (opaque).

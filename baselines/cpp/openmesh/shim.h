@@ -32,6 +32,8 @@ extern "C" {
 #define TOPOLAB_OM_EXCEPTION 3
 /* An operator or workload code the shim does not know. */
 #define TOPOLAB_OM_UNKNOWN_CODE 4
+/* OpenMesh's read_mesh returned false (topolab_om_read_file). */
+#define TOPOLAB_OM_READ_FAILED 5
 
 #ifdef __cplusplus
 #define TOPOLAB_OM_NOEXCEPT noexcept
@@ -58,6 +60,16 @@ int topolab_om_build(const double *xyz, uint32_t vertices, const uint32_t *indic
                      topolab_om_mesh **out, uint32_t *failed_face) TOPOLAB_OM_NOEXCEPT;
 /* Frees a mesh from topolab_om_build. NULL is allowed. */
 void topolab_om_free(topolab_om_mesh *mesh) TOPOLAB_OM_NOEXCEPT;
+
+/* Receive the vertices, then the faces, of a file OpenMesh read. Must not unwind. */
+typedef void (*topolab_om_read_vertex)(void *context, double x, double y, double z);
+typedef void (*topolab_om_read_face)(void *context, const uint32_t *corners, size_t count);
+/* Reads `path` (NUL-terminated) with OpenMesh's IO::read_mesh into a PolyMesh with default
+ * options and reports every vertex, then every face (its vertices from fv_range), in OpenMesh's
+ * order. TOPOLAB_OM_READ_FAILED when read_mesh returns false. One read at a time (a mutex):
+ * OpenMesh's readers keep per-read state. Silences OpenMesh's omlog and omout on first use. */
+int topolab_om_read_file(const char *path, topolab_om_read_vertex vertex,
+                         topolab_om_read_face face, void *context) TOPOLAB_OM_NOEXCEPT;
 
 /* Bytes the mesh's containers hold by their lengths: the array kernel's vertex, edge and face
  * records and every property's elements (OpenMesh's BaseProperty::size_of). The blocks it
