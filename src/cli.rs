@@ -95,24 +95,10 @@ pub enum Command {
     /// flagged when outside both runs' spread, the largest change first; text and an HTML page.
     /// Exit code 0 (it informs), 2 when a file is not a topolab results.json of a known format.
     Compare(commands::compare::CompareArgs),
-    /// Subdivide a triangle mesh N times (each level: 4 triangles per triangle) and write it.
-    Refine {
-        /// A triangle mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`).
-        mesh: String,
-        /// Number of levels.
-        #[arg(long)]
-        levels: usize,
-        /// Where new vertices go: `midpoint` (same shape) or `loop` (smooth).
-        #[arg(long, default_value = "midpoint")]
-        scheme: String,
-        /// The output file (.obj, .off or .stl).
-        #[arg(long)]
-        out: PathBuf,
-        /// Renumber the result: `input` (as refined: new vertices appended), `random`,
-        /// `random:SEED`, `morton`, `hilbert` or `bfs` (see `topolab_structures::ordering`).
-        #[arg(long, default_value = "input")]
-        order: String,
-    },
+    /// Refine a triangle mesh and write it: uniformly, `--levels N` of subdivision (each level:
+    /// 4 triangles per triangle), or adaptively, `--max-edge L` (every edge longer than L split,
+    /// inside `--region` if given, by longest-edge bisection on an editable structure).
+    Refine(commands::refine::RefineArgs),
     /// The 3D convex hull of a point file or random points, by one of the algorithms of the
     /// lecture on 3D convex hulls.
     Hull(commands::hull::HullArgs),
@@ -186,13 +172,7 @@ pub fn run(cli: Cli) -> u8 {
             let command = std::env::args().collect::<Vec<_>>().join(" ");
             commands::report::report(&args, command)
         }
-        Command::Refine {
-            mesh,
-            levels,
-            scheme,
-            out,
-            order,
-        } => commands::refine::refine(&mesh, levels, &scheme, &order, &out),
+        Command::Refine(args) => commands::refine::run(&args),
         Command::Check(args) => return commands::check::run(args),
         Command::Repair(args) => return commands::repair::run(args),
         Command::Hull(args) => commands::hull::hull(&args),

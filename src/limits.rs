@@ -108,6 +108,17 @@ pub fn admit(what: &str, bytes: u64) -> Result<(), Failure> {
     )))
 }
 
+/// How many elements of `bytes_per_element` bytes each the available memory holds: the cap a
+/// command that grows a mesh step by step (adaptive refinement, whose final size is known only
+/// as a lower bound) passes to its algorithm. `None` when nothing caps it: `--allow-memory`, or
+/// no available memory to read.
+pub fn affordable(bytes_per_element: u64) -> Option<u64> {
+    if ALLOW_MEMORY.load(Ordering::Relaxed) {
+        return None;
+    }
+    available().map(|free| free / bytes_per_element.max(1))
+}
+
 /// Refuses (exit code 2) counts that `u32` ids cannot number: each must be below `u32::MAX`,
 /// the limit [`PolygonSoup::check`] enforces. `counts` pairs a name (`corners`, `points`) with
 /// a count (saturated: `u128::MAX` for "more than anything").

@@ -67,3 +67,195 @@ fn levels_past_what_u32_ids_number_are_refused_before_refining() {
     assert!(out.exists());
     std::fs::remove_file(&out).unwrap();
 }
+
+mod adaptive {
+    //! `topolab refine --max-edge`: adaptive refinement by longest-edge bisection.
+
+    use clap::Parser;
+    use std::path::{Path, PathBuf};
+    use topolab::cli::Cli;
+    use topolab::commands::refine::{run, RefineArgs};
+    use topolab::commands::refine_adaptive::adaptive;
+    use topolab_structures::algorithms::checks;
+    use topolab_structures::io::read_raw;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("topolab-adaptive-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(name);
+        let _ = std::fs::remove_file(&path);
+        path
+    }
+
+    /// The file written is a mesh `topolab check` finds nothing in; its face count.
+    fn clean_faces(path: &Path) -> usize {
+        let raw = read_raw(path).unwrap();
+        let report = checks::check(&raw, &checks::Options::default());
+        assert!(report.findings.is_empty(), "{:?}", report.findings);
+        raw.soup.num_faces()
+    }
+
+    #[test]
+    fn writes_a_clean_refined_mesh_on_editable_structures() {
+        // The canonical torus (24 triangles, edges of about 1.4 to 2): every edge longer than
+        // 0.5 split, on the default structure and two others; all make the same faces.
+        let mut counts = Vec::new();
+        for structure in ["index-half-edge", "winged-edge", "che-l3"] {
+            let out = scratch(&format!("torus-{structure}.obj"));
+            let text = adaptive("torus", 0.5, None, structure, &out).unwrap();
+            assert!(
+                text.contains("edges split") && text.contains("24 faces before"),
+                "{text}"
+            );
+            counts.push(clean_faces(&out));
+        }
+        assert!(counts[0] > 4 * 24, "{counts:?}");
+        assert!(counts.iter().all(|&c| c == counts[0]), "{counts:?}");
+        // A box around part of the torus refines less.
+        let out = scratch("torus-region.off");
+        let text = adaptive("torus", 0.5, Some("0,-2,-1,2,2,1"), "index-half-edge", &out).unwrap();
+        assert!(text.contains("both ends in"), "{text}");
+        let local = clean_faces(&out);
+        assert!(local > 24 && local < counts[0], "{local} of {}", counts[0]);
+    }
+
+    #[test]
+    fn a_regular_grid_cannot_refine_locally() {
+        let out = scratch("never-grid.obj");
+        for structure in ["regular-grid", "height-field"] {
+            let failure = adaptive("grid:8", 0.1, None, structure, &out).unwrap_err();
+            assert_eq!(failure.code, 1, "{}", failure.message);
+            assert!(
+                failure.message.contains("cannot refine locally")
+                    && failure.message.contains("implicit in (i, j)"),
+                "{}",
+                failure.message
+            );
+        }
+        let failure = adaptive("torus", 0.1, None, "explicit", &out).unwrap_err();
+        assert_eq!(failure.code, 1, "{}", failure.message);
+        assert!(failure.message.contains("MeshEdit"), "{}", failure.message);
+        let failure = adaptive("torus", 0.1, None, "no-such", &out).unwrap_err();
+        assert_eq!(failure.code, 2, "{}", failure.message);
+        assert!(!out.exists());
+    }
+
+    #[test]
+    fn bad_max_edges_regions_and_inputs_are_refused() {
+        let out = scratch("never-bad.obj");
+        for max_edge in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let failure = adaptive("torus", max_edge, None, "index-half-edge", &out).unwrap_err();
+            assert_eq!(failure.code, 2, "{max_edge}: {}", failure.message);
+            assert!(
+                failure.message.contains("--max-edge"),
+                "{}",
+                failure.message
+            );
+        }
+        for region in [
+            "0,0,0,1,1",
+            "0,0,0,1,1,1,1",
+            "a,0,0,1,1,1",
+            "1,0,0,0,1,1",
+            "0,0,nan,1,1,1",
+        ] {
+            let failure =
+                adaptive("torus", 0.5, Some(region), "index-half-edge", &out).unwrap_err();
+            assert_eq!(failure.code, 2, "{region}: {}", failure.message);
+            assert!(failure.message.contains("--region"), "{}", failure.message);
+        }
+        // Polygons: longest-edge bisection splits triangles.
+        let failure = adaptive("quad-cube", 0.5, None, "index-half-edge", &out).unwrap_err();
+        assert_eq!(failure.code, 1, "{}", failure.message);
+        // Edges so short that even the fewest faces pass what u32 ids number.
+        let failure = adaptive("torus", 1e-12, None, "index-half-edge", &out).unwrap_err();
+        assert_eq!(failure.code, 2, "{}", failure.message);
+        assert!(failure.message.contains("u32"), "{}", failure.message);
+        assert!(!out.exists());
+    }
+
+    #[test]
+    fn levels_and_max_edge_are_two_modes() {
+        let parse = |args: &[&str]| Cli::try_parse_from(args);
+        // One of the two, never both.
+        let both = [
+            "topolab",
+            "refine",
+            "torus",
+            "--levels",
+            "1",
+            "--max-edge",
+            "0.5",
+            "--out",
+            "x.obj",
+        ];
+        let e = parse(&both).unwrap_err().to_string();
+        assert!(e.contains("cannot be used with"), "{e}");
+        assert!(parse(&["topolab", "refine", "torus", "--out", "x.obj"]).is_err());
+        // The uniform options do not go with --max-edge, the adaptive ones not with --levels.
+        let e = parse(&[
+            "topolab",
+            "refine",
+            "torus",
+            "--max-edge",
+            "0.5",
+            "--scheme",
+            "loop",
+            "--out",
+            "x.obj",
+        ]);
+        assert!(e.is_err());
+        let e = parse(&[
+            "topolab",
+            "refine",
+            "torus",
+            "--levels",
+            "1",
+            "--region",
+            "0,0,0,1,1,1",
+            "--out",
+            "x.obj",
+        ]);
+        assert!(e.is_err());
+        let e = parse(&[
+            "topolab",
+            "refine",
+            "torus",
+            "--levels",
+            "1",
+            "--structure",
+            "winged-edge",
+            "--out",
+            "x.obj",
+        ]);
+        assert!(e.is_err());
+        // A negative region parses (and is checked by the command).
+        let ok = [
+            "topolab",
+            "refine",
+            "torus",
+            "--max-edge",
+            "0.5",
+            "--region",
+            "-1,-1,-1,1,1,1",
+            "--out",
+            "x.obj",
+        ];
+        assert!(parse(&ok).is_ok());
+        assert!(parse(&["topolab", "refine", "torus", "--levels", "1", "--out", "x.obj"]).is_ok());
+        // Called directly with both, the command says so too.
+        let args = RefineArgs {
+            mesh: "torus".into(),
+            levels: Some(1),
+            max_edge: Some(0.5),
+            region: None,
+            structure: "index-half-edge".into(),
+            scheme: "midpoint".into(),
+            out: scratch("never-both.obj"),
+            order: "input".into(),
+        };
+        let failure = run(&args).unwrap_err();
+        assert_eq!(failure.code, 2);
+        assert!(failure.message.contains("not both"), "{}", failure.message);
+    }
+}

@@ -16,6 +16,7 @@ pub mod hull;
 pub mod info;
 pub mod list;
 pub mod refine;
+pub mod refine_adaptive;
 pub mod repair;
 pub mod report;
 pub mod report_sections;

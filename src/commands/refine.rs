@@ -1,16 +1,75 @@
 //! `topolab refine`: subdivides a triangle mesh level by level (midpoint or Loop) and writes
 //! the result, optionally renumbered (`--order`), to make the large inputs of the benchmarks
-//! from real or generated meshes, in files other tools (the C++ baseline) can read too.
+//! from real or generated meshes, in files other tools (the C++ baseline) can read too; with
+//! `--max-edge` instead of `--levels`, refines adaptively
+//! ([`super::refine_adaptive`]: the edges longer than L, inside a box if given).
 
 use crate::input::{built_in_size, load_mesh, Failure};
 use crate::limits;
 use crate::output::{check_mesh_out, write_mesh};
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 use topolab_structures::ordering::{reorder, Ordering};
 use topolab_structures::refine::{subdivide, subdivide_levels, Scheme};
 use topolab_structures::PolygonSoup;
+
+/// Options of `topolab refine`: uniform (`--levels`) or adaptive (`--max-edge`), one of them.
+#[derive(clap::Args, Debug, Clone)]
+#[command(group = clap::ArgGroup::new("mode").required(true).args(["levels", "max_edge"]))]
+pub struct RefineArgs {
+    /// A triangle mesh file (.obj, .off, .ply, .stl) or a built-in mesh (see `topolab info --help`).
+    pub mesh: String,
+    /// Uniform refinement: the number of levels (each: 4 triangles per triangle).
+    #[arg(long)]
+    pub levels: Option<usize>,
+    /// Adaptive refinement: split every edge longer than this, longest first, until none is
+    /// left (longest-edge bisection through the editing operations; the mesh stays conforming).
+    #[arg(long, allow_hyphen_values = true)]
+    pub max_edge: Option<f64>,
+    /// Adaptive refinement only in this box: `xmin,ymin,zmin,xmax,ymax,zmax` (the edges with
+    /// both ends inside it).
+    #[arg(long, conflicts_with = "levels", allow_hyphen_values = true)]
+    pub region: Option<String>,
+    /// The editable structure that refines adaptively (see `topolab list`).
+    #[arg(long, conflicts_with = "levels", default_value = super::refine_adaptive::DEFAULT_STRUCTURE)]
+    pub structure: String,
+    /// Uniform refinement: where new vertices go, `midpoint` (same shape) or `loop` (smooth).
+    #[arg(long, default_value = "midpoint", conflicts_with = "max_edge")]
+    pub scheme: String,
+    /// The output file (.obj, .off or .stl).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Uniform refinement: renumber the result: `input` (as refined: new vertices appended),
+    /// `random`, `random:SEED`, `morton`, `hilbert` or `bfs` (see
+    /// `topolab_structures::ordering`).
+    #[arg(long, default_value = "input", conflicts_with = "max_edge")]
+    pub order: String,
+}
+
+/// Runs `topolab refine`: [`refine`] with `--levels`, [`super::refine_adaptive::adaptive`] with
+/// `--max-edge`. Both or neither is a usage error (exit 2), as clap already says on the command
+/// line.
+pub fn run(args: &RefineArgs) -> Result<String, Failure> {
+    match (args.levels, args.max_edge) {
+        (Some(levels), None) => refine(&args.mesh, levels, &args.scheme, &args.order, &args.out),
+        (None, Some(max_edge)) => super::refine_adaptive::adaptive(
+            &args.mesh,
+            max_edge,
+            args.region.as_deref(),
+            &args.structure,
+            &args.out,
+        ),
+        (Some(_), Some(_)) => Err(Failure::usage(
+            "--levels refines uniformly, --max-edge adaptively: give one of them, not both"
+                .to_string(),
+        )),
+        (None, None) => Err(Failure::usage(
+            "give --levels N (uniform refinement) or --max-edge L (adaptive refinement)"
+                .to_string(),
+        )),
+    }
+}
 
 /// Refuses `levels` levels of a mesh of `input_faces` faces when the result's ids would pass
 /// `u32`; returns the request's description and the result's faces.

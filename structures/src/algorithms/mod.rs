@@ -1,10 +1,12 @@
 //! What the lab does with the structures: the 3D convex [`hull`] built on the winged-edge,
 //! the consistency [`checks`] of a file as written and its topological [`summary`], the
-//! [`repair`] of what the checks find in a mesh's topology, mesh refinement ([`refine`]), the
-//! changing workloads of the Surface_mesh benchmark on any editable structure ([`changing`]),
-//! decimation by quadric error and its reconstruction ([`decimate`]),
-//! and element renumbering ([`ordering`]).
+//! [`repair`] of what the checks find in a mesh's topology, mesh refinement, uniform
+//! ([`refine`]) and adaptive by longest-edge bisection on any editable structure
+//! ([`adaptive`]), the changing workloads of the Surface_mesh benchmark on any editable
+//! structure ([`changing`]), decimation by quadric error and its reconstruction
+//! ([`decimate`]), and element renumbering ([`ordering`]).
 
+pub mod adaptive;
 pub mod changing;
 pub mod checks;
 pub mod decimate;

@@ -224,6 +224,27 @@ pub enum Error {
         /// The dimension of their affine hull (0: one point, 1: a line, 2: a plane).
         dimension: u8,
     },
+    /// A parameter of an algorithm outside the values it accepts (an adaptive refinement's
+    /// `max_edge` that is not a positive finite length, a region whose minimum exceeds its
+    /// maximum); nothing was done.
+    #[error("{parameter} = {value}: it must be {expected}")]
+    InvalidParameter {
+        /// The parameter, as the algorithm names it.
+        parameter: &'static str,
+        /// The value given, as text (a number or a box).
+        value: String,
+        /// What it must be.
+        expected: &'static str,
+    },
+    /// An algorithm would make more elements than the budget its caller gave (the most `u32`
+    /// ids number, or the available memory holds); it stopped before passing it.
+    #[error("{what} would pass the limit of {limit}")]
+    BudgetExceeded {
+        /// What would pass the limit ("faces").
+        what: &'static str,
+        /// The limit.
+        limit: u64,
+    },
     /// A structure's `validate()` found a broken invariant.
     #[error("{structure}: invariant broken: {message}")]
     Invariant {
@@ -292,6 +313,8 @@ impl Error {
             Error::CoincidentVertices { .. } => "coincident-vertices",
             Error::NotAGrid { .. } => "not-a-grid",
             Error::DegeneratePoints { .. } => "degenerate-points",
+            Error::InvalidParameter { .. } => "invalid-parameter",
+            Error::BudgetExceeded { .. } => "budget-exceeded",
             Error::Invariant { .. } => "invariant",
             Error::Unsupported(_) => "unsupported",
             Error::ElementOutOfRange { .. } => "element-out-of-range",
