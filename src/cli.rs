@@ -85,8 +85,10 @@ pub enum Command {
         structures: Vec<String>,
         /// Do one edit of `--edge E` and print the records it writes, old -> new, and what it
         /// reads (`collapse`: the edge's first vertex into its second); a refused edit exits
-        /// with code 1 and the reason. `explain che --op ...` edits the four CHE levels.
-        #[arg(long, value_enum, conflicts_with = "trace", requires = "edge")]
+        /// with code 1 and the reason. Without `--edge`, the first edge on which the edit
+        /// succeeds (on the open tetrahedron, or, where none does, on the canonical `grid`), named, with
+        /// an edge where it is refused and why. `explain che --op ...` edits the four CHE levels.
+        #[arg(long, value_enum, conflicts_with = "trace")]
         op: Option<commands::explain_edit::ExplainOp>,
     },
     /// Measure every operator on every structure and write results.json and index.html.
@@ -149,7 +151,7 @@ pub fn run(cli: Cli) -> u8 {
             edge,
             op: Some(op),
             ..
-        } => commands::explain_edit::run(&name, mesh.as_deref(), op, edge.unwrap_or_default()),
+        } => commands::explain_edit::run(&name, mesh.as_deref(), op, edge),
         Command::Explain {
             name,
             mesh,

@@ -23,7 +23,7 @@ fn added(text: &str) -> Vec<&str> {
 fn a_split_names_the_records_it_adds_and_rewrites() {
     // The open tetrahedron has 4 vertices, 3 triangles and 6 edges: a split adds vertex 4
     // and, splitting an interior edge, two triangles.
-    let half_edge = run("index-half-edge", None, ExplainOp::Split, 1).expect("edge 1 splits");
+    let half_edge = run("index-half-edge", None, ExplainOp::Split, Some(1)).expect("edge 1 splits");
     let new = added(&half_edge);
     assert!(
         new.contains(&"v4") && new.contains(&"f3") && new.contains(&"f4"),
@@ -39,7 +39,7 @@ fn a_split_names_the_records_it_adds_and_rewrites() {
         "next links change: {half_edge}"
     );
 
-    let che = run("che", None, ExplainOp::Split, 1).expect("edge 1 splits at every level");
+    let che = run("che", None, ExplainOp::Split, Some(1)).expect("edge 1 splits at every level");
     for level in 0..4 {
         assert!(
             che.contains(&format!("che-l{level}: split-edge of edge 1")),
@@ -107,7 +107,6 @@ fn a_refused_flip_exits_with_the_reason_and_no_panic() {
 #[test]
 fn bad_requests_are_usage_errors() {
     for args in [
-        vec!["explain", "che-l1", "--op", "flip"],
         vec!["explain", "che-l1", "--op", "twist", "--edge", "1"],
         vec!["explain", "che-l1", "--op", "flip", "--edge", "6"],
         vec!["explain", "explicit", "--op", "flip", "--edge", "1"],
@@ -324,4 +323,38 @@ fn skipped_openmesh_edit_costs_in_list_not_compiled_in() {
     let out = topolab(&["list"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(listed_edit_cost(&text, "openmesh", "split-edge"), None);
+}
+
+/// Without `--edge`, each edit succeeds by default on every editable structure: the
+/// explanation names the edge it chose (and the mesh, where the open tetrahedron has none:
+/// no flip and no collapse succeed there) and an edge where the edit is refused, with its
+/// reason, which `--edge` then shows refused with that reason.
+#[test]
+fn every_edit_succeeds_by_default_and_names_a_refused_edge() {
+    for op in ["flip", "split", "collapse"] {
+        for name in ["index-half-edge", "winged-edge", "che"] {
+            let out = topolab(&["explain", name, "--op", op]);
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(0), "{name} {op}: {stderr}");
+            assert!(stdout.starts_with("no --edge given: edge "), "{stdout}");
+            assert!(stdout.contains("writes (old -> new"), "{stdout}");
+            let on_grid = stdout.contains("the canonical mesh `grid`");
+            assert_eq!(on_grid, op != "split", "{name} {op}: {stdout}");
+            // The refused edge it names is refused, with the reason it gave.
+            let Some(hint) = stdout.split("try --edge ").nth(1) else {
+                continue;
+            };
+            let refused = hint.split_whitespace().next().unwrap();
+            let mesh = if on_grid {
+                vec!["--mesh", "grid"]
+            } else {
+                vec![]
+            };
+            let mut args = vec!["explain", name, "--op", op, "--edge", refused];
+            args.extend(mesh);
+            let out = topolab(&args);
+            assert_eq!(out.status.code(), Some(1), "{args:?}");
+        }
+    }
 }

@@ -26,6 +26,7 @@ use std::any::{Any, TypeId};
 use std::collections::HashMap;
 use std::fmt::Write;
 use topolab_structures::che::CheLevel;
+use topolab_structures::meshes;
 use topolab_structures::{
     CheL0, CheL1, CheL2, CheL3, EdgeId, EdgeList, IndexHalfEdge, MeshEdit, MeshTopology,
     PointerHalfEdge, PolygonSoup, VertexId, VertexList, WingedEdge,
@@ -121,8 +122,14 @@ impl EditVisitor for Explain<'_> {
     }
 }
 
-/// The text of `topolab explain NAME --op OP --edge E [--mesh M]`.
-pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<String, Failure> {
+/// The text of `topolab explain NAME --op OP [--edge E] [--mesh M]`: without `--edge`, the
+/// first edge on which the edit succeeds ([`chosen_edge`]).
+pub fn run(
+    name: &str,
+    mesh: Option<&str>,
+    op: ExplainOp,
+    edge: Option<u32>,
+) -> Result<String, Failure> {
     let editable = editable();
     let names: Vec<&str> = if name == super::explain_che::NAME {
         [CheL0::NAME, CheL1::NAME, CheL2::NAME, CheL3::NAME]
@@ -145,13 +152,62 @@ pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<S
             editable.join(", ")
         )));
     };
-    let (soup, label) = mesh_or_tetrahedron(mesh, false, |s| {
+    let (mut soup, mut label) = mesh_or_tetrahedron(mesh, false, |s| {
         400 * (s.num_corners() + s.num_vertices()) as u64
     })?;
-    let reference = IndexHalfEdge::from_soup(&soup).map_err(|e| Failure {
+    let mut reference = IndexHalfEdge::from_soup(&soup).map_err(|e| Failure {
         message: format!("{label} is not an oriented manifold mesh: {e}"),
         code: 1,
     })?;
+    let mut preface = String::new();
+    let edge = match edge {
+        Some(edge) => edge,
+        None => {
+            let mut choice = chosen_edge(&soup, op);
+            // No such edit on the default mesh (no flip and no collapse succeeds on the open
+            // tetrahedron): the canonical grid, where each does.
+            if choice.success.is_none() && mesh.is_none() {
+                let refused_here = choice.refused.clone();
+                soup = meshes::canonical()
+                    .into_iter()
+                    .find(|m| m.name == "grid")
+                    .expect("the canonical grid")
+                    .soup;
+                reference = IndexHalfEdge::from_soup(&soup).expect("a grid is a manifold");
+                let why = refused_here
+                    .map(|(_, why)| format!(": {why}"))
+                    .unwrap_or_default();
+                label = format!(
+                    "the canonical mesh `grid`, a 3x2 triangulated grid (--mesh grid; no {} succeeds on the open tetrahedron{why})",
+                    op_name(op)
+                );
+                choice = chosen_edge(&soup, op);
+            }
+            let Some(edge) = choice.success else {
+                return Err(Failure {
+                    message: format!(
+                        "no {} succeeds on the first {TRIED_EDGES} edges of {label}{}; name one with --edge",
+                        op_name(op),
+                        choice
+                            .refused
+                            .map(|(e, why)| format!(" (edge {e}: {why})"))
+                            .unwrap_or_default()
+                    ),
+                    code: 1,
+                });
+            };
+            let _ = writeln!(
+                preface,
+                "no --edge given: edge {edge} is the first edge of {label} on which {} succeeds{}",
+                op_name(op),
+                choice
+                    .refused
+                    .map(|(e, why)| format!("; it is refused on edge {e} ({why}): try --edge {e}"))
+                    .unwrap_or_default()
+            );
+            edge
+        }
+    };
     if edge as usize >= reference.num_edges() {
         return Err(Failure::usage(format!(
             "--edge {edge}: {label} has {} edges (0 to {})",
@@ -160,7 +216,7 @@ pub fn run(name: &str, mesh: Option<&str>, op: ExplainOp, edge: u32) -> Result<S
         )));
     }
     let ends = reference.edge_vertices(EdgeId(edge)).map(|v| v.0);
-    let mut out = String::new();
+    let mut out = preface;
     for n in names {
         let e = Explain {
             soup: &soup,
@@ -183,11 +239,7 @@ impl Explain<'_> {
         let [a, b] = self.ends;
         let id = edge_between(&m, a, b).expect("the edge is in every structure");
         let before = records(&m);
-        let what = match self.op {
-            ExplainOp::Flip => "flip-edge",
-            ExplainOp::Split => "split-edge",
-            ExplainOp::Collapse => "collapse-edge",
-        };
+        let what = op_name(self.op);
         let done = match self.op {
             ExplainOp::Flip => m.flip_edge(id),
             ExplainOp::Split => {
@@ -226,6 +278,73 @@ impl Explain<'_> {
         let _ = writeln!(w);
         Ok(out)
     }
+}
+
+/// The name of an edit as `explain` prints it.
+fn op_name(op: ExplainOp) -> &'static str {
+    match op {
+        ExplainOp::Flip => "flip-edge",
+        ExplainOp::Split => "split-edge",
+        ExplainOp::Collapse => "collapse-edge",
+    }
+}
+
+/// Does `op` succeed on `edge` of `m`? Done on `m`: a refused edit changes nothing (what
+/// `MeshEdit` promises), a done one changes `m`. `Err` with the refusal.
+fn try_op(m: &mut IndexHalfEdge, op: ExplainOp, edge: u32) -> Result<(), String> {
+    let [a, b] = m.edge_vertices(EdgeId(edge));
+    let done = match op {
+        ExplainOp::Flip => m.flip_edge(EdgeId(edge)),
+        ExplainOp::Split => {
+            let p = (m.position(a) + m.position(b)) / 2.0;
+            m.split_edge(EdgeId(edge), p).map(drop)
+        }
+        ExplainOp::Collapse => m.collapse_edge(a, b),
+    };
+    done.map_err(|e| e.to_string())
+}
+
+/// What [`chosen_edge`] found: the first edge where the edit succeeds, and the first where
+/// it is refused, with the reason.
+struct Choice {
+    success: Option<u32>,
+    refused: Option<(u32, String)>,
+}
+
+/// Edges [`chosen_edge`] tries at most: a large mesh is not edited edge by edge.
+const TRIED_EDGES: u32 = 64;
+
+/// The first edge of `soup` (in the edge numbering `--edge` uses) on which `op` succeeds, and
+/// the first on which it is refused, among its first [`TRIED_EDGES`], tried on the index
+/// half-edge: every editable structure refuses what it refuses (the editing suite holds them
+/// to one model). Refused edits leave the structure as it was, so it is built again only after
+/// an edit that was done.
+fn chosen_edge(soup: &PolygonSoup, op: ExplainOp) -> Choice {
+    let mut choice = Choice {
+        success: None,
+        refused: None,
+    };
+    let Ok(mut m) = IndexHalfEdge::from_soup(soup) else {
+        return choice;
+    };
+    for e in 0..(m.num_edges() as u32).min(TRIED_EDGES) {
+        match try_op(&mut m, op, e) {
+            Ok(()) => {
+                choice.success.get_or_insert(e);
+                match IndexHalfEdge::from_soup(soup) {
+                    Ok(fresh) => m = fresh,
+                    Err(_) => break,
+                }
+            }
+            Err(why) => {
+                choice.refused.get_or_insert((e, why));
+            }
+        }
+        if choice.success.is_some() && choice.refused.is_some() {
+            break;
+        }
+    }
+    choice
 }
 
 /// The structure's id of the edge between `a` and `b`.
