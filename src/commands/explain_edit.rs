@@ -175,12 +175,14 @@ pub fn run(
                     .soup;
                 reference = IndexHalfEdge::from_soup(&soup).expect("a grid is a manifold");
                 let why = refused_here
-                    .map(|(_, why)| format!(": {why}"))
+                    .map(|(e, why)| format!(" (edge {e}: {why})"))
                     .unwrap_or_default();
-                label = format!(
-                    "the canonical mesh `grid`, a 3x2 triangulated grid (--mesh grid; no {} succeeds on the open tetrahedron{why})",
+                let _ = writeln!(
+                    preface,
+                    "no {} succeeds on the open tetrahedron{why}: the canonical mesh `grid` instead",
                     op_name(op)
                 );
+                label = "the canonical mesh `grid` (a 3x2 triangulated grid: --mesh grid)".into();
                 choice = chosen_edge(&soup, op);
             }
             let Some(edge) = choice.success else {
