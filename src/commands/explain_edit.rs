@@ -123,7 +123,7 @@ impl EditVisitor for Explain<'_> {
 }
 
 /// The text of `topolab explain NAME --op OP [--edge E] [--mesh M]`: without `--edge`, the
-/// first edge on which the edit succeeds ([`chosen_edge`]).
+/// first edge on which the edit succeeds, among the first 64, tried on the index half-edge.
 pub fn run(
     name: &str,
     mesh: Option<&str>,

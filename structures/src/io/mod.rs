@@ -260,7 +260,7 @@ pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
     write_as(path, soup, format_of(path)?)
 }
 
-/// [`write`] in `format`, whatever the extension of `path`.
+/// [`write()`] in `format`, whatever the extension of `path`.
 pub fn write_as(path: &Path, soup: &PolygonSoup, format: Format) -> Result<()> {
     // Refuse before creating anything, so a refused write leaves no empty file behind.
     let write_as: fn(&mut BufWriter<File>, &PolygonSoup) -> std::io::Result<()> = match format {
