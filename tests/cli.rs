@@ -120,6 +120,16 @@ fn info_gives_one_answer_from_every_structure_that_stores_a_non_manifold_mesh() 
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `topolab info FILE`'s exit code and stderr.
+fn info_stderr(file: &Path) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["info", file.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code().expect("exited normally"), stderr)
+}
+
 /// A file that reads but is not a mesh the structure can store: the message says why and
 /// where to go next (`check` for every problem, `repair` for the manifold ones); a file with
 /// statements the reader skips says so on stderr and is read.
@@ -132,12 +142,8 @@ fn messages_point_to_check_and_repair_and_skipped_statements_are_warned() {
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
     )
     .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
-        .args(["info", bowtie.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let (code, stderr) = info_stderr(&bowtie);
+    assert_eq!(code, 1, "{stderr}");
     assert!(stderr.contains("non-manifold"), "{stderr}");
     assert!(stderr.contains("`topolab check "), "{stderr}");
     assert!(stderr.contains("`topolab repair "), "{stderr}");
@@ -147,12 +153,8 @@ fn messages_point_to_check_and_repair_and_skipped_statements_are_warned() {
         "v 0 0 0\nvc 1 0 0\nv 1 0 0\nvc 0 1 0\nv 0 1 0\nvc 0 0 1\nf 1 2 3\n",
     )
     .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
-        .args(["info", coloured.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let (code, stderr) = info_stderr(&coloured);
+    assert_eq!(code, 0, "{stderr}");
     assert_eq!(
         stderr.trim(),
         format!(

@@ -193,42 +193,19 @@ mod adaptive {
         assert!(e.contains("cannot be used with"), "{e}");
         assert!(parse(&["topolab", "refine", "torus", "--out", "x.obj"]).is_err());
         // The uniform options do not go with --max-edge, the adaptive ones not with --levels.
-        let e = parse(&[
-            "topolab",
-            "refine",
-            "torus",
-            "--max-edge",
-            "0.5",
-            "--scheme",
-            "loop",
-            "--out",
-            "x.obj",
-        ]);
-        assert!(e.is_err());
-        let e = parse(&[
-            "topolab",
-            "refine",
-            "torus",
-            "--levels",
-            "1",
-            "--region",
-            "0,0,0,1,1,1",
-            "--out",
-            "x.obj",
-        ]);
-        assert!(e.is_err());
-        let e = parse(&[
-            "topolab",
-            "refine",
-            "torus",
-            "--levels",
-            "1",
-            "--structure",
-            "winged-edge",
-            "--out",
-            "x.obj",
-        ]);
-        assert!(e.is_err());
+        for mixed in [
+            ["--max-edge", "0.5", "--scheme", "loop"],
+            ["--levels", "1", "--region", "0,0,0,1,1,1"],
+            ["--levels", "1", "--structure", "winged-edge"],
+        ] {
+            let args = [
+                &["topolab", "refine", "torus"][..],
+                &mixed,
+                &["--out", "x.obj"],
+            ]
+            .concat();
+            assert!(parse(&args).is_err(), "{args:?}");
+        }
         // A negative region parses (and is checked by the command).
         let ok = [
             "topolab",
