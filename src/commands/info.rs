@@ -16,15 +16,10 @@ impl StructureVisitor for InfoVisit<'_> {
     }
 }
 
-/// What `info` computes on a mesh: the structure's summary (or why it cannot store the mesh),
-/// and the non-manifold vertices from the edge analysis. `None` for an unknown structure.
-fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<(Result<Summary, Error>, usize)> {
-    let summary = registry::visit(structure, InfoVisit(soup))?;
-    let non_manifold_vertices = soup
-        .connectivity()
-        .map(|c| c.vertex_fans(soup).iter().filter(|&&n| n > 1).count())
-        .unwrap_or(0);
-    Some((summary, non_manifold_vertices))
+/// What `info` computes on a mesh: the structure's summary, or why it cannot store the mesh.
+/// `None` for an unknown structure.
+fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<Result<Summary, Error>> {
+    registry::visit(structure, InfoVisit(soup))
 }
 
 /// The text of `topolab info MESH [--structure NAME] [--json]`.
@@ -37,8 +32,7 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
         0
     })?;
     refuse_empty(spec, &soup)?;
-    let (summary, non_manifold_vertices) =
-        summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
+    let summary = summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
     let summary = summary.map_err(|e| Failure {
         message: format!(
             "{structure} cannot store {spec}: {e}{}",
@@ -49,7 +43,6 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
     if json {
         let mut v = serde_json::to_value(&summary).expect("serialisable");
         v["mesh"] = spec.into();
-        v["non_manifold_vertices"] = non_manifold_vertices.into();
         return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
     }
     let s = &summary;
@@ -88,10 +81,13 @@ pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> 
     let _ = writeln!(
         out,
         "manifold:             {}",
-        if non_manifold_vertices == 0 {
+        if s.non_manifold_vertices == 0 {
             "yes (oriented, every vertex one fan)".to_string()
         } else {
-            format!("edges yes, {non_manifold_vertices} non-manifold vertices")
+            format!(
+                "edges yes, {} non-manifold vertices",
+                s.non_manifold_vertices
+            )
         }
     );
     Ok(out)

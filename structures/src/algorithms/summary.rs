@@ -216,6 +216,8 @@ pub struct Summary {
     pub genus: Option<i64>,
     /// Why `genus` is not defined, when it is not.
     pub genus_undefined: Option<Undefined>,
+    /// Used vertices whose faces form more than one fan ([`ManifoldFacts`]).
+    pub non_manifold_vertices: usize,
     /// Every face is a triangle.
     pub triangles_only: bool,
 }
@@ -245,6 +247,7 @@ impl Summary {
             euler_characteristic,
             genus: genus.ok(),
             genus_undefined: genus.err(),
+            non_manifold_vertices: facts.non_manifold_vertices,
             triangles_only,
         }
     }
