@@ -242,14 +242,7 @@ impl Explain<'_> {
         let id = edge_between(&m, a, b).expect("the edge is in every structure");
         let before = records(&m);
         let what = op_name(self.op);
-        let done = match self.op {
-            ExplainOp::Flip => m.flip_edge(id),
-            ExplainOp::Split => {
-                let p = (m.position(VertexId(a)) + m.position(VertexId(b))) / 2.0;
-                m.split_edge(id, p).map(drop)
-            }
-            ExplainOp::Collapse => m.collapse_edge(VertexId(a), VertexId(b)),
-        };
+        let done = apply(&mut m, self.op, id, [VertexId(a), VertexId(b)]);
         let mut out = String::new();
         let w = &mut out;
         let _ = writeln!(
@@ -291,19 +284,28 @@ fn op_name(op: ExplainOp) -> &'static str {
     }
 }
 
-/// Does `op` succeed on `edge` of `m`? Done on `m`: a refused edit changes nothing (what
-/// `MeshEdit` promises), a done one changes `m`. `Err` with the refusal.
-fn try_op(m: &mut IndexHalfEdge, op: ExplainOp, edge: u32) -> Result<(), String> {
-    let [a, b] = m.edge_vertices(EdgeId(edge));
-    let done = match op {
-        ExplainOp::Flip => m.flip_edge(EdgeId(edge)),
+/// Does `op` on edge `id` of `m`, the edge from `a` to `b`: a flip, a split at its midpoint,
+/// or the collapse of `a` into `b`. A refused edit changes nothing (what `MeshEdit` promises).
+fn apply<M: MeshEdit>(
+    m: &mut M,
+    op: ExplainOp,
+    id: EdgeId,
+    [a, b]: [VertexId; 2],
+) -> topolab_structures::Result<()> {
+    match op {
+        ExplainOp::Flip => m.flip_edge(id),
         ExplainOp::Split => {
             let p = (m.position(a) + m.position(b)) / 2.0;
-            m.split_edge(EdgeId(edge), p).map(drop)
+            m.split_edge(id, p).map(drop)
         }
         ExplainOp::Collapse => m.collapse_edge(a, b),
-    };
-    done.map_err(|e| e.to_string())
+    }
+}
+
+/// Does `op` succeed on `edge` of `m` ([`apply`])? `Err` with the refusal.
+fn try_op(m: &mut IndexHalfEdge, op: ExplainOp, edge: u32) -> Result<(), String> {
+    let ends = m.edge_vertices(EdgeId(edge));
+    apply(m, op, EdgeId(edge), ends).map_err(|e| e.to_string())
 }
 
 /// What [`chosen_edge`] found: the first edge where the edit succeeds, and the first where
