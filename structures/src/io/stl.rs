@@ -30,18 +30,18 @@ const HEADER: usize = 84;
 const FACET: usize = 50;
 
 pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
-    if let Some(count) = binary_count(bytes) {
-        if HEADER as u64 + FACET as u64 * count as u64 == bytes.len() as u64 {
+    let count = binary_count(bytes);
+    let expected = count.map(|n| HEADER as u64 + FACET as u64 * n as u64);
+    if let (Some(count), Some(expected)) = (count, expected) {
+        if expected == bytes.len() as u64 {
             return read_binary(bytes, count as usize);
         }
     }
-    let text = bytes.trim_ascii_start();
-    if text.starts_with(b"solid") {
+    if bytes.trim_ascii_start().starts_with(b"solid") {
         return read_ascii(bytes);
     }
-    match binary_count(bytes) {
-        Some(count) => {
-            let expected = HEADER as u64 + FACET as u64 * count as u64;
+    match count.zip(expected) {
+        Some((count, expected)) => {
             let location = Location::Byte(bytes.len() as u64);
             if (bytes.len() as u64) < expected {
                 Err(Error::Truncated {
