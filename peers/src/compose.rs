@@ -33,6 +33,47 @@ macro_rules! composed_queries {
     };
 }
 
+/// The `MeshTopology` methods both lox adapters forward to lox alike: the counts of vertices
+/// and faces, the positions kept beside the mesh, and R00, R02 and R20 by lox's circulators
+/// (`vertices_around_vertex`, `faces_around_vertex`, `vertices_around_face`). Used inside an
+/// `impl MeshTopology` block of a struct with fields `mesh` (a lox mesh) and `positions` (its
+/// file imports lox's prelude, `VertexHandle`, `FaceHandle`, `DVec3`, `VertexId` and `FaceId`).
+#[macro_export]
+macro_rules! lox_forwarded_queries {
+    () => {
+        #[inline]
+        fn num_vertices(&self) -> usize {
+            self.mesh.num_vertices() as usize
+        }
+        #[inline]
+        fn num_faces(&self) -> usize {
+            self.mesh.num_faces() as usize
+        }
+        #[inline]
+        fn position(&self, v: VertexId) -> DVec3 {
+            self.positions[v.index()]
+        }
+        #[inline]
+        fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
+            for w in self.mesh.vertices_around_vertex(VertexHandle::new(v.0)) {
+                f(VertexId(w.idx()));
+            }
+        }
+        #[inline]
+        fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
+            for g in self.mesh.faces_around_vertex(VertexHandle::new(v.0)) {
+                f(FaceId(g.idx()));
+            }
+        }
+        #[inline]
+        fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
+            for v in self.mesh.vertices_around_face(FaceHandle::new(face.0)) {
+                f(VertexId(v.idx()));
+            }
+        }
+    };
+}
+
 /// Refuses what the crates mis-handle, before the crate sees it: indices out of range and
 /// repeated corners ([`PolygonSoup::check`]), an edge with more than two faces or two faces
 /// running one way along their edge ([`PolygonSoup::connectivity`]), a vertex whose faces form

@@ -121,16 +121,8 @@ impl MeshTopology for LoxDirectedEdge {
     }
 
     #[inline]
-    fn num_vertices(&self) -> usize {
-        self.mesh.num_vertices() as usize
-    }
-    #[inline]
     fn num_edges(&self) -> usize {
         self.edges
-    }
-    #[inline]
-    fn num_faces(&self) -> usize {
-        self.mesh.num_faces() as usize
     }
 
     fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
@@ -141,17 +133,6 @@ impl MeshTopology for LoxDirectedEdge {
         }
     }
 
-    #[inline]
-    fn position(&self, v: VertexId) -> DVec3 {
-        self.positions[v.index()]
-    }
-
-    #[inline]
-    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
-        for w in self.mesh.vertices_around_vertex(VertexHandle::new(v.0)) {
-            f(VertexId(w.idx()));
-        }
-    }
     /// Each edge at `v` is the outgoing half-edge of one face around `v`, except a boundary
     /// edge that runs into `v`, which is the incoming half-edge of the last face.
     #[inline]
@@ -169,12 +150,6 @@ impl MeshTopology for LoxDirectedEdge {
         }
     }
     #[inline]
-    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
-        for g in self.mesh.faces_around_vertex(VertexHandle::new(v.0)) {
-            f(FaceId(g.idx()));
-        }
-    }
-    #[inline]
     fn edge_vertices(&self, e: EdgeId) -> [VertexId; 2] {
         self.ends(e.0).map(VertexId)
     }
@@ -187,12 +162,6 @@ impl MeshTopology for LoxDirectedEdge {
         f(FaceId(e.0 / 3));
         if let Some(t) = self.twin(e.0) {
             f(FaceId(t / 3));
-        }
-    }
-    #[inline]
-    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        for v in self.mesh.vertices_around_face(FaceHandle::new(face.0)) {
-            f(VertexId(v.idx()));
         }
     }
     /// Half-edges 1, 2, 0 of the face, so that edge `i` joins corners `i` and `i + 1`.
@@ -220,6 +189,7 @@ impl MeshTopology for LoxDirectedEdge {
     // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
     // checks of the answers as `validate`.
     crate::composed_queries!();
+    crate::lox_forwarded_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per half-edge its twin and target (8), plus the positions

@@ -78,16 +78,8 @@ impl MeshTopology for LoxHalfEdge {
     }
 
     #[inline]
-    fn num_vertices(&self) -> usize {
-        self.mesh.num_vertices() as usize
-    }
-    #[inline]
     fn num_edges(&self) -> usize {
         self.mesh.num_edges() as usize
-    }
-    #[inline]
-    fn num_faces(&self) -> usize {
-        self.mesh.num_faces() as usize
     }
 
     fn for_each_edge(&self, mut f: impl FnMut(EdgeId)) {
@@ -97,26 +89,9 @@ impl MeshTopology for LoxHalfEdge {
     }
 
     #[inline]
-    fn position(&self, v: VertexId) -> DVec3 {
-        self.positions[v.index()]
-    }
-
-    #[inline]
-    fn vertex_vertices(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
-        for w in self.mesh.vertices_around_vertex(VertexHandle::new(v.0)) {
-            f(VertexId(w.idx()));
-        }
-    }
-    #[inline]
     fn vertex_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
         for e in self.mesh.edges_around_vertex(VertexHandle::new(v.0)) {
             f(EdgeId(e.idx()));
-        }
-    }
-    #[inline]
-    fn vertex_faces(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
-        for g in self.mesh.faces_around_vertex(VertexHandle::new(v.0)) {
-            f(FaceId(g.idx()));
         }
     }
     #[inline]
@@ -133,12 +108,6 @@ impl MeshTopology for LoxHalfEdge {
     fn edge_faces(&self, e: EdgeId, mut f: impl FnMut(FaceId)) {
         for g in self.mesh.faces_of_edge(EdgeHandle::new(e.0)) {
             f(FaceId(g.idx()));
-        }
-    }
-    #[inline]
-    fn face_vertices(&self, face: FaceId, mut f: impl FnMut(VertexId)) {
-        for v in self.mesh.vertices_around_face(FaceHandle::new(face.0)) {
-            f(VertexId(v.idx()));
         }
     }
     #[inline]
@@ -167,6 +136,7 @@ impl MeshTopology for LoxHalfEdge {
     // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
     // checks of the answers as `validate`.
     crate::composed_queries!();
+    crate::lox_forwarded_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per face one half-edge (4), per half-edge face, target,
