@@ -25,8 +25,7 @@ use topolab::alloc::{keep_freed_memory, minor_faults, release_free_memory, threa
 use topolab_harness::measure::Builder;
 use topolab_harness::timing::turns::{take_turns, Answer, Run as Turn};
 use topolab_structures::{
-    che, meshes, CheL1, CheL2, CheL3, Constructed, IndexHalfEdge, MeshTopology, PointerHalfEdge,
-    PolygonSoup,
+    che, meshes, CheL1, CheL2, CheL3, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup,
 };
 
 /// One build, as the report times it.
@@ -51,7 +50,7 @@ fn build<M: MeshTopology>(soup: &PolygonSoup) -> Timed {
     let ns = thread_cpu_ns().expect("thread CPU clock") - start;
     let faults = minor_faults().unwrap_or(0) - first;
     let faces = built
-        .and_then(Constructed::finish)
+        .and_then(|b| builder.finish(b))
         .expect("the generated meshes are manifold")
         .num_faces();
     Timed { ns, faults, faces }

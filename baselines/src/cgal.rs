@@ -37,7 +37,7 @@
 //!   assertion). Ids come from `Polyhedron_items_with_id_3`, set after building.
 //!
 //! Both are told the exact vertex, edge and face counts, from the lab's checks and edge
-//! analysis before the clock (`NativeKernels::admit`); the timed construction is
+//! analysis before the clock (`SeparateConstruction::admit`); the timed construction is
 //! [`Cgal::construct`], the library's calls alone. The `Polyhedron_3`'s ids and tables (the lab's
 //! way in from an id, not CGAL's) are made after the clock, when the mesh is finished for its
 //! queries (`Constructed::finish`), and every mesh is freed after the clock.
@@ -101,7 +101,7 @@ use std::marker::PhantomData;
 use std::ptr::NonNull;
 use topolab_structures::{
     Access, BuildFacts, Constructed, Cost, Error, MeshTopology, NativeKernels, Operator,
-    PolygonSoup, Result, Sample, SampledRun, Workload,
+    PolygonSoup, Result, Sample, SampledRun, SeparateConstruction, Workload,
 };
 
 mod access;
@@ -310,7 +310,7 @@ impl<S: CgalStructure> Cgal<S> {
             faces: 0,
             class: PhantomData,
         };
-        Ok(Constructed::new(mesh, Self::finish))
+        Ok(Constructed::new(mesh, |mesh, _| mesh.finish()))
     }
 
     /// The finishing step of [`Cgal::construct`]: the lab's ids (`topolab_cgal_finish`), then
@@ -327,7 +327,7 @@ impl<S: CgalStructure> Cgal<S> {
     /// after [`PolygonSoup::check`] only: the checks of [`MeshTopology::from_soup`], which
     /// every structure makes, are left to CGAL.
     pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
-        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish()
+        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish(soup)
     }
 
     /// The checksum of operator `op` over every element, computed by one C++ loop with CGAL's
@@ -449,6 +449,10 @@ impl<S: CgalStructure> MeshTopology for Cgal<S> {
         Some(&Kernels)
     }
 
+    fn separate_construction<'a>() -> Option<&'a dyn SeparateConstruction<Self>> {
+        Some(&Kernels)
+    }
+
     fn access(op: Operator) -> Option<Access> {
         S::access(op)
     }
@@ -487,7 +491,7 @@ impl<S: CgalStructure> Drop for SampledKernel<'_, S> {
 /// CGAL's own loops, as the harness times them ([`MeshTopology::native`]).
 struct Kernels;
 
-impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
+impl<S: CgalStructure> SeparateConstruction<Cgal<S>> for Kernels {
     fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
         foreign::admit(soup)
     }
@@ -495,7 +499,9 @@ impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
     fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<Cgal<S>>> {
         Cgal::construct(facts)
     }
+}
 
+impl<S: CgalStructure> NativeKernels<Cgal<S>> for Kernels {
     fn sweep(&self, mesh: &Cgal<S>, op: Operator) -> Result<u64> {
         mesh.native_sweep(op)
     }

@@ -262,7 +262,7 @@ pub(crate) fn refusal(soup: &PolygonSoup, face: usize, what: &str) -> Error {
 }
 
 /// The lab's checks of `soup` before a halfedge library builds it, and what its construction is
-/// told (`NativeKernels::admit` of every baseline): the lab's edge analysis refuses what every
+/// told (`SeparateConstruction::admit` of every baseline): the lab's edge analysis refuses what every
 /// structure refuses, [`check_open_fans`] what these libraries refuse in some face orders
 /// only, and the analysis's edge count, exact for any soup it accepts, is what the library
 /// reserves for.

@@ -50,7 +50,7 @@
 //! For timing, per-query FFI calls would measure the FFI, so every kernel the harness times is
 //! one C++ function: construction ([`OpenMesh::construct`], the one C++ call of `reserve`,
 //! `add_vertex` and `add_face`: the lab's checks and the exact edge count for `reserve` come
-//! before the clock, `NativeKernels::admit`, and reading the mesh's counts and freeing it
+//! before the clock, `SeparateConstruction::admit`, and reading the mesh's counts and freeing it
 //! after), each sweep ([`OpenMesh::native_sweep`]), each sampled kernel
 //! ([`OpenMesh::native_sampled`]: the sampled vertices, edges, faces or (edge, face) pairs,
 //! checked once before the clock and handed over as OpenMesh's handles, which are the lab's
@@ -75,7 +75,7 @@ use std::ptr::NonNull;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{
     BuildFacts, Constructed, Cost, Error, MeshTopology, NativeKernels, Operator, PolygonSoup,
-    Result, Sample, SampledRun, Workload,
+    Result, Sample, SampledRun, SeparateConstruction, Workload,
 };
 
 /// The declarations of `openmesh/shim.h`.
@@ -201,7 +201,7 @@ impl OpenMesh {
             edges: 0,
             faces: 0,
         };
-        Ok(Constructed::new(mesh, Self::read_counts))
+        Ok(Constructed::new(mesh, |mesh, _| mesh.read_counts()))
     }
 
     /// Reads the kind and counts of the mesh, which the wrapper keeps to check ids without an
@@ -222,7 +222,7 @@ impl OpenMesh {
     /// reserved, after [`PolygonSoup::check`] only: the checks of
     /// [`MeshTopology::from_soup`], which every structure makes, are left to the library.
     pub fn build_native(soup: &PolygonSoup, edges_hint: usize) -> Result<Self> {
-        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish()
+        Self::construct(&BuildFacts::new(soup, edges_hint)?)?.finish(soup)
     }
 
     /// `true` for a TriMesh (triangle input), `false` for a PolyMesh.
@@ -368,6 +368,10 @@ impl MeshTopology for OpenMesh {
         Some(&Kernels)
     }
 
+    fn separate_construction<'a>() -> Option<&'a dyn SeparateConstruction<Self>> {
+        Some(&Kernels)
+    }
+
     fn access(op: Operator) -> Option<topolab_structures::Access> {
         access::model(op)
     }
@@ -412,7 +416,7 @@ impl SampledKernel<'_> {
 /// OpenMesh's own loops, as the harness times them ([`MeshTopology::native`]).
 struct Kernels;
 
-impl NativeKernels<OpenMesh> for Kernels {
+impl SeparateConstruction<OpenMesh> for Kernels {
     fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
         foreign::admit(soup)
     }
@@ -420,7 +424,9 @@ impl NativeKernels<OpenMesh> for Kernels {
     fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<OpenMesh>> {
         OpenMesh::construct(facts)
     }
+}
 
+impl NativeKernels<OpenMesh> for Kernels {
     fn sweep(&self, mesh: &OpenMesh, op: Operator) -> Result<u64> {
         mesh.native_sweep(op)
     }

@@ -23,44 +23,51 @@ use crate::timing::{median, time, Budget, Timing};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
 use topolab_structures::{
-    BoundaryCurves, BuildFacts, Constructed, Input, MeshTopology, NativeKernels, Operator,
-    PolygonSoup,
+    BoundaryCurves, BuildFacts, Constructed, Input, MeshTopology, Operator, PolygonSoup,
+    SeparateConstruction,
 };
 
-/// How the harness builds `M` from a soup, decided before any clock: a baseline's own
-/// construction ([`NativeKernels::construction`]) told the facts its
-/// [`NativeKernels::admit`] found, else [`MeshTopology::from_soup`]. [`Builder::build`] is what
-/// a clock covers: the library's construction alone for a baseline; the caller finishes the
-/// structure ([`Constructed::finish`]) and drops it after the clock, as it does for every
-/// structure.
+/// How the harness builds `M` from a soup, decided before any clock: an outside project's
+/// own construction ([`SeparateConstruction::construction`]: a C++ baseline's, a Rust
+/// crate's) told the facts its [`SeparateConstruction::admit`] found, else
+/// [`MeshTopology::from_soup`]. [`Builder::build`] is what a clock covers: the project's
+/// construction alone for an outside structure; the caller finishes the structure
+/// ([`Builder::finish`]) and drops it after the clock, as it does for every structure.
 pub struct Builder<'a, M: MeshTopology> {
     soup: &'a PolygonSoup,
-    native: Option<(&'a dyn NativeKernels<M>, BuildFacts<'a>)>,
+    separate: Option<(&'a dyn SeparateConstruction<M>, BuildFacts<'a>)>,
 }
 
 impl<'a, M: MeshTopology> Builder<'a, M> {
-    /// Prepares the builds of `M` from `soup`: for a baseline, its [`NativeKernels::admit`]
-    /// (the lab's checks, whose refusal is the structure's, and the facts); nothing for the
-    /// lab's structures, whose checks are part of their construction.
+    /// Prepares the builds of `M` from `soup`: for an outside structure, its
+    /// [`SeparateConstruction::admit`] (the lab's checks, whose refusal is the structure's, and
+    /// the facts); nothing for the lab's structures, whose checks are part of their
+    /// construction.
     pub fn new(soup: &'a PolygonSoup) -> topolab_structures::Result<Self> {
-        let native = match M::native() {
-            Some(kernels) => Some((kernels, kernels.admit(soup)?)),
+        let separate = match M::separate_construction() {
+            Some(construction) => Some((construction, construction.admit(soup)?)),
             None => None,
         };
-        Ok(Self { soup, native })
+        Ok(Self { soup, separate })
     }
 
-    /// Whether the builds are the baseline's own construction.
+    /// Whether the builds are an outside project's own construction, without the lab's
+    /// checks.
     pub fn is_native(&self) -> bool {
-        self.native.is_some()
+        self.separate.is_some()
     }
 
     /// One build, the part a clock covers.
     pub fn build(&self) -> topolab_structures::Result<Constructed<M>> {
-        match &self.native {
-            Some((kernels, facts)) => kernels.construction(facts),
+        match &self.separate {
+            Some((construction, facts)) => construction.construction(facts),
             None => M::from_soup(self.soup).map(Constructed::ready),
         }
+    }
+
+    /// Finishes a build after the clock ([`Constructed::finish`] with this builder's soup).
+    pub fn finish(&self, built: Constructed<M>) -> topolab_structures::Result<M> {
+        built.finish(self.soup)
     }
 
     /// The message for a build that failed after the first one succeeded.
@@ -224,7 +231,7 @@ pub fn measure_structure<M: MeshTopology>(
     meter.counting(true);
     meter.reset_peak();
     let before = meter.current();
-    let built = builder.build().and_then(Constructed::finish);
+    let built = builder.build().and_then(|b| builder.finish(b));
     let peak = meter.peak().saturating_sub(before);
     let held = meter.current().saturating_sub(before);
     meter.counting(false);
@@ -395,7 +402,7 @@ struct Builds {
     /// Median minor page faults of a cold build.
     cold_faults: Option<u64>,
     /// Whether the baseline's own construction was timed
-    /// ([`topolab_structures::NativeKernels`]).
+    /// ([`topolab_structures::SeparateConstruction`]).
     native: bool,
 }
 
@@ -415,7 +422,7 @@ fn time_construction<M: MeshTopology>(
     // is whole), and the structure dropped.
     let faces = |built: topolab_structures::Result<Constructed<M>>| {
         built
-            .and_then(Constructed::finish)
+            .and_then(|b| builder.finish(b))
             .map(|m| m.num_faces())
             .map_err(|e| builder.failure(e))
     };

@@ -39,12 +39,51 @@ use baby_shark::mesh::corner_table::{
 use glam::DVec3;
 use std::ops::ControlFlow;
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Cost, EdgeId, Error, FaceId, Family, MeshTopology, Operator,
-    PolygonSoup, Result, VertexId,
+    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, Error, FaceId, Family,
+    MeshTopology, Operator, PolygonSoup, Result, SeparateConstruction, VertexId,
 };
 
 /// The lab's name of this structure.
 pub const NAME: &str = "baby-shark-corner-table";
+
+/// baby_shark's own construction apart from the lab's checks ([`SeparateConstruction`]):
+/// what the report times, as it times OpenMesh's; the adapter's tables are made after the
+/// clock ([`BabySharkCornerTable::tables`]), as CGAL's id tables are.
+struct Build;
+
+impl SeparateConstruction<BabySharkCornerTable> for Build {
+    /// [`compose::admit`]: baby_shark's builder silently skips a face whose directed edge is
+    /// already taken (a third face on an edge, or two faces one way along it) and splits a
+    /// vertex with several fans into new vertices, so the lab's ids would no longer be the
+    /// soup's.
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
+        compose::admit(soup, NAME, true)
+    }
+
+    /// `CornerTable::from_vertex_and_face_iters`, as baby_shark's documentation builds one.
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<BabySharkCornerTable>> {
+        let soup = facts.soup();
+        compose::without_panic(NAME, || {
+            let mesh = CornerTable::<f64>::from_vertex_and_face_iters(
+                soup.positions.iter().map(|p| Vector3::new(p.x, p.y, p.z)),
+                soup.indices().iter().map(|&v| v as usize),
+            );
+            // Empty tables until `tables`, after the clock.
+            let none = CornerTable::<f64>::default();
+            let mesh = BabySharkCornerTable {
+                vertex_ids: none.create_vertex_attribute(),
+                corner_ids: none.create_edge_attribute(),
+                mesh,
+                vertices: Vec::new(),
+                faces: Vec::new(),
+                edges: Vec::new(),
+                isolated: Vec::new(),
+                admitted_edges: facts.edges() as usize,
+            };
+            Ok(Constructed::new(mesh, BabySharkCornerTable::tables))
+        })
+    }
+}
 
 /// baby_shark's `CornerTable<f64>` and the adapter's tables from the lab's ids to the
 /// crate's and back; see the module docs.
@@ -63,6 +102,9 @@ pub struct BabySharkCornerTable {
     /// The vertices no face uses and their positions, by lab id (baby_shark keeps no id for
     /// them).
     isolated: Vec<(u32, DVec3)>,
+    /// The edge count of the lab's analysis before the crate built, which the tables are
+    /// checked against.
+    admitted_edges: usize,
 }
 
 impl std::fmt::Debug for BabySharkCornerTable {
@@ -101,44 +143,11 @@ impl BabySharkCornerTable {
             self.mesh.opposite_edge(h).filter(|&o| in_face(o))
         }
     }
-    fn invariant(message: String) -> Error {
-        Error::Invariant {
-            structure: NAME,
-            message,
-        }
-    }
-}
-
-impl MeshTopology for BabySharkCornerTable {
-    const NAME: &'static str = NAME;
-    const FAMILY: Family = Family::RustCrate;
-
-    fn capabilities() -> Capabilities {
-        Capabilities {
-            triangles_only: true,
-            ..Capabilities::POLYGONS
-        }
-    }
-
-    fn cost(op: Operator) -> Cost {
-        match op {
-            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => Cost::Local,
-            Operator::BoundaryCurves => Cost::Linear,
-            _ => Cost::Constant,
-        }
-    }
-
-    /// [`compose::admit`] first: baby_shark's builder silently skips a face whose directed
-    /// edge is already taken (a third face on an edge, or two faces one way along it) and
-    /// splits a vertex with several fans into new vertices, so the lab's ids would no longer
-    /// be the soup's. The tables are then read from the crate's iterators, and any count
-    /// that differs from the soup's is reported as a broken invariant, not answered.
-    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        let connectivity = compose::admit(soup, NAME, true)?;
-        let mesh = CornerTable::<f64>::from_vertex_and_face_iters(
-            soup.positions.iter().map(|p| Vector3::new(p.x, p.y, p.z)),
-            soup.indices().iter().map(|&v| v as usize),
-        );
+    /// The adapter's tables, read from the crate's iterators after its construction (the
+    /// finishing step of [`Build`]): any count that differs from the soup's is reported as a
+    /// broken invariant, not answered.
+    fn tables(&mut self, soup: &PolygonSoup) -> Result<()> {
+        let mesh = std::mem::take(&mut self.mesh);
         let faces: Vec<SharkFace> = mesh.faces().collect();
         if faces.len() != soup.num_faces() {
             return Err(Self::invariant(format!(
@@ -168,7 +177,7 @@ impl MeshTopology for BabySharkCornerTable {
                 corner_ids[e][1] = f as u32;
             }
         }
-        let mut edges = Vec::with_capacity(connectivity.num_edges());
+        let mut edges = Vec::with_capacity(self.admitted_edges);
         for e in mesh.unique_edges() {
             let id = edges.len() as u32;
             edges.push(e);
@@ -177,18 +186,18 @@ impl MeshTopology for BabySharkCornerTable {
                 corner_ids[o][0] = id;
             }
         }
-        if edges.len() != connectivity.num_edges() {
+        if edges.len() != self.admitted_edges {
             return Err(Self::invariant(format!(
                 "baby_shark has {} edges, the soup {}",
                 edges.len(),
-                connectivity.num_edges()
+                self.admitted_edges
             )));
         }
         let isolated = (0..soup.num_vertices())
             .filter(|&v| vertices[v].is_none())
             .map(|v| (v as u32, soup.positions[v]))
             .collect();
-        Ok(Self {
+        *self = Self {
             mesh,
             vertices,
             vertex_ids,
@@ -196,7 +205,44 @@ impl MeshTopology for BabySharkCornerTable {
             edges,
             corner_ids,
             isolated,
-        })
+            admitted_edges: self.admitted_edges,
+        };
+        Ok(())
+    }
+
+    fn invariant(message: String) -> Error {
+        Error::Invariant {
+            structure: NAME,
+            message,
+        }
+    }
+}
+
+impl MeshTopology for BabySharkCornerTable {
+    const NAME: &'static str = NAME;
+    const FAMILY: Family = Family::RustCrate;
+
+    fn capabilities() -> Capabilities {
+        Capabilities {
+            triangles_only: true,
+            ..Capabilities::POLYGONS
+        }
+    }
+
+    fn cost(op: Operator) -> Cost {
+        match op {
+            Operator::R00 | Operator::R01 | Operator::R02 | Operator::BoundaryVertex => Cost::Local,
+            Operator::BoundaryCurves => Cost::Linear,
+            _ => Cost::Constant,
+        }
+    }
+
+    fn from_soup(soup: &PolygonSoup) -> Result<Self> {
+        Build.build(soup)
+    }
+
+    fn separate_construction<'a>() -> Option<&'a dyn SeparateConstruction<Self>> {
+        Some(&Build)
     }
 
     #[inline]

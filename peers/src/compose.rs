@@ -3,7 +3,7 @@
 //! (each adapter's `cost()` declares which it uses).
 
 use topolab_structures::{
-    BoundaryCurves, Connectivity, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, Result,
+    BoundaryCurves, BuildFacts, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, Result,
 };
 
 /// The `MeshTopology` methods an adapter answers by composition alike: `boundary_curves`,
@@ -77,17 +77,20 @@ macro_rules! lox_forwarded_queries {
 /// Refuses what the crates mis-handle, before the crate sees it: indices out of range and
 /// repeated corners ([`PolygonSoup::check`]), an edge with more than two faces or two faces
 /// running one way along their edge ([`PolygonSoup::connectivity`]), a vertex whose faces form
-/// several fans, and, when `triangles_only`, polygons ([`Error::NotTriangles`]). Returns the
-/// edge analysis, for the edge count a crate does not keep.
+/// several fans, and, when `triangles_only`, polygons ([`Error::NotTriangles`]). Returns what
+/// the crate's construction is told ([`BuildFacts`], with the edge count of the analysis, which
+/// a crate that keeps no edges answers `num_edges` from). Every adapter's
+/// [`SeparateConstruction::admit`](topolab_structures::SeparateConstruction::admit): the report
+/// runs it before the clock, as it runs the lab's checks before a C++ baseline's construction.
 ///
 /// Why each check: tri-mesh pairs twins by an unordered vertex pair in a hash map, so a third
 /// face or a reversed face is paired silently with the wrong half-edge; lox panics on a
 /// non-manifold edge or vertex; and every crate walks one fan per vertex.
-pub fn admit(
-    soup: &PolygonSoup,
+pub fn admit<'a>(
+    soup: &'a PolygonSoup,
     structure: &'static str,
     triangles_only: bool,
-) -> Result<Connectivity> {
+) -> Result<BuildFacts<'a>> {
     soup.check()?;
     if triangles_only {
         if let Some((face, corners)) = soup.first_non_triangle() {
@@ -100,7 +103,25 @@ pub fn admit(
     }
     let connectivity = soup.connectivity()?;
     connectivity.check_vertex_fans(soup)?;
-    Ok(connectivity)
+    BuildFacts::new(soup, connectivity.num_edges())
+}
+
+/// Runs a crate's construction, `build`, so that a panic inside the crate is an error, never a
+/// panic of the lab: facts from [`admit`] never make a crate panic, but
+/// [`SeparateConstruction::construction`](topolab_structures::SeparateConstruction::construction)
+/// is public and may be handed facts of a soup [`admit`] would refuse. Costs nothing when
+/// nothing panics (the timed path).
+pub fn without_panic<T>(structure: &'static str, build: impl FnOnce() -> Result<T>) -> Result<T> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(build)).unwrap_or_else(|panic| {
+        let message = panic
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| panic.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Err(Error::Unsupported(format!(
+            "{structure}: the crate failed on a soup the lab's checks did not admit ({message})"
+        )))
+    })
 }
 
 /// R11 from R12 and R21: the other edges of each face of `e`.

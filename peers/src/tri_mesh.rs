@@ -24,13 +24,53 @@ use crate::compose;
 use glam::DVec3;
 use three_d_asset::{Indices, Positions};
 use topolab_structures::{
-    BoundaryCurves, Capabilities, Cost, EdgeId, FaceId, Family, MeshTopology, Operator,
-    PolygonSoup, Result, VertexId,
+    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, EdgeId, FaceId, Family,
+    MeshTopology, Operator, PolygonSoup, Result, SeparateConstruction, VertexId,
 };
 use tri_mesh::{FaceID, HalfEdgeID, Mesh, Vector3, VertexID};
 
 /// The lab's name of this structure.
 pub const NAME: &str = "tri-mesh";
+
+/// tri-mesh's own construction apart from the lab's checks ([`SeparateConstruction`]): what
+/// the report times, as it times OpenMesh's; the adapter's id tables are read after the clock,
+/// as CGAL's are made.
+struct Build;
+
+impl SeparateConstruction<TriMesh> for Build {
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
+        compose::admit(soup, NAME, true)
+    }
+
+    /// `Mesh::new` from the `three_d_asset::TriMesh` its documentation builds it from.
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<TriMesh>> {
+        let soup = facts.soup();
+        compose::without_panic(NAME, || {
+            let input = three_d_asset::TriMesh {
+                positions: Positions::F64(
+                    soup.positions
+                        .iter()
+                        .map(|p| Vector3::new(p.x, p.y, p.z))
+                        .collect(),
+                ),
+                indices: Indices::U32(soup.indices().to_vec()),
+                ..Default::default()
+            };
+            let mesh = TriMesh {
+                mesh: Mesh::new(&input),
+                vertices: Vec::new(),
+                faces: Vec::new(),
+                half_edges: Vec::new(),
+            };
+            Ok(Constructed::new(mesh, |m, _| {
+                m.vertices = m.mesh.vertex_iter().collect();
+                m.faces = m.mesh.face_iter().collect();
+                m.half_edges = m.mesh.halfedge_iter().collect();
+                Ok(())
+            }))
+        })
+    }
+}
 
 /// tri-mesh's `Mesh` and the ids its iterators gave; see the module docs.
 pub struct TriMesh {
@@ -88,24 +128,11 @@ impl MeshTopology for TriMesh {
     }
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        compose::admit(soup, NAME, true)?;
-        let input = three_d_asset::TriMesh {
-            positions: Positions::F64(
-                soup.positions
-                    .iter()
-                    .map(|p| Vector3::new(p.x, p.y, p.z))
-                    .collect(),
-            ),
-            indices: Indices::U32(soup.indices().to_vec()),
-            ..Default::default()
-        };
-        let mesh = Mesh::new(&input);
-        Ok(Self {
-            vertices: mesh.vertex_iter().collect(),
-            faces: mesh.face_iter().collect(),
-            half_edges: mesh.halfedge_iter().collect(),
-            mesh,
-        })
+        Build.build(soup)
+    }
+
+    fn separate_construction<'a>() -> Option<&'a dyn SeparateConstruction<Self>> {
+        Some(&Build)
     }
 
     #[inline]

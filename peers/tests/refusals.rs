@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 use topolab_peers::{BabySharkCornerTable, LoxDirectedEdge, LoxHalfEdge, TriMesh};
-use topolab_structures::{MeshTopology, PolygonSoup};
+use topolab_structures::{meshes, BuildFacts, MeshTopology, PolygonSoup};
 
 /// Five points, enough for every soup below.
 fn soup(faces: &[&[u32]]) -> PolygonSoup {
@@ -76,6 +76,54 @@ fn quad_as_capabilities_say<M: MeshTopology>() {
     }
 }
 
+/// The report times a crate's construction apart from the lab's checks
+/// (`SeparateConstruction`); given facts of a soup those checks would refuse, the crate's
+/// panic (lox's on a non-manifold edge) is an error, never a panic of the lab.
+fn unadmitted_facts_never_panic<M: MeshTopology>() {
+    let separate = M::separate_construction().expect("every peer builds apart from the checks");
+    for (what, soup, _) in bad_soups() {
+        let Ok(facts) = BuildFacts::new(&soup, 0) else {
+            continue; // `check` refuses it: no facts to hand over
+        };
+        let built = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            separate.construction(&facts).and_then(|b| b.finish(&soup))
+        }));
+        assert!(built.is_ok(), "{} panicked on {what}", M::NAME);
+    }
+}
+
+/// Admission, the timed construction and the finishing step in a row build what `from_soup`
+/// builds, and admission refuses what `from_soup` refuses.
+fn separate_construction_is_from_soup<M: MeshTopology>() {
+    let separate = M::separate_construction().expect("every peer builds apart from the checks");
+    for mesh in meshes::canonical() {
+        let soup = &mesh.soup;
+        let whole = M::from_soup(soup);
+        let parts = separate
+            .admit(soup)
+            .and_then(|facts| separate.construction(&facts)?.finish(soup));
+        match (whole, parts) {
+            (Ok(a), Ok(b)) => {
+                b.validate().unwrap();
+                let counts = |m: &M| [m.num_vertices(), m.num_edges(), m.num_faces()];
+                assert_eq!(counts(&a), counts(&b), "{} on {}", M::NAME, mesh.name);
+            }
+            (Err(a), Err(b)) => assert_eq!(a.kind(), b.kind(), "{} on {}", M::NAME, mesh.name),
+            (a, b) => panic!(
+                "{} on {}: from_soup {:?}, in parts {:?}",
+                M::NAME,
+                mesh.name,
+                a.err(),
+                b.err()
+            ),
+        }
+    }
+    for (what, soup, kind) in bad_soups() {
+        let refused = separate.admit(&soup).err().map(|e| e.kind());
+        assert_eq!(refused, Some(kind), "{} admitted {what}", M::NAME);
+    }
+}
+
 macro_rules! refusals {
     ($($module:ident => $ty:ty),+ $(,)?) => {
         $(
@@ -90,6 +138,16 @@ macro_rules! refusals {
                 #[test]
                 fn quads_as_its_capabilities_say() {
                     quad_as_capabilities_say::<$ty>();
+                }
+
+                #[test]
+                fn unadmitted_facts_are_errors_not_panics() {
+                    unadmitted_facts_never_panic::<$ty>();
+                }
+
+                #[test]
+                fn admit_construct_finish_is_from_soup() {
+                    separate_construction_is_from_soup::<$ty>();
                 }
             }
         )+

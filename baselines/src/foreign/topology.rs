@@ -384,7 +384,7 @@ macro_rules! topology_queries {
         }
 
         fn from_soup(soup: &topolab_structures::PolygonSoup) -> topolab_structures::Result<Self> {
-            Self::construct(&$crate::foreign::admit(soup)?)?.finish()
+            Self::construct(&$crate::foreign::admit(soup)?)?.finish(soup)
         }
 
         fn num_vertices(&self) -> usize {

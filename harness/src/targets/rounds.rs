@@ -7,7 +7,7 @@ use crate::targets::plan::{Cell, Turns, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
-use topolab_structures::{BoundaryCurves, Constructed, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
 
 /// A structure built once, with what its timed runs need.
 pub struct Built<M> {
@@ -84,7 +84,7 @@ pub fn build<M: MeshTopology>(
     let built = std::hint::black_box(builder.build());
     let ns = watch.ns();
     let m = built
-        .and_then(Constructed::finish)
+        .and_then(|b| builder.finish(b))
         .map_err(|e| format!("cannot build {}: {e}", M::NAME))?;
     let answer = Answer::Counts([m.num_vertices(), m.num_edges(), m.num_faces()]);
     let faces = m.num_faces();

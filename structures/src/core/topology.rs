@@ -214,6 +214,15 @@ pub trait MeshTopology: Sized {
         None
     }
 
+    /// Construction in two steps for a structure built by another project's code (the C++
+    /// baselines, the Rust crates of `topolab-peers`; see [`SeparateConstruction`]): the lab's
+    /// checks before the clock, the project's own build under it, so that the report times
+    /// every outside project's construction alike; `None` (the default): the harness times
+    /// [`MeshTopology::from_soup`], whose checks are part of the lab's own structures' build.
+    fn separate_construction<'a>() -> Option<&'a dyn SeparateConstruction<Self>> {
+        None
+    }
+
     /// What one query of `op` reads from memory ([`Access`]: bytes per container, dependent
     /// loads on its longest chain), declared beside [`MeshTopology::cost`] for the limit the
     /// report puts on each sweep; `None` (the default): no model, no limit.
@@ -266,6 +275,35 @@ impl Sample<'_> {
     }
 }
 
+/// The construction of a structure built by another project's code (a C++ baseline behind
+/// the FFI, a Rust crate of `topolab-peers`), in three steps, so that the harness's clock
+/// covers the project's own construction and nothing else: [`SeparateConstruction::admit`]
+/// before the clock (the lab's checks, which refuse what the project would mis-handle, and
+/// the counts it reserves for), [`SeparateConstruction::construction`] timed, and
+/// [`Constructed::finish`] after the clock (what the lab adds for its queries: id tables,
+/// counts). The structure is dropped after the clock too, like every structure's. The lab's
+/// own structures have no such split: their checks are part of their construction and are
+/// timed with it. Reached through [`MeshTopology::separate_construction`];
+/// `from_soup` of such a structure is `admit`, `construction` and `finish` in a row.
+pub trait SeparateConstruction<M> {
+    /// The lab's checks of `soup` that [`MeshTopology::from_soup`] makes before the project
+    /// builds (so that a soup is refused as `from_soup` refuses it, with the same typed error),
+    /// and the facts the construction is told ([`BuildFacts`]). Not timed.
+    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>>;
+
+    /// Construction the way the project's own API does it (OpenMesh: `reserve` with the
+    /// facts' counts, `add_vertex`, `add_face`; lox: `add_vertex`, `add_face`), without the
+    /// lab's checks, which are not the project's cost: what the harness times. Given facts
+    /// that did not come from [`SeparateConstruction::admit`], a face the project refuses is
+    /// an error named the lab's way, never a panic.
+    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<M>>;
+
+    /// [`MeshTopology::from_soup`] of such a structure: admit, construct and finish in a row.
+    fn build(&self, soup: &PolygonSoup) -> Result<M> {
+        self.construction(&self.admit(soup)?)?.finish(soup)
+    }
+}
+
 /// A baseline's sampled kernel, prepared by [`NativeKernels::sampled`]: each call runs the
 /// whole loop over the prepared queries on the other side of the FFI and returns the harness's
 /// checksum, or the library's failure inside the loop.
@@ -276,28 +314,14 @@ pub type SampledRun<'a> = Box<dyn Fn() -> Result<u64> + 'a>;
 /// library, so whole loops run on the other side and return the harness's checksum. Reached
 /// through [`MeshTopology::native`].
 ///
-/// Construction comes in three steps, so that the harness's clock covers the library's own
-/// construction and nothing else: [`NativeKernels::admit`] before the clock (the lab's checks
-/// and the counts the library reserves for), [`NativeKernels::construction`] timed, and
-/// [`Constructed::finish`] after the clock (what the lab adds for its queries). The structure
-/// is dropped after the clock too, like every structure's.
+/// Its construction comes in separate steps too ([`SeparateConstruction`], a supertrait, so
+/// that no baseline can have native kernels and a construction timed with the lab's checks).
 ///
 /// A baseline has every kernel: a structure with native kernels is timed by them alone,
 /// never by the harness's generic kernels, so a kernel that cannot run is an error of the
 /// measurement, not a silent fallback. `Err` is also how a failure of the library inside a
 /// loop arrives (an exception caught at the FFI wall): a loud error, never a silent zero.
-pub trait NativeKernels<M> {
-    /// The lab's checks of `soup` that [`MeshTopology::from_soup`] makes before the library
-    /// builds (so that a soup is refused as `from_soup` refuses it, with the same typed error),
-    /// and the facts the construction is told ([`BuildFacts`]). Not timed.
-    fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>>;
-
-    /// Construction the way the baseline's own API does it (OpenMesh: `reserve` with the
-    /// facts' counts, `add_vertex`, `add_face`), without the lab's checks, which are not the
-    /// library's cost: what the harness times. A face the library refuses is an error named
-    /// the lab's way.
-    fn construction(&self, facts: &BuildFacts<'_>) -> Result<Constructed<M>>;
-
+pub trait NativeKernels<M>: SeparateConstruction<M> {
     /// A whole sweep of `op` over every element of `mesh`, folded into the harness's checksum.
     fn sweep(&self, mesh: &M, op: Operator) -> Result<u64>;
 
@@ -321,7 +345,7 @@ pub trait NativeKernels<M> {
 /// from the soup alone, which has the same facts: its vertex and face counts, and the edges
 /// they count in their edge analysis, which they need for their links anyway and which is
 /// timed as part of their construction. A library finds edges its own way (`add_face`) and
-/// needs their number only to reserve, so it is told it ([`NativeKernels::admit`] takes it
+/// needs their number only to reserve, so it is told it ([`SeparateConstruction::admit`] takes it
 /// from the same analysis, exact for open meshes and polygons too).
 #[derive(Copy, Clone, Debug)]
 pub struct BuildFacts<'a> {
@@ -365,7 +389,7 @@ impl<'a> BuildFacts<'a> {
     }
 }
 
-/// A structure as its timed construction left it ([`NativeKernels::construction`], or
+/// A structure as its timed construction left it ([`SeparateConstruction::construction`], or
 /// [`Constructed::ready`] around a lab structure): it answers no query before
 /// [`Constructed::finish`], which runs after the clock what the lab adds to the library's
 /// structure for its queries (CGAL's `Polyhedron_3`: the tables from id to handle; for every
@@ -373,25 +397,27 @@ impl<'a> BuildFacts<'a> {
 /// structure.
 pub struct Constructed<M> {
     mesh: M,
-    finish: fn(&mut M) -> Result<()>,
+    finish: fn(&mut M, &PolygonSoup) -> Result<()>,
 }
 
 impl<M> Constructed<M> {
-    /// `mesh`, which `finish` makes ready for queries.
-    pub fn new(mesh: M, finish: fn(&mut M) -> Result<()>) -> Self {
+    /// `mesh`, which `finish` makes ready for queries, given the soup it was built from (for
+    /// tables from the lab's ids to the project's).
+    pub fn new(mesh: M, finish: fn(&mut M, &PolygonSoup) -> Result<()>) -> Self {
         Self { mesh, finish }
     }
 
     /// `mesh`, ready for queries already (the lab's structures, built by
     /// [`MeshTopology::from_soup`]).
     pub fn ready(mesh: M) -> Self {
-        Self::new(mesh, |_| Ok(()))
+        Self::new(mesh, |_, _| Ok(()))
     }
 
-    /// Runs the finishing step; the structure, ready for queries.
-    pub fn finish(self) -> Result<M> {
+    /// Runs the finishing step with the soup the structure was built from; the structure,
+    /// ready for queries.
+    pub fn finish(self, soup: &PolygonSoup) -> Result<M> {
         let Self { mut mesh, finish } = self;
-        finish(&mut mesh)?;
+        finish(&mut mesh, soup)?;
         Ok(mesh)
     }
 }
