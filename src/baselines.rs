@@ -49,7 +49,27 @@ pub fn runs(used: Used<'_>) -> Vec<BaselineRun> {
     if let Some(version) = used.libigl {
         runs.push(libigl(version));
     }
+    #[cfg(feature = "peers")]
+    for c in &registry::PEER_CRATES {
+        if c.structures.iter().any(|s| measured(s)) {
+            runs.push(peer(c));
+        }
+    }
     runs
+}
+
+/// A Rust crate of `topolab-peers`: the same for each, but its version, use and differences.
+#[cfg(feature = "peers")]
+fn peer(c: &registry::PeerCrate) -> BaselineRun {
+    BaselineRun {
+        name: c.structures.join(", "),
+        library: format!("{} {} (Rust, crates.io)", c.name, c.version),
+        build: "from crates.io at this exact version (its checksum in Cargo.lock), compiled in the lab's workspace with the lab's release profile, as the lab's own structures".into(),
+        used_as: c.used_as.into(),
+        timed: "construction: the crate's own build alone (the lab's checks before the clock, the adapter's id tables after it, as CGAL's); every sweep, sampled kernel and workload by the lab's generic Rust kernels, the adapter's calls inlined into them as the lab's structures' are (no FFI, so no native loops)".into(),
+        counted: "by the lab's global allocator, as the lab's own structures: every block allocated during one untimed build, for its malloc_usable_size; peak and held bytes of that build".into(),
+        differences: c.differences.iter().map(|d| d.to_string()).collect(),
+    }
 }
 
 fn openmesh(build: &str) -> BaselineRun {
@@ -148,6 +168,28 @@ mod tests {
         });
         assert_eq!(with_libigl.len(), 1);
         assert_eq!(with_libigl[0].library, "libigl 2.6.1 (Python bindings)");
+    }
+
+    /// Each crate is listed once when one of its structures was measured, by its version.
+    #[cfg(feature = "peers")]
+    #[test]
+    fn a_rust_crate_is_listed_when_one_of_its_structures_ran() {
+        let runs = runs(Used {
+            structures: &["lox-directed-edge", "tri-mesh"],
+            hull: false,
+            decimate: false,
+            libigl: None,
+        });
+        let libraries: Vec<&str> = runs.iter().map(|r| r.library.as_str()).collect();
+        assert_eq!(
+            libraries,
+            [
+                "lox 0.1.1 (Rust, crates.io)",
+                "tri-mesh 0.6.1 (Rust, crates.io)"
+            ]
+        );
+        assert_eq!(runs[0].name, "lox-half-edge, lox-directed-edge");
+        assert!(runs.iter().all(|r| !r.differences.is_empty()));
     }
 
     #[test]

@@ -164,6 +164,43 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
     assert!(html.contains("<h2>Choosing a structure</h2>"));
     // The chooser is at the top: before the machine and every measured section.
     assert!(html.find("Choosing a structure") < html.find("<h2>Machine</h2>"));
+    // With the Rust crates (on by default), the paragraph for Rust users names the crate that
+    // builds fastest, as results.json has it.
+    let crates = [
+        "lox-half-edge",
+        "lox-directed-edge",
+        "baby-shark-corner-table",
+        "tri-mesh",
+    ];
+    if registry::HAS_PEERS {
+        let paragraph = html
+            .split("<p><b>For Rust users.</b>")
+            .nth(1)
+            .and_then(|rest| rest.split("</p>").next())
+            .expect("the paragraph for Rust users");
+        let fastest = ms
+            .iter()
+            .filter(|m| {
+                crates.iter().any(|c| m["structure"] == *c)
+                    && m["operator"] == "construction"
+                    && m["mesh"] == "torus-800"
+                    && m["status"] == "measured"
+            })
+            .min_by(|a, b| {
+                a["ns_per_item"]
+                    .as_f64()
+                    .unwrap()
+                    .total_cmp(&b["ns_per_item"].as_f64().unwrap())
+            })
+            .expect("the crates' construction on torus-800");
+        let named = format!(
+            "builds fastest: <b>{}</b>",
+            fastest["structure"].as_str().unwrap()
+        );
+        assert!(paragraph.contains(&named), "{named} not in: {paragraph}");
+    } else {
+        assert!(!html.contains("For Rust users."));
+    }
     findings_are_written_from_the_results(&out, ms);
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -79,6 +79,11 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Option<V::Output> {
     structures::visit(name, visitor)
 }
 
+/// The crates of `topolab-peers` (name, exact version, structures, how they are used and what
+/// differs), for the report's "How the baselines are run".
+#[cfg(feature = "peers")]
+pub use topolab_peers::{PeerCrate, CRATES as PEER_CRATES};
+
 /// The crate from crates.io (its name and exact version) that the structure called `name`
 /// adapts, `None` for the lab's own structures and the C++ baselines (and for every name in
 /// a build without the feature `peers`).
@@ -256,7 +261,7 @@ mod tests {
         assert!(absent.iter().all(|(name, _)| !NAMES.contains(name)));
         assert_eq!(
             absent.len() + NAMES.len(),
-            structures::NAMES.len() + CPP_BASELINES.len()
+            structures::NAMES.len() + CPP_BASELINES.len() + PEER_NAMES.len()
         );
     }
 

@@ -161,7 +161,7 @@ pub fn list(json: bool) -> Result<String, Failure> {
     if !registry::HAS_PEERS {
         let _ = writeln!(
             out,
-            "{:<width$} not in this build: built without the feature `peers` (`cargo build --release --features peers`)",
+            "{:<width$} not in this build: built without the feature `peers`, which is on by default (`cargo build --release`)",
             "lox, baby_shark, tri-mesh"
         );
     }

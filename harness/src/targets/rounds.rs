@@ -3,11 +3,13 @@
 
 use crate::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
 use crate::measure::Builder;
-use crate::targets::plan::{Cell, Turns, HULL_POINTS};
+use crate::targets::plan::{Cell, Turns, CHECKS, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
-use topolab_structures::{BoundaryCurves, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{
+    BoundaryCurves, MeshTopology, Operator, PolygonSoup, SeparateConstruction,
+};
 
 /// A structure built once, with what its timed runs need.
 pub struct Built<M> {
@@ -95,6 +97,24 @@ pub fn build<M: MeshTopology>(
     })
 }
 
+/// The lab's checks of `soup` as `separate`'s admission runs them, timed by a [`Stopwatch`] on
+/// `meter` ([`CHECKS`]); they answer the soup's counts, as a build does.
+fn checks<M>(
+    separate: &dyn SeparateConstruction<M>,
+    soup: &PolygonSoup,
+    meter: &dyn MemoryMeter,
+) -> Result<Run, String> {
+    let watch = Stopwatch::start(meter);
+    let facts = std::hint::black_box(separate.admit(soup));
+    let ns = watch.ns();
+    let facts = facts.map_err(|e| format!("the lab's checks refused the soup: {e}"))?;
+    let counts = [facts.vertices(), facts.edges(), facts.faces()].map(|n| n as usize);
+    Ok(Run {
+        ns: ns / soup.num_faces().max(1) as f64,
+        answer: Answer::Counts(counts),
+    })
+}
+
 /// Times `A` and `B` on `mesh` taking turns on each of `cells` (sweeps, smoothing,
 /// construction; not the changing workloads, which need editing): both are built once first,
 /// when a cell needs them built.
@@ -109,27 +129,41 @@ pub fn pair<A: MeshTopology, B: MeshTopology>(
     let mut out = Vec::new();
     for &cell in cells {
         let start = Instant::now();
-        let ns = if cell == Cell::Construction {
+        let (contenders, ns) = if cell == Cell::Construction {
             // The lab's checks and the facts a baseline is told, once, before any clock.
             let cannot =
                 |name: &str, e: topolab_structures::Error| format!("cannot build {name}: {e}");
             let a = Builder::<A>::new(soup).map_err(|e| cannot(A::NAME, e))?;
             let b = Builder::<B>::new(soup).map_err(|e| cannot(B::NAME, e))?;
-            take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
-                0 => build(&a, meter),
-                _ => build(&b, meter),
-            })?
+            // The lab's structure against an outside one: the checks its build includes and
+            // the other's does not take a third turn.
+            let outside = match (A::separate_construction(), B::separate_construction()) {
+                (None, Some(separate)) => Some(separate),
+                _ => None,
+            };
+            let mut contenders = names.to_vec();
+            contenders.extend(outside.map(|_| CHECKS));
+            let ns = take_turns(cell.warm_up(), cell.rounds(), &contenders, |i| {
+                match (i, outside) {
+                    (0, _) => build(&a, meter),
+                    (1, _) => build(&b, meter),
+                    (_, Some(separate)) => checks(separate, soup, meter),
+                    (_, None) => Err("no third contender".into()),
+                }
+            })?;
+            (contenders, ns)
         } else {
             if built.is_none() {
                 built = Some((Built::<A>::new(soup)?, Built::<B>::new(soup)?));
             }
             let (a, b) = built.as_mut().expect("built above");
-            take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
+            let ns = take_turns(cell.warm_up(), cell.rounds(), &names, |i| match i {
                 0 => a.run(cell, meter),
                 _ => b.run(cell, meter),
-            })?
+            })?;
+            (names.to_vec(), ns)
         };
-        out.push(turns(cell, mesh, soup, &names, ns, start));
+        out.push(turns(cell, mesh, soup, &contenders, ns, start));
     }
     Ok(out)
 }

@@ -5,7 +5,7 @@ use super::measured::{measured, measured_chain};
 use super::plan::*;
 use super::probe::{with_probe, ChaseTurns, ProbeTurns};
 use super::rounds::pair;
-use super::text::{missed_limit_text, versus_text};
+use super::text::{checks_text, missed_limit_text, versus_text};
 use crate::kernels::Kernel;
 use crate::probe::Probe;
 use crate::results::{Limit, Measurement, Subject};
@@ -39,11 +39,19 @@ fn the_plan_times_each_pair_once_and_a_limit_alone_only_when_untimed() {
     for s in ["che-l2", "openmesh", "che-l1", "pointer-half-edge"] {
         assert_eq!(find(&[s, PROBE]).unwrap().cells, [Cell::R00Sweep], "{s}");
     }
-    assert_eq!(all.len(), 3 + 7);
+    // The Rust crates: the index half-edge against lox's half-edge on both cells, once.
+    assert_eq!(
+        find(&["index-half-edge", "lox-half-edge"]).unwrap().cells,
+        [Cell::Construction, Cell::R00Sweep]
+    );
+    assert_eq!(all.len(), 3 + 7 + 3);
     // Without OpenMesh, its pairs and its limit go.
     let without = plan(|s, _| s != "openmesh");
     assert!(without.iter().all(|g| !g.structures.contains(&"openmesh")));
-    assert_eq!(without.len(), 1 + 6);
+    assert_eq!(without.len(), 1 + 6 + 3);
+    // Without the crates (a build without the feature `peers`), theirs go.
+    let without = plan(|s, _| !s.starts_with("lox") && !s.starts_with("baby"));
+    assert_eq!(without.len(), 3 + 7);
     // A cell the size sweep skipped is not run in turns either.
     let slow = plan(|s, c| !(s == "che-l1" && c == Cell::R00Sweep));
     assert!(slow.iter().all(|g| g.structures != ["che-l1", PROBE]));
@@ -338,4 +346,70 @@ fn pair_target(cell: Cell) -> Target {
         against: Against::Structure("index-half-edge"),
         goal: 1.2,
     }
+}
+
+/// A construction target of a lab structure against an outside one: the lab's checks take a
+/// third turn, and the text gives their time and the ratio without them, per round.
+#[test]
+fn the_checks_text_takes_them_out_round_by_round() {
+    let turns = Turns {
+        cell: Cell::Construction,
+        mesh: "t".into(),
+        items: 10,
+        structures: vec![
+            "index-half-edge".into(),
+            "lox-half-edge".into(),
+            CHECKS.into(),
+        ],
+        ns_per_item: vec![
+            vec![60.0, 70.0, 64.0],
+            vec![30.0, 30.0, 32.0],
+            vec![45.0, 50.0, 48.0],
+        ],
+        warm_up: 1,
+        seconds: 1.0,
+    };
+    let t = Target {
+        cell: Cell::Construction,
+        structure: "index-half-edge",
+        against: Against::Structure("lox-half-edge"),
+        goal: 1.0,
+    };
+    let text = checks_text(std::slice::from_ref(&turns), &t, "lox-half-edge").unwrap();
+    // Checks 45, 50, 48: median 48. Without them 15/30, 20/30, 16/32: 0.50, 0.67, 0.50.
+    assert!(
+        text.contains("48.0 ns/face in these rounds (45.0–50.0)"),
+        "{text}"
+    );
+    assert!(text.contains("would be 0.50× (0.50–0.67)"), "{text}");
+    // Without the third turn, nothing to say.
+    let mut two = turns.clone();
+    two.structures.pop();
+    two.ns_per_item.pop();
+    assert_eq!(checks_text(&[two], &t, "lox-half-edge"), None);
+}
+
+/// OpenMesh builds apart from the lab's checks, so against one of the lab's structures the
+/// checks take a third turn; between two lab structures they do not.
+#[cfg(has_openmesh)]
+#[test]
+fn the_checks_take_a_turn_against_an_outside_build_only() {
+    use topolab_baselines::openmesh::OpenMesh;
+    struct Wall;
+    impl MemoryMeter for Wall {
+        fn current(&self) -> usize {
+            0
+        }
+        fn peak(&self) -> usize {
+            0
+        }
+        fn reset_peak(&self) {}
+    }
+    let soup = meshes::torus(12, 9);
+    let cells = [Cell::Construction];
+    let turns = pair::<IndexHalfEdge, OpenMesh>("t", &soup, &cells, &Wall).unwrap();
+    assert_eq!(turns[0].structures, ["index-half-edge", "openmesh", CHECKS]);
+    assert!(turns[0].ns_per_item.iter().all(|r| r.len() == ROUNDS));
+    let turns = pair::<CheL2, IndexHalfEdge>("t", &soup, &cells, &Wall).unwrap();
+    assert_eq!(turns[0].structures, ["che-l2", "index-half-edge"]);
 }

@@ -6,7 +6,7 @@ use crate::probe::Probe;
 use crate::report::cells::{limit_text, times_limit};
 use crate::results::{Limit, Measurement, Results, Status, Subject};
 use crate::targets::measured::measured_chain;
-use crate::targets::plan::{Against, Cell, Target, Turns};
+use crate::targets::plan::{Against, Cell, Target, Turns, CHECKS};
 use crate::timing::turns::Spread;
 use std::fmt::Write;
 use topolab_structures::{Operator, Step};
@@ -64,6 +64,31 @@ pub(crate) fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f
         }
         Against::Limit => times_limit(a),
     }
+}
+
+/// A construction target of one of the lab's structures against an outside one, measured with
+/// the lab's checks as a third turn ([`CHECKS`]): how long the checks took in these rounds,
+/// which the lab's build includes and the outside one's leaves out, and the ratio without
+/// them (per round, the lab's build minus that round's checks, over the other's build).
+/// `None` without that turn.
+pub(crate) fn checks_text(turns: &[Turns], t: &Target, b: &str) -> Option<String> {
+    let x = turns.iter().find(|x| {
+        x.cell == Cell::Construction && x.runs(t.structure).is_some() && x.runs(b).is_some()
+    })?;
+    let (a_ns, b_ns, checks) = (x.runs(t.structure)?, x.runs(b)?, x.runs(CHECKS)?);
+    let spent = Spread::of(checks.iter().copied())?;
+    let without: Vec<f64> = a_ns.iter().zip(checks).map(|(a, c)| a - c).collect();
+    let ratio = Spread::of_ratios(&without, b_ns)?;
+    Some(format!(
+        "{a}'s build includes the lab's checks of the soup (range and finiteness, the edge analysis, one fan per vertex), {c:.1} ns/face in these rounds ({cmin:.1}–{cmax:.1}), which {b}'s cell leaves out: they run before its clock, as its users do not run them; without them {a} would be {r:.2}× ({rmin:.2}–{rmax:.2})",
+        a = t.structure,
+        c = spent.median,
+        cmin = spent.min,
+        cmax = spent.max,
+        r = ratio.median,
+        rmin = ratio.min,
+        rmax = ratio.max,
+    ))
 }
 
 /// Why `t.structure` misses its goal against `b`, measured: each side's bytes fetched per

@@ -32,8 +32,112 @@ pub fn when_to_pick(name: &str) -> Option<&'static str> {
         "openmesh" => "OpenMesh (C++), the baseline: a maintained half-edge library with its own attributes and I/O, measured through its own loops.",
         "cgal-surface-mesh" => "CGAL's Surface_mesh (C++): the index half-edge of Sieger and Botsch with property maps, when the rest of the pipeline is CGAL's (processing, Euler operations).",
         "cgal-polyhedron" => "CGAL's Polyhedron_3 (C++): the classical pointer half-edge in linked lists, for code written against it; more bytes per element than Surface_mesh.",
+        "lox-half-edge" => "lox's HalfEdgeMesh (Rust crate): the index half-edge's design (u32 handles, twin h ^ 1, prev stored too) for polygon meshes, when a Rust project wants a dependency; positions live in a map beside it.",
+        "lox-directed-edge" => "lox's DirectedEdgeMesh (Rust crate): per corner its twin and target, the CHE level 1's idea, half the records per triangle of a half-edge; triangles only.",
+        "baby-shark-corner-table" => "baby_shark's CornerTable (Rust crate): the CHE's O table (opposite corner and vertex per corner), inside a crate that also remeshes, decimates and does booleans; its ids are opaque, so the lab keeps tables beside it.",
+        "tri-mesh" => "tri-mesh (Rust crate): a triangle half-edge mesh with editing and geometry helpers, its records behind RefCell with Option fields and its twins matched by a hash map when built.",
         _ => return None,
     })
+}
+
+/// The smallest value (by `value`) of a measure among `of` on the largest torus each was
+/// measured on, with its structure and mesh.
+fn best<'a>(
+    r: &'a Results,
+    of: &[&'a StructureInfo],
+    value: &dyn Fn(&Measurement) -> Option<f64>,
+    subject: Subject,
+    kernel: Kernel,
+) -> Option<(&'a str, f64, &'a str)> {
+    of.iter()
+        .filter_map(|s| {
+            let m = cell(r, &s.name, subject, kernel, "torus")?;
+            Some((s.name.as_str(), value(m)?, m.mesh.as_str()))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+/// The paragraph for Rust users under the table, from this run's numbers: per measure, the
+/// best of the Rust crates measured and the best of the lab's own structures beside it, which
+/// crates store polygons and which edit. Nothing when no crate ran.
+fn rust_users(h: &mut String, r: &Results) {
+    let crates: Vec<&StructureInfo> = r
+        .structures
+        .iter()
+        .filter(|s| s.family == Family::RustCrate)
+        .collect();
+    if crates.is_empty() {
+        return;
+    }
+    let lab: Vec<&StructureInfo> = r
+        .structures
+        .iter()
+        .filter(|s| !matches!(s.family, Family::RustCrate | Family::Outside))
+        .collect();
+    let measures: [(&str, Subject, Kernel, &str); 3] = [
+        (
+            "builds fastest",
+            Subject::Construction,
+            Kernel::Construction,
+            "ns/face",
+        ),
+        (
+            "sweeps vertex 1-rings fastest",
+            Subject::Query(Operator::R00),
+            Kernel::Sweep,
+            "ns/vertex",
+        ),
+        (
+            "smooths fastest",
+            Subject::Workload(Workload::Smoothing),
+            Kernel::Workload,
+            "ns/vertex",
+        ),
+    ];
+    let mut lines = Vec::new();
+    let bytes = |m: &Measurement| m.bytes.map(|b| b as f64 / m.triangles.max(1) as f64);
+    let per_item = |m: &Measurement| m.ns_per_item;
+    if let Some((c, x, mesh)) = best(
+        r,
+        &crates,
+        &bytes,
+        Subject::Construction,
+        Kernel::Construction,
+    ) {
+        let lab_best = best(r, &lab, &bytes, Subject::Construction, Kernel::Construction)
+            .map(|(s, y, _)| format!(" (of the lab's structures, {s}: {y:.0})"))
+            .unwrap_or_default();
+        lines.push(format!(
+            "takes the fewest bytes per triangle on {mesh}: <b>{c}</b>, {x:.0}{lab_best}"
+        ));
+    }
+    for (what, subject, kernel, unit) in measures {
+        if let Some((c, x, _)) = best(r, &crates, &per_item, subject, kernel) {
+            let lab_best = best(r, &lab, &per_item, subject, kernel)
+                .map(|(s, y, _)| format!(" (of the lab's structures, {s}: {y:.1})"))
+                .unwrap_or_default();
+            lines.push(format!("{what}: <b>{c}</b>, {x:.1} {unit}{lab_best}"));
+        }
+    }
+    let names = |pick: &dyn Fn(&StructureInfo) -> bool| {
+        let v: Vec<&str> = crates
+            .iter()
+            .filter(|s| pick(s))
+            .map(|s| s.name.as_str())
+            .collect();
+        if v.is_empty() {
+            "none".to_string()
+        } else {
+            v.join(", ")
+        }
+    };
+    let polygons = names(&|s| !s.capabilities.triangles_only && !s.capabilities.grids_only);
+    let editable = names(&|s| s.editable);
+    let _ = write!(
+        h,
+        "<p><b>For Rust users.</b> Of the Rust crates measured in this run (their construction timed like the C++ baselines', without the lab's checks, which they need before an untrusted mesh reaches them: see Targets), the crate that {}. Polygons: {polygons}; the others store triangles only. Editing through the lab's operations: {editable}. The Targets table holds the lab's index half-edge and CHE levels against the crate of the same design.</p>",
+        lines.join("; the crate that ")
+    );
 }
 
 /// What the structure stores, by its capabilities.
@@ -127,10 +231,9 @@ fn section(h: &mut String, r: &Results) {
             ),
             None => "<td class=skip>–</td>".into(),
         };
-        let pick = when_to_pick(&s.name).unwrap_or(if s.family == Family::Outside {
-            "A structure from outside the lab: see its own documentation; its numbers are measured like the lab's."
-        } else {
-            "–"
+        let pick = when_to_pick(&s.name).unwrap_or(match s.family {
+            Family::Outside | Family::RustCrate => "A structure from outside the lab: see its own documentation; its numbers are measured like the lab's.",
+            _ => "–",
         });
         let _ = write!(
             h,
@@ -155,6 +258,7 @@ fn section(h: &mut String, r: &Results) {
         );
     }
     h.push_str("</table>");
+    rust_users(h, r);
 }
 
 /// "Choosing a structure", at the top: per structure its memory, construction, R00 sweep
@@ -191,6 +295,15 @@ mod tests {
         }
         for baseline in ["openmesh", "cgal-surface-mesh", "cgal-polyhedron"] {
             assert!(when_to_pick(baseline).is_some(), "{baseline}");
+        }
+        for peer in [
+            "lox-half-edge",
+            "lox-directed-edge",
+            "baby-shark-corner-table",
+            "tri-mesh",
+        ] {
+            let line = when_to_pick(peer).unwrap_or_else(|| panic!("{peer} has no line"));
+            assert!(line.ends_with('.') && line.len() < 260, "{peer}: {line}");
         }
         assert_eq!(when_to_pick("sorted-edge-table"), None);
     }

@@ -17,7 +17,8 @@ use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, PROBE, ROUNDS,
 use crate::targets::probe::ProbeTurns;
 use crate::targets::rounds::turns;
 use crate::targets::text::{
-    chain_text, missed_limit_text, one_after_another, sequential, sequential_subject, versus_text,
+    chain_text, checks_text, missed_limit_text, one_after_another, sequential, sequential_subject,
+    versus_text,
 };
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
@@ -227,6 +228,9 @@ fn render(h: &mut String, r: &Results) {
                 esc(&missed_limit_text(&turns, t, l, &r.probe))
             }
             (Against::Limit, Some(l)) => esc(&chain_text(&turns, t, l).unwrap_or_default()),
+            (Against::Structure(b), _) if t.cell == Cell::Construction => {
+                esc(&checks_text(&turns, t, b).unwrap_or_default())
+            }
             (Against::Structure(b), _) if met == "no" => {
                 esc(&versus_text(&r.measurements, mesh, t, b).unwrap_or_default())
             }
