@@ -101,8 +101,7 @@ pub fn admit<'a>(
             });
         }
     }
-    let connectivity = soup.connectivity()?;
-    connectivity.check_vertex_fans(soup)?;
+    let connectivity = soup.manifold_connectivity()?;
     BuildFacts::new(soup, connectivity.num_edges())
 }
 

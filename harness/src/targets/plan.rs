@@ -213,10 +213,10 @@ impl Turns {
 }
 
 /// The third turn of a construction target between one of the lab's structures and an outside
-/// one (a C++ baseline, a Rust crate): the lab's checks of the soup as the outside structure's
-/// admission runs them, which the lab's structure's build includes and the outside one's does
-/// not (they run before its clock, as its users would not run them), so that the page shows
-/// how much of the ratio they are, in the same rounds.
+/// one (a C++ baseline, a Rust crate): the lab's structure's own checks of the soup alone
+/// (`MeshTopology::input_checks`, where they are a step of their own), which its build
+/// includes and the outside one's does not (they run before its clock, as its users would not
+/// run them), so that the page shows how much of the ratio they are, in the same rounds.
 pub const CHECKS: &str = "lab-checks";
 
 /// The probe's plain chase in the rounds of a target against its limit: ns per dependent load

@@ -7,9 +7,7 @@ use crate::targets::plan::{Cell, Turns, CHECKS, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
-use topolab_structures::{
-    BoundaryCurves, MeshTopology, Operator, PolygonSoup, SeparateConstruction,
-};
+use topolab_structures::{BoundaryCurves, Connectivity, MeshTopology, Operator, PolygonSoup};
 
 /// A structure built once, with what its timed runs need.
 pub struct Built<M> {
@@ -97,21 +95,22 @@ pub fn build<M: MeshTopology>(
     })
 }
 
-/// The lab's checks of `soup` as `separate`'s admission runs them, timed by a [`Stopwatch`] on
-/// `meter` ([`CHECKS`]); they answer the soup's counts, as a build does.
-fn checks<M>(
-    separate: &dyn SeparateConstruction<M>,
+/// A structure's own checks of `soup` alone ([`MeshTopology::input_checks`]), timed by a
+/// [`Stopwatch`] on `meter` ([`CHECKS`]); they answer the soup's counts, as a build does.
+fn checks(
+    input_checks: fn(&PolygonSoup) -> topolab_structures::Result<Connectivity>,
     soup: &PolygonSoup,
     meter: &dyn MemoryMeter,
 ) -> Result<Run, String> {
     let watch = Stopwatch::start(meter);
-    let facts = std::hint::black_box(separate.admit(soup));
+    let checked = std::hint::black_box(input_checks(soup));
     let ns = watch.ns();
-    let facts = facts.map_err(|e| format!("the lab's checks refused the soup: {e}"))?;
-    let counts = [facts.vertices(), facts.edges(), facts.faces()].map(|n| n as usize);
+    let edges = checked
+        .map_err(|e| format!("the checks refused the soup: {e}"))?
+        .num_edges();
     Ok(Run {
         ns: ns / soup.num_faces().max(1) as f64,
-        answer: Answer::Counts(counts),
+        answer: Answer::Counts([soup.num_vertices(), edges, soup.num_faces()]),
     })
 }
 
@@ -136,18 +135,18 @@ pub fn pair<A: MeshTopology, B: MeshTopology>(
             let a = Builder::<A>::new(soup).map_err(|e| cannot(A::NAME, e))?;
             let b = Builder::<B>::new(soup).map_err(|e| cannot(B::NAME, e))?;
             // The lab's structure against an outside one: the checks its build includes and
-            // the other's does not take a third turn.
-            let outside = match (A::separate_construction(), B::separate_construction()) {
-                (None, Some(separate)) => Some(separate),
+            // the other's does not take a third turn, when they are a step of their own.
+            let own_checks = match (A::input_checks(), B::separate_construction()) {
+                (Some(checks), Some(_)) => Some(checks),
                 _ => None,
             };
             let mut contenders = names.to_vec();
-            contenders.extend(outside.map(|_| CHECKS));
+            contenders.extend(own_checks.map(|_| CHECKS));
             let ns = take_turns(cell.warm_up(), cell.rounds(), &contenders, |i| {
-                match (i, outside) {
+                match (i, own_checks) {
                     (0, _) => build(&a, meter),
                     (1, _) => build(&b, meter),
-                    (_, Some(separate)) => checks(separate, soup, meter),
+                    (_, Some(own)) => checks(own, soup, meter),
                     (_, None) => Err("no third contender".into()),
                 }
             })?;

@@ -80,7 +80,7 @@ pub(crate) fn checks_text(turns: &[Turns], t: &Target, b: &str) -> Option<String
     let without: Vec<f64> = a_ns.iter().zip(checks).map(|(a, c)| a - c).collect();
     let ratio = Spread::of_ratios(&without, b_ns)?;
     Some(format!(
-        "{a}'s build includes the lab's checks of the soup (range and finiteness, the edge analysis, one fan per vertex), {c:.1} ns/face in these rounds ({cmin:.1}–{cmax:.1}), which {b}'s cell leaves out: they run before its clock, as its users do not run them; without them {a} would be {r:.2}× ({rmin:.2}–{rmax:.2})",
+        "{a}'s build includes its checks of the soup (indices in range, finite coordinates, the edge analysis, one fan per vertex), {c:.1} ns/face in these rounds ({cmin:.1}–{cmax:.1}), which {b}'s cell leaves out: the lab's checks run before its clock, as its users do not run them; without them {a} would be {r:.2}× ({rmin:.2}–{rmax:.2})",
         a = t.structure,
         c = spent.median,
         cmin = spent.min,

@@ -216,6 +216,15 @@ impl PolygonSoup {
         Connectivity::build(self)
     }
 
+    /// [`PolygonSoup::connectivity`], then [`Connectivity::check_vertex_fans`]: the checks of
+    /// the structures that store one fan per vertex and build from the shared edge analysis
+    /// (the half-edges, the winged-edge), and what the Rust crates are admitted by.
+    pub fn manifold_connectivity(&self) -> Result<Connectivity> {
+        let connectivity = self.connectivity()?;
+        connectivity.check_vertex_fans(self)?;
+        Ok(connectivity)
+    }
+
     /// The soup with its faces restricted to the given subset (vertex list unchanged).
     pub fn with_faces(&self, keep: impl Fn(usize) -> bool) -> Self {
         let mut out =

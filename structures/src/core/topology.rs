@@ -223,6 +223,16 @@ pub trait MeshTopology: Sized {
         None
     }
 
+    /// The checks of its input that [`MeshTopology::from_soup`] makes as a step of their own
+    /// before it builds (the structures built from the soup's edge analysis:
+    /// [`PolygonSoup::manifold_connectivity`]), so that the report can time them apart: a
+    /// construction target against an outside project, whose checks run before its clock,
+    /// shows their share. `None` (the default): no such step (the CHE pairs its half-edges and
+    /// checks them in one pass).
+    fn input_checks() -> Option<fn(&PolygonSoup) -> Result<crate::Connectivity>> {
+        None
+    }
+
     /// What one query of `op` reads from memory ([`Access`]: bytes per container, dependent
     /// loads on its longest chain), declared beside [`MeshTopology::cost`] for the limit the
     /// report puts on each sweep; `None` (the default): no model, no limit.

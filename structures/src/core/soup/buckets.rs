@@ -2,9 +2,9 @@
 //! given: every edge with one corner, or two that run opposite ways.
 //!
 //! One pass over the corners in order. Each edge is filed in a bucket of its smaller vertex (a
-//! linked list through the corners that opened an edge, as the CHE's construction does for
-//! `O[]`); a corner looks in its bucket for an open edge to the same larger vertex: found,
-//! the corner closes it; not found, it opens a new edge. Edges come out numbered by first
+//! linked list through the edges, as the CHE's construction files half-edges for `O[]`); a
+//! corner looks in its bucket for an open edge to the same larger vertex: found, the corner
+//! closes it; not found, it opens a new edge. Edges come out numbered by first
 //! appearance with no renumbering, since an edge is opened by its smallest corner. O(c·k) for
 //! c corners and buckets of at most k entries (a vertex's valence), against the sort's
 //! O(c log c) and its 16 bytes per corner. Together with the fan walk of
@@ -43,18 +43,19 @@ pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity
     let mut corner_face = Vec::with_capacity(nc);
     let mut corner_edge = Vec::with_capacity(nc);
     let mut edge_corners: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
-    // head[a]: the last corner that opened an edge in the bucket of vertex a. filed[c] of a
-    // corner that opened an edge: [its edge's larger vertex, the corner filed before it], so a
-    // step along a bucket is one load; a corner that closed an edge is never reached.
+    // The buckets are lists of edges: head[a], the last edge filed in the bucket of vertex a;
+    // filed[e], edge e's larger vertex and the edge filed before it. A step along a bucket is
+    // one load, and the edge a corner finds is the index it found it at (no second table to
+    // read), next to its corners in `edge_corners`.
     let mut head = vec![NONE; soup.num_vertices()];
-    let mut filed: Vec<[u32; 2]> = vec![[NONE; 2]; nc];
+    let mut filed: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
     let mut steps_left = bucket_step_budget(nc);
     for (f, w) in soup.offsets().windows(2).enumerate() {
         let (first, end) = (w[0] as usize, w[1] as usize);
         for c in first..end {
             corner_face.push(f as u32);
             let from = indices[c];
-            let to = indices[soup.next_corner(c, f)];
+            let to = indices[if c + 1 == end { first } else { c + 1 }];
             let (smaller, larger) = (from.min(to), from.max(to));
             let mut at = head[smaller as usize];
             let edge = loop {
@@ -62,20 +63,19 @@ pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity
                     // The first corner of its edge: on the boundary until another closes it.
                     let e = edge_corners.len() as u32;
                     edge_corners.push([c as u32, NONE]);
-                    filed[c] = [larger, head[smaller as usize]];
-                    head[smaller as usize] = c as u32;
+                    filed.push([larger, head[smaller as usize]]);
+                    head[smaller as usize] = e;
                     break e;
                 }
                 let [far, link] = filed[at as usize];
                 if far == larger {
-                    let e = corner_edge[at as usize];
-                    let pair = &mut edge_corners[e as usize];
+                    let pair = &mut edge_corners[at as usize];
                     // A third corner, or a second running the same way as the first.
-                    if pair[1] != NONE || indices[at as usize] == from {
+                    if pair[1] != NONE || indices[pair[0] as usize] == from {
                         return None;
                     }
                     pair[1] = c as u32;
-                    break e;
+                    break at;
                 }
                 at = link;
                 steps_left -= 1;

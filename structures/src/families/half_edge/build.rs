@@ -35,8 +35,7 @@ impl HalfEdgeArrays {
     /// non-manifold vertices (a vertex with several fans has several outgoing boundary
     /// half-edges, and one `vertex_half_edge` cannot reach them all by rotation).
     pub(crate) fn from_soup(soup: &PolygonSoup) -> Result<Self> {
-        let conn = soup.connectivity()?;
-        conn.check_vertex_fans(soup)?;
+        let conn = soup.manifold_connectivity()?;
         // Half-edge ids stay below 2^31, so walks may use the top bit as a mark.
         let num_half_edges = 2 * conn.num_edges() as u64;
         if num_half_edges >= 1 << 31 {

@@ -5,7 +5,7 @@ use super::validate::validate_links;
 use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::soup::PolygonSoup;
+use crate::core::soup::{Connectivity, PolygonSoup};
 use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
 use glam::DVec3;
 use std::fmt::Write;
@@ -35,6 +35,10 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
 
     fn cost(op: Operator) -> Cost {
         half_edge_cost(op, L::PREDECESSOR)
+    }
+
+    fn input_checks() -> Option<fn(&PolygonSoup) -> Result<Connectivity>> {
+        Some(PolygonSoup::manifold_connectivity)
     }
 
     fn from_soup(soup: &PolygonSoup) -> Result<Self> {

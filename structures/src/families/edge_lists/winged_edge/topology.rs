@@ -229,8 +229,7 @@ impl WingedEdge {
 
     /// Everything [`MeshTopology::from_soup`] builds except the coordinates (left empty).
     fn records_of(soup: &PolygonSoup) -> Result<Self> {
-        let conn = soup.connectivity()?;
-        conn.check_vertex_fans(soup)?;
+        let conn = soup.manifold_connectivity()?;
         let corner_face = |c: usize| conn.corner_face[c] as usize;
         // The edges leaving the corners before and after corner c in its face.
         let wings = |c: usize| {
