@@ -28,6 +28,7 @@
 
 pub mod baby_shark_corner_table;
 pub mod compose;
+pub mod edit;
 pub mod lox_directed_edge;
 pub mod lox_half_edge;
 pub mod registry;

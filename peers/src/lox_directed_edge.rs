@@ -42,10 +42,10 @@ pub const NAME: &str = "lox-directed-edge";
 /// docs.
 #[derive(Clone, Debug)]
 pub struct LoxDirectedEdge {
-    mesh: DirectedEdgeMesh<DefaultConfig>,
-    positions: Vec<DVec3>,
+    pub(crate) mesh: DirectedEdgeMesh<DefaultConfig>,
+    pub(crate) positions: Vec<DVec3>,
     /// lox does not count edges here; the lab's edge analysis did, before the crate built.
-    edges: usize,
+    pub(crate) edges: usize,
 }
 
 impl LoxDirectedEdge {

@@ -34,8 +34,8 @@ pub const NAME: &str = "lox-half-edge";
 /// lox's `HalfEdgeMesh` and the positions the adapter keeps beside it; see the module docs.
 #[derive(Clone, Debug)]
 pub struct LoxHalfEdge {
-    mesh: HalfEdgeMesh<PolyConfig>,
-    positions: Vec<DVec3>,
+    pub(crate) mesh: HalfEdgeMesh<PolyConfig>,
+    pub(crate) positions: Vec<DVec3>,
 }
 
 impl MeshTopology for LoxHalfEdge {
