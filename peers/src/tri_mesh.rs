@@ -34,10 +34,10 @@ pub const NAME: &str = "tri-mesh";
 
 /// tri-mesh's `Mesh` and the ids its iterators gave; see the module docs.
 pub struct TriMesh {
-    mesh: Mesh,
-    vertices: Vec<VertexID>,
-    faces: Vec<FaceID>,
-    half_edges: Vec<HalfEdgeID>,
+    pub(crate) mesh: Mesh,
+    pub(crate) vertices: Vec<VertexID>,
+    pub(crate) faces: Vec<FaceID>,
+    pub(crate) half_edges: Vec<HalfEdgeID>,
 }
 
 impl std::fmt::Debug for TriMesh {
@@ -57,12 +57,12 @@ impl TriMesh {
         self.vertices[v.index()]
     }
     #[inline]
-    fn half_edge(&self, e: EdgeId) -> HalfEdgeID {
+    pub(crate) fn half_edge(&self, e: EdgeId) -> HalfEdgeID {
         self.half_edges[e.index()]
     }
     /// The lab's id of the edge of half-edge `h`: the smaller of its and its twin's.
     #[inline]
-    fn edge(&self, h: HalfEdgeID) -> EdgeId {
+    pub(crate) fn edge(&self, h: HalfEdgeID) -> EdgeId {
         let twin = self.mesh.walker_from_halfedge(h).twin_id();
         EdgeId(twin.map_or(*h, |t| (*h).min(*t)))
     }

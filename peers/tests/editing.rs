@@ -12,12 +12,12 @@
 //! peer offers every operation. This file is the peers' suite until it can.
 
 use glam::DVec3;
-use topolab_peers::{LoxDirectedEdge, LoxHalfEdge};
+use topolab_peers::{LoxDirectedEdge, LoxHalfEdge, TriMesh};
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::testing::conformance::compare;
 use topolab_structures::testing::editing::{canonical_face, start_mesh, Model};
 use topolab_structures::{
-    EdgeId, EditOp, Error, FaceId, MeshEdit, MeshTopology, PolygonSoup, Refusal, VertexId,
+    EdgeId, EditOp, Error, FaceId, MeshEdit, PolygonSoup, Refusal, VertexId,
 };
 
 /// splitmix64: the test's own seeded draws.
@@ -498,7 +498,9 @@ fn check<M: MeshEdit>(min_done: usize) {
         }
         let done = tally.done.get(op.name()).copied().unwrap_or(0);
         assert!(done >= min_done, "{}: {op} done {done} times: {tally:?}", M::NAME);
-        if op != EditOp::AddVertex {
+        // Refusals the random draws make often (a split edge is refused only where two
+        // triangles share their third corner: `a_pillow_s_edges_are_neither_split_nor_flipped`).
+        if op != EditOp::AddVertex && op != EditOp::SplitEdge {
             let refused = tally.refused.get(op.name()).copied().unwrap_or(0);
             assert!(refused > 0, "{}: {op} never refused: {tally:?}", M::NAME);
         }
@@ -513,4 +515,49 @@ fn lox_half_edge_edits_agree_with_the_model() {
 #[test]
 fn lox_directed_edge_edits_agree_with_the_model() {
     check::<LoxDirectedEdge>(10);
+}
+
+#[test]
+fn tri_mesh_edits_agree_with_the_model() {
+    check::<TriMesh>(10);
+}
+
+/// Two triangles on the same three vertices, back to back: every edge's two triangles share
+/// their third corner, so a split would give the new edge four triangles and a flip would
+/// join a vertex to itself. Each peer that offers the operation refuses it, nothing changed.
+fn pillow_refuses<M: MeshEdit>() {
+    let soup = PolygonSoup::from_polygons(
+        vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+        &[vec![0, 1, 2], vec![1, 0, 2]],
+    );
+    let mut m = M::from_soup(&soup).unwrap();
+    let before = face_set(&m);
+    let mut edges = Vec::new();
+    m.for_each_edge(|e| edges.push(e));
+    assert_eq!(edges.len(), 3);
+    for e in edges {
+        for (op, got) in [
+            (EditOp::SplitEdge, m.split_edge(e, DVec3::ONE).map(drop)),
+            (EditOp::FlipEdge, m.flip_edge(e)),
+        ] {
+            let want = if M::supports(op) {
+                Refusal::EdgeExists
+            } else {
+                Refusal::NotImplemented
+            };
+            match got {
+                Err(Error::EditRefused { reason, .. }) => assert_eq!(reason, want, "{op}"),
+                other => panic!("{}: {op} of {e:?}: {other:?}", M::NAME),
+            }
+        }
+        assert_eq!(face_set(&m), before);
+        m.validate().unwrap();
+    }
+}
+
+#[test]
+fn a_pillow_s_edges_are_neither_split_nor_flipped() {
+    pillow_refuses::<LoxHalfEdge>();
+    pillow_refuses::<LoxDirectedEdge>();
+    pillow_refuses::<TriMesh>();
 }
