@@ -256,7 +256,7 @@ mod tests {
         assert!(absent.iter().all(|(name, _)| !NAMES.contains(name)));
         assert_eq!(
             absent.len() + NAMES.len(),
-            structures::NAMES.len() + CPP_BASELINES.len()
+            structures::NAMES.len() + CPP_BASELINES.len() + PEER_NAMES.len()
         );
     }
 
