@@ -49,20 +49,20 @@ pub const NAME: &str = "baby-shark-corner-table";
 /// baby_shark's `CornerTable<f64>` and the adapter's tables from the lab's ids to the
 /// crate's and back; see the module docs.
 pub struct BabySharkCornerTable {
-    mesh: CornerTable<f64>,
+    pub(crate) mesh: CornerTable<f64>,
     /// Per lab vertex: the crate's id, `None` for a vertex no face uses.
-    vertices: Vec<Option<SharkVertex>>,
+    pub(crate) vertices: Vec<Option<SharkVertex>>,
     /// Per crate vertex: the lab's id.
-    vertex_ids: VertexAttribute<u32>,
+    pub(crate) vertex_ids: VertexAttribute<u32>,
     /// Per lab face: the crate's id.
     faces: Vec<SharkFace>,
     /// Per lab edge: the crate's edge (the corner) `unique_edges` gave for it.
-    edges: Vec<SharkEdge>,
+    pub(crate) edges: Vec<SharkEdge>,
     /// Per crate edge (corner): the lab's edge and face.
-    corner_ids: EdgeAttribute<[u32; 2]>,
+    pub(crate) corner_ids: EdgeAttribute<[u32; 2]>,
     /// The vertices no face uses and their positions, by lab id (baby_shark keeps no id for
     /// them).
-    isolated: Vec<(u32, DVec3)>,
+    pub(crate) isolated: Vec<(u32, DVec3)>,
 }
 
 impl std::fmt::Debug for BabySharkCornerTable {

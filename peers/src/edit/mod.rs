@@ -9,6 +9,7 @@
 //! structures' test that every vertex it touches keeps one fan with each directed edge once
 //! ([`topolab_structures::core::rewrite::check_result`]).
 
+pub mod baby_shark;
 pub mod lox;
 pub mod tri_mesh;
 
