@@ -19,7 +19,12 @@ pub fn visit<V: StructureVisitor>(name: &str, visitor: V) -> Result<V::Output, V
 
 /// The peers that implement `MeshEdit`, in registry order: each does the operations its
 /// crate offers and refuses the others (`MeshEdit::supports`).
-pub const EDITABLE: [&str; 3] = [LoxHalfEdge::NAME, LoxDirectedEdge::NAME, TriMesh::NAME];
+pub const EDITABLE: [&str; 4] = [
+    LoxHalfEdge::NAME,
+    LoxDirectedEdge::NAME,
+    BabySharkCornerTable::NAME,
+    TriMesh::NAME,
+];
 
 /// Runs `visitor` with the editable peer called `name`, or hands it back when no peer of
 /// that name edits (so the caller can go on to other lists).
@@ -28,6 +33,8 @@ pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Result<V::Outpu
         Ok(visitor.visit::<LoxHalfEdge>())
     } else if name == LoxDirectedEdge::NAME {
         Ok(visitor.visit::<LoxDirectedEdge>())
+    } else if name == BabySharkCornerTable::NAME {
+        Ok(visitor.visit::<BabySharkCornerTable>())
     } else if name == TriMesh::NAME {
         Ok(visitor.visit::<TriMesh>())
     } else {
