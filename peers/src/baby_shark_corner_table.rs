@@ -29,6 +29,27 @@
 //! | boundary edge | `is_edge_on_boundary` | O(1) |
 //! | boundary curves | `boundary_rings` and `boundary_edges` (a `HashSet` of every corner inside) | O(n) |
 //! | successor, predecessor | composed: the edge's corner in the face, `previous_edge` | O(1) |
+//!
+//! ## Editing
+//!
+//! [`MeshEdit`](topolab_structures::MeshEdit) (in `edit::baby_shark`), after the lab's checks
+//! ([`crate::edit`]):
+//!
+//! | operation | baby_shark call | cost |
+//! |---|---|---|
+//! | flip | the lab's checks (two triangles whose third corners are distinct and not joined: baby_shark checks nothing), then `flip_edge` on the edge's corner, O(1); the adapter re-reads the lab's edge of the six corners | O(k), the check |
+//! | set position | `Vertex::set_position` through the table's `IndexMut`; for a vertex no face uses, the adapter's list | O(1), O(log n) |
+//! | garbage collection | nothing to collect: nothing is deleted | O(1) |
+//!
+//! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): adding
+//! a vertex or a face, the deletions, the vertex split and the weld (baby_shark has no public
+//! call for them); the edge and face splits (`split_edge`, `split_face`: they append corners
+//! and a vertex, and the adapter's `EdgeAttribute` and `VertexAttribute` cannot grow, so each
+//! would rebuild them in O(n); note that `split_edge` moves the edge's end to the split point
+//! and puts the new vertex where that end was); the collapse (`collapse_edge` marks corners and
+//! a vertex deleted, which the adapter's queries and `validate` do not skip yet). Deletion is
+//! declared `Marked`, as baby_shark deletes; edge ids are stable (a flip keeps the flipped
+//! edge's id and its four neighbours').
 
 use crate::compose;
 use baby_shark::exports::nalgebra::Vector3;
