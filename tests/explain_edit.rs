@@ -369,6 +369,10 @@ fn a_rust_crate_is_not_explained_by_op_and_says_why() {
         assert!(!editable().contains(&name), "{name}");
         let failure = run(name, None, ExplainOp::Split, None).expect_err(name);
         assert_eq!(failure.code, 2, "{name}: {}", failure.message);
-        assert!(failure.message.contains("inside that crate"), "{}", failure.message);
+        assert!(
+            failure.message.contains("inside that crate"),
+            "{}",
+            failure.message
+        );
     }
 }

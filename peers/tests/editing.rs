@@ -16,9 +16,7 @@ use topolab_peers::{BabySharkCornerTable, LoxDirectedEdge, LoxHalfEdge, TriMesh}
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::testing::conformance::compare;
 use topolab_structures::testing::editing::{canonical_face, start_mesh, Model};
-use topolab_structures::{
-    EdgeId, EditOp, Error, FaceId, MeshEdit, PolygonSoup, Refusal, VertexId,
-};
+use topolab_structures::{EdgeId, EditOp, Error, FaceId, MeshEdit, PolygonSoup, Refusal, VertexId};
 
 /// splitmix64: the test's own seeded draws.
 struct Rng(u64);
@@ -191,10 +189,9 @@ fn expect(model: &Model, edit: &Edit, triangles_only: bool) -> Option<Model> {
         }
         Edit::Collapse(a, b) => return model.collapse(*a, *b),
         // Offered by no peer yet: every call must be refused as not implemented.
-        Edit::DeleteFace(..)
-        | Edit::DeleteVertex(_)
-        | Edit::SplitVertex(..)
-        | Edit::Weld(..) => return None,
+        Edit::DeleteFace(..) | Edit::DeleteVertex(_) | Edit::SplitVertex(..) | Edit::Weld(..) => {
+            return None
+        }
         Edit::Collect => next.collect(),
     }
     Some(next)
@@ -235,7 +232,9 @@ fn apply<M: MeshEdit>(m: &mut M, edit: &Edit) -> Option<Result<(), Error>> {
     Some(match edit {
         Edit::AddVertex(p) => m.add_vertex(*p).map(drop),
         Edit::SetPosition(x, p) => m.set_position(v(*x), *p),
-        Edit::AddFace(vs) => m.add_face(&vs.iter().map(|&x| v(x)).collect::<Vec<_>>()).map(drop),
+        Edit::AddFace(vs) => m
+            .add_face(&vs.iter().map(|&x| v(x)).collect::<Vec<_>>())
+            .map(drop),
         Edit::SplitFace(a, b, p) => m.split_face(face_running(m, *a, *b)?, *p).map(drop),
         Edit::SplitMissingFace(k) => m
             .split_face(FaceId::new(m.num_faces() + *k as usize), DVec3::ZERO)
@@ -369,7 +368,8 @@ fn face_set<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
 }
 
 fn agree<M: MeshEdit>(m: &M, model: &Model) -> Result<(), String> {
-    m.validate().map_err(|e| format!("validate() failed: {e}"))?;
+    m.validate()
+        .map_err(|e| format!("validate() failed: {e}"))?;
     if m.num_vertices() != model.positions.len() {
         return Err(format!(
             "{} vertex slots, the model has {}",
@@ -382,7 +382,9 @@ fn agree<M: MeshEdit>(m: &M, model: &Model) -> Result<(), String> {
         match p {
             None if !m.is_deleted_vertex(id) => return Err(format!("v{v} should be deleted")),
             Some(_) if m.is_deleted_vertex(id) => return Err(format!("v{v} is deleted")),
-            Some(p) if m.position(id) != *p => return Err(format!("v{v} is not where it should be")),
+            Some(p) if m.position(id) != *p => {
+                return Err(format!("v{v} is not where it should be"))
+            }
             _ => {}
         }
     }
@@ -415,7 +417,7 @@ fn run<M: MeshEdit>(seed: u64, steps: usize, tally: &mut Tally) -> Result<(), St
     };
     let triangles_only = M::capabilities().triangles_only;
     let mut model = Model::of(&soup);
-    let mut rng = Rng(seed ^ 0x5eed_0f_9ee2);
+    let mut rng = Rng(seed ^ 0x005e_ed0f_9ee2);
     for step in 0..steps {
         let edit = draw(&mut rng, &model);
         let op = edit.op();
@@ -428,7 +430,9 @@ fn run<M: MeshEdit>(seed: u64, steps: usize, tally: &mut Tally) -> Result<(), St
         };
         if let Edit::Collapse(a, b) = edit {
             // The collapse's test alone answers as the collapse then does.
-            let checked = m.check_collapse(VertexId(a), VertexId(b)).map_err(|e| e.to_string());
+            let checked = m
+                .check_collapse(VertexId(a), VertexId(b))
+                .map_err(|e| e.to_string());
             let want = if !offered {
                 Err(())
             } else {
@@ -463,10 +467,14 @@ fn run<M: MeshEdit>(seed: u64, steps: usize, tally: &mut Tally) -> Result<(), St
                 }
             }
             (Some(_), None) => {
-                return Err(format!("step {step}: {edit:?}: the structure has no such element"))
+                return Err(format!(
+                    "step {step}: {edit:?}: the structure has no such element"
+                ))
             }
             (Some(_), Some(Err(e))) => {
-                return Err(format!("step {step}: {edit:?} refused: {e}; the model allows it"))
+                return Err(format!(
+                    "step {step}: {edit:?} refused: {e}; the model allows it"
+                ))
             }
             (None, Some(Err(e))) => return Err(format!("step {step}: {edit:?} failed with {e}")),
             (None, Some(Ok(()))) => {
@@ -500,7 +508,11 @@ fn check<M: MeshEdit>(min_done: usize) {
             continue;
         }
         let done = tally.done.get(op.name()).copied().unwrap_or(0);
-        assert!(done >= min_done, "{}: {op} done {done} times: {tally:?}", M::NAME);
+        assert!(
+            done >= min_done,
+            "{}: {op} done {done} times: {tally:?}",
+            M::NAME
+        );
         // Refusals the random draws make often (a split edge is refused only where two
         // triangles share their third corner: `a_pillow_s_edges_are_neither_split_nor_flipped`).
         if op != EditOp::AddVertex && op != EditOp::SplitEdge {

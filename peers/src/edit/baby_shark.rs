@@ -145,7 +145,13 @@ impl MeshEdit for BabySharkCornerTable {
     fn check_collapse(&self, _: VertexId, _: VertexId) -> Result<()> {
         not_implemented::<Self, _>(EditOp::CollapseEdge)
     }
-    fn split_vertex(&mut self, _: VertexId, _: DVec3, _: VertexId, _: VertexId) -> Result<VertexId> {
+    fn split_vertex(
+        &mut self,
+        _: VertexId,
+        _: DVec3,
+        _: VertexId,
+        _: VertexId,
+    ) -> Result<VertexId> {
         not_implemented::<Self, _>(EditOp::SplitVertex)
     }
     fn is_deleted_vertex(&self, _: VertexId) -> bool {

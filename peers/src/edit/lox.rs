@@ -188,7 +188,13 @@ mod tests {
     fn quad_and_triangle() -> PolygonSoup {
         let p = |x, y| DVec3::new(x, y, 0.0);
         PolygonSoup::from_polygons(
-            vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(2.0, 0.5)],
+            vec![
+                p(0.0, 0.0),
+                p(1.0, 0.0),
+                p(1.0, 1.0),
+                p(0.0, 1.0),
+                p(2.0, 0.5),
+            ],
             &[vec![0, 1, 2, 3], vec![1, 4, 2]],
         )
     }

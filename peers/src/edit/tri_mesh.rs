@@ -15,8 +15,7 @@ use super::{check_add_face, check_flip, check_split_edge, not_implemented, refus
 use crate::TriMesh;
 use glam::DVec3;
 use topolab_structures::{
-    Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, Refusal, Result,
-    VertexId,
+    Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, Refusal, Result, VertexId,
 };
 use tri_mesh::{FaceID, HalfEdgeID, Vector3, VertexID};
 
@@ -156,7 +155,8 @@ impl MeshEdit for TriMesh {
         let Some(&x) = self.vertices.get(v.index()) else {
             return Err(refuse::<Self>(EditOp::AddVertex, Refusal::NoSuchElement));
         };
-        self.mesh.set_vertex_position(x, Vector3::new(p.x, p.y, p.z));
+        self.mesh
+            .set_vertex_position(x, Vector3::new(p.x, p.y, p.z));
         Ok(())
     }
 
@@ -230,7 +230,13 @@ impl MeshEdit for TriMesh {
     fn check_collapse(&self, _: VertexId, _: VertexId) -> Result<()> {
         not_implemented::<Self, _>(EditOp::CollapseEdge)
     }
-    fn split_vertex(&mut self, _: VertexId, _: DVec3, _: VertexId, _: VertexId) -> Result<VertexId> {
+    fn split_vertex(
+        &mut self,
+        _: VertexId,
+        _: DVec3,
+        _: VertexId,
+        _: VertexId,
+    ) -> Result<VertexId> {
         not_implemented::<Self, _>(EditOp::SplitVertex)
     }
     fn is_deleted_vertex(&self, _: VertexId) -> bool {

@@ -69,7 +69,10 @@ fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, 
     // A structure that lacks an operation of the workload (a Rust crate's adapter, which
     // offers only its crate's operations) would have every run refused.
     if let Some(&(op, _)) = w.operations().iter().find(|&&(op, _)| !M::supports(op)) {
-        return Some((format!("it does not offer {op}, which the workload needs"), None));
+        return Some((
+            format!("it does not offer {op}, which the workload needs"),
+            None,
+        ));
     }
     if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
         return Some((
