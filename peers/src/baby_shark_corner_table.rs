@@ -38,18 +38,19 @@
 //! | operation | baby_shark call | cost |
 //! |---|---|---|
 //! | flip | the lab's checks (two triangles whose third corners are distinct and not joined: baby_shark checks nothing), then `flip_edge` on the edge's corner, O(1); the adapter re-reads the lab's edge of the six corners | O(k), the check |
+//! | collapse | the lab's test (the link condition and OpenMesh's tetrahedron test, O(k²): baby_shark checks nothing), then `collapse_edge` on the corner of the face running `to` → `from` (or, on a boundary edge with only `from` → `to`, that face's, the kept record then taking `to`'s id) at `to`'s position; baby_shark walks the corners around the removed vertex | O(k²), the test |
 //! | set position | `Vertex::set_position` through the table's `IndexMut`; for a vertex no face uses, the adapter's list | O(1), O(log n) |
-//! | garbage collection | nothing to collect: nothing is deleted | O(1) |
+//! | garbage collection | the adapter's tables renumbered without what collapses deleted (baby_shark's own arrays keep their deleted records: it has no compaction) | O(n) |
 //!
 //! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): adding
 //! a vertex or a face, the deletions, the vertex split and the weld (baby_shark has no public
 //! call for them); the edge and face splits (`split_edge`, `split_face`: they append corners
 //! and a vertex, and the adapter's `EdgeAttribute` and `VertexAttribute` cannot grow, so each
 //! would rebuild them in O(n); note that `split_edge` moves the edge's end to the split point
-//! and puts the new vertex where that end was); the collapse (`collapse_edge` marks corners and
-//! a vertex deleted, which the adapter's queries and `validate` do not skip yet). Deletion is
-//! declared `Marked`, as baby_shark deletes; edge ids are stable (a flip keeps the flipped
-//! edge's id and its four neighbours').
+//! and puts the new vertex where that end was). Deletion is `Marked`, as baby_shark deletes:
+//! a collapse's deleted vertex, faces and edges keep their lab ids (skipped by `validate`)
+//! until `garbage_collection`; edge ids are stable (a flip keeps the flipped edge's id and its
+//! four neighbours', a collapse keeps the ids of the edges it does not delete).
 
 use crate::compose;
 use baby_shark::exports::nalgebra::Vector3;
@@ -76,7 +77,7 @@ pub struct BabySharkCornerTable {
     /// Per crate vertex: the lab's id.
     pub(crate) vertex_ids: VertexAttribute<u32>,
     /// Per lab face: the crate's id.
-    faces: Vec<SharkFace>,
+    pub(crate) faces: Vec<SharkFace>,
     /// Per lab edge: the crate's edge (the corner) `unique_edges` gave for it.
     pub(crate) edges: Vec<SharkEdge>,
     /// Per crate edge (corner): the lab's edge and face.
@@ -347,8 +348,10 @@ impl MeshTopology for BabySharkCornerTable {
         Some(self.edge_id(self.mesh.previous_edge(h)))
     }
 
-    /// The lab's checks of the answers ([`compose::validate_answers`]), and that the tables
-    /// agree with the crate: each lab id goes to the crate and back unchanged.
+    /// The lab's checks of the answers ([`compose::validate_live_answers`]: the faces and
+    /// edges a collapse deleted keep their slots until garbage collection and are skipped),
+    /// and that the tables agree with the crate: each lab id goes to the crate and back
+    /// unchanged.
     fn validate(&self) -> Result<()> {
         for (v, x) in self.vertices.iter().enumerate() {
             if x.is_some_and(|x| self.vertex_ids[x] as usize != v) {
@@ -365,7 +368,7 @@ impl MeshTopology for BabySharkCornerTable {
                 return Err(Self::invariant(format!("edge {e} does not map back")));
             }
         }
-        compose::validate_answers(self)
+        compose::validate_live_answers(self, |f| self.face_deleted(f), |e| self.edge_deleted(e))
     }
 
     /// From baby_shark's record layout (its arrays are private): per corner its opposite
