@@ -483,7 +483,10 @@ fn run<M: MeshEdit>(seed: u64, steps: usize, tally: &mut Tally) -> Result<(), St
         }
         agree(&m, &model).map_err(|msg| format!("after step {step} ({edit:?}): {msg}"))?;
     }
-    Ok(())
+    // Every relation against the oracle once more, nothing deleted.
+    m.garbage_collection();
+    model.collect();
+    agree(&m, &model).map_err(|msg| format!("after the final collection: {msg}"))
 }
 
 /// Runs 60 seeds of 40 edits on `M`; panics on the first disagreement, and unless every
