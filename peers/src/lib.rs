@@ -77,7 +77,7 @@ pub const CRATES: [PeerCrate; 3] = [
         name: "baby_shark",
         version: BABY_SHARK_VERSION,
         structures: &[baby_shark_corner_table::NAME],
-        used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges; edited with flip_edge and Vertex::set_position",
+        used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges; edited with flip_edge, collapse_edge and Vertex::set_position",
     },
     PeerCrate {
         name: "tri-mesh",
