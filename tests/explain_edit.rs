@@ -358,3 +358,21 @@ fn every_edit_succeeds_by_default_and_names_a_refused_edge() {
         }
     }
 }
+
+/// The Rust crates edit through `MeshEdit` (with the feature `peers`), but their records live
+/// inside the crate: `--op` says so, as it does of the C++ baselines, instead of listing
+/// nothing.
+#[cfg(feature = "peers")]
+#[test]
+fn a_rust_crate_is_not_explained_by_op_and_says_why() {
+    for name in ["tri-mesh", "lox-half-edge"] {
+        assert!(!editable().contains(&name), "{name}");
+        let failure = run(name, None, ExplainOp::Split, None).expect_err(name);
+        assert_eq!(failure.code, 2, "{name}: {}", failure.message);
+        assert!(
+            failure.message.contains("inside that crate"),
+            "{}",
+            failure.message
+        );
+    }
+}

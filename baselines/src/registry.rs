@@ -100,8 +100,11 @@ pub fn peer_crate(name: &str) -> Option<(&'static str, &'static str)> {
 /// `name`: the crate's structures marked `[editable]` in its registry list, then the
 /// baselines that implement `MeshEdit` (a baseline that does is one line here,
 /// `#[cfg(has_x)] if name == X { return Some(visitor.visit::<X>()); }`): OpenMesh and CGAL's
-/// two structures, through their own Euler operations. `None` if there is none of that name
-/// in this build or it does not edit.
+/// two structures, through their own Euler operations; then, with the feature `peers`, the
+/// Rust crates whose adapters implement `MeshEdit` (`topolab_peers::registry::EDITABLE`: the
+/// operations each crate offers, the others refused as not implemented, which
+/// `MeshEdit::supports` tells). `None` if there is none of that name in this build or it
+/// does not edit.
 ///
 /// Callers that need more than `MeshEdit` offers tell the baselines apart by
 /// [`CPP_BASELINES`]: the report runs their changing workloads natively
@@ -120,6 +123,11 @@ pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Outpu
     if name == CGAL_POLYHEDRON {
         return Some(visitor.visit::<crate::cgal::Polyhedron>());
     }
+    #[cfg(feature = "peers")]
+    let visitor = match topolab_peers::registry::visit_editable(name, visitor) {
+        Ok(output) => return Some(output),
+        Err(visitor) => visitor,
+    };
     structures::visit_editable(name, visitor)
 }
 
@@ -239,6 +247,16 @@ mod tests {
         }
         for name in structures::editable_names() {
             assert_eq!(visit_editable(name, EditName), Some(name));
+        }
+        // The Rust crates that edit, with the feature `peers`; none without it.
+        for name in PEER_NAMES {
+            #[cfg(feature = "peers")]
+            let expected = topolab_peers::registry::EDITABLE
+                .contains(name)
+                .then_some(*name);
+            #[cfg(not(feature = "peers"))]
+            let expected = None;
+            assert_eq!(visit_editable(name, EditName), expected, "{name}");
         }
     }
 

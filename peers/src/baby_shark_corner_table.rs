@@ -29,6 +29,28 @@
 //! | boundary edge | `is_edge_on_boundary` | O(1) |
 //! | boundary curves | `boundary_rings` and `boundary_edges` (a `HashSet` of every corner inside) | O(n) |
 //! | successor, predecessor | composed: the edge's corner in the face, `previous_edge` | O(1) |
+//!
+//! ## Editing
+//!
+//! [`MeshEdit`](topolab_structures::MeshEdit) (in `edit::baby_shark`), after the lab's checks
+//! ([`crate::edit`]):
+//!
+//! | operation | baby_shark call | cost |
+//! |---|---|---|
+//! | flip | the lab's checks (two triangles whose third corners are distinct and not joined: baby_shark checks nothing), then `flip_edge` on the edge's corner, O(1); the adapter re-reads the lab's edge of the six corners | O(k), the check |
+//! | collapse | the lab's test (the link condition and OpenMesh's tetrahedron test, O(k²): baby_shark checks nothing), then `collapse_edge` on the corner of the face running `to` → `from` (or, on a boundary edge with only `from` → `to`, that face's, the kept record then taking `to`'s id) at `to`'s position; baby_shark walks the corners around the removed vertex | O(k²), the test |
+//! | set position | `Vertex::set_position` through the table's `IndexMut`; for a vertex no face uses, the adapter's list | O(1), O(log n) |
+//! | garbage collection | the adapter's tables renumbered without what collapses deleted (baby_shark's own arrays keep their deleted records: it has no compaction) | O(n) |
+//!
+//! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): adding
+//! a vertex or a face, the deletions, the vertex split and the weld (baby_shark has no public
+//! call for them); the edge and face splits (`split_edge`, `split_face`: they append corners
+//! and a vertex, and the adapter's `EdgeAttribute` and `VertexAttribute` cannot grow, so each
+//! would rebuild them in O(n); note that `split_edge` moves the edge's end to the split point
+//! and puts the new vertex where that end was). Deletion is `Marked`, as baby_shark deletes:
+//! a collapse's deleted vertex, faces and edges keep their lab ids (skipped by `validate`)
+//! until `garbage_collection`; edge ids are stable (a flip keeps the flipped edge's id and its
+//! four neighbours', a collapse keeps the ids of the edges it does not delete).
 
 use crate::compose;
 use baby_shark::exports::nalgebra::Vector3;
@@ -88,23 +110,23 @@ impl SeparateConstruction<BabySharkCornerTable> for Build {
 /// baby_shark's `CornerTable<f64>` and the adapter's tables from the lab's ids to the
 /// crate's and back; see the module docs.
 pub struct BabySharkCornerTable {
-    mesh: CornerTable<f64>,
+    pub(crate) mesh: CornerTable<f64>,
     /// Per lab vertex: the crate's id, `None` for a vertex no face uses.
-    vertices: Vec<Option<SharkVertex>>,
+    pub(crate) vertices: Vec<Option<SharkVertex>>,
     /// Per crate vertex: the lab's id.
-    vertex_ids: VertexAttribute<u32>,
+    pub(crate) vertex_ids: VertexAttribute<u32>,
     /// Per lab face: the crate's id.
-    faces: Vec<SharkFace>,
+    pub(crate) faces: Vec<SharkFace>,
     /// Per lab edge: the crate's edge (the corner) `unique_edges` gave for it.
-    edges: Vec<SharkEdge>,
+    pub(crate) edges: Vec<SharkEdge>,
     /// Per crate edge (corner): the lab's edge and face.
-    corner_ids: EdgeAttribute<[u32; 2]>,
+    pub(crate) corner_ids: EdgeAttribute<[u32; 2]>,
     /// The vertices no face uses and their positions, by lab id (baby_shark keeps no id for
     /// them).
-    isolated: Vec<(u32, DVec3)>,
+    pub(crate) isolated: Vec<(u32, DVec3)>,
     /// The edge count of the lab's analysis before the crate built, which the tables are
     /// checked against.
-    admitted_edges: usize,
+    pub(crate) admitted_edges: usize,
 }
 
 impl std::fmt::Debug for BabySharkCornerTable {
@@ -372,8 +394,10 @@ impl MeshTopology for BabySharkCornerTable {
         Some(self.edge_id(self.mesh.previous_edge(h)))
     }
 
-    /// The lab's checks of the answers ([`compose::validate_answers`]), and that the tables
-    /// agree with the crate: each lab id goes to the crate and back unchanged.
+    /// The lab's checks of the answers ([`compose::validate_live_answers`]: the faces and
+    /// edges a collapse deleted keep their slots until garbage collection and are skipped),
+    /// and that the tables agree with the crate: each lab id goes to the crate and back
+    /// unchanged.
     fn validate(&self) -> Result<()> {
         for (v, x) in self.vertices.iter().enumerate() {
             if x.is_some_and(|x| self.vertex_ids[x] as usize != v) {
@@ -390,7 +414,7 @@ impl MeshTopology for BabySharkCornerTable {
                 return Err(Self::invariant(format!("edge {e} does not map back")));
             }
         }
-        compose::validate_answers(self)
+        compose::validate_live_answers(self, |f| self.face_deleted(f), |e| self.edge_deleted(e))
     }
 
     /// From baby_shark's record layout (its arrays are private): per corner its opposite

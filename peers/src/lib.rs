@@ -19,6 +19,10 @@
 //! crate stores triangles) is refused with the lab's typed error before the crate sees it
 //! ([`compose::admit`]), so no crate panics and none silently stores something else.
 //!
+//! Each also implements [`MeshEdit`](topolab_structures::MeshEdit) for the operations its
+//! crate does, by the crate's own calls after the lab's checks, and refuses the others as not
+//! implemented ([`edit`]).
+//!
 //! [`registry::Peers`] lists the four as one `Structures` list, which the lab's registry
 //! (`topolab_baselines::registry`, behind its feature `peers`) chains after the C++
 //! baselines; [`CRATES`] names each crate's exact version for `topolab list` and the report.
@@ -28,6 +32,7 @@
 
 pub mod baby_shark_corner_table;
 pub mod compose;
+pub mod edit;
 pub mod lox_directed_edge;
 pub mod lox_half_edge;
 pub mod registry;
@@ -69,7 +74,7 @@ pub const CRATES: [PeerCrate; 3] = [
         name: "lox",
         version: LOX_VERSION,
         structures: &[lox_half_edge::NAME, lox_directed_edge::NAME],
-        used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits (is_isolated_vertex beside is_boundary_vertex, which says true of an isolated vertex)",
+        used_as: "HalfEdgeMesh<PolyConfig> and DirectedEdgeMesh<DefaultConfig>, built with reserve_for_vertices, reserve_for_faces, add_vertex and add_face (add_triangle); queried with the FullAdj, BasicAdj and (half-edge) EdgeAdj traits (is_isolated_vertex beside is_boundary_vertex, which says true of an isolated vertex); edited with MeshMut's add_vertex, add_face (add_triangle) and split_face",
         differences: &[
             "lox stores no positions: the adapters keep them in a Vec beside the mesh (in their bytes), as lox's documentation keeps properties in a map beside it.",
             "Queries lox does not have are composed from its own and declared at their cost (docs/peers.md): R11, boundary curves, successor and predecessor; on the directed-edge mesh, which has no edges, also the edges and R01, R10, R12, R21.",
@@ -79,7 +84,7 @@ pub const CRATES: [PeerCrate; 3] = [
         name: "baby_shark",
         version: BABY_SHARK_VERSION,
         structures: &[baby_shark_corner_table::NAME],
-        used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges",
+        used_as: "CornerTable<f64> built with from_vertex_and_face_iters; queried with vertices_around_vertex, edges_around_vertex, faces_around_vertex, edge_vertices, edge_faces, opposite_edge, previous_edge, face_vertices, face_edges, is_vertex_on_boundary, is_edge_on_boundary, boundary_rings and boundary_edges; edited with flip_edge, collapse_edge and Vertex::set_position",
         differences: &[
             "baby_shark's ids are opaque (private constructors): the adapter keeps tables from the lab's ids to the crate's and back, one more read per answer and their bytes counted; they are made after the construction's clock.",
             "A vertex no face uses has no id in baby_shark: the adapter answers for it itself.",
@@ -89,7 +94,7 @@ pub const CRATES: [PeerCrate; 3] = [
         name: "tri-mesh",
         version: TRI_MESH_VERSION,
         structures: &[tri_mesh::NAME],
-        used_as: "Mesh::new from a three_d_asset::TriMesh with f64 positions and u32 indices; queried with vertex_halfedge_iter, face_halfedge_iter, edge_iter and its walkers",
+        used_as: "Mesh::new from a three_d_asset::TriMesh with f64 positions and u32 indices; queried with vertex_halfedge_iter, face_halfedge_iter, edge_iter and its walkers; edited with add_vertex, add_face, flip_edge, split_edge, split_face and set_vertex_position",
         differences: &[
             "The adapter keeps the ids tri-mesh's iterators gave (one u32 per vertex, face and half-edge), read after the construction's clock, rather than calling its unsafe constructor meant for tests: one more read per answer.",
             "tri-mesh's build converts the positions and copies the indices into its input type (three_d_asset::TriMesh), as its documentation builds a mesh; that is inside the clock.",

@@ -24,6 +24,25 @@
 //! | boundary edge | composed: the half-edge has no face across | O(1) |
 //! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
 //! | successor, predecessor | composed: the edge's place in R21 | O(1) |
+//!
+//! ## Editing
+//!
+//! [`MeshEdit`](topolab_structures::MeshEdit) (in `edit::lox`) does what lox's `MeshMut` does
+//! on this mesh, after the lab's checks ([`crate::edit`]):
+//!
+//! | operation | lox call | cost |
+//! |---|---|---|
+//! | add vertex | `add_vertex`; the position kept by the adapter | O(1) |
+//! | add face | the lab's checks (a polygon refused as `NotTriangles`, one fan per vertex, each directed edge once), then `add_triangle`; the edge count grows by the sides that had no edge | O(k) |
+//! | face split | `split_face`: the new vertex appended, face `f` keeps one triangle, two appended, three edges more; lox turns around two corners to re-link boundary twins | O(k) |
+//! | set position | the adapter's positions | O(1) |
+//! | garbage collection | nothing to collect: nothing is deleted | O(1) |
+//!
+//! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): the
+//! flip and the edge split (`DirectedEdgeMesh` is no `EdgeMesh`: its `flip_edge` and
+//! `split_edge_with_faces` are `unreachable!()`), the deletions, the collapse, the vertex split
+//! and the weld, as for [`crate::lox_half_edge`]. Edge ids are not stable: an edge is its
+//! smaller half-edge, and a face split gives one of the face's edges a half-edge of a new face.
 
 use crate::compose;
 use glam::DVec3;
@@ -74,10 +93,10 @@ impl SeparateConstruction<LoxDirectedEdge> for Build {
 /// docs.
 #[derive(Clone, Debug)]
 pub struct LoxDirectedEdge {
-    mesh: DirectedEdgeMesh<DefaultConfig>,
-    positions: Vec<DVec3>,
+    pub(crate) mesh: DirectedEdgeMesh<DefaultConfig>,
+    pub(crate) positions: Vec<DVec3>,
     /// lox does not count edges here; the lab's edge analysis did, before the crate built.
-    edges: usize,
+    pub(crate) edges: usize,
 }
 
 impl LoxDirectedEdge {

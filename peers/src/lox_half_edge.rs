@@ -17,6 +17,27 @@
 //! | boundary edge | `is_boundary_edge` | O(1) |
 //! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
 //! | successor, predecessor | composed: the edge's place in R21 | O(k) |
+//!
+//! ## Editing
+//!
+//! [`MeshEdit`](topolab_structures::MeshEdit) (in `edit::lox`) does what lox's `MeshMut` does
+//! on this mesh, after the lab's checks ([`crate::edit`]):
+//!
+//! | operation | lox call | cost |
+//! |---|---|---|
+//! | add vertex | `add_vertex`; the position kept by the adapter | O(1) |
+//! | add face | the lab's checks (at least three distinct corners, one fan per vertex, each directed edge once: lox panics on a third face and builds vertices of several fans), then `add_face` | O(k) |
+//! | face split | `split_face`: the new vertex appended, face `f` keeps the fan's last triangle, the others appended | O(k) |
+//! | set position | the adapter's positions | O(1) |
+//! | garbage collection | nothing to collect: nothing is deleted | O(1) |
+//!
+//! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): the
+//! flip and the edge split (lox's `flip_edge` and `split_edge_with_faces` require
+//! `Self: TriMesh`, and `HalfEdgeMesh<PolyConfig>` is a `PolyMesh`); the deletions (lox's
+//! `remove_face` leaves holes in its `StableVec`s, which no lox call compacts, so the lab's
+//! `garbage_collection` could only rebuild); the collapse, the vertex split and the weld (lox
+//! has none). Deletion is declared `Marked`, as lox's `StableVec`s delete; edge ids are stable
+//! (a face split adds edges and keeps the others' handles).
 
 use crate::compose;
 use glam::DVec3;
@@ -69,8 +90,8 @@ impl SeparateConstruction<LoxHalfEdge> for Build {
 /// lox's `HalfEdgeMesh` and the positions the adapter keeps beside it; see the module docs.
 #[derive(Clone, Debug)]
 pub struct LoxHalfEdge {
-    mesh: HalfEdgeMesh<PolyConfig>,
-    positions: Vec<DVec3>,
+    pub(crate) mesh: HalfEdgeMesh<PolyConfig>,
+    pub(crate) positions: Vec<DVec3>,
 }
 
 impl MeshTopology for LoxHalfEdge {

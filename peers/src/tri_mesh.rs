@@ -19,6 +19,30 @@
 //! | boundary edge | `is_edge_on_boundary` | O(1) |
 //! | boundary curves | composed: enumerate edges, follow boundary edges by R01 | O(n) |
 //! | successor, predecessor | composed: the edge's place in R21 | O(k) |
+//!
+//! ## Editing
+//!
+//! [`MeshEdit`](topolab_structures::MeshEdit) (in `edit::tri_mesh`), after the lab's checks
+//! ([`crate::edit`]); tri-mesh checks nothing itself beyond a flip's boundary edge and
+//! existing new edge. The adapter adds each new vertex, face and half-edge to its tables.
+//!
+//! | operation | tri-mesh call | cost |
+//! |---|---|---|
+//! | add vertex | `Mesh::add_vertex` | O(1) |
+//! | add face | the lab's checks (a polygon refused as `NotTriangles`, one fan per vertex, each directed edge once), then `Mesh::add_face`, whose `connecting_edge` turns around each corner | O(k) |
+//! | flip | the lab's checks (two triangles whose third corners are distinct and not joined), then `Mesh::flip_edge`, whose `connecting_edge` turns around a corner | O(k) |
+//! | edge split | the lab's check (the two triangles do not share their third corner), then `Mesh::split_edge` | O(1) |
+//! | face split | `Mesh::split_face` | O(1) |
+//! | set position | `Mesh::set_vertex_position` | O(1) |
+//! | garbage collection | nothing to collect: nothing is removed | O(1) |
+//!
+//! Refused as [`Refusal::NotImplemented`](topolab_structures::Refusal::NotImplemented): face
+//! deletion (`remove_face`) and the collapse (`collapse_edge`, which also moves the kept vertex
+//! to the edge's midpoint): tri-mesh frees a removed element's id for the next new one, and the
+//! adapter takes tri-mesh's ids for the lab's, so a new vertex would then not be appended;
+//! vertex deletion, the vertex split and the weld (tri-mesh has none). Deletion is declared
+//! `Removed`, as tri-mesh removes; edge ids are not stable (`add_face` replaces the boundary
+//! half-edge of an edge the new face takes, and an edge's id is its smaller half-edge).
 
 use crate::compose;
 use glam::DVec3;
@@ -74,10 +98,10 @@ impl SeparateConstruction<TriMesh> for Build {
 
 /// tri-mesh's `Mesh` and the ids its iterators gave; see the module docs.
 pub struct TriMesh {
-    mesh: Mesh,
-    vertices: Vec<VertexID>,
-    faces: Vec<FaceID>,
-    half_edges: Vec<HalfEdgeID>,
+    pub(crate) mesh: Mesh,
+    pub(crate) vertices: Vec<VertexID>,
+    pub(crate) faces: Vec<FaceID>,
+    pub(crate) half_edges: Vec<HalfEdgeID>,
 }
 
 impl std::fmt::Debug for TriMesh {
@@ -97,12 +121,12 @@ impl TriMesh {
         self.vertices[v.index()]
     }
     #[inline]
-    fn half_edge(&self, e: EdgeId) -> HalfEdgeID {
+    pub(crate) fn half_edge(&self, e: EdgeId) -> HalfEdgeID {
         self.half_edges[e.index()]
     }
     /// The lab's id of the edge of half-edge `h`: the smaller of its and its twin's.
     #[inline]
-    fn edge(&self, h: HalfEdgeID) -> EdgeId {
+    pub(crate) fn edge(&self, h: HalfEdgeID) -> EdgeId {
         let twin = self.mesh.walker_from_halfedge(h).twin_id();
         EdgeId(twin.map_or(*h, |t| (*h).min(*t)))
     }

@@ -21,7 +21,9 @@
 
 use super::explain_records::explained_records;
 use crate::input::{mesh_or_tetrahedron, Failure};
-use crate::registry::{missing_baseline, visit_editable, EditVisitor, CPP_BASELINES, NAMES};
+use crate::registry::{
+    missing_baseline, peer_crate, visit_editable, EditVisitor, CPP_BASELINES, NAMES,
+};
 use std::any::{Any, TypeId};
 use std::collections::HashMap;
 use std::fmt::Write;
@@ -44,8 +46,9 @@ pub enum ExplainOp {
 }
 
 /// The structures `--op` can explain: every one the registry marks `[editable]` (that
-/// [`visit_editable`] reaches) but the C++ baselines, whose records it cannot list
-/// ([`CPP_BASELINES`]), in the registry's order.
+/// [`visit_editable`] reaches) but the C++ baselines ([`CPP_BASELINES`]) and the Rust
+/// crates ([`peer_crate`]), whose records live inside their library and cannot be listed, in
+/// the registry's order.
 pub fn editable() -> Vec<&'static str> {
     struct Probe;
     impl EditVisitor for Probe {
@@ -55,7 +58,7 @@ pub fn editable() -> Vec<&'static str> {
     NAMES
         .iter()
         .copied()
-        .filter(|name| !CPP_BASELINES.contains(name))
+        .filter(|name| !CPP_BASELINES.contains(name) && peer_crate(name).is_none())
         .filter(|name| visit_editable(name, Probe).is_some())
         .collect()
 }
@@ -144,6 +147,11 @@ pub fn run(
             .unwrap_or_default();
         return Err(Failure::usage(format!(
             "--op: {name} edits through its C++ library's own Euler operations, and its records live inside that library, which --op cannot list{absent}; `topolab list` and `topolab explain {name}` show its declared edit costs. The structures whose records --op shows: che (its four levels), {}",
+            editable.join(", ")
+        )));
+    } else if let Some((krate, _)) = peer_crate(name) {
+        return Err(Failure::usage(format!(
+            "--op: {name} edits through the crate {krate}'s own calls, and its records live inside that crate, which --op cannot list; `topolab list` shows the operations it offers and their declared costs. The structures whose records --op shows: che (its four levels), {}",
             editable.join(", ")
         )));
     } else {

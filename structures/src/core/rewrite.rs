@@ -105,8 +105,12 @@ fn live<M: FaceRewrite>(m: &M, v: VertexId) -> bool {
 }
 
 /// Would the faces around each vertex of `check` make one fan, every directed edge once,
-/// after `old` is replaced by `new`? (See the module docs.)
-fn check_result<M: MeshTopology>(
+/// after `old` is replaced by `new`? (See the module docs.) `Err` names the refusal: an edge
+/// with three faces or run twice the same way ([`Refusal::NonManifoldEdge`]), a vertex with
+/// several fans ([`Refusal::NonManifoldVertex`]). Public so that a structure edited by a
+/// library (the Rust crates of `topolab-peers`) checks an edit with the lab's test before the
+/// library sees it.
+pub fn check_result<M: MeshTopology>(
     m: &M,
     old: &[FaceId],
     new: &[Vec<VertexId>],

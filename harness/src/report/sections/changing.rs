@@ -7,7 +7,9 @@
 //! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
 //! O(k·n), declared by `MeshEdit::edit_cost`) would run each workload in quadratic time: it is
 //! skipped, with a note giving the estimate, where that estimate exceeds [`MAX_SECONDS`]; so is
-//! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`).
+//! √3 on a structure whose edge ids do not survive the splits (`MeshEdit::STABLE_EDGE_IDS`),
+//! and a workload on a structure that lacks one of its operations (`MeshEdit::supports`: the
+//! Rust crates' adapters offer only their crate's).
 //! A structure whose workload edits cost O(n) each runs only on tori of at most
 //! [`LINEAR_EDIT_MAX_FACES`] faces: the estimate assumes 1 ns per element read, and the CHE
 //! levels' O(n) edits (an `EH` rebuild, a relabelling) cost far more per element.
@@ -64,6 +66,14 @@ fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, 
     } else {
         MAX_SECONDS
     };
+    // A structure that lacks an operation of the workload (a Rust crate's adapter, which
+    // offers only its crate's operations) would have every run refused.
+    if let Some(&(op, _)) = w.operations().iter().find(|&&(op, _)| !M::supports(op)) {
+        return Some((
+            format!("it does not offer {op}, which the workload needs"),
+            None,
+        ));
+    }
     if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
         return Some((
             "its edge ids change when faces are split, and √3 flips the old edges by id".into(),
