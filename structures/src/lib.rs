@@ -70,8 +70,8 @@ pub use self::core::family::Family;
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use self::core::soup::{Connectivity, PolygonSoup};
 pub use self::core::topology::{
-    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, Element, Input, MeshTopology,
-    NativeKernels, Operator, Sample, SampledRun, SeparateConstruction,
+    BoundaryCurves, BuildFacts, Capabilities, Constructed, Cost, Element, Input, InputChecks,
+    MeshTopology, NativeKernels, Operator, Sample, SampledRun, SeparateConstruction,
 };
 pub use self::core::workload::Workload;
 pub use families::che::{CheL0, CheL1, CheL2, CheL3};

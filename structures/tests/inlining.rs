@@ -26,6 +26,8 @@ const NOT_QUERIES: &[&str] = &[
     "access",
     "explain",
     "native",
+    "separate_construction",
+    "input_checks",
 ];
 
 /// `(module, type path)` of every registered structure, as the registry writes them.

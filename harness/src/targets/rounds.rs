@@ -7,7 +7,7 @@ use crate::targets::plan::{Cell, Turns, CHECKS, HULL_POINTS};
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
-use topolab_structures::{BoundaryCurves, Connectivity, MeshTopology, Operator, PolygonSoup};
+use topolab_structures::{BoundaryCurves, InputChecks, MeshTopology, Operator, PolygonSoup};
 
 /// A structure built once, with what its timed runs need.
 pub struct Built<M> {
@@ -98,7 +98,7 @@ pub fn build<M: MeshTopology>(
 /// A structure's own checks of `soup` alone ([`MeshTopology::input_checks`]), timed by a
 /// [`Stopwatch`] on `meter` ([`CHECKS`]); they answer the soup's counts, as a build does.
 fn checks(
-    input_checks: fn(&PolygonSoup) -> topolab_structures::Result<Connectivity>,
+    input_checks: InputChecks,
     soup: &PolygonSoup,
     meter: &dyn MemoryMeter,
 ) -> Result<Run, String> {

@@ -229,7 +229,7 @@ pub trait MeshTopology: Sized {
     /// construction target against an outside project, whose checks run before its clock,
     /// shows their share. `None` (the default): no such step (the CHE pairs its half-edges and
     /// checks them in one pass).
-    fn input_checks() -> Option<fn(&PolygonSoup) -> Result<crate::Connectivity>> {
+    fn input_checks() -> Option<InputChecks> {
         None
     }
 
@@ -284,6 +284,10 @@ impl Sample<'_> {
         self.len() == 0
     }
 }
+
+/// A structure's checks of its input as a step of their own ([`MeshTopology::input_checks`]):
+/// the soup's edge analysis, or its refusal.
+pub type InputChecks = fn(&PolygonSoup) -> Result<crate::Connectivity>;
 
 /// The construction of a structure built by another project's code (a C++ baseline behind
 /// the FFI, a Rust crate of `topolab-peers`), in three steps, so that the harness's clock

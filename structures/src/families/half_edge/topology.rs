@@ -5,8 +5,10 @@ use super::validate::validate_links;
 use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::soup::{Connectivity, PolygonSoup};
-use crate::core::topology::{BoundaryCurves, Capabilities, Cost, MeshTopology, Operator};
+use crate::core::soup::PolygonSoup;
+use crate::core::topology::{
+    BoundaryCurves, Capabilities, Cost, InputChecks, MeshTopology, Operator,
+};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -37,7 +39,7 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         half_edge_cost(op, L::PREDECESSOR)
     }
 
-    fn input_checks() -> Option<fn(&PolygonSoup) -> Result<Connectivity>> {
+    fn input_checks() -> Option<InputChecks> {
         Some(PolygonSoup::manifold_connectivity)
     }
 
