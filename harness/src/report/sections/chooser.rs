@@ -32,7 +32,7 @@ pub fn when_to_pick(name: &str) -> Option<&'static str> {
         "openmesh" => "OpenMesh (C++), the baseline: a maintained half-edge library with its own attributes and I/O, measured through its own loops.",
         "cgal-surface-mesh" => "CGAL's Surface_mesh (C++): the index half-edge of Sieger and Botsch with property maps, when the rest of the pipeline is CGAL's (processing, Euler operations).",
         "cgal-polyhedron" => "CGAL's Polyhedron_3 (C++): the classical pointer half-edge in linked lists, for code written against it; more bytes per element than Surface_mesh.",
-        "lox-half-edge" => "lox's HalfEdgeMesh (Rust crate): the index half-edge's design (u32 handles, twin h ^ 1, prev stored too) for polygon meshes, when a Rust project wants a dependency; positions live in a map beside it.",
+        "lox-half-edge" => "lox's HalfEdgeMesh (Rust crate): the index half-edge's design (u32 handles, twin h ^ 1, prev stored too) for polygon meshes, when a Rust project wants a dependency; it keeps no positions (they live beside it, as lox keeps properties in maps).",
         "lox-directed-edge" => "lox's DirectedEdgeMesh (Rust crate): per corner its twin and target, the CHE level 1's idea, half the records per triangle of a half-edge; triangles only.",
         "baby-shark-corner-table" => "baby_shark's CornerTable (Rust crate): the CHE's O table (opposite corner and vertex per corner), inside a crate that also remeshes, decimates and does booleans; its ids are opaque, so the lab keeps tables beside it.",
         "tri-mesh" => "tri-mesh (Rust crate): a triangle half-edge mesh with editing and geometry helpers, its records behind RefCell with Option fields and its twins matched by a hash map when built.",
