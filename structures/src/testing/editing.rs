@@ -1,11 +1,11 @@
 //! The editing suite: random sequences of [`MeshEdit`] operations on a structure, each
 //! applied as well to a naive [`Model`] (a face list edited by hand), with every refusal
 //! checked against the model (which says whether an edit must be refused, not for which
-//! [`Refusal`](crate::Refusal)) and, after every edit, `validate()`, the live faces
+//! [`Refusal`]) and, after every edit, `validate()`, the live faces
 //! compared with the model's, and, when nothing is marked deleted, every relation compared
 //! with the [`Oracle`](crate::testing::oracle::Oracle) rebuilt from the structure's face list
 //! ([`compare`]). An operation the structure does not implement ([`MeshEdit::supports`])
-//! must be refused with [`Refusal::NotImplemented`](crate::Refusal::NotImplemented), nothing
+//! must be refused with [`Refusal::NotImplemented`], nothing
 //! changed. The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
 //! structure in one line, one that implements a subset of the operations too.
 
