@@ -176,17 +176,6 @@ impl PolygonSoup {
                 });
             }
         }
-        // One pass per array that the compiler vectorises answers a good soup; a soup with a
-        // problem is walked again in order for the first one (the error a caller sees).
-        if self.is_clean() {
-            return Ok(());
-        }
-        self.first_problem()
-    }
-
-    /// The first problem [`PolygonSoup::check`] reports, walking the positions, then the faces
-    /// in order: `Ok` when there is none.
-    fn first_problem(&self) -> Result<()> {
         for (i, p) in self.positions.iter().enumerate() {
             for value in p.to_array() {
                 if !value.is_finite() {
@@ -216,33 +205,6 @@ impl PolygonSoup {
             }
         }
         Ok(())
-    }
-
-    /// [`PolygonSoup::check`]'s answer for a soup without problems, in passes that need no
-    /// position of a problem: finite coordinates, faces of three corners or more, every index
-    /// below the vertex count, no vertex twice in a face (for triangles, three comparisons).
-    /// `false` says only that `check` must look for the first problem.
-    fn is_clean(&self) -> bool {
-        let n = self.positions.len();
-        let finite = self.positions.iter().all(|p| p.is_finite());
-        let corners = self
-            .offsets
-            .windows(2)
-            .all(|w| w[1].saturating_sub(w[0]) >= 3);
-        let largest = self.indices.iter().fold(0, |m, &v| m.max(v));
-        let in_range = self.indices.is_empty() || (largest as usize) < n;
-        if !(finite && corners && in_range) {
-            return false;
-        }
-        if self.indices.len() == 3 * self.num_faces() {
-            // Every face has three corners (each has at least three): triangles.
-            self.indices
-                .chunks_exact(3)
-                .all(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
-        } else {
-            self.faces()
-                .all(|face| (1..face.len()).all(|k| !face[..k].contains(&face[k])))
-        }
     }
 
     /// [`PolygonSoup::check`], then the edge analysis that every structure with explicit
@@ -459,55 +421,5 @@ impl Connectivity {
             _ => u32::MAX,
         };
         (other != u32::MAX).then_some(other as usize)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::meshes::{self, RandomMeshParams};
-    use proptest::prelude::*;
-
-    /// A soup and one flaw: none, an index past the vertices, a vertex twice in a face, a
-    /// non-finite coordinate, a face of two corners, or no vertices at all.
-    fn flawed(seed: u64, flaw: u8, at: usize) -> PolygonSoup {
-        let params = RandomMeshParams {
-            triangles_only: seed.is_multiple_of(2),
-            max_side: 5,
-            keep: 0.9,
-        };
-        let soup = meshes::random_mesh(seed, params);
-        let faces: Vec<Vec<u32>> = soup.faces().map(|f| f.to_vec()).collect();
-        let mut positions = soup.positions.clone();
-        let mut faces = faces;
-        let (nf, nv) = (faces.len().max(1), positions.len().max(1));
-        match flaw % 6 {
-            1 => faces[at % nf][0] = nv as u32 + (at % 3) as u32,
-            2 => {
-                let f = &mut faces[at % nf];
-                let last = f.len() - 1;
-                f[last] = f[0];
-            }
-            3 => positions[at % nv].y = [f64::NAN, f64::INFINITY][at % 2],
-            4 => faces[at % nf].truncate(2),
-            5 => positions.clear(),
-            _ => {}
-        }
-        let faces: Vec<&[u32]> = faces.iter().map(Vec::as_slice).collect();
-        PolygonSoup::from_polygons(positions, &faces)
-    }
-
-    proptest! {
-        /// The fast passes say "clean" exactly when the walk in order finds no problem, so
-        /// `check` answers as the walk alone would.
-        #[test]
-        fn the_fast_passes_agree_with_the_walk(seed in 0u64..1000, flaw in 0u8..6, at in 0usize..1000) {
-            let soup = flawed(seed, flaw, at);
-            prop_assert_eq!(soup.is_clean(), soup.first_problem().is_ok());
-            prop_assert_eq!(soup.check().is_ok(), soup.first_problem().is_ok());
-            if flaw % 6 != 0 {
-                prop_assert!(soup.check().is_err(), "flaw {} not found", flaw);
-            }
-        }
     }
 }
