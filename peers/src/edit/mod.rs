@@ -14,7 +14,8 @@ pub mod lox;
 pub mod tri_mesh;
 
 use topolab_structures::core::rewrite::check_result;
-use topolab_structures::{EdgeId, EditOp, Error, FaceId, MeshTopology, Refusal, Result, VertexId};
+pub(crate) use topolab_structures::core::rewrite::{check_flip, check_split_edge};
+use topolab_structures::{EditOp, Error, MeshTopology, Refusal, Result, VertexId};
 
 /// The lab's refusal of `op` by `M`.
 pub(crate) fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
@@ -70,75 +71,4 @@ pub(crate) fn new_sides<M: MeshTopology>(m: &M, vertices: &[VertexId]) -> usize 
             !found
         })
         .count()
-}
-
-/// One face of an edge: the face, its corners, and the corner where it leaves the end it
-/// runs from.
-pub(crate) type Side = (FaceId, Vec<VertexId>, usize);
-
-/// The faces of edge `e` = {a, b} through the structure's own queries (R10, R12, R20):
-/// `[the face running a → b, the one running b → a]`.
-pub(crate) fn sides_of<M: MeshTopology>(m: &M, e: EdgeId) -> [Option<Side>; 2] {
-    let [a, b] = m.edge_vertices(e);
-    let mut out = [None, None];
-    m.edge_faces(e, |f| {
-        let mut c = Vec::with_capacity(3);
-        m.face_vertices(f, |v| c.push(v));
-        let k = c.len();
-        for i in 0..k {
-            if (c[i], c[(i + 1) % k]) == (a, b) {
-                out[0] = Some((f, c.clone(), i));
-            } else if (c[i], c[(i + 1) % k]) == (b, a) {
-                out[1] = Some((f, c.clone(), i));
-            }
-        }
-    });
-    out
-}
-
-/// Do `a` and `b` share an edge? One turn around `a`.
-pub(crate) fn adjacent<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> bool {
-    let mut found = false;
-    m.vertex_vertices(a, |w| found |= w == b);
-    found
-}
-
-/// The lab's checks of a flip of edge `e` (an edge of the mesh), as the face-rewriting
-/// structures make them: two faces ([`Refusal::BoundaryEdge`]), both triangles
-/// ([`Refusal::NotTriangles`]), and their third corners distinct and not yet joined
-/// ([`Refusal::EdgeExists`]).
-pub(crate) fn check_flip<M: MeshTopology>(m: &M, e: EdgeId) -> Result<()> {
-    let op = EditOp::FlipEdge;
-    let [Some((_, c1, i1)), Some((_, c2, i2))] = sides_of(m, e) else {
-        return Err(refuse::<M>(op, Refusal::BoundaryEdge));
-    };
-    if c1.len() != 3 || c2.len() != 3 {
-        return Err(refuse::<M>(op, Refusal::NotTriangles));
-    }
-    let (x, y) = (c1[(i1 + 2) % 3], c2[(i2 + 2) % 3]);
-    if x == y || adjacent(m, x, y) {
-        return Err(refuse::<M>(op, Refusal::EdgeExists));
-    }
-    Ok(())
-}
-
-/// The lab's checks of a split of edge `e` (an edge of the mesh): at least one face
-/// ([`Refusal::NoSuchElement`]), triangles ([`Refusal::NotTriangles`]), and two faces that do
-/// not share their third corner (the new edge to it would have four faces:
-/// [`Refusal::EdgeExists`]).
-pub(crate) fn check_split_edge<M: MeshTopology>(m: &M, e: EdgeId) -> Result<()> {
-    let op = EditOp::SplitEdge;
-    let sides: Vec<Side> = sides_of(m, e).into_iter().flatten().collect();
-    if sides.is_empty() {
-        return Err(refuse::<M>(op, Refusal::NoSuchElement));
-    }
-    if sides.iter().any(|(_, c, _)| c.len() != 3) {
-        return Err(refuse::<M>(op, Refusal::NotTriangles));
-    }
-    if let [(_, c1, i1), (_, c2, i2)] = &sides[..] {
-        if c1[(i1 + 2) % 3] == c2[(i2 + 2) % 3] {
-            return Err(refuse::<M>(op, Refusal::EdgeExists));
-        }
-    }
-    Ok(())
 }

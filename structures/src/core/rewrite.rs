@@ -212,12 +212,14 @@ pub fn delete_vertex<M: FaceRewrite>(m: &mut M, v: VertexId) -> Result<()> {
     Ok(())
 }
 
-/// [`MeshEdit::flip_edge`] over [`FaceRewrite`].
-pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
+/// The lab's checks of a flip of edge `e` = {a, b} (an edge of the mesh, `a`, `b` as
+/// `edge_vertices` gives them): two faces ([`Refusal::BoundaryEdge`]), both triangles
+/// ([`Refusal::NotTriangles`]), their third corners distinct and not yet joined
+/// ([`Refusal::EdgeExists`]). Returns the faces running a → b and b → a and their third
+/// corners. Public so that a structure edited by a library (the Rust crates of
+/// `topolab-peers`) checks a flip with the lab's test before the library sees it.
+pub fn check_flip<M: MeshTopology>(m: &M, e: EdgeId) -> Result<([FaceId; 2], [VertexId; 2])> {
     let op = EditOp::FlipEdge;
-    if !m.is_edge(e) {
-        return Err(refuse::<M>(op, Refusal::NoSuchElement));
-    }
     let [a, b] = m.edge_vertices(e);
     let [Some((f1, c1, i1)), Some((f2, c2, i2))] = sides_of(m, e, a, b) else {
         return Err(refuse::<M>(op, Refusal::BoundaryEdge));
@@ -229,19 +231,32 @@ pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
     if x == y || adjacent(m, x, y) {
         return Err(refuse::<M>(op, Refusal::EdgeExists));
     }
+    Ok(([f1, f2], [x, y]))
+}
+
+/// [`MeshEdit::flip_edge`] over [`FaceRewrite`].
+pub fn flip_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
+    if !m.is_edge(e) {
+        return Err(refuse::<M>(EditOp::FlipEdge, Refusal::NoSuchElement));
+    }
+    let ([f1, f2], [x, y]) = check_flip(m, e)?;
+    let [a, b] = m.edge_vertices(e);
     m.rewrite(&[f1, f2], &[vec![a, y, x], vec![b, x, y]]);
     Ok(())
 }
 
-/// [`MeshEdit::split_edge`] over [`FaceRewrite`].
-pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<VertexId> {
+/// One face of an edge: the face, its corners, and the corner where it leaves the end it
+/// runs from.
+pub type Side = (FaceId, Vec<VertexId>, usize);
+
+/// The lab's checks of a split of edge `e` (an edge of the mesh): at least one face
+/// ([`Refusal::NoSuchElement`]), triangles ([`Refusal::NotTriangles`]), and two faces that do
+/// not share their third corner (the new edge to it would have four faces:
+/// [`Refusal::EdgeExists`]). Returns the edge's faces. Public as [`check_flip`] is.
+pub fn check_split_edge<M: MeshTopology>(m: &M, e: EdgeId) -> Result<Vec<Side>> {
     let op = EditOp::SplitEdge;
-    if !m.is_edge(e) {
-        return Err(refuse::<M>(op, Refusal::NoSuchElement));
-    }
     let [a, b] = m.edge_vertices(e);
-    let sides: Vec<(FaceId, Vec<VertexId>, usize)> =
-        sides_of(m, e, a, b).into_iter().flatten().collect();
+    let sides: Vec<Side> = sides_of(m, e, a, b).into_iter().flatten().collect();
     if sides.is_empty() {
         return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
@@ -251,6 +266,15 @@ pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<Vert
     if sides.len() == 2 && sides[0].1[(sides[0].2 + 2) % 3] == sides[1].1[(sides[1].2 + 2) % 3] {
         return Err(refuse::<M>(op, Refusal::EdgeExists));
     }
+    Ok(sides)
+}
+
+/// [`MeshEdit::split_edge`] over [`FaceRewrite`].
+pub fn split_edge<M: FaceRewrite>(m: &mut M, e: EdgeId, p: DVec3) -> Result<VertexId> {
+    if !m.is_edge(e) {
+        return Err(refuse::<M>(EditOp::SplitEdge, Refusal::NoSuchElement));
+    }
+    let sides = check_split_edge(m, e)?;
     let n = m.push_vertex(p)?;
     let old: Vec<FaceId> = sides.iter().map(|s| s.0).collect();
     let mut first = Vec::new();
