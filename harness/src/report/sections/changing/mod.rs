@@ -332,7 +332,7 @@ fn measure(
         })?;
     }
     let runs = |faces| crate::report::clock::changing_runs(faces, quick, full);
-    let local = local_refinement::measure(cases, &editing, quick, runs, &mut skips)?;
+    let local = local_refinement::measure(cases, &editing, (quick, full), runs, &mut skips, notes)?;
     notes.extend(skips::group(&skips));
     Ok((rows, local))
 }
