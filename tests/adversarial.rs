@@ -295,7 +295,9 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["decimate", "torus", "--levels", "0%", "--out", "@DIR/l"],
         vec!["decimate", "torus", "--levels", "100%", "--out", "@DIR/l"],
         vec!["decimate", "torus", "--levels", "150%", "--out", "@DIR/l"],
-        vec!["decimate", "torus", "--levels", "10%,50%", "--out", "@DIR/l"],
+        vec![
+            "decimate", "torus", "--levels", "10%,50%", "--out", "@DIR/l",
+        ],
         vec!["decimate", "torus", "--levels", "half", "--out", "@DIR/l"],
         vec![
             "decimate", "torus", "--levels", "50%", "--faces", "10", "--out", "@DIR/l",
@@ -303,9 +305,23 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec![
             "decimate", "torus", "--levels", "50%", "--ratio", "0.5", "--out", "@DIR/l",
         ],
-        vec!["decimate", "torus:600", "--levels", "50%,1%", "--out", "@DIR/l"],
+        vec![
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%,1%",
+            "--out",
+            "@DIR/l",
+        ],
         vec!["decimate", "torus:600", "--levels", "50%", "--out", "@FILE"],
-        vec!["decimate", "torus:600", "--levels", "50%", "--out", "/proc/nope"],
+        vec![
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%",
+            "--out",
+            "/proc/nope",
+        ],
         vec![
             "decimate",
             "torus:1073741824",
@@ -326,8 +342,22 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["reconstruct", "@DIR/lod-garbage", "--out", "@DIR/x.obj"],
         // --to below the coarse mesh's faces, above the original's; outputs that cannot be
         // written.
-        vec!["reconstruct", "@DIR/lod", "--to", "0", "--out", "@DIR/x.obj"],
-        vec!["reconstruct", "@DIR/lod", "--to", "99999", "--out", "@DIR/x.obj"],
+        vec![
+            "reconstruct",
+            "@DIR/lod",
+            "--to",
+            "0",
+            "--out",
+            "@DIR/x.obj",
+        ],
+        vec![
+            "reconstruct",
+            "@DIR/lod",
+            "--to",
+            "99999",
+            "--out",
+            "@DIR/x.obj",
+        ],
         vec!["reconstruct", "@DIR/lod", "--out", "/dev/full"],
         vec!["reconstruct", "@DIR/lod", "--out", "/proc/nope.obj"],
         vec!["reconstruct", "@DIR/lod", "--out", "@DIR/taken.obj"],
@@ -362,7 +392,11 @@ fn level_of_detail_folders(dir: &Path) {
     let ids = format!("{}999999 0 1 2 0 0 0 0{}", &record[..first], &record[end..]);
     let mismatch = coarse.replacen("v ", "v 9 9 9\n# was: ", 1);
     for (name, record, coarse) in [
-        ("lod-truncated", record[..record.len() / 2].to_string(), coarse.clone()),
+        (
+            "lod-truncated",
+            record[..record.len() / 2].to_string(),
+            coarse.clone(),
+        ),
         (
             "lod-version",
             record.replacen("topolab-collapses 1", "topolab-collapses 2", 1),
@@ -370,7 +404,11 @@ fn level_of_detail_folders(dir: &Path) {
         ),
         ("lod-ids", ids, coarse.clone()),
         ("lod-mismatch", record.clone(), mismatch),
-        ("lod-garbage", "\u{0}\u{1}\u{fffd}".to_string(), coarse.clone()),
+        (
+            "lod-garbage",
+            "\u{0}\u{1}\u{fffd}".to_string(),
+            coarse.clone(),
+        ),
     ] {
         std::fs::create_dir_all(dir.join(name)).unwrap();
         std::fs::write(dir.join(name).join("collapses.txt"), record).unwrap();

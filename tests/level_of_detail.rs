@@ -141,7 +141,11 @@ fn a_mesh_file_with_a_boundary_and_irregular_positions_comes_back_bit_for_bit() 
     let soup = meshes::perturb(&meshes::grid(14, 11, true), 0.03, 36);
     let file = dir.join("grid.obj");
     topolab_structures::io::write(&file, &soup).unwrap();
-    assert_eq!(bits(&read(&file)), bits(&soup), "the OBJ writer round-trips");
+    assert_eq!(
+        bits(&read(&file)),
+        bits(&soup),
+        "the OBJ writer round-trips"
+    );
     steps_back(
         file.to_str().unwrap(),
         &soup,
@@ -192,7 +196,11 @@ fn the_coarse_mesh_holds_the_survivors_in_increasing_original_id() {
         .unwrap()
         .parse()
         .unwrap();
-    let start = lines.iter().position(|l| l.starts_with("collapses ")).unwrap() + 1;
+    let start = lines
+        .iter()
+        .position(|l| l.starts_with("collapses "))
+        .unwrap()
+        + 1;
     let mut removed: Vec<usize> = lines[start..start + n]
         .iter()
         .map(|l| l.split(' ').next().unwrap().parse().unwrap())
@@ -220,7 +228,14 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
     let dir = scratch("lod-bad");
     let lod = dir.join("lod");
     let lod_s = lod.to_str().unwrap().to_string();
-    ok(&["decimate", "torus:600", "--levels", "50%,20%", "--out", &lod_s]);
+    ok(&[
+        "decimate",
+        "torus:600",
+        "--levels",
+        "50%,20%",
+        "--out",
+        &lod_s,
+    ]);
     let record = std::fs::read_to_string(lod.join("collapses.txt")).unwrap();
     let coarse = std::fs::read_to_string(lod.join("coarse.obj")).unwrap();
     let out = dir.join("out.obj");
@@ -245,7 +260,14 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
     }
     refused(
         &[
-            "decimate", "torus:600", "--levels", "50%", "--faces", "10", "--out", &new_s,
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%",
+            "--faces",
+            "10",
+            "--out",
+            &new_s,
         ],
         2,
         "cannot be used with",
@@ -266,7 +288,14 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
         "decimation suite enrols",
     );
     refused(
-        &["decimate", "torus:600", "--levels", "50%,1%", "--out", &new_s],
+        &[
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%,1%",
+            "--out",
+            &new_s,
+        ],
         1,
         "at least 14",
     );
@@ -313,11 +342,19 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
         c.join("\n") + "\n"
     };
     let cases: Vec<(String, i32, &str)> = vec![
-        (dir.join("missing").to_str().unwrap().into(), 2, "cannot read"),
+        (
+            dir.join("missing").to_str().unwrap().into(),
+            2,
+            "cannot read",
+        ),
         (broken("no-record", None, Some(&coarse)), 2, "collapses.txt"),
         (broken("no-coarse", Some(&record), None), 2, "coarse.obj"),
         (
-            broken("truncated", Some(&record[..record.len() - 20]), Some(&coarse)),
+            broken(
+                "truncated",
+                Some(&record[..record.len() - 20]),
+                Some(&coarse),
+            ),
             2,
             "ends early",
         ),
@@ -369,7 +406,14 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
         "cannot write",
     );
     refused(
-        &["reconstruct", &lod_s, "--out", &out_s, "--structure", "explicit"],
+        &[
+            "reconstruct",
+            &lod_s,
+            "--out",
+            &out_s,
+            "--structure",
+            "explicit",
+        ],
         2,
         "no editing operations",
     );

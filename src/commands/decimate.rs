@@ -327,7 +327,10 @@ pub fn write_levels<M: MeshEdit>(
     let coarse = states.last().expect("one state per level");
     let record = record_of(&original, &states, &d);
     let mut outputs: Vec<(String, Fill)> = Vec::new();
-    outputs.push((files::ORIGINAL.into(), Box::new(|w| write_obj(w, &original))));
+    outputs.push((
+        files::ORIGINAL.into(),
+        Box::new(|w| write_obj(w, &original)),
+    ));
     for (i, state) in states.iter().enumerate() {
         outputs.push((files::level(i + 1), Box::new(move |w| write_obj(w, state))));
     }

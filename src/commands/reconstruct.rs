@@ -114,13 +114,10 @@ pub fn run(args: &ReconstructArgs) -> Result<String, Failure> {
     input_file(&coarse_path)?;
     let spec = coarse_path.display().to_string();
     let coarse = load_mesh(&spec, |_| 0)?;
-    record
-        .coarse
-        .check(&spec, &coarse)
-        .map_err(|e| Failure {
-            message: e.to_string(),
-            code: 1,
-        })?;
+    record.coarse.check(&spec, &coarse).map_err(|e| Failure {
+        message: e.to_string(),
+        code: 1,
+    })?;
     let started = Instant::now();
     let rebuilt = registry::visit_editable(
         &args.structure,

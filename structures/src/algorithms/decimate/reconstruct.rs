@@ -7,7 +7,9 @@
 //! vertex a new id, `num_vertices()` before its split; [`Reconstruction::original`] maps every
 //! vertex id of the rebuilt mesh to the id the vertex had before the decimation. Faces are
 //! compared as a set (each rotated to start at its smallest vertex), since face ids are not
-//! recorded.
+//! recorded. [`reconstruct_from`] starts from a mesh numbered otherwise (the coarse mesh read
+//! from a file) and may stop at any number of collapses; [`live_soup`] writes a state in the
+//! canonical form the level-of-detail files share.
 
 use super::Collapses;
 use crate::core::edit::MeshEdit;
@@ -107,10 +109,7 @@ pub fn live_soup<M: MeshEdit>(m: &M, original: &[u32]) -> PolygonSoup {
     for (k, &(_, v)) in live.iter().enumerate() {
         number[v as usize] = k as u32;
     }
-    let positions = live
-        .iter()
-        .map(|&(_, v)| m.position(VertexId(v)))
-        .collect();
+    let positions = live.iter().map(|&(_, v)| m.position(VertexId(v))).collect();
     let mut faces = Vec::new();
     let mut face = Vec::new();
     for f in 0..m.num_faces() {

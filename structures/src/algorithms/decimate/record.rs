@@ -202,11 +202,19 @@ impl Record {
             "# quadric-error decimation by topolab; vertices by their original id; see docs/level-of-detail.md"
         )?;
         for (name, k) in [("original", &self.original), ("coarse", &self.coarse)] {
-            writeln!(w, "{name} {} {} {:016x}", k.vertices, k.faces, k.fingerprint)?;
+            writeln!(
+                w,
+                "{name} {} {} {:016x}",
+                k.vertices, k.faces, k.fingerprint
+            )?;
         }
         writeln!(w, "levels {}", self.levels.len())?;
         for l in &self.levels {
-            writeln!(w, "level {} {} {:016x}", l.faces, l.collapses, l.fingerprint)?;
+            writeln!(
+                w,
+                "level {} {} {:016x}",
+                l.faces, l.collapses, l.fingerprint
+            )?;
         }
         writeln!(w, "collapses {}", c.len())?;
         writeln!(w, "# from to left right x y z error")?;
@@ -299,11 +307,8 @@ impl Record {
             c.to.push(number(line, to, "a vertex id")?);
             c.left.push(number(line, left, "a vertex id")?);
             c.right.push(number(line, right, "a vertex id")?);
-            c.position.push(DVec3::new(
-                real(line, x)?,
-                real(line, y)?,
-                real(line, z)?,
-            ));
+            c.position
+                .push(DVec3::new(real(line, x)?, real(line, y)?, real(line, z)?));
             c.error.push(real(line, error)?);
         }
         let (line, text) = next("end")?;
@@ -591,11 +596,7 @@ mod tests {
         let (record, _) = torus_record();
         let text = record.to_text();
         let lines: Vec<&str> = text.lines().collect();
-        let first_collapse = lines
-            .iter()
-            .position(|l| l.starts_with("# from"))
-            .unwrap()
-            + 1;
+        let first_collapse = lines.iter().position(|l| l.starts_with("# from")).unwrap() + 1;
         let with = |i: usize, line: &str| {
             let mut l = lines.clone();
             l[i] = line;
@@ -620,16 +621,19 @@ mod tests {
             ),
             ("OFF\n".into(), "not a topolab collapse record"),
             // Cut inside the last collapse's numbers: `end` is missing.
-            (text[..text.len() - "end\n".len() - 3].to_string(), "ends early"),
-            (text.replace("\nend", "\nend\nmore"), "nothing may follow"),
             (
-                with(first_collapse, "1 2 3"),
-                "a collapse is 8 numbers",
+                text[..text.len() - "end\n".len() - 3].to_string(),
+                "ends early",
             ),
+            (text.replace("\nend", "\nend\nmore"), "nothing may follow"),
+            (with(first_collapse, "1 2 3"), "a collapse is 8 numbers"),
             (with(first_collapse, &out_of_range), "original has"),
             (with(first_collapse + 1, &twice), "removed twice"),
             (
-                text.replace(&format!("original {v} {f}"), &format!("original {v} {}", f + 2)),
+                text.replace(
+                    &format!("original {v} {f}"),
+                    &format!("original {v} {}", f + 2),
+                ),
                 "the coarse mesh has",
             ),
             (
