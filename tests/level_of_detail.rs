@@ -327,6 +327,12 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
         l[i] = line;
         l.join("\n") + "\n"
     };
+    let last = lines.iter().position(|&l| l == "end").unwrap() - 1;
+    let words: Vec<&str> = lines[last].split(' ').collect();
+    let swapped = [&[words[0], words[1], words[3], words[2]][..], &words[4..]]
+        .concat()
+        .join(" ");
+    let moved = [&words[..4], &["0.5"][..], &words[5..]].concat().join(" ");
     let vertices: usize = lines[2].split(' ').nth(1).unwrap().parse().unwrap();
     // The same counts, one vertex moved: only the fingerprint tells.
     let other_coarse: String = coarse
@@ -375,6 +381,18 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
             ),
             2,
             "original has",
+        ),
+        // The last collapse, undone first, with its wings swapped: the split is refused.
+        (
+            broken("swapped", Some(&with_line(last, &swapped)), Some(&coarse)),
+            1,
+            "does not match the coarse mesh",
+        ),
+        // Its vertex put back elsewhere: the original rebuilt is not the record's.
+        (
+            broken("moved", Some(&with_line(last, &moved)), Some(&coarse)),
+            1,
+            "does not match the original rebuilt",
         ),
         (
             broken("other-coarse", Some(&record), Some(&other_coarse)),
