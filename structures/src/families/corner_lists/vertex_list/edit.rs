@@ -44,7 +44,7 @@
 //! it rewrites: [`MeshEdit::STABLE_EDGE_IDS`](crate::MeshEdit::STABLE_EDGE_IDS) is `false`.
 
 use super::VertexList;
-use crate::core::edit::EditOp;
+use crate::core::edit::{smooth_cost, EditOp};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::rewrite::{
@@ -67,6 +67,14 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::CollapseEdge
         | EditOp::SplitVertex
         | EditOp::WeldVertices => Cost::LocalTimesLinear,
+        // Whether the diagonal's ends are joined already (a scan), the face's corners
+        // shifted when it shrinks; the edge's faces (a scan), the merged polygon written.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Linear,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<VertexList>(),
     }
 }
 

@@ -44,7 +44,7 @@
 //! freed slots are filled by the last edge or polygon.
 
 use super::EdgeList;
-use crate::core::edit::EditOp;
+use crate::core::edit::{smooth_cost, EditOp};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::rewrite::{
@@ -67,6 +67,14 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::CollapseEdge
         | EditOp::SplitVertex
         | EditOp::WeldVertices => Cost::LocalTimesLinear,
+        // Whether the diagonal's ends are joined already (a scan of the edges around one),
+        // and the rewrite's one scan for the edges its polygons share with the rest.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Linear,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<EdgeList>(),
     }
 }
 

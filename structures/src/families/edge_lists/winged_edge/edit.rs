@@ -38,7 +38,7 @@
 
 use super::records::{ends_key, EdgeRecord};
 use super::WingedEdge;
-use crate::core::edit::EditOp;
+use crate::core::edit::{smooth_cost, EditOp};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::rewrite::{compact_vertices, mesh_edit_by_rewrite, retain_unmarked, FaceRewrite};
@@ -59,6 +59,14 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::WeldVertices => Cost::Local,
         // The link condition compares the two rings (see the table).
         EditOp::CollapseEdge => Cost::LocalSquared,
+        // The face's cycle and one fan (is the diagonal an edge already?); the edge's two
+        // faces: rewrites of O(k) records.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Local,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<WingedEdge>(),
     }
 }
 
