@@ -43,6 +43,9 @@ pub struct Results {
     pub qhull: Option<String>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
+    /// The lecture's editing operations, one at a time, on the editable structures and
+    /// explicit storage ([`crate::report::sections::edit_ops`]).
+    pub edit_ops: Vec<crate::report::sections::edit_ops::EditOpRow>,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
     pub targets: Vec<crate::targets::plan::Turns>,

@@ -174,6 +174,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         hull_fits: Vec::new(),
         qhull: None,
         changing: Vec::new(),
+        edit_ops: Vec::new(),
         targets: Vec::new(),
         decimate: Vec::new(),
         teaching: Vec::new(),
