@@ -61,6 +61,15 @@
 //! | split edge, split face | O(n) scans | O(k) | O(n): `EH` | O(n): `EH` |
 //! | collapse edge | O(n) scans | O(n): star scans | O(n): `EH` | O(n): `EH` |
 //! | garbage collection | O(n) | O(n) | O(n) | O(n) |
+//! | set position | O(1) | O(1) | O(1) | O(1) |
+//! | select | O(n) | O(n) | O(n) | O(n) |
+//! | rotate, scale a selection of k vertices | O(k) | O(k) | O(k) | O(k) |
+//! | smooth (every vertex's R00 and boundary test) | O(n²) | O(n²) | O(n) | O(n) |
+//! | insert edge, delete edge | not offered | not offered | not offered | not offered |
+//!
+//! Inserting an edge (a diagonal of a face) or deleting one (merging two faces) would leave a
+//! face that is not a triangle, which the CHE cannot hold: both are refused as
+//! [`Refusal::NotImplemented`](crate::Refusal::NotImplemented).
 
 mod ops;
 

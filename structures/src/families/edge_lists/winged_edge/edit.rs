@@ -26,6 +26,12 @@
 //! | collapse edge | the link condition on the two rings (each neighbour of one end looked for in the other's ring, O(k²)) and the tetrahedron test | the faces around the removed vertex | O(k²) |
 //! | split vertex | one side of the fan | the moved faces, three edges, two faces | O(k) |
 //! | weld vertices | the two fans and their neighbours' | the faces around the welded vertex | O(k) |
+//! | insert edge | the face's cycle, one fan (is the diagonal an edge already?) | one face rewritten as two, one edge | O(k) |
+//! | delete edge | the edge's two faces (`fccw`, `fcw`) | two faces rewritten as one, the edge freed | O(k) |
+//! | set position | — | a position | O(1) |
+//! | select | every position | — | O(n) |
+//! | rotate, scale a selection | k positions | k positions | O(k) |
+//! | smooth | the fan of every vertex | every interior position | O(n) |
 //! | garbage collection | every record | vertices renumbered | O(n) |
 //! | weld meshes | [`weld_meshes`](crate::algorithms::weld::weld_meshes): both meshes | a rebuild | O(n) |
 //!

@@ -25,6 +25,12 @@
 //! | split face | a fan of k triangles around the new vertex | O(k) |
 //! | collapse edge | the link condition (each neighbour of one end looked for by `find_halfedge` around the other, O(k²)) and the tetrahedron test, then re-point the removed vertex's half-edges (O(k)) | O(k²) |
 //! | split vertex | move the half-edges of one side of the fan, add three edges and two triangles | O(k) |
+//! | insert edge | a walk round the face and a rotation round one end (is the diagonal an edge already?), a new edge and face linked in (`euler/edges.rs`) | O(k) |
+//! | delete edge | the two cycles joined into the first face, the edge and the second face marked | O(k) |
+//! | set position | the position written | O(1) |
+//! | select | a scan of the positions | O(n) |
+//! | rotate, scale a selection | k positions written | O(k) |
+//! | smooth | R00 and the boundary test of every vertex, each O(k) | O(n) |
 //! | garbage collection | rebuild the storage from the survivors | O(n) |
 //! | weld vertices | the lecture's "weld vertices": checks, rename the half-edges leaving one vertex, merge the one or two pairs of boundary edges where the fans meet (the freed pair marked) | O(k) + O(1) per merged edge (O(k) without `prev`) |
 //! | weld meshes | [`weld_meshes`](crate::algorithms::weld::weld_meshes): a rebuild from the welded face list | O(n) |
