@@ -150,7 +150,7 @@ pub enum Refusal {
     NonManifoldVertex,
     /// The operation needs triangles (flip, edge split, collapse) and a face is not one.
     NotTriangles,
-    /// A flip of a boundary edge (it has one triangle).
+    /// A flip or a deletion of a boundary edge (it has one face; both need two).
     BoundaryEdge,
     /// The edge a flip or a split would create exists already.
     EdgeExists,
@@ -210,7 +210,9 @@ impl Refusal {
             Refusal::NonManifoldEdge => "an edge would have more than two faces",
             Refusal::NonManifoldVertex => "a vertex's faces would form several fans",
             Refusal::NotTriangles => "the faces around the edge must be triangles",
-            Refusal::BoundaryEdge => "a boundary edge has one triangle and cannot be flipped",
+            Refusal::BoundaryEdge => {
+                "a boundary edge has one face: it cannot be flipped, nor deleted to merge two faces"
+            }
             Refusal::EdgeExists => "the edge it would create exists already",
             Refusal::NotNeighbours => "the vertices are not neighbours as required",
             Refusal::LinkCondition => {
