@@ -423,3 +423,90 @@ fn a_single_large_size_skips_the_quadratic_cells_with_an_estimate() {
     assert!(notes.contains("timed sample of its queries"), "{notes}");
     let _ = std::fs::remove_dir_all(&out);
 }
+
+#[test]
+fn a_quick_report_measures_the_lectures_operations_on_every_editable_structure() {
+    use topolab_harness::report::sections::edit_ops::{compared, MEASURED};
+    let out = out_dir("edit-ops");
+    let status = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args([
+            "report",
+            "--quick",
+            "--sizes",
+            "200,800",
+            "--sections",
+            "edit-ops",
+            "--probe-mb",
+            "4",
+            "--out",
+        ])
+        .arg(&out)
+        .status()
+        .expect("run topolab");
+    assert!(status.success(), "topolab report failed: {status}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let rows = json["edit_ops"].as_array().expect("the section's rows");
+    let editable: Vec<&str> = registry::NAMES
+        .iter()
+        .copied()
+        .filter(|s| compared(s))
+        .collect();
+    // The lecture's contrast needs explicit storage and at least one structure that moves a
+    // vertex in place.
+    assert!(editable.contains(&"explicit") && editable.contains(&"index-half-edge"));
+    let row = |s: &str, op: &str| {
+        rows.iter()
+            .find(|r| r["structure"] == s && r["op"] == op && r["mesh"] == "torus-800")
+            .unwrap_or_else(|| panic!("no {op} row for {s}"))
+    };
+    for s in &editable {
+        for op in MEASURED {
+            let r = row(s, op.name());
+            let status = r["outcome"]["status"].as_str().expect("a status");
+            assert!(
+                ["measured", "not-offered", "skipped"].contains(&status),
+                "{r}"
+            );
+            if status == "measured" {
+                assert!(r["outcome"]["ns_per_op"].as_f64().unwrap() > 0.0, "{r}");
+            }
+        }
+    }
+    // Moving a vertex: O(n) in explicit storage (every copy found), O(1) in place elsewhere.
+    let explicit = row("explicit", "set-position");
+    assert_eq!(
+        (&explicit["declared"], &explicit["outcome"]["status"]),
+        (&serde_json::json!("linear"), &serde_json::json!("measured"))
+    );
+    assert_eq!(
+        row("index-half-edge", "set-position")["declared"],
+        "constant"
+    );
+    assert_eq!(
+        row("explicit", "delete-edge")["outcome"]["status"],
+        "not-offered"
+    );
+    assert_eq!(
+        row("che-l2", "insert-edge")["outcome"]["status"],
+        "not-offered"
+    );
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let section = html
+        .split("<h2>The lecture's operations, measured</h2>")
+        .nth(1)
+        .expect("the section on the page");
+    for s in &editable {
+        assert!(
+            section.contains(&format!("<th>{s}</th>")),
+            "{s} has no column"
+        );
+    }
+    for op in MEASURED {
+        assert!(
+            section.contains(&format!("<td class=l>{op}</td>")),
+            "{op} has no row"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}

@@ -46,6 +46,9 @@ pub struct Results {
     /// Adaptive refinement in one region of each torus on the editable structures (the
     /// changing section's local refinement).
     pub local_refinement: crate::changing::LocalRefinement,
+    /// The lecture's editing operations, one at a time, on the editable structures and
+    /// explicit storage ([`crate::report::sections::edit_ops`]).
+    pub edit_ops: Vec<crate::report::sections::edit_ops::EditOpRow>,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
     pub targets: Vec<crate::targets::plan::Turns>,

@@ -1,11 +1,14 @@
 //! `topolab list`: the structures, the operators and each structure's theoretical cost per
 //! operator, and the editing operations of the structures that implement `MeshEdit` with
-//! their costs, as a table or JSON.
+//! their costs (every `EditOp` a row, the lecture's list among them; `—` where a structure
+//! does not offer it), as a table or JSON.
 
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::{Capabilities, Deletion, EditOp, MeshEdit, MeshTopology, Operator};
+use topolab_structures::{
+    Capabilities, Deletion, EditOp, ExplicitStorage, MeshEdit, MeshTopology, Operator,
+};
 
 /// An editable structure's declared cost per editing operation.
 #[derive(serde::Serialize)]
@@ -41,11 +44,18 @@ impl registry::EditVisitor for EditRowOf {
     }
 }
 
-/// The structures that implement `MeshEdit`, in registry order.
+/// The structures that implement `MeshEdit`, in registry order: the `[editable]` ones and
+/// explicit storage, which offers the operations on positions only (the lecture's contrast:
+/// its moves are O(n)) and so is not `[editable]` (see its edit module).
 fn edit_rows() -> Vec<EditRow> {
     registry::NAMES
         .iter()
-        .filter_map(|n| registry::visit_editable(n, EditRowOf))
+        .filter_map(|n| {
+            if *n == ExplicitStorage::NAME {
+                return Some(registry::EditVisitor::visit::<ExplicitStorage>(EditRowOf));
+            }
+            registry::visit_editable(n, EditRowOf)
+        })
         .collect()
 }
 

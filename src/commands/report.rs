@@ -37,7 +37,7 @@ pub struct ReportArgs {
     pub structures: Option<Vec<String>>,
     /// Sections of the page to measure and show, comma separated (default: all): chooser,
     /// table-4-1, plots, sweeps, workloads, memory, construction, orderings, real-meshes,
-    /// real-at-scale, libigl, hull, changing, decimate, teaching, meshes, targets. Only what
+    /// real-at-scale, libigl, hull, changing, edit-ops, decimate, teaching, meshes, targets. Only what
     /// they are drawn from is measured.
     #[arg(long, value_delimiter = ',', value_parser = super::report_sections::section)]
     pub sections: Option<Vec<String>>,

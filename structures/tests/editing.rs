@@ -4,3 +4,11 @@
 //! line `topolab_structures::edit_conformance!(module, Type);`.
 
 topolab_structures::for_each_structure!(topolab_structures::editing_suite);
+
+// Explicit storage moves vertices only (the lecture's point about it: every copy of a
+// position found); it is not `[editable]` in the registry, so it enrols here.
+topolab_structures::edit_conformance!(
+    explicit,
+    topolab_structures::ExplicitStorage,
+    offered_operations
+);

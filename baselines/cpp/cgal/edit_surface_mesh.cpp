@@ -34,7 +34,9 @@
 //   then Euler::split_face cuts the triangle with `left` and the one with `right` off them.
 // Euler::remove_face removes a vertex it leaves without edges; MeshEdit keeps such a vertex,
 // unused (as a file's unused vertices are kept), so delete face runs CGAL's remove_face with
-// that one line changed (the vertex's halfedge is cleared instead).
+// that one line changed (the vertex's halfedge is cleared instead), and afterwards points each
+// corner left on the border at a border halfedge, which the boundary query reads (found by the
+// smoothing step of the editing suite, whose boundary test asks it after deletions).
 //
 // - vertex weld: Polygon_mesh_processing::stitch_borders on the pairs of border halfedges
 //   where the two boundaries meet, or remove_vertex where one vertex has no faces (the
@@ -252,7 +254,12 @@ int delete_face(SurfaceMesh &m, uint32_t fi) {
         !m.is_border(m.opposite(h)))
       return NON_MANIFOLD_VERTEX;
   }
+  std::vector<VI> corners;
+  for (VI w : m.vertices_around_face(m.halfedge(f))) corners.push_back(w);
   remove_face_keeping_vertices(m.halfedge(f), m);
+  // Its corners are border vertices now: remove_face re-points only the tips it removes.
+  for (VI w : corners)
+    if (!m.is_isolated(w)) m.set_vertex_halfedge_to_border_halfedge(w);
   return OK_EDIT;
 }
 
@@ -272,6 +279,9 @@ int delete_vertex(SurfaceMesh &m, uint32_t vi) {
   for (VI w : corners)
     if (fans_without(m, w, faces) > 1) return NON_MANIFOLD_VERTEX;
   for (FI f : faces) remove_face_keeping_vertices(m.halfedge(f), m);
+  // Its neighbours are border vertices now (see delete_face).
+  for (VI w : corners)
+    if (!m.is_isolated(w)) m.set_vertex_halfedge_to_border_halfedge(w);
   m.set_halfedge(v, NO_HALFEDGE);
   m.remove_vertex(v);
   return OK_EDIT;

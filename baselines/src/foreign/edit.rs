@@ -224,6 +224,14 @@ pub(crate) fn edit_cost(op: EditOp) -> Cost {
         | EditOp::SplitVertex => Cost::Local,
         // The shims' link condition: each neighbour of one end looked for around the other.
         EditOp::CollapseEdge => Cost::LocalSquared,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by the shim's `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        // Not offered (the shims have no call for them): refused as not implemented.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Local,
+        // Declared by the structure from its query costs (`impl_mesh_edit!`).
+        EditOp::Smooth => Cost::Linear,
     }
 }
 
@@ -318,7 +326,7 @@ pub(crate) fn set_position<M: ForeignEdit>(m: &mut M, v: VertexId, p: DVec3) -> 
     let (raw, xyz, api) = (m.raw(), p.to_array(), &M::API.set_position);
     // SAFETY: `raw` is live and exclusively borrowed; the shim checks `v`; `xyz` holds 3
     // doubles; `refusal` is valid.
-    change(m, EditOp::AddVertex, api.name, |refusal| unsafe {
+    change(m, EditOp::SetPosition, api.name, |refusal| unsafe {
         (api.f)(raw, v.0, xyz.as_ptr(), refusal)
     })
 }
@@ -460,10 +468,18 @@ macro_rules! impl_mesh_edit {
             const DELETION: topolab_structures::Deletion = topolab_structures::Deletion::Marked;
 
             fn edit_cost(op: topolab_structures::EditOp) -> topolab_structures::Cost {
+                if op == topolab_structures::EditOp::Smooth {
+                    return topolab_structures::core::edit::smooth_cost::<Self>();
+                }
                 $crate::foreign::edit::edit_cost(op)
             }
-            fn supports(_: topolab_structures::EditOp) -> bool {
-                true
+            /// Everything but the insertion and deletion of an edge, for which the shims have
+            /// no call (the trait's default refuses them as not implemented).
+            fn supports(op: topolab_structures::EditOp) -> bool {
+                !matches!(
+                    op,
+                    topolab_structures::EditOp::InsertEdge | topolab_structures::EditOp::DeleteEdge
+                )
             }
             fn add_vertex(
                 &mut self,

@@ -175,6 +175,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         qhull: None,
         changing: Vec::new(),
         local_refinement: Default::default(),
+        edit_ops: Vec::new(),
         targets: Vec::new(),
         decimate: Vec::new(),
         teaching: Vec::new(),

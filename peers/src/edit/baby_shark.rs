@@ -99,6 +99,11 @@ impl MeshEdit for BabySharkCornerTable {
             // baby_shark's collapse walks the corners around the removed vertex, O(k); the
             // lab's link condition looks for each neighbour of one end among the other's.
             EditOp::CollapseEdge => Cost::LocalSquared,
+            // Moving vertices: the adapter's `set_position`, O(1) per vertex; k: the vertices
+            // selected.
+            EditOp::SetPosition => Cost::Constant,
+            EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+            EditOp::Smooth => topolab_structures::core::edit::smooth_cost::<Self>(),
             // The adapter's tables renumbered (baby_shark keeps its deleted records);
             // welding meshes is the lab's rebuild from the welded face list, as everywhere.
             _ => Cost::Linear,
@@ -112,6 +117,11 @@ impl MeshEdit for BabySharkCornerTable {
                 | EditOp::CollapseEdge
                 | EditOp::GarbageCollection
                 | EditOp::WeldMeshes
+                | EditOp::SetPosition
+                | EditOp::Select
+                | EditOp::RotateSelection
+                | EditOp::ScaleSelection
+                | EditOp::Smooth
         )
     }
 
@@ -131,11 +141,11 @@ impl MeshEdit for BabySharkCornerTable {
                 let i = self
                     .isolated
                     .binary_search_by_key(&v.0, |&(w, _)| w)
-                    .map_err(|_| refuse::<Self>(EditOp::AddVertex, Refusal::NoSuchElement))?;
+                    .map_err(|_| refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement))?;
                 self.isolated[i].1 = p;
                 Ok(())
             }
-            None => Err(refuse::<Self>(EditOp::AddVertex, Refusal::NoSuchElement)),
+            None => Err(refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement)),
         }
     }
 

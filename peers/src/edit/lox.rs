@@ -29,6 +29,11 @@ fn supports(op: EditOp) -> bool {
             | EditOp::SplitFace
             | EditOp::GarbageCollection
             | EditOp::WeldMeshes
+            | EditOp::SetPosition
+            | EditOp::Select
+            | EditOp::RotateSelection
+            | EditOp::ScaleSelection
+            | EditOp::Smooth
     )
 }
 
@@ -46,6 +51,9 @@ fn edit_cost(op: EditOp) -> Cost {
         // Nothing is ever deleted (deletion is refused), so there is nothing to collect;
         // welding meshes is the lab's rebuild from the welded face list, as everywhere.
         EditOp::GarbageCollection => Cost::Constant,
+        // The adapter's positions, O(1) per vertex; k: the vertices selected.
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
         _ => Cost::Linear,
     }
 }
@@ -56,6 +64,9 @@ macro_rules! lox_edit_common {
         const DELETION: Deletion = Deletion::Marked;
 
         fn edit_cost(op: EditOp) -> Cost {
+            if op == EditOp::Smooth {
+                return topolab_structures::core::edit::smooth_cost::<Self>();
+            }
             edit_cost(op)
         }
 
@@ -76,7 +87,7 @@ macro_rules! lox_edit_common {
                     *q = p;
                     Ok(())
                 }
-                None => Err(refuse::<Self>(EditOp::AddVertex, Refusal::NoSuchElement)),
+                None => Err(refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement)),
             }
         }
 

@@ -129,6 +129,11 @@ impl MeshEdit for TriMesh {
             // Nothing is ever removed, so there is nothing to collect; welding meshes is the
             // lab's rebuild from the welded face list, as everywhere.
             EditOp::GarbageCollection => Cost::Constant,
+            // Moving vertices: the adapter's `set_position`, O(1) per vertex; k: the vertices
+            // selected.
+            EditOp::SetPosition => Cost::Constant,
+            EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+            EditOp::Smooth => topolab_structures::core::edit::smooth_cost::<Self>(),
             _ => Cost::Linear,
         }
     }
@@ -143,6 +148,11 @@ impl MeshEdit for TriMesh {
                 | EditOp::SplitFace
                 | EditOp::GarbageCollection
                 | EditOp::WeldMeshes
+                | EditOp::SetPosition
+                | EditOp::Select
+                | EditOp::RotateSelection
+                | EditOp::ScaleSelection
+                | EditOp::Smooth
         )
     }
 
@@ -153,7 +163,7 @@ impl MeshEdit for TriMesh {
 
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
         let Some(&x) = self.vertices.get(v.index()) else {
-            return Err(refuse::<Self>(EditOp::AddVertex, Refusal::NoSuchElement));
+            return Err(refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement));
         };
         self.mesh
             .set_vertex_position(x, Vector3::new(p.x, p.y, p.z));

@@ -3,7 +3,8 @@
 //! [`repair`] of what the checks find in a mesh's topology, mesh refinement, uniform
 //! ([`refine`]) and adaptive by longest-edge bisection on any editable structure
 //! ([`adaptive`]), the changing workloads of the Surface_mesh benchmark on any editable
-//! structure ([`changing`]), decimation by quadric error and its reconstruction
+//! structure ([`changing`]), the selection, rotation, scaling and smoothing of vertices
+//! ([`select`]), decimation by quadric error and its reconstruction
 //! ([`decimate`]), and element renumbering ([`ordering`]).
 
 pub mod adaptive;
@@ -14,5 +15,6 @@ pub mod hull;
 pub mod ordering;
 pub mod refine;
 pub mod repair;
+pub mod select;
 pub mod summary;
 pub mod weld;

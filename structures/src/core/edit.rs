@@ -2,10 +2,14 @@
 //! structure declares for each operation ([`EditOp`]). Of the operations the lecture on
 //! polygon-mesh data structures asks for under "which operations must be available" (select,
 //! insert, delete, weld, rotate and scale vertices, edges and faces; weld whole meshes) they
-//! cover the insertion and deletion of vertices and faces and the weld of vertices (and, by
-//! [`weld_meshes`](crate::algorithms::weld::weld_meshes), of whole meshes); refinement and
-//! thinning, which the lecture lists as what is changed in a mesh, are written over them
-//! ([`crate::algorithms::changing::sqrt3_step`], [`crate::algorithms::decimate`]).
+//! cover the insertion and deletion of vertices, edges ([`MeshEdit::insert_edge`],
+//! [`MeshEdit::delete_edge`]) and faces, the weld of vertices (and, by
+//! [`weld_meshes`](crate::algorithms::weld::weld_meshes), of whole meshes), and moving
+//! vertices ([`MeshEdit::set_position`], [`MeshEdit::set_positions`]), over which
+//! [`crate::algorithms::select`] selects, rotates, scales and smooths. The weld of edges or of
+//! faces is not offered. Refinement and thinning, which the lecture lists as what is changed
+//! in a mesh, are written over them ([`crate::algorithms::changing::sqrt3_step`],
+//! [`crate::algorithms::decimate`]).
 //!
 //! The operations are the Euler operations of the half-edge libraries (pmp-library's
 //! `SurfaceMesh`, OpenMesh): add a vertex or a face, delete a face or a vertex with its faces,
@@ -32,11 +36,29 @@
 //!   about a deleted element are meaningless. A vertex left without faces by a deleted face is
 //!   kept, unused, as a file's unused vertices are; [`MeshEdit::delete_vertex`] removes one.
 
-pub use crate::core::edit_op::{EditOp, Refusal};
+pub use crate::core::edit_op::{per_vertex_pass, EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::{Cost, MeshTopology};
 use glam::DVec3;
+
+/// The declared cost of one [`EditOp::Smooth`] step on `M`: a pass over the n vertices that
+/// asks each its neighbours (R00) and whether it is on the boundary, at `M`'s costs of those
+/// queries ([`per_vertex_pass`]); the writes are O(1) each where a position is stored once.
+pub fn smooth_cost<M: MeshTopology>() -> Cost {
+    let scan = [
+        M::cost(crate::core::operator::Operator::R00),
+        M::cost(crate::core::operator::Operator::BoundaryVertex),
+    ]
+    .into_iter()
+    .map(per_vertex_pass)
+    .any(|c| c == Cost::Quadratic);
+    if scan {
+        Cost::Quadratic
+    } else {
+        Cost::Linear
+    }
+}
 
 /// How a structure deletes.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
@@ -137,6 +159,57 @@ pub trait MeshEdit: MeshTopology {
         Err(crate::Error::EditRefused {
             structure: Self::NAME,
             op: EditOp::WeldVertices,
+            reason: Refusal::NotImplemented,
+        })
+    }
+    /// Moves several vertices at once: `moves` lists each vertex with its new position.
+    /// Refused, nothing changed, when a vertex is out of range or deleted
+    /// ([`Refusal::NoSuchElement`]). The default checks every vertex, then calls
+    /// [`MeshEdit::set_position`] for each: O(1) per vertex where a position is stored once.
+    /// Explicit storage, which stores a position once per corner, overrides it with one pass.
+    fn set_positions(&mut self, moves: &[(VertexId, DVec3)]) -> Result<()> {
+        if moves
+            .iter()
+            .any(|&(v, _)| v.index() >= self.num_vertices() || self.is_deleted_vertex(v))
+        {
+            return Err(crate::Error::EditRefused {
+                structure: Self::NAME,
+                op: EditOp::SetPosition,
+                reason: Refusal::NoSuchElement,
+            });
+        }
+        for &(v, p) in moves {
+            self.set_position(v, p)?;
+        }
+        Ok(())
+    }
+    /// Inserts an edge between corners `a` and `b` of face `f`, which are not neighbours in
+    /// it: `f` becomes the polygon from `a` to `b` (its corners in order) and a new face, whose
+    /// id is returned, the polygon from `b` to `a`. Refused, nothing changed, when `f` or a
+    /// vertex does not exist ([`Refusal::NoSuchElement`]), when `a` and `b` are not two corners
+    /// of `f` that are not neighbours in it ([`Refusal::NotDiagonal`]), or when `a` and `b`
+    /// are already joined by an edge ([`Refusal::EdgeExists`]: the edge would have more than
+    /// two faces). The default refuses with [`Refusal::NotImplemented`].
+    fn insert_edge(&mut self, f: FaceId, a: VertexId, b: VertexId) -> Result<FaceId> {
+        let _ = (f, a, b);
+        Err(crate::Error::EditRefused {
+            structure: Self::NAME,
+            op: EditOp::InsertEdge,
+            reason: Refusal::NotImplemented,
+        })
+    }
+    /// Deletes the interior edge `e`, merging its two faces into one polygon (the face running
+    /// from one end to the other keeps its id as far as the structure's deletion allows; see
+    /// [`Deletion`]). Refused, nothing changed, when `e` does not exist
+    /// ([`Refusal::NoSuchElement`]), is a boundary edge ([`Refusal::BoundaryEdge`]), or the
+    /// merged polygon would have a corner twice ([`Refusal::BadFace`]: the two faces share
+    /// another vertex than the edge's ends, as around a vertex of valence 2). The default
+    /// refuses with [`Refusal::NotImplemented`].
+    fn delete_edge(&mut self, e: EdgeId) -> Result<()> {
+        let _ = e;
+        Err(crate::Error::EditRefused {
+            structure: Self::NAME,
+            op: EditOp::DeleteEdge,
             reason: Refusal::NotImplemented,
         })
     }

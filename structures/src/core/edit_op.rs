@@ -2,6 +2,8 @@
 //! for their declared costs) and the reasons an edit is refused ([`Refusal`]): named below the
 //! trait and the errors, which both speak of them.
 
+use crate::core::topology::Cost;
+
 /// One editing operation of [`MeshEdit`](crate::core::edit::MeshEdit), for its declared cost.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -32,11 +34,45 @@ pub enum EditOp {
     /// Append a mesh and weld it along matching boundary curves
     /// ([`weld_meshes`](crate::algorithms::weld::weld_meshes)): a rebuild, O(n) everywhere.
     WeldMeshes,
+    /// Move one vertex ([`MeshEdit::set_position`](crate::core::edit::MeshEdit::set_position)):
+    /// the lecture's test of a structure, whether "geometry can be changed independently of
+    /// topology". O(1) where a vertex's position is stored once; O(n) in explicit storage,
+    /// whose every copy of the position must be found.
+    SetPosition,
+    /// Select the vertices (or faces) inside a box or matching a predicate
+    /// ([`crate::algorithms::select`]): one scan of the vertices (faces), O(n) everywhere.
+    /// Nothing changes, so no structure refuses it.
+    Select,
+    /// Rotate the positions of a selection about a centre
+    /// ([`rotate_selection`](crate::algorithms::select::rotate_selection)): the cost is for a
+    /// selection of k vertices, O(k) where a position is stored once, O(n) in explicit storage
+    /// (one pass over its corners, each looked up in a map of the moved positions).
+    RotateSelection,
+    /// Scale the positions of a selection about a centre
+    /// ([`scale_selection`](crate::algorithms::select::scale_selection)); costs as
+    /// [`EditOp::RotateSelection`].
+    ScaleSelection,
+    /// Insert an edge: split a polygon by a diagonal between two of its corners that are not
+    /// neighbours in it, into two faces
+    /// ([`MeshEdit::insert_edge`](crate::core::edit::MeshEdit::insert_edge)). Structures of
+    /// triangles only do not offer it (a triangle has no diagonal).
+    InsertEdge,
+    /// Delete an edge: merge the two faces of an interior edge into one polygon
+    /// ([`MeshEdit::delete_edge`](crate::core::edit::MeshEdit::delete_edge)); refused on a
+    /// boundary edge and where the merged polygon would repeat a corner. Structures of
+    /// triangles only do not offer it (the result is not a triangle).
+    DeleteEdge,
+    /// One step of uniform Laplacian smoothing
+    /// ([`smooth_step`](crate::algorithms::select::smooth_step)): every interior vertex moves
+    /// to the mean of its neighbours, the boundary stays (the smoothing workload's rule, its
+    /// result written back). The cost is for the whole mesh: n vertices, each asking its
+    /// neighbours (R00) and whether it is on the boundary.
+    Smooth,
 }
 
 impl EditOp {
     /// Every operation, in the order above.
-    pub const ALL: [EditOp; 12] = [
+    pub const ALL: [EditOp; 19] = [
         EditOp::AddVertex,
         EditOp::AddFace,
         EditOp::DeleteFace,
@@ -49,6 +85,13 @@ impl EditOp {
         EditOp::GarbageCollection,
         EditOp::WeldVertices,
         EditOp::WeldMeshes,
+        EditOp::SetPosition,
+        EditOp::Select,
+        EditOp::RotateSelection,
+        EditOp::ScaleSelection,
+        EditOp::InsertEdge,
+        EditOp::DeleteEdge,
+        EditOp::Smooth,
     ];
 
     /// The kebab-case name.
@@ -66,7 +109,23 @@ impl EditOp {
             EditOp::GarbageCollection => "garbage-collection",
             EditOp::WeldVertices => "weld-vertices",
             EditOp::WeldMeshes => "weld-meshes",
+            EditOp::SetPosition => "set-position",
+            EditOp::Select => "select",
+            EditOp::RotateSelection => "rotate-selection",
+            EditOp::ScaleSelection => "scale-selection",
+            EditOp::InsertEdge => "insert-edge",
+            EditOp::DeleteEdge => "delete-edge",
+            EditOp::Smooth => "smooth",
         }
+    }
+}
+
+/// The cost of a pass over all n vertices that asks each a query of cost `query` (the
+/// smoothing step's neighbours): O(n) for a local query, O(n²) for a scan.
+pub const fn per_vertex_pass(query: Cost) -> Cost {
+    match query {
+        Cost::Constant | Cost::Log | Cost::Local | Cost::LocalSquared => Cost::Linear,
+        Cost::Boundary | Cost::Linear | Cost::LocalTimesLinear | Cost::Quadratic => Cost::Quadratic,
     }
 }
 
@@ -91,7 +150,7 @@ pub enum Refusal {
     NonManifoldVertex,
     /// The operation needs triangles (flip, edge split, collapse) and a face is not one.
     NotTriangles,
-    /// A flip of a boundary edge (it has one triangle).
+    /// A flip or a deletion of a boundary edge (it has one face; both need two).
     BoundaryEdge,
     /// The edge a flip or a split would create exists already.
     EdgeExists,
@@ -131,6 +190,12 @@ pub enum Refusal {
     Orientation,
     /// No boundary vertex of one mesh coincides with one of the other (within the tolerance).
     NothingToWeld,
+    /// An edge inserted into a face between two vertices that are not both its corners, or
+    /// are neighbours in it (a triangle has no diagonal).
+    NotDiagonal,
+    /// A vertex moved onto the position of another: explicit storage tells vertices apart by
+    /// their coordinates only.
+    PositionTaken,
     /// A case this structure does not implement yet (named in its docs).
     NotImplemented,
 }
@@ -145,7 +210,9 @@ impl Refusal {
             Refusal::NonManifoldEdge => "an edge would have more than two faces",
             Refusal::NonManifoldVertex => "a vertex's faces would form several fans",
             Refusal::NotTriangles => "the faces around the edge must be triangles",
-            Refusal::BoundaryEdge => "a boundary edge has one triangle and cannot be flipped",
+            Refusal::BoundaryEdge => {
+                "a boundary edge has one face: it cannot be flipped, nor deleted to merge two faces"
+            }
             Refusal::EdgeExists => "the edge it would create exists already",
             Refusal::NotNeighbours => "the vertices are not neighbours as required",
             Refusal::LinkCondition => {
@@ -158,6 +225,12 @@ impl Refusal {
                 "the boundary curves run the same way where they meet: the result would not be oriented"
             }
             Refusal::NothingToWeld => "no boundary vertices coincide within the tolerance",
+            Refusal::NotDiagonal => {
+                "the two vertices must be corners of the face that are not neighbours in it"
+            }
+            Refusal::PositionTaken => {
+                "another vertex is at that position, and this structure tells vertices apart by their coordinates"
+            }
             Refusal::NotImplemented => "this case is not implemented by this structure",
         }
     }

@@ -407,10 +407,94 @@ pub fn weld_vertices<M: FaceRewrite>(m: &mut M, a: VertexId, b: VertexId) -> Res
     Ok(())
 }
 
+/// The two polygons of face `f` (corners `c`) split by the diagonal from `a` to `b`: the
+/// corners from `a` to `b`, then those from `b` to `a`; `None` unless `a` and `b` are corners
+/// of `c` that are not neighbours in it. Public so that every structure's insertion (and the
+/// editing suite's model) splits a face the same way.
+pub fn diagonal_split(
+    c: &[VertexId],
+    a: VertexId,
+    b: VertexId,
+) -> Option<(Vec<VertexId>, Vec<VertexId>)> {
+    let k = c.len();
+    let i = c.iter().position(|&x| x == a)?;
+    let j = c.iter().position(|&x| x == b)?;
+    if i == j || (i + 1) % k == j || (j + 1) % k == i {
+        return None;
+    }
+    let run = |from: usize, to: usize| {
+        let len = (to + k - from) % k + 1;
+        (0..len).map(|t| c[(from + t) % k]).collect::<Vec<_>>()
+    };
+    Some((run(i, j), run(j, i)))
+}
+
+/// The polygon that merges face `first` (running a → b at corner `i`) and face `second`
+/// (running b → a at corner `j`) across the edge {a, b}: `first`'s corners from b round to a,
+/// then `second`'s strictly between a and b. `None` when a corner would repeat.
+pub fn merged_polygon(
+    first: &[VertexId],
+    i: usize,
+    second: &[VertexId],
+    j: usize,
+) -> Option<Vec<VertexId>> {
+    let (k1, k2) = (first.len(), second.len());
+    // first[i] = a, first[i + 1] = b; second[j] = b, second[j + 1] = a.
+    let mut out: Vec<VertexId> = (1..=k1).map(|t| first[(i + t) % k1]).collect();
+    out.extend((2..k2).map(|t| second[(j + t) % k2]));
+    let distinct = (1..out.len()).all(|t| !out[..t].contains(&out[t]));
+    distinct.then_some(out)
+}
+
+/// [`MeshEdit::insert_edge`] over [`FaceRewrite`]: no manifold check is needed, since the
+/// two polygons replace `f` in the fans of its corners and both new sides are new edges.
+pub fn insert_edge<M: FaceRewrite>(
+    m: &mut M,
+    f: FaceId,
+    a: VertexId,
+    b: VertexId,
+) -> Result<FaceId> {
+    let op = EditOp::InsertEdge;
+    if f.index() >= m.num_faces() || !live(m, a) || !live(m, b) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let c = corners(m, f);
+    let Some((one, two)) = diagonal_split(&c, a, b) else {
+        return Err(refuse::<M>(op, Refusal::NotDiagonal));
+    };
+    if adjacent(m, a, b) {
+        return Err(refuse::<M>(op, Refusal::EdgeExists));
+    }
+    m.rewrite(&[f], &[one, two]);
+    Ok(FaceId::new(m.num_faces() - 1))
+}
+
+/// [`MeshEdit::delete_edge`] over [`FaceRewrite`]: the edge's two faces rewritten as one.
+/// No manifold check is needed once the merged polygon's corners are distinct: it takes the
+/// place of two neighbouring faces in the fans of its corners.
+pub fn delete_edge<M: FaceRewrite>(m: &mut M, e: EdgeId) -> Result<()> {
+    let op = EditOp::DeleteEdge;
+    if !m.is_edge(e) {
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
+    }
+    let [a, b] = m.edge_vertices(e);
+    let [Some((f1, c1, i1)), Some((f2, c2, i2))] = sides_of(m, e, a, b) else {
+        return Err(refuse::<M>(op, Refusal::BoundaryEdge));
+    };
+    if f1 == f2 {
+        return Err(refuse::<M>(op, Refusal::BadFace));
+    }
+    let Some(merged) = merged_polygon(&c1, i1, &c2, i2) else {
+        return Err(refuse::<M>(op, Refusal::BadFace));
+    };
+    m.rewrite(&[f1, f2], &[merged]);
+    Ok(())
+}
+
 /// [`MeshEdit::set_position`] over [`FaceRewrite`].
 pub fn set_position<M: FaceRewrite>(m: &mut M, v: VertexId, p: DVec3) -> Result<()> {
     if !live(m, v) {
-        return Err(refuse::<M>(EditOp::AddVertex, Refusal::NoSuchElement));
+        return Err(refuse::<M>(EditOp::SetPosition, Refusal::NoSuchElement));
     }
     m.write_position(v, p);
     Ok(())
@@ -506,6 +590,17 @@ macro_rules! mesh_edit_by_rewrite {
             }
             fn weld_vertices(&mut self, a: $crate::VertexId, b: $crate::VertexId) -> $crate::Result<()> {
                 $crate::core::rewrite::weld_vertices(self, a, b)
+            }
+            fn insert_edge(
+                &mut self,
+                f: $crate::FaceId,
+                a: $crate::VertexId,
+                b: $crate::VertexId,
+            ) -> $crate::Result<$crate::FaceId> {
+                $crate::core::rewrite::insert_edge(self, f, a, b)
+            }
+            fn delete_edge(&mut self, e: $crate::EdgeId) -> $crate::Result<()> {
+                $crate::core::rewrite::delete_edge(self, e)
             }
             fn is_deleted_vertex(&self, v: $crate::VertexId) -> bool {
                 $crate::core::rewrite::FaceRewrite::vertex_deleted(self, v)

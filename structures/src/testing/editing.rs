@@ -8,8 +8,21 @@
 //! must be refused with [`Refusal::NotImplemented`], nothing
 //! changed. The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
 //! structure in one line, one that implements a subset of the operations too.
+//!
+//! The operations on positions ([`crate::algorithms::select`]) are drawn too: a box
+//! selection (compared with the model's vertices and faces in the box), its rotation or
+//! scaling, and a smoothing step, each applied to the model's positions by hand. The point
+//! transforms themselves ([`rotate_point`], [`scale_point`], [`laplacian_mean`]) are shared
+//! with the model so that positions compare bit for bit, and tested on their own in that
+//! module. A structure that tells vertices apart by their coordinates
+//! (`capabilities().distinct_positions`, explicit storage) must refuse a move that would put
+//! two vertices at one position, which the model then refuses too.
 
 use crate::algorithms::changing::to_soup;
+use crate::algorithms::select::{
+    laplacian_mean, rotate_point, rotate_selection, scale_point, scale_selection, select_faces_in,
+    select_vertices_in, smooth_step, Aabb,
+};
 use crate::core::edit::{EditOp, MeshEdit, Refusal};
 use crate::core::error::Error;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
@@ -17,7 +30,7 @@ use crate::core::soup::PolygonSoup;
 use crate::testing::conformance::compare;
 use crate::testing::meshes::{self, RandomMeshParams};
 pub use crate::testing::oracle::canonical_face;
-use glam::DVec3;
+use glam::{DQuat, DVec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::BTreeMap;
@@ -135,7 +148,42 @@ impl Model {
     /// (pmp-library's `is_collapse_ok` with the tetrahedron test of OpenMesh's Decimater,
     /// worked out on the face list).
     pub fn collapse(&self, v0: u32, v1: u32) -> Option<Model> {
-        expect(self, &Edit::Collapse(v0, v1), false)
+        expect(self, &Edit::Collapse(v0, v1), false, false)
+    }
+
+    /// Are the live vertices' positions distinct (as explicit storage needs)?
+    fn positions_distinct(&self) -> bool {
+        let mut keys: Vec<[u64; 3]> = self
+            .positions
+            .iter()
+            .flatten()
+            .map(|p| p.to_array().map(|x| (x + 0.0).to_bits()))
+            .collect();
+        let n = keys.len();
+        keys.sort_unstable();
+        keys.dedup();
+        keys.len() == n
+    }
+
+    /// The live vertices inside `b`.
+    fn vertices_in(&self, b: &Aabb) -> Vec<u32> {
+        (0..self.positions.len() as u32)
+            .filter(|&v| self.positions[v as usize].is_some_and(|p| b.contains(p)))
+            .collect()
+    }
+
+    /// The live faces whose corners are all inside `b`, canonical and sorted.
+    fn faces_in(&self, b: &Aabb) -> Vec<Vec<u32>> {
+        let mut out: Vec<Vec<u32>> = self
+            .live_faces()
+            .filter(|(_, f)| {
+                f.iter()
+                    .all(|&v| self.positions[v as usize].is_some_and(|p| b.contains(p)))
+            })
+            .map(|(_, f)| canonical_face(f))
+            .collect();
+        out.sort();
+        out
     }
 
     /// The number of live faces.
@@ -194,16 +242,34 @@ pub enum Edit {
     Weld(u32, u32),
     /// Garbage collection.
     Collect,
+    /// Insert an edge in the face left of the directed edge a → b, from a to the third vertex.
+    InsertEdge(u32, u32, u32),
+    /// Delete the edge between two vertices.
+    DeleteEdge(u32, u32),
+    /// Select the vertices and faces in a box (nothing changes).
+    Select(Aabb),
+    /// Rotate the vertices in a box about a centre, by an angle about an axis.
+    Rotate(Aabb, DVec3, DVec3, f64),
+    /// Scale the vertices in a box about a centre, by factors per axis.
+    Scale(Aabb, DVec3, DVec3),
+    /// One smoothing step.
+    Smooth,
 }
 
 impl Edit {
     /// The operation the edit exercises, whose [`MeshEdit::supports`] says whether the
     /// structure must do it or refuse it as not implemented; `None` for what every structure
-    /// does: garbage collection (a structure that deletes nothing has nothing to collect) and
-    /// moving a vertex (`set_position`, no [`EditOp`]).
+    /// does: garbage collection (a structure that deletes nothing has nothing to collect).
     pub fn op(&self) -> Option<EditOp> {
         Some(match self {
-            Edit::SetPosition(..) | Edit::Collect => return None,
+            Edit::Collect => return None,
+            Edit::SetPosition(..) => EditOp::SetPosition,
+            Edit::InsertEdge(..) => EditOp::InsertEdge,
+            Edit::DeleteEdge(..) => EditOp::DeleteEdge,
+            Edit::Select(_) => EditOp::Select,
+            Edit::Rotate(..) => EditOp::RotateSelection,
+            Edit::Scale(..) => EditOp::ScaleSelection,
+            Edit::Smooth => EditOp::Smooth,
             Edit::AddVertex(_) => EditOp::AddVertex,
             Edit::AddFace(_) => EditOp::AddFace,
             Edit::DeleteFace(..) | Edit::DeleteMissingFace(_) => EditOp::DeleteFace,
@@ -282,7 +348,13 @@ fn draw(rng: &mut ChaCha8Rng, model: &Model, triangles_only: bool) -> Edit {
         }
     };
     let p = DVec3::new(rng.random(), rng.random(), rng.random());
-    match rng.random_range(0..100) {
+    // A box about a third of the unit cube wide, around p (the meshes' positions are mostly
+    // in the unit cube).
+    let around = |p: DVec3| Aabb {
+        min: p - DVec3::splat(0.2),
+        max: p + DVec3::splat(0.2),
+    };
+    match rng.random_range(0..120) {
         0..4 => Edit::AddVertex(p),
         4..12 => {
             // A triangle on a boundary edge and a third vertex, or anything.
@@ -347,14 +419,66 @@ fn draw(rng: &mut ChaCha8Rng, model: &Model, triangles_only: bool) -> Edit {
                 Edit::Weld(near(rng, x), near(rng, x))
             }
         }
-        _ => Edit::Collect,
+        98..100 => Edit::Collect,
+        100..106 => {
+            // From a to another corner of the face left of a → b, mostly one that is not a
+            // neighbour of a in it.
+            let a = pick_vertex(rng);
+            let b = near(rng, a);
+            let c = match model.face_with(a, b) {
+                Some((f, i)) => {
+                    let face = model.faces[f].as_ref().expect("live");
+                    let k = face.len();
+                    if k > 3 && rng.random_bool(0.9) {
+                        face[(i + 2 + rng.random_range(0..k - 3)) % k]
+                    } else {
+                        face[rng.random_range(0..k)]
+                    }
+                }
+                None => pick_vertex(rng),
+            };
+            Edit::InsertEdge(a, b, c)
+        }
+        106..112 => {
+            let a = pick_vertex(rng);
+            Edit::DeleteEdge(a, near(rng, a))
+        }
+        112..114 => Edit::Select(around(p)),
+        114..116 => {
+            let axis = DVec3::new(rng.random(), rng.random(), rng.random()) + DVec3::X;
+            Edit::Rotate(around(p), p, axis.normalize(), rng.random_range(-3.0..3.0))
+        }
+        116..118 => {
+            let factors = DVec3::new(
+                rng.random_range(0.5..2.0),
+                rng.random_range(0.5..2.0),
+                rng.random_range(0.5..2.0),
+            );
+            Edit::Scale(around(p), p, factors)
+        }
+        _ => Edit::Smooth,
     }
 }
 
 /// What the model says an edit of an operation the structure implements must do:
 /// `Some(apply)` when it must succeed, `None` when it must be refused; `triangles_only` (the
-/// structure's capability) refuses faces of more than three corners.
-fn expect(model: &Model, edit: &Edit, triangles_only: bool) -> Option<Model> {
+/// structure's capability) refuses faces of more than three corners, `distinct_positions`
+/// (explicit storage's) a move that leaves two live vertices at one position.
+fn expect(
+    model: &Model,
+    edit: &Edit,
+    triangles_only: bool,
+    distinct_positions: bool,
+) -> Option<Model> {
+    let next = expect_faces(model, edit, triangles_only)?;
+    if distinct_positions && !next.positions_distinct() {
+        return None;
+    }
+    Some(next)
+}
+
+/// [`expect`] but for the rule of distinct positions.
+fn expect_faces(model: &Model, edit: &Edit, triangles_only: bool) -> Option<Model> {
     let mut next = model.clone();
     let n = model.positions.len() as u32;
     match edit {
@@ -569,6 +693,82 @@ fn expect(model: &Model, edit: &Edit, triangles_only: bool) -> Option<Model> {
             next.positions[b as usize] = None;
         }
         Edit::Collect => next.collect(),
+        Edit::InsertEdge(a, b, c) => {
+            let (a, c) = (*a, *c);
+            let (f, i) = model.face_with(a, *b)?;
+            if !model.live_vertex(c) || triangles_only {
+                return None;
+            }
+            let face = model.faces[f].clone().expect("live");
+            let k = face.len();
+            let j = face.iter().position(|&v| v == c)?;
+            // Not a, nor a neighbour of a in the face.
+            if j == i || j == (i + 1) % k || (j + 1) % k == i {
+                return None;
+            }
+            let one: Vec<u32> = (0..=(j + k - i) % k).map(|t| face[(i + t) % k]).collect();
+            let two: Vec<u32> = (0..=(i + k - j) % k).map(|t| face[(j + t) % k]).collect();
+            next.faces[f] = Some(one);
+            next.faces.push(Some(two));
+            if !Model::manifold(&next.soup(None, &[])) {
+                return None;
+            }
+        }
+        Edit::DeleteEdge(a, b) => {
+            let (a, b) = (*a, *b);
+            if !model.live_vertex(a) || !model.live_vertex(b) || triangles_only {
+                return None;
+            }
+            let ((f1, i1), (f2, i2)) = (model.face_with(a, b)?, model.face_with(b, a)?);
+            if f1 == f2 {
+                return None;
+            }
+            let (one, two) = (
+                model.faces[f1].clone().expect("live"),
+                model.faces[f2].clone().expect("live"),
+            );
+            // one runs a → b at i1, two runs b → a at i2: one from b round to a, then two
+            // after a up to before b.
+            let mut merged: Vec<u32> = (1..=one.len()).map(|t| one[(i1 + t) % one.len()]).collect();
+            merged.extend((2..two.len()).map(|t| two[(i2 + t) % two.len()]));
+            if (1..merged.len()).any(|t| merged[..t].contains(&merged[t])) {
+                return None;
+            }
+            next.faces[f1] = Some(merged);
+            next.faces[f2] = None;
+            if !Model::manifold(&next.soup(None, &[])) {
+                return None;
+            }
+        }
+        Edit::Select(_) => {}
+        Edit::Rotate(b, centre, axis, angle) => {
+            let rotation = DQuat::from_axis_angle(*axis, *angle);
+            for v in model.vertices_in(b) {
+                let p = next.positions[v as usize].as_mut().expect("live");
+                *p = rotate_point(*p, *centre, rotation);
+            }
+        }
+        Edit::Scale(b, centre, factors) => {
+            for v in model.vertices_in(b) {
+                let p = next.positions[v as usize].as_mut().expect("live");
+                *p = scale_point(*p, *centre, *factors);
+            }
+        }
+        Edit::Smooth => {
+            for v in 0..model.positions.len() as u32 {
+                if !model.live_vertex(v) || model.is_boundary_vertex(v) {
+                    continue;
+                }
+                let ring = model.neighbours(v);
+                let mean = laplacian_mean(
+                    ring.iter()
+                        .map(|&w| model.positions[w as usize].expect("live")),
+                );
+                if let Some(p) = mean {
+                    next.positions[v as usize] = Some(p);
+                }
+            }
+        }
     }
     Some(next)
 }
@@ -597,6 +797,21 @@ fn apply<M: MeshEdit>(m: &mut M, edit: &Edit) -> Option<Result<(), Error>> {
             .split_vertex(VertexId(*v), *p, VertexId(*l), VertexId(*r))
             .map(drop),
         Edit::Weld(a, b) => m.weld_vertices(VertexId(*a), VertexId(*b)),
+        Edit::InsertEdge(a, b, c) => m
+            .insert_edge(face_left(m, *a, *b)?, VertexId(*a), VertexId(*c))
+            .map(drop),
+        Edit::DeleteEdge(a, b) => m.delete_edge(edge_between(m, *a, *b)?),
+        // Compared with the model's selection in `check_edit`.
+        Edit::Select(_) => Ok(()),
+        Edit::Rotate(b, centre, axis, angle) => {
+            let s = select_vertices_in(m, b);
+            rotate_selection(m, &s, *centre, DQuat::from_axis_angle(*axis, *angle))
+        }
+        Edit::Scale(b, centre, factors) => {
+            let s = select_vertices_in(m, b);
+            scale_selection(m, &s, *centre, *factors)
+        }
+        Edit::Smooth => smooth_step(m).map(drop),
         Edit::Collect => {
             m.garbage_collection();
             Ok(())
@@ -739,8 +954,9 @@ pub fn vertex_welds<M: MeshEdit>(not_implemented_on_polygons: bool) {
 /// the random sequences of 60 seeds, each checked as in [`run`], every operation the
 /// sequences draw ([`drawn`]) that `M` implements was done at least 10 times and, but for
 /// adding a vertex (which the model never refuses), an edge split (refused only where its two
-/// triangles share their third corner) and the weld ([`vertex_welds`]), refused at least
-/// once; every one it does not implement was drawn and refused as not implemented at least
+/// triangles share their third corner), the weld ([`vertex_welds`]) and the operations on
+/// positions but the move of one vertex (refused only for a vertex that does not exist, which
+/// a box selection never names), refused at least once; every one it does not implement was drawn and refused as not implemented at least
 /// 10 times; vertices were moved; and a structure of triangles only that adds faces refused
 /// at least 10 faces of four corners the model allows a polygon structure. Panics otherwise.
 pub fn offered_operations<M: MeshEdit>() {
@@ -755,7 +971,18 @@ pub fn offered_operations<M: MeshEdit>() {
         if M::supports(op) {
             let done = count(&tally.done_by, op);
             assert!(done >= 10, "{}: {op} done {done} times: {tally:?}", M::NAME);
-            if ![EditOp::AddVertex, EditOp::SplitEdge, EditOp::WeldVertices].contains(&op) {
+            // The operations on positions are refused only for a vertex that does not
+            // exist, which the box selections never name.
+            let never_refused = [
+                EditOp::AddVertex,
+                EditOp::SplitEdge,
+                EditOp::WeldVertices,
+                EditOp::Select,
+                EditOp::RotateSelection,
+                EditOp::ScaleSelection,
+                EditOp::Smooth,
+            ];
+            if !never_refused.contains(&op) {
                 let refused = count(&tally.refused_by, op);
                 assert!(refused >= 1, "{}: {op} never refused: {tally:?}", M::NAME);
             }
@@ -937,12 +1164,35 @@ fn check_edit<M: MeshEdit>(
 ) -> Result<(), String> {
     let op = edit.op();
     let implemented = op.is_none_or(M::supports);
-    let triangles_only = M::capabilities().triangles_only;
+    let caps = M::capabilities();
+    let triangles_only = caps.triangles_only;
     let expected = if implemented {
-        expect(model, edit, triangles_only)
+        expect(model, edit, triangles_only, caps.distinct_positions)
     } else {
         None
     };
+    if let Edit::Select(b) = edit {
+        let got = select_vertices_in(m, b);
+        let got: Vec<u32> = got.vertices().iter().map(|v| v.0).collect();
+        let want = model.vertices_in(b);
+        if got != want {
+            return Err(format!(": selected vertices {got:?}, the model's {want:?}"));
+        }
+        let mut got: Vec<Vec<u32>> = select_faces_in(m, b)
+            .faces()
+            .iter()
+            .map(|&f| {
+                let mut face = Vec::new();
+                m.face_vertices(f, |v| face.push(v.0));
+                canonical_face(&face)
+            })
+            .collect();
+        got.sort();
+        let want = model.faces_in(b);
+        if got != want {
+            return Err(format!(": selected faces {got:?}, the model's {want:?}"));
+        }
+    }
     // A collapse's test alone (what a decimater asks of its candidates) must answer as the
     // collapse itself then does.
     let checked = match edit {
@@ -1010,7 +1260,7 @@ fn check_edit<M: MeshEdit>(
                 *tally.refused_by.entry(op).or_default() += 1;
             }
             if let Edit::AddFace(vs) = edit {
-                if vs.len() > 3 && expect(model, edit, false).is_some() {
+                if vs.len() > 3 && expect(model, edit, false, false).is_some() {
                     tally.polygons_refused += 1;
                 }
             }
@@ -1087,8 +1337,10 @@ macro_rules! editing_suite {
 /// be refused as not implemented, nothing changed.
 ///
 /// With two arguments, a structure that implements every operation but perhaps the vertex
-/// weld: its counts ask for more than 400 edits done and 100 refused over 40 seeds, and the
-/// weld tests run (the weld of vertices only where it implements it). A third argument:
+/// weld and the insertion and deletion of an edge (which structures of triangles only do not
+/// offer): its counts ask for more than 400 edits done and 100 refused over 40 seeds and,
+/// per operation, those of [`offered_operations`](crate::testing::editing::offered_operations),
+/// and the weld tests run (the weld of vertices only where it implements it). A third argument:
 /// - `not_implemented_on_polygons` runs [`run_with`] instead (a library's polygon kernel that
 ///   refuses the triangle operations);
 /// - `offered_operations` enrols a structure that implements a subset of the operations (the
@@ -1141,6 +1393,11 @@ macro_rules! edit_conformance {
             #[test]
             fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
                 $crate::testing::editing::vertex_welds::<$ty>(false);
+            }
+
+            #[test]
+            fn every_operation_is_done_and_refused_or_refused_as_not_implemented() {
+                $crate::testing::editing::offered_operations::<$ty>();
             }
         }
     };

@@ -9,6 +9,7 @@ pub mod changing;
 pub mod chooser;
 pub mod construction;
 pub mod decimate;
+pub mod edit_ops;
 pub mod hull;
 pub mod libigl;
 pub mod memory;
@@ -38,6 +39,7 @@ pub static SECTIONS: &[&dyn Section] = &[
     &libigl::Libigl,
     &hull::Hull,
     &changing::ChangingMeshes,
+    &edit_ops::EditOps,
     &decimate::Decimate,
     &teaching::Teaching,
     &meshes::Meshes,

@@ -61,6 +61,15 @@
 //! | split edge, split face | O(n) scans | O(k) | O(n): `EH` | O(n): `EH` |
 //! | collapse edge | O(n) scans | O(n): star scans | O(n): `EH` | O(n): `EH` |
 //! | garbage collection | O(n) | O(n) | O(n) | O(n) |
+//! | set position | O(1) | O(1) | O(1) | O(1) |
+//! | select | O(n) | O(n) | O(n) | O(n) |
+//! | rotate, scale a selection of k vertices | O(k) | O(k) | O(k) | O(k) |
+//! | smooth (every vertex's R00 and boundary test) | O(n²) | O(n²) | O(n) | O(n) |
+//! | insert edge, delete edge | not offered | not offered | not offered | not offered |
+//!
+//! Inserting an edge (a diagonal of a face) or deleting one (merging two faces) would leave a
+//! face that is not a triangle, which the CHE cannot hold: both are refused as
+//! [`Refusal::NotImplemented`](crate::Refusal::NotImplemented).
 
 mod ops;
 
@@ -69,7 +78,7 @@ use super::build::{
     opposites_and_vertex_half_edges,
 };
 use super::{CheL0, CheL1, CheL2, CheL3};
-use crate::core::edit::{Deletion, EditOp, MeshEdit, Refusal};
+use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Refusal};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::core::topology::{Cost, MeshTopology};
@@ -209,7 +218,9 @@ impl Parts<'_> {
 /// The cost table of the module docs.
 fn edit_cost(level: u8, op: EditOp) -> Cost {
     match (level, op) {
-        (_, EditOp::AddVertex) => Cost::Constant,
+        (_, EditOp::AddVertex | EditOp::SetPosition) => Cost::Constant,
+        // k: the vertices selected, each moved by `set_position`.
+        (_, EditOp::RotateSelection | EditOp::ScaleSelection) => Cost::Local,
         (1, EditOp::SplitEdge | EditOp::SplitFace) => Cost::Local,
         // The rebuilds (weld vertices among them), the `EH` rebuild and the scans of V[].
         _ => Cost::Linear,
@@ -237,10 +248,15 @@ macro_rules! che_edit {
             const DELETION: Deletion = Deletion::Compacted;
 
             fn edit_cost(op: EditOp) -> Cost {
+                if op == EditOp::Smooth {
+                    return smooth_cost::<Self>();
+                }
                 edit_cost($level, op)
             }
-            fn supports(_op: EditOp) -> bool {
-                true
+            /// Everything but the insertion and deletion of an edge, which would leave a
+            /// face that is not a triangle.
+            fn supports(op: EditOp) -> bool {
+                !matches!(op, EditOp::InsertEdge | EditOp::DeleteEdge)
             }
             fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
                 let mut parts = self.parts();

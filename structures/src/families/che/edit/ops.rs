@@ -272,7 +272,7 @@ impl Parts<'_> {
 
     pub(super) fn set_position(&mut self, x: u32, p: DVec3) -> Result<()> {
         if !self.live_vertex(x) {
-            return Err(self.refuse(EditOp::AddVertex, Refusal::NoSuchElement));
+            return Err(self.refuse(EditOp::SetPosition, Refusal::NoSuchElement));
         }
         self.g[x as usize] = p;
         Ok(())

@@ -22,6 +22,13 @@
 //! Costs: as the vertex list (every relation scans the corners, comparing coordinates):
 //! R00–R02 O(n), R10 O(log n), R11/R21/R22 O(k·n), R12 O(n), R20 O(k), boundary curves O(n²).
 //! Non-manifold vertices are stored and answered correctly.
+//!
+//! Editing ([`edit`]): the lecture's point about this structure, that geometry cannot be
+//! changed independently of topology, as a [`MeshEdit`](crate::MeshEdit) that moves vertices
+//! at O(n) (every copy of a position found) and refuses every topological edit as not
+//! implemented.
+
+pub mod edit;
 
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};

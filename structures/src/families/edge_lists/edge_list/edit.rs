@@ -5,15 +5,16 @@
 //!
 //! The lecture on polygon-mesh data structures lists the operations a structure must offer:
 //! select, insert, delete, weld, rotate and scale vertices, edges and faces, and weld whole
-//! meshes (smoothing, refinement and thinning it lists apart, as what is changed in a mesh,
-//! and they are not operations of this module). Of that list the structure offers the insertion
-//! and deletion of vertices and faces, the vertex weld and the weld of whole meshes
-//! ([`weld_meshes`](crate::algorithms::weld::weld_meshes)). Not implemented: selection,
-//! rotation and scaling (only [`MeshEdit::set_position`](crate::MeshEdit::set_position) moves
-//! one vertex), the insertion or deletion of an edge on its own (a diagonal splitting a face,
-//! or removing an edge to merge its two faces), and the weld of edges or faces. The flip, the
-//! edge and face splits, the collapse and the vertex split are pmp-library's and OpenMesh's
-//! operations, not the lecture's.
+//! meshes, and smoothing, refinement and thinning as what is changed in a mesh. Of that list
+//! the structure offers the insertion and deletion of vertices, edges
+//! ([`MeshEdit::insert_edge`](crate::MeshEdit::insert_edge): a diagonal splitting a face,
+//! [`MeshEdit::delete_edge`](crate::MeshEdit::delete_edge): an edge removed to merge its two
+//! faces, both [`crate::core::rewrite`]'s) and faces, the vertex weld, the weld of whole
+//! meshes ([`weld_meshes`](crate::algorithms::weld::weld_meshes)), and moving vertices
+//! ([`MeshEdit::set_position`](crate::MeshEdit::set_position)), over which
+//! [`crate::algorithms::select`] selects, rotates, scales and smooths. Not implemented: the
+//! weld of edges or faces. The flip, the edge and face splits, the collapse and the vertex
+//! split are pmp-library's and OpenMesh's operations, not the lecture's.
 //!
 //! ## Costs
 //!
@@ -36,6 +37,12 @@
 //! | collapse edge | the link condition: the rings of the ends and of the two far corners | O(k·n) |
 //! | split vertex | one scan per polygon of the moved fan | O(k·n) |
 //! | weld vertices | the edges around each corner involved | O(k·n) |
+//! | insert edge | whether the diagonal's ends are neighbours: a scan; one scan for the rewrite | O(n) |
+//! | delete edge | the edge's two polygons (O(1)), one scan for the rewrite | O(n) |
+//! | set position | — | O(1) |
+//! | select | a scan of the positions | O(n) |
+//! | rotate, scale a selection | k positions written | O(k) |
+//! | smooth | R00 and the boundary test of every vertex: a scan each | O(n²) |
 //! | garbage collection | renumber every edge's ends | O(n) |
 //! | weld meshes | a rebuild | O(n) |
 //!
@@ -44,7 +51,7 @@
 //! freed slots are filled by the last edge or polygon.
 
 use super::EdgeList;
-use crate::core::edit::EditOp;
+use crate::core::edit::{smooth_cost, EditOp};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::rewrite::{
@@ -67,6 +74,14 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::CollapseEdge
         | EditOp::SplitVertex
         | EditOp::WeldVertices => Cost::LocalTimesLinear,
+        // Whether the diagonal's ends are joined already (a scan of the edges around one),
+        // and the rewrite's one scan for the edges its polygons share with the rest.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Linear,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<EdgeList>(),
     }
 }
 

@@ -26,6 +26,12 @@
 //! | collapse edge | the link condition on the two rings (each neighbour of one end looked for in the other's ring, O(k²)) and the tetrahedron test | the faces around the removed vertex | O(k²) |
 //! | split vertex | one side of the fan | the moved faces, three edges, two faces | O(k) |
 //! | weld vertices | the two fans and their neighbours' | the faces around the welded vertex | O(k) |
+//! | insert edge | the face's cycle, one fan (is the diagonal an edge already?) | one face rewritten as two, one edge | O(k) |
+//! | delete edge | the edge's two faces (`fccw`, `fcw`) | two faces rewritten as one, the edge freed | O(k) |
+//! | set position | — | a position | O(1) |
+//! | select | every position | — | O(n) |
+//! | rotate, scale a selection | k positions | k positions | O(k) |
+//! | smooth | the fan of every vertex | every interior position | O(n) |
 //! | garbage collection | every record | vertices renumbered | O(n) |
 //! | weld meshes | [`weld_meshes`](crate::algorithms::weld::weld_meshes): both meshes | a rebuild | O(n) |
 //!
@@ -38,7 +44,7 @@
 
 use super::records::{ends_key, EdgeRecord};
 use super::WingedEdge;
-use crate::core::edit::EditOp;
+use crate::core::edit::{smooth_cost, EditOp};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::rewrite::{compact_vertices, mesh_edit_by_rewrite, retain_unmarked, FaceRewrite};
@@ -59,6 +65,14 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::WeldVertices => Cost::Local,
         // The link condition compares the two rings (see the table).
         EditOp::CollapseEdge => Cost::LocalSquared,
+        // The face's cycle and one fan (is the diagonal an edge already?); the edge's two
+        // faces: rewrites of O(k) records.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Local,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<WingedEdge>(),
     }
 }
 

@@ -10,6 +10,7 @@ use crate::core::topology::MeshTopology;
 use crate::families::half_edge::{HalfEdge, NONE};
 use glam::DVec3;
 
+mod edges;
 mod weld;
 
 impl<L: HalfEdgeLinksMut> HalfEdge<L> {

@@ -25,6 +25,12 @@
 //! | split face | a fan of k triangles around the new vertex | O(k) |
 //! | collapse edge | the link condition (each neighbour of one end looked for by `find_halfedge` around the other, O(k²)) and the tetrahedron test, then re-point the removed vertex's half-edges (O(k)) | O(k²) |
 //! | split vertex | move the half-edges of one side of the fan, add three edges and two triangles | O(k) |
+//! | insert edge | a walk round the face and a rotation round one end (is the diagonal an edge already?), a new edge and face linked in (`euler/edges.rs`) | O(k) |
+//! | delete edge | the two cycles joined into the first face, the edge and the second face marked | O(k) |
+//! | set position | the position written | O(1) |
+//! | select | a scan of the positions | O(n) |
+//! | rotate, scale a selection | k positions written | O(k) |
+//! | smooth | R00 and the boundary test of every vertex, each O(k) | O(n) |
 //! | garbage collection | rebuild the storage from the survivors | O(n) |
 //! | weld vertices | the lecture's "weld vertices": checks, rename the half-edges leaving one vertex, merge the one or two pairs of boundary edges where the fans meet (the freed pair marked) | O(k) + O(1) per merged edge (O(k) without `prev`) |
 //! | weld meshes | [`weld_meshes`](crate::algorithms::weld::weld_meshes): a rebuild from the welded face list | O(n) |
@@ -32,10 +38,11 @@
 mod euler;
 
 use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
-use crate::core::edit::{Deletion, EditOp, MeshEdit};
+use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::Cost;
+use crate::core::topology::MeshTopology;
 use glam::DVec3;
 
 /// What a half-edge storage must offer to be edited: writes by id, and new records.
@@ -140,7 +147,7 @@ impl Marks {
 }
 
 /// The cost table of the module docs; `predecessor` is the storage's cost of `prev`.
-fn edit_cost(op: EditOp, predecessor: Cost) -> Cost {
+fn edit_cost<M: MeshTopology>(op: EditOp, predecessor: Cost) -> Cost {
     match op {
         EditOp::AddVertex => Cost::Constant,
         EditOp::SplitEdge => predecessor,
@@ -154,6 +161,14 @@ fn edit_cost(op: EditOp, predecessor: Cost) -> Cost {
         | EditOp::SplitVertex => Cost::Local,
         // Each neighbour of one end looked for in the other's rotation (see the table).
         EditOp::CollapseEdge => Cost::LocalSquared,
+        // A walk around the face (and around a corner: is the diagonal an edge already?);
+        // the two faces' cycles relinked.
+        EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Local,
+        EditOp::SetPosition => Cost::Constant,
+        EditOp::Select => Cost::Linear,
+        // k: the vertices selected, each moved by `set_position`.
+        EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
+        EditOp::Smooth => smooth_cost::<M>(),
     }
 }
 
@@ -161,7 +176,7 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
     const DELETION: Deletion = Deletion::Marked;
 
     fn edit_cost(op: EditOp) -> Cost {
-        edit_cost(op, L::PREDECESSOR)
+        edit_cost::<Self>(op, L::PREDECESSOR)
     }
     fn supports(_op: EditOp) -> bool {
         true
@@ -171,7 +186,7 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
         Ok(VertexId(self.links.push_vertex(p)))
     }
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
-        self.live_vertex(v.0, EditOp::AddVertex)?;
+        self.live_vertex(v.0, EditOp::SetPosition)?;
         self.links.set_position(v.0, p);
         Ok(())
     }
@@ -211,6 +226,12 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
     }
     fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
         self.weld_checked(a.0, b.0)
+    }
+    fn insert_edge(&mut self, f: FaceId, a: VertexId, b: VertexId) -> Result<FaceId> {
+        self.insert_edge_checked(f.0, a.0, b.0).map(FaceId)
+    }
+    fn delete_edge(&mut self, e: EdgeId) -> Result<()> {
+        self.delete_edge_checked(e.0)
     }
     fn is_deleted_vertex(&self, v: VertexId) -> bool {
         self.marks.vertex(v.0)

@@ -1,0 +1,71 @@
+//! `topolab list`'s editing table: every editing operation a row (the lecture's operations
+//! among them), explicit storage a column, `—` where a structure does not offer one.
+
+use std::process::Command;
+use topolab_structures::EditOp;
+
+fn list() -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .arg("list")
+        .output()
+        .expect("run topolab");
+    assert_eq!(out.status.code(), Some(0));
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The editing table: its header's structure names and, per operation, its cells.
+fn editing_table(text: &str) -> (Vec<String>, Vec<(String, Vec<String>)>) {
+    let table = text
+        .split("Editing operations (MeshEdit) and their cost\n")
+        .nth(1)
+        .expect("the editing table");
+    let mut lines = table.lines();
+    let header: Vec<String> = lines
+        .next()
+        .expect("a header")
+        .split_whitespace()
+        .skip(1)
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .take_while(|l| !l.trim().is_empty())
+        .map(|l| {
+            let mut cells = l.split_whitespace().map(str::to_string);
+            (cells.next().expect("a name"), cells.collect())
+        })
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn every_editing_operation_is_a_row_and_explicit_storage_a_column() {
+    let (header, rows) = editing_table(&list());
+    let names: Vec<&str> = rows.iter().map(|(n, _)| n.as_str()).collect();
+    let all: Vec<&str> = EditOp::ALL.iter().map(|op| op.name()).collect();
+    assert_eq!(names, all);
+    let column = |s: &str| {
+        header
+            .iter()
+            .position(|h| h == s)
+            .unwrap_or_else(|| panic!("no {s} column in {header:?}"))
+    };
+    let cell = |s: &str, op: &str| {
+        let row = &rows.iter().find(|(n, _)| n == op).expect("a row").1;
+        assert_eq!(row.len(), header.len(), "{op}: {row:?}");
+        row[column(s)].clone()
+    };
+    // The lecture's contrast: a vertex moved in explicit storage is found in every polygon.
+    assert_eq!(cell("explicit", "set-position"), "O(n)");
+    assert_eq!(cell("vertex-list", "set-position"), "O(1)");
+    assert_eq!(cell("index-half-edge", "set-position"), "O(1)");
+    assert_eq!(cell("explicit", "rotate-selection"), "O(n)");
+    assert_eq!(cell("winged-edge", "rotate-selection"), "O(k)");
+    // Explicit storage offers no topological edit; the CHE levels hold triangles only.
+    assert_eq!(cell("explicit", "add-face"), "—");
+    assert_eq!(cell("che-l3", "insert-edge"), "—");
+    assert_eq!(cell("che-l3", "delete-edge"), "—");
+    assert_eq!(cell("edge-list", "insert-edge"), "O(n)");
+    assert_eq!(cell("index-half-edge", "delete-edge"), "O(k)");
+    assert_eq!(cell("vertex-list", "smooth"), "O(n²)");
+    assert_eq!(cell("index-half-edge", "smooth"), "O(n)");
+}
