@@ -2,7 +2,7 @@
 //! Surface_mesh benchmark; see [`crate::changing`]): every editable structure among
 //! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
 //! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
-//! on the closed tori of the run; and local refinement ([`local_refinement`]: adaptive
+//! on the closed tori of the run; and local refinement (the `local_refinement` module: adaptive
 //! refinement in one region of each torus, with the regular grid's refusal beside it).
 //!
 //! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
