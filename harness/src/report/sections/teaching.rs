@@ -1,5 +1,5 @@
 //! "Teaching": what each structure stores for the CHE thesis chapter's Figure 4.10, and
-//! edits shown record by record with the mesh before and after ([`edits`]).
+//! edits shown record by record with the mesh before and after (`edits`).
 
 use crate::report::format::esc;
 use crate::report::section::{Page, Section};
