@@ -201,8 +201,55 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
     } else {
         assert!(!html.contains("For Rust users."));
     }
+    local_refinement_has_every_editable_structure(&json, &html);
     findings_are_written_from_the_results(&out, ms);
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The changing section's local refinement: every editable structure of the registry is
+/// timed on the smallest torus or named in a note saying why not, every structure's result on
+/// a torus is the same mesh, and the regular grid's row is on the page.
+fn local_refinement_has_every_editable_structure(json: &serde_json::Value, html: &str) {
+    let local = &json["local_refinement"];
+    let cases = local["cases"].as_array().expect("local refinement cases");
+    let rows = local["rows"].as_array().expect("local refinement rows");
+    let smallest = cases
+        .iter()
+        .min_by_key(|c| c["faces"].as_u64().unwrap())
+        .expect("a torus refined");
+    let notes: Vec<&str> = json["notes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|n| n.as_str())
+        .filter(|n| n.starts_with("local refinement skipped"))
+        .collect();
+    for s in topolab::registry::NAMES
+        .iter()
+        .filter(|s| topolab_baselines::registry::is_editable(s))
+    {
+        let timed = rows
+            .iter()
+            .any(|r| r["structure"] == *s && r["mesh"] == smallest["mesh"]);
+        let noted = notes.iter().any(|n| n.contains(s));
+        assert!(
+            timed || noted,
+            "{s}: neither timed nor noted in local refinement"
+        );
+    }
+    for c in cases {
+        let results: Vec<&serde_json::Value> = rows
+            .iter()
+            .filter(|r| r["mesh"] == c["mesh"])
+            .map(|r| &r["result"])
+            .collect();
+        assert!(!results.is_empty(), "no structure refined {}", c["mesh"]);
+        assert!(results.iter().all(|r| *r == results[0]), "{results:?}");
+        assert_eq!(results[0]["faces"], c["faces_after"]);
+        assert!(c["faces_after"].as_u64() > c["faces"].as_u64());
+    }
+    assert!(html.contains("<h3>Local refinement: adaptive, in one region</h3>"));
+    assert!(html.contains("regular-grid, height-field</td><td colspan=6 class=l>cannot:"));
 }
 
 /// FINDINGS.md lists every structure on the largest torus with its R00 sweep as results.json

@@ -76,12 +76,80 @@ pub struct ChangingRow {
 /// The costs `M` declares for the operations of `workload`, as the report shows them
 /// (`split-face O(k), flip-edge O(k)`).
 pub fn declared<M: topolab_structures::MeshEdit>(workload: Changing) -> String {
-    workload
-        .operations()
+    declared_operations::<M>(workload.operations(), &[])
+}
+
+/// The costs `M` declares for `operations` and `queries` (each with how many per face of the
+/// input), as the report shows them (`split-edge O(1), r01 O(k)`).
+pub fn declared_operations<M: topolab_structures::MeshEdit>(
+    operations: &[(topolab_structures::EditOp, f64)],
+    queries: &[(topolab_structures::Operator, f64)],
+) -> String {
+    operations
         .iter()
         .map(|&(op, _)| format!("{op} {}", M::edit_cost(op).notation()))
+        .chain(
+            queries
+                .iter()
+                .map(|&(q, _)| format!("{} {}", q.name(), M::cost(q).notation())),
+        )
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// The changing section's local refinement: what it asked of each torus and how each
+/// structure did.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct LocalRefinement {
+    /// Per torus, the request and what it gave.
+    pub cases: Vec<LocalRefinementCase>,
+    /// Per torus and structure, the time.
+    pub rows: Vec<LocalRefinementRow>,
+}
+
+/// Adaptive refinement timed on one structure and torus (the changing section's local
+/// refinement table).
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct LocalRefinementRow {
+    /// The torus it started from.
+    pub mesh: String,
+    /// The structure.
+    pub structure: String,
+    /// Median seconds of the runs (the refinement only: each run starts from a fresh build,
+    /// not timed).
+    pub seconds: f64,
+    /// Runs.
+    pub runs: usize,
+    /// Nanoseconds per edge split, median.
+    pub ns_per_split: f64,
+    /// The refined mesh, the same on every structure (the refinement does not depend on it).
+    pub result: MeshChecksum,
+    /// The costs the structure declares for the operations the refinement does.
+    pub declared: String,
+}
+
+/// What the changing section asked of one torus for its local refinement, what it gave, and
+/// what a structure that can only refine everywhere would need instead.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct LocalRefinementCase {
+    /// The torus.
+    pub mesh: String,
+    /// Its faces.
+    pub faces: usize,
+    /// The longest edge left in the region: half the mean length of the faces' sides.
+    pub max_edge: f64,
+    /// The region's corners: the quarter of the bounding box with x and y at least the box
+    /// centre's.
+    pub region: [[f64; 3]; 2],
+    /// Edges split (the same on every structure).
+    pub splits: u64,
+    /// Faces after.
+    pub faces_after: usize,
+    /// Levels of uniform midpoint refinement (each halves every edge) that bring the torus's
+    /// longest edge to `max_edge`: what a structure that cannot refine locally must do.
+    pub uniform_levels: u32,
+    /// Faces after those levels: `faces · 4^levels`.
+    pub uniform_faces: u64,
 }
 
 /// Times `workload` `runs` times: each run builds a fresh mesh with `build` (not timed), runs

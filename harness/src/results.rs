@@ -43,6 +43,9 @@ pub struct Results {
     pub qhull: Option<String>,
     /// The changing workloads (√3 subdivision, the collapse test) on the editable structures.
     pub changing: Vec<crate::changing::ChangingRow>,
+    /// Adaptive refinement in one region of each torus on the editable structures (the
+    /// changing section's local refinement).
+    pub local_refinement: crate::changing::LocalRefinement,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
     pub targets: Vec<crate::targets::plan::Turns>,

@@ -62,10 +62,7 @@ fn not_editable(name: &str) -> Option<String> {
     }
     let why = match name {
         "regular-grid" | "height-field" => {
-            "a regular grid cannot refine locally: its vertices are implicit in (i, j) (the \
-             lecture's regular and mixed structures, topology given by the numbers of points), so \
-             splitting an edge would add a vertex that is no grid point and break the grid; only \
-             uniform refinement, to a finer grid, keeps it a grid"
+            topolab_structures::families::regular_grid::NO_LOCAL_REFINEMENT
         }
         _ => "it has no editing operations (it implements no MeshEdit)",
     };

@@ -174,6 +174,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         hull_fits: Vec::new(),
         qhull: None,
         changing: Vec::new(),
+        local_refinement: Default::default(),
         targets: Vec::new(),
         decimate: Vec::new(),
         teaching: Vec::new(),

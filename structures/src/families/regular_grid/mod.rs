@@ -51,6 +51,15 @@ pub use height_field::{HeightField, Positions};
 pub use implicit::{Implicit, RegularGrid};
 pub use shape::GridShape;
 
+/// Why a regular grid and a height field cannot refine locally (the lecture on polygon-mesh
+/// data structures: refinement should be possible "lokal und adaptiv", and the structures
+/// whose topology is implicit do not allow it), in the words `topolab refine --max-edge` and
+/// the report's local-refinement table both give.
+pub const NO_LOCAL_REFINEMENT: &str = "a regular grid cannot refine locally: its vertices are \
+    implicit in (i, j) (the lecture's regular and mixed structures, topology given by the \
+    numbers of points), so splitting an edge would add a vertex that is no grid point and break \
+    the grid; only uniform refinement, to a finer grid, keeps it a grid";
+
 use crate::core::ids::VertexId;
 use glam::DVec3;
 use std::fmt::Write;

@@ -2,7 +2,8 @@
 //! Surface_mesh benchmark; see [`crate::changing`]): every editable structure among
 //! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
 //! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
-//! on the closed tori of the run.
+//! on the closed tori of the run; and local refinement ([`local_refinement`]: adaptive
+//! refinement in one region of each torus, with the regular grid's refusal beside it).
 //!
 //! A structure whose edits scan the mesh (the vertex list's and the edge list's O(n) and
 //! O(k·n), declared by `MeshEdit::edit_cost`) would run each workload in quadratic time: it is
@@ -14,7 +15,12 @@
 //! [`LINEAR_EDIT_MAX_FACES`] faces: the estimate assumes 1 ns per element read, and the CHE
 //! levels' O(n) edits (an `EH` rebuild, a relabelling) cost far more per element.
 
-use crate::changing::{cross_check, declared, mesh_checksum, time, ChangingRow, MeshChecksum};
+mod local_refinement;
+
+use crate::changing::{
+    cross_check, declared, declared_operations, mesh_checksum, time, ChangingRow, LocalRefinement,
+    MeshChecksum,
+};
 use crate::phases::Phase;
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
@@ -26,7 +32,7 @@ use topolab_baselines::registry::{self, EditVisitor};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(any(has_openmesh, has_cgal))]
 use topolab_structures::MeshTopology;
-use topolab_structures::{Cost, MeshEdit, PolygonSoup};
+use topolab_structures::{Cost, EditOp, MeshEdit, Operator, PolygonSoup};
 
 // OpenMesh is built through MeshTopology::from_soup.
 #[cfg(has_openmesh)]
@@ -61,18 +67,8 @@ pub const LINEAR_EDIT_MAX_FACES: usize = 1_500;
 /// Why `M` does not run `w` on a mesh of `faces` faces, if it does not: the reason (the same
 /// words on every mesh, so that the notes group them) and what differs by mesh.
 fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, Option<String>)> {
-    let max = if quick {
-        MAX_SECONDS / 10.0
-    } else {
-        MAX_SECONDS
-    };
-    // A structure that lacks an operation of the workload (a Rust crate's adapter, which
-    // offers only its crate's operations) would have every run refused.
-    if let Some(&(op, _)) = w.operations().iter().find(|&&(op, _)| !M::supports(op)) {
-        return Some((
-            format!("it does not offer {op}, which the workload needs"),
-            None,
-        ));
+    if let Some(why) = lacks::<M>(w.operations()) {
+        return Some(why);
     }
     if w == Changing::Sqrt3 && !M::STABLE_EDGE_IDS {
         return Some((
@@ -80,34 +76,65 @@ fn skip<M: MeshEdit>(w: Changing, faces: usize, quick: bool) -> Option<(String, 
             None,
         ));
     }
+    too_long::<M>(w.operations(), &[], faces, quick)
+}
+
+/// Why `M` cannot run a workload doing `operations`: it lacks one of them (a Rust crate's
+/// adapter offers only its crate's operations), so every run would be refused.
+pub(crate) fn lacks<M: MeshEdit>(operations: &[(EditOp, f64)]) -> Option<(String, Option<String>)> {
+    operations
+        .iter()
+        .find(|&&(op, _)| !M::supports(op))
+        .map(|&(op, _)| {
+            (
+                format!("it does not offer {op}, which the workload needs"),
+                None,
+            )
+        })
+}
+
+/// Why `M` should not run a workload doing `operations` (each with how many per face of the
+/// input) on a mesh of `faces` faces: the costs it declares for them (and for `queries`, each
+/// with how many per face, that the workload asks beside its edits) predict more than
+/// [`MAX_SECONDS`] (a tenth in a quick run), or they are O(n) per step and the mesh is above
+/// [`LINEAR_EDIT_MAX_FACES`].
+pub(crate) fn too_long<M: MeshEdit>(
+    operations: &[(EditOp, f64)],
+    queries: &[(Operator, f64)],
+    faces: usize,
+    quick: bool,
+) -> Option<(String, Option<String>)> {
+    let max = if quick {
+        MAX_SECONDS / 10.0
+    } else {
+        MAX_SECONDS
+    };
+    let costs: Vec<(Cost, f64)> = operations
+        .iter()
+        .map(|&(op, per_face)| (M::edit_cost(op), per_face))
+        .chain(queries.iter().map(|&(q, per_face)| (M::cost(q), per_face)))
+        .collect();
+    let declared = declared_operations::<M>(operations, queries);
     // The mesh grows to about three times its faces (corners, edges): n ≈ 3 faces.
     let n = 3.0 * faces as f64;
-    let seconds: f64 = w
-        .operations()
+    let seconds: f64 = costs
         .iter()
-        .map(|&(op, per_face)| {
-            per_face * faces as f64 * elements(M::edit_cost(op), n) * SECONDS_PER_ELEMENT
-        })
+        .map(|&(c, per_face)| per_face * faces as f64 * elements(c, n) * SECONDS_PER_ELEMENT)
         .sum();
     if seconds > max {
         return Some((
             format!(
-                "its declared costs ({}) predict above {max} s at ≥ 1 ns per element read",
-                declared::<M>(w)
+                "its declared costs ({declared}) predict above {max} s at ≥ 1 ns per element read"
             ),
             Some(format!("about {} s", format_seconds(seconds))),
         ));
     }
-    let linear = w
-        .operations()
+    let linear = costs
         .iter()
-        .any(|&(op, per_face)| per_face > 0.0 && elements(M::edit_cost(op), n) >= n);
+        .any(|&(c, per_face)| per_face > 0.0 && elements(c, n) >= n);
     (linear && faces > LINEAR_EDIT_MAX_FACES).then(|| {
         (
-            format!(
-                "its declared costs ({}) are O(n) per edit: run up to {LINEAR_EDIT_MAX_FACES} faces",
-                declared::<M>(w)
-            ),
+            format!("its declared costs ({declared}) are O(n) per step: run up to {LINEAR_EDIT_MAX_FACES} faces"),
             None,
         )
     })
@@ -234,7 +261,7 @@ fn measure(
     quick: bool,
     full: bool,
     notes: &mut Vec<String>,
-) -> Result<Vec<ChangingRow>, ReportError> {
+) -> Result<(Vec<ChangingRow>, LocalRefinement), ReportError> {
     let mut rows = Vec::new();
     let mut skips = Vec::new();
     let editing: Vec<&str> = names
@@ -304,8 +331,10 @@ fn measure(
             ))
         })?;
     }
+    let runs = |faces| crate::report::clock::changing_runs(faces, quick, full);
+    let local = local_refinement::measure(cases, &editing, (quick, full), runs, &mut skips, notes)?;
     notes.extend(skips::group(&skips));
-    Ok(rows)
+    Ok((rows, local))
 }
 
 /// The report section.
@@ -358,12 +387,14 @@ impl Section for ChangingMeshes {
 
     fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
         let (req, r) = (run.request, &mut *run.results);
-        r.changing = measure(run.cases, &req.names, req.quick, req.full, &mut r.notes)?;
+        (r.changing, r.local_refinement) =
+            measure(run.cases, &req.names, req.quick, req.full, &mut r.notes)?;
         Ok(())
     }
 
     fn render(&self, h: &mut String, page: &Page) {
         render(h, &page.r.changing);
+        local_refinement::render(h, &page.r.local_refinement);
     }
 }
 
