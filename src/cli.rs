@@ -70,24 +70,34 @@ pub enum Command {
         /// `explain che --trace r00 --vertex N` follows Algorithm 7 at each level.
         #[arg(long)]
         trace: Option<String>,
-        /// The vertex `--trace` asks about.
+        /// The vertex `--trace` asks about, or the vertex `--op` edits (`delete-vertex`,
+        /// `split-vertex` with `--vertices L,R`, `garbage-collection` after deleting it).
         #[arg(long)]
         vertex: Option<u32>,
         /// The edge `--trace` or `--op` asks about, numbered as the mesh's edges in order of
         /// first appearance (the edge list's ids) on every structure.
         #[arg(long)]
         edge: Option<u32>,
-        /// The face `--trace` asks about.
+        /// The face `--trace` asks about, or the face `--op` edits (`delete-face`,
+        /// `split-face`).
         #[arg(long)]
         face: Option<u32>,
+        /// With `--op`, comma-separated vertices: the corners of `add-face`, the two of
+        /// `weld-vertices` (the second merged into the first), or the left and right
+        /// neighbours of `split-vertex --vertex V`.
+        #[arg(long, value_delimiter = ',', requires = "op")]
+        vertices: Vec<u32>,
         /// With `--trace`: more structures side by side, comma-separated.
         #[arg(long, value_delimiter = ',', requires = "trace")]
         structures: Vec<String>,
-        /// Do one edit of `--edge E` and print the records it writes, old -> new, and what it
-        /// reads (`collapse`: the edge's first vertex into its second); a refused edit exits
-        /// with code 1 and the reason. Without `--edge`, the first edge on which the edit
-        /// succeeds (on the open tetrahedron, or, where none does, on the canonical `grid`), named, with
-        /// an edge where it is refused and why. `explain che --op ...` edits the four CHE levels.
+        /// Do one edit (any editing operation, by its name; `flip`, `split` and `collapse` for
+        /// the three edge operations) on the element `--edge`, `--face`, `--vertex` or
+        /// `--vertices` names, as the operation needs, and print the records it writes,
+        /// old -> new, and what it reads (`collapse-edge`: the edge's first vertex into its
+        /// second). A refused edit exits with code 1 and the reason. Without an element, the
+        /// first on which the edit succeeds (on the open tetrahedron, or, where none does, on
+        /// the canonical `grid`), named, with one where it is refused and why.
+        /// `explain che --op ...` edits the four CHE levels.
         #[arg(long, value_enum, conflicts_with = "trace")]
         op: Option<commands::explain_edit::ExplainOp>,
     },
@@ -153,9 +163,22 @@ pub fn run(cli: Cli) -> u8 {
             name,
             mesh,
             edge,
+            face,
+            vertex,
+            vertices,
             op: Some(op),
             ..
-        } => commands::explain_edit::run(&name, mesh.as_deref(), op, edge),
+        } => commands::explain_edit::run(
+            &name,
+            mesh.as_deref(),
+            op.0,
+            &commands::explain_edit::Asked {
+                edge,
+                face,
+                vertex,
+                vertices,
+            },
+        ),
         Command::Explain {
             name,
             mesh,
@@ -165,6 +188,7 @@ pub fn run(cli: Cli) -> u8 {
             face,
             structures,
             op: None,
+            ..
         } => commands::explain::run_traced(
             &name,
             mesh.as_deref(),

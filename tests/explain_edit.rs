@@ -1,8 +1,10 @@
-//! `topolab explain NAME --op flip|split|collapse --edge E`: the records an edit writes, and
-//! a refused edit's exit code and reason.
+//! `topolab explain NAME --op OP [--edge E | --face F | --vertex V | --vertices A,B]`: the
+//! records an edit writes, and a refused edit's exit code and reason, for every editing
+//! operation on every structure `--op` explains.
 
 use std::process::{Command, Output};
-use topolab::commands::explain_edit::{editable, run, ExplainOp};
+use topolab::commands::explain_edit::{editable, run, Asked};
+use topolab_structures::{EditOp, Refusal};
 
 fn topolab(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_topolab"))
@@ -23,7 +25,8 @@ fn added(text: &str) -> Vec<&str> {
 fn a_split_names_the_records_it_adds_and_rewrites() {
     // The open tetrahedron has 4 vertices, 3 triangles and 6 edges: a split adds vertex 4
     // and, splitting an interior edge, two triangles.
-    let half_edge = run("index-half-edge", None, ExplainOp::Split, Some(1)).expect("edge 1 splits");
+    let half_edge =
+        run("index-half-edge", None, EditOp::SplitEdge, &Asked::edge(1)).expect("edge 1 splits");
     let new = added(&half_edge);
     assert!(
         new.contains(&"v4") && new.contains(&"f3") && new.contains(&"f4"),
@@ -39,7 +42,8 @@ fn a_split_names_the_records_it_adds_and_rewrites() {
         "next links change: {half_edge}"
     );
 
-    let che = run("che", None, ExplainOp::Split, Some(1)).expect("edge 1 splits at every level");
+    let che =
+        run("che", None, EditOp::SplitEdge, &Asked::edge(1)).expect("edge 1 splits at every level");
     for level in 0..4 {
         assert!(
             che.contains(&format!("che-l{level}: split-edge of edge 1")),
@@ -56,14 +60,23 @@ fn a_split_names_the_records_it_adds_and_rewrites() {
         2,
         "the new vertex's VH at levels 2 and 3: {che}"
     );
-    assert!(che.contains("G[]: 4 vertices -> 5 vertices"), "{che}");
+    assert_eq!(
+        count("G[4]"),
+        4,
+        "the new vertex's position at every level: {che}"
+    );
 }
 
 #[test]
 fn a_collapse_marks_its_vertex_deleted_on_a_torus() {
     for name in editable() {
-        let text = run(name, Some("torus:50"), ExplainOp::Collapse, Some(0))
-            .unwrap_or_else(|f| panic!("{name}: {}", f.message));
+        let text = run(
+            name,
+            Some("torus:50"),
+            EditOp::CollapseEdge,
+            &Asked::edge(0),
+        )
+        .unwrap_or_else(|f| panic!("{name}: {}", f.message));
         assert!(
             text.lines()
                 .any(|l| l.starts_with("+ v") && l.contains(".deleted: yes")),
@@ -109,6 +122,93 @@ fn bad_requests_are_usage_errors() {
     for args in [
         vec!["explain", "che-l1", "--op", "twist", "--edge", "1"],
         vec!["explain", "che-l1", "--op", "flip", "--edge", "6"],
+        // Elements past the open tetrahedron's 4 vertices, 6 edges, 3 faces.
+        vec![
+            "explain",
+            "winged-edge",
+            "--op",
+            "delete-face",
+            "--face",
+            "3",
+        ],
+        vec![
+            "explain",
+            "winged-edge",
+            "--op",
+            "delete-vertex",
+            "--vertex",
+            "4",
+        ],
+        vec![
+            "explain",
+            "che",
+            "--op",
+            "weld-vertices",
+            "--vertices",
+            "0,4",
+        ],
+        vec![
+            "explain",
+            "edge-list",
+            "--op",
+            "split-vertex",
+            "--vertex",
+            "0",
+            "--vertices",
+            "1,9",
+        ],
+        // The wrong kind of element for the operation.
+        vec![
+            "explain",
+            "vertex-list",
+            "--op",
+            "delete-face",
+            "--edge",
+            "1",
+        ],
+        vec![
+            "explain",
+            "vertex-list",
+            "--op",
+            "add-vertex",
+            "--vertex",
+            "1",
+        ],
+        vec![
+            "explain",
+            "che",
+            "--op",
+            "weld-vertices",
+            "--vertices",
+            "0,1,2",
+        ],
+        vec!["explain", "che", "--op", "add-face", "--vertices", "0,1"],
+        vec![
+            "explain",
+            "index-half-edge",
+            "--op",
+            "split-vertex",
+            "--vertex",
+            "0",
+        ],
+        vec![
+            "explain",
+            "index-half-edge",
+            "--op",
+            "flip",
+            "--edge",
+            "1",
+            "--face",
+            "0",
+        ],
+        vec![
+            "explain",
+            "index-half-edge",
+            "--op",
+            "weld-meshes",
+            "--face",
+            "0",
+        ],
         vec!["explain", "explicit", "--op", "flip", "--edge", "1"],
         vec!["explain", "regular-grid", "--op", "split", "--edge", "1"],
         vec![
@@ -119,7 +219,20 @@ fn bad_requests_are_usage_errors() {
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
     }
+    // A wrong kind says what the operation takes; an id past the count, how many there are.
+    let out = topolab(&["explain", "che", "--op", "delete-face", "--edge", "1"]);
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("delete-face takes --face F"),
+        "{out:?}"
+    );
+    let out = topolab(&["explain", "che", "--op", "delete-face", "--face", "3"]);
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("no face 3 (it has 3"),
+        "{out:?}"
+    );
 }
 
 /// The lines of `text` that change a record (`  key.field: old -> new` or `  key: old -> new`).
@@ -156,7 +269,8 @@ fn a_split_on_the_face_rewrite_structures_names_their_records() {
             .filter(|k| k.starts_with(prefix) && k[1..].chars().all(|c| c.is_ascii_digit()))
             .count()
     };
-    let winged = run("winged-edge", None, ExplainOp::Split, Some(1)).expect("edge 1 splits");
+    let winged =
+        run("winged-edge", None, EditOp::SplitEdge, &Asked::edge(1)).expect("edge 1 splits");
     let new = added(&winged);
     assert_eq!(
         (count(&new, 'v'), count(&new, 'f'), count(&new, 'e')),
@@ -185,7 +299,7 @@ fn a_split_on_the_face_rewrite_structures_names_their_records() {
         "{winged}"
     );
 
-    let edges = run("edge-list", None, ExplainOp::Split, Some(1)).expect("edge 1 splits");
+    let edges = run("edge-list", None, EditOp::SplitEdge, &Asked::edge(1)).expect("edge 1 splits");
     let new = added(&edges);
     assert_eq!(
         (count(&new, 'V'), count(&new, 'P'), count(&new, 'E')),
@@ -207,7 +321,8 @@ fn a_split_on_the_face_rewrite_structures_names_their_records() {
         "polygons rewritten: {edges}"
     );
 
-    let corners = run("vertex-list", None, ExplainOp::Split, Some(1)).expect("edge 1 splits");
+    let corners =
+        run("vertex-list", None, EditOp::SplitEdge, &Asked::edge(1)).expect("edge 1 splits");
     let new = added(&corners);
     assert_eq!((count(&new, 'v'), count(&new, 'f')), (1, 2), "{corners}");
     assert_eq!(
@@ -337,7 +452,10 @@ fn every_edit_succeeds_by_default_and_names_a_refused_edge() {
             let stdout = String::from_utf8_lossy(&out.stdout);
             let stderr = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(0), "{name} {op}: {stderr}");
-            assert!(stdout.contains("no --edge given: edge "), "{stdout}");
+            assert!(
+                stdout.contains("no element given (--edge E): edge "),
+                "{stdout}"
+            );
             assert!(stdout.contains("writes (old -> new"), "{stdout}");
             let on_grid = stdout.contains("the canonical mesh `grid`");
             assert_eq!(on_grid, op != "split", "{name} {op}: {stdout}");
@@ -367,12 +485,271 @@ fn every_edit_succeeds_by_default_and_names_a_refused_edge() {
 fn a_rust_crate_is_not_explained_by_op_and_says_why() {
     for name in ["tri-mesh", "lox-half-edge"] {
         assert!(!editable().contains(&name), "{name}");
-        let failure = run(name, None, ExplainOp::Split, None).expect_err(name);
+        let failure = run(name, None, EditOp::SplitEdge, &Asked::default()).expect_err(name);
         assert_eq!(failure.code, 2, "{name}: {}", failure.message);
         assert!(
             failure.message.contains("inside that crate"),
             "{}",
             failure.message
+        );
+    }
+}
+
+/// What the heading of `op`'s explanation names, by the kind of element it edits: written per
+/// operation (not derived from the code that chooses it), exhaustive so that a new operation
+/// is a compile error here until its test says what it should name.
+fn named_element(op: EditOp) -> &'static str {
+    match op {
+        EditOp::AddVertex => "of a new vertex at ",
+        EditOp::AddFace => "of the face on vertices ",
+        EditOp::DeleteFace | EditOp::SplitFace => "of face ",
+        EditOp::DeleteVertex | EditOp::GarbageCollection => "of vertex ",
+        EditOp::FlipEdge | EditOp::SplitEdge | EditOp::CollapseEdge => "of edge ",
+        EditOp::SplitVertex => ", between its neighbours ",
+        EditOp::WeldVertices => "of vertices ",
+        EditOp::WeldMeshes => "its mirror image",
+        EditOp::SetPosition => "moved halfway to the mesh's centroid",
+        EditOp::Select | EditOp::RotateSelection | EditOp::ScaleSelection => "(the selection: ",
+        EditOp::InsertEdge => ", by a new edge from v",
+        EditOp::DeleteEdge => "of edge ",
+        EditOp::Smooth => "of every vertex of the mesh",
+    }
+}
+
+/// Does structure `name` (`che`: its four levels) lack `op`? The CHE stores triangles only, so
+/// it has no polygon to split by a diagonal (insert-edge) and cannot hold the polygon merging
+/// two triangles makes (delete-edge).
+fn not_offered(name: &str, op: EditOp) -> bool {
+    name.starts_with("che") && matches!(op, EditOp::InsertEdge | EditOp::DeleteEdge)
+}
+
+/// Every operation, by its name, succeeds by default on every structure `--op` explains that
+/// offers it (and on the four CHE levels at once), names its element and writes at least one
+/// record (but a selection, which writes none); a structure that does not offer it says so.
+#[test]
+fn every_operation_succeeds_by_default_on_every_structure_and_names_its_element() {
+    let mut names = editable();
+    names.push("che");
+    for op in EditOp::ALL {
+        for &name in &names {
+            let out = topolab(&["explain", name, "--op", op.name()]);
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            if not_offered(name, op) {
+                assert_eq!(out.status.code(), Some(1), "{name} {op}: {stderr}");
+                assert!(
+                    stderr.contains(&format!("refuses {op}: {}", Refusal::NotImplemented)),
+                    "{name} {op}: {stderr}"
+                );
+                continue;
+            }
+            assert_eq!(out.status.code(), Some(0), "{name} {op}: {stderr}");
+            let headings: Vec<&str> = stdout
+                .lines()
+                .filter(|l| l.contains(&format!(": {op} of ")))
+                .collect();
+            let expected = if name == "che" { 4 } else { 1 };
+            assert_eq!(headings.len(), expected, "{name} {op}: {stdout}");
+            for h in headings {
+                assert!(h.contains(named_element(op)), "{name} {op}: {h}");
+            }
+            assert!(stdout.contains("writes (old -> new"), "{stdout}");
+            assert_eq!(
+                stdout.contains("(no record changed)"),
+                op == EditOp::Select,
+                "{name} {op}: {stdout}"
+            );
+            assert!(!stdout.contains("not described"), "{name} {op}: {stdout}");
+        }
+    }
+}
+
+/// An element asked for with `--edge`, `--face`, `--vertex` or `--vertices` where the edit
+/// must be refused, with its typed reason, on every structure. Each case's reason follows
+/// from the mesh, not from the code: the open tetrahedron is triangles (t, t+1 mod 3, 3),
+/// boundary 0-1-2; the grid's faces are (0,1,5), (0,5,4), (1,2,6), (1,6,5), ... (4 vertices a
+/// row).
+#[test]
+fn a_refused_request_exits_with_its_typed_reason_on_every_structure() {
+    let cases: [(&[&str], EditOp, Refusal); 12] = [
+        // Edge 0 = v0 - v1 is on the boundary: one triangle.
+        (&["--edge", "0"], EditOp::FlipEdge, Refusal::BoundaryEdge),
+        // Edge 1 = v1 - v3: its flip would join v0 and v2, a boundary edge already.
+        (&["--edge", "1"], EditOp::FlipEdge, Refusal::EdgeExists),
+        // The rings of v0 and v1 share v2, on no triangle of the edge (docs/editing.md).
+        (
+            &["--edge", "0"],
+            EditOp::CollapseEdge,
+            Refusal::LinkCondition,
+        ),
+        // v0 and v2, the third corners, are neighbours of valence 3 (docs/editing.md).
+        (
+            &["--edge", "1"],
+            EditOp::CollapseEdge,
+            Refusal::TetrahedronTest,
+        ),
+        // A repeated corner.
+        (&["--vertices", "0,1,1"], EditOp::AddFace, Refusal::BadFace),
+        // Face (0, 1, 3) runs 0 -> 1 already: a second face running it the same way.
+        (
+            &["--vertices", "0,1,2"],
+            EditOp::AddFace,
+            Refusal::NonManifoldEdge,
+        ),
+        // Every two vertices of the tetrahedron share a face.
+        (
+            &["--vertices", "0,1"],
+            EditOp::WeldVertices,
+            Refusal::BadFace,
+        ),
+        (
+            &["--vertices", "2,2"],
+            EditOp::WeldVertices,
+            Refusal::SameVertex,
+        ),
+        // Face 3 = (1, 6, 5) lies between (0, 1, 5) and (1, 2, 6) around the boundary vertex
+        // 1: without it, v1 has two fans.
+        (
+            &["--face", "3", "--mesh", "grid"],
+            EditOp::DeleteFace,
+            Refusal::NonManifoldVertex,
+        ),
+        // v10 is two rows above v0: not its neighbour.
+        (
+            &["--vertex", "0", "--vertices", "1,10", "--mesh", "grid"],
+            EditOp::SplitVertex,
+            Refusal::NotNeighbours,
+        ),
+        // A torus is closed: no boundary vertex to weld to its mirror image.
+        (
+            &["--mesh", "torus:50"],
+            EditOp::WeldMeshes,
+            Refusal::NothingToWeld,
+        ),
+        // The old name of the operation asks the same.
+        (
+            &["--edge", "0"],
+            EditOp::CollapseEdge,
+            Refusal::LinkCondition,
+        ),
+    ];
+    let mut names = editable();
+    names.push("che");
+    for (i, (flags, op, reason)) in cases.iter().enumerate() {
+        let op_name = if i == cases.len() - 1 {
+            "collapse"
+        } else {
+            op.name()
+        };
+        for &name in &names {
+            let mut args = vec!["explain", name, "--op", op_name];
+            args.extend_from_slice(flags);
+            let out = topolab(&args);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+            assert!(
+                stderr.contains(&format!("refuses {op}: {reason}")),
+                "{args:?}: {stderr}"
+            );
+            assert!(
+                out.stdout.is_empty(),
+                "{args:?}: nothing printed before the refusal"
+            );
+            assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        }
+    }
+}
+
+/// Without an element, the refused one the explanation names (`try --...`) is refused when
+/// asked for, on the index half-edge the choice is made on, with the reason it gave.
+#[test]
+fn the_refused_element_named_by_default_is_refused_with_that_reason() {
+    let mut named = 0;
+    for op in EditOp::ALL {
+        let out = topolab(&["explain", "index-half-edge", "--op", op.name()]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let Some(hint) = stdout.split("; it is refused on ").nth(1) else {
+            continue;
+        };
+        named += 1;
+        let hint = hint.lines().next().unwrap();
+        let reason = hint
+            .split(&format!("refuses {op}: "))
+            .nth(1)
+            .and_then(|r| r.split("): try ").next())
+            .unwrap_or_else(|| panic!("{op}: {hint}"));
+        let flags = hint
+            .split("): try ")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{hint}"));
+        let mut args = vec!["explain", "index-half-edge", "--op", op.name()];
+        args.extend(flags.split_whitespace());
+        let out = topolab(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(reason), "{args:?}: {reason} / {stderr}");
+    }
+    // Flips, collapses, face additions, vertex splits and vertex welds have a refused element
+    // among the first tried; adding a vertex, splitting a face and collecting garbage are
+    // never refused on a valid mesh.
+    assert!(named >= 5, "{named}");
+}
+
+/// Inserting and deleting an edge refused with their reasons on every structure that offers
+/// them: on the open tetrahedron (triangles (t, t+1 mod 3, 3)), corners 0 and 1 of face 0 are
+/// neighbours in it, so no diagonal joins them; edge 0 = v0 - v1 borders one face only.
+#[test]
+fn edge_insertion_and_deletion_are_refused_with_their_reasons() {
+    let cases: [(&[&str], EditOp, Refusal); 2] = [
+        (
+            &["--face", "0", "--vertices", "0,1"],
+            EditOp::InsertEdge,
+            Refusal::NotDiagonal,
+        ),
+        (&["--edge", "0"], EditOp::DeleteEdge, Refusal::BoundaryEdge),
+    ];
+    let mut names = editable();
+    names.push("che");
+    for (flags, op, reason) in cases {
+        for &name in &names {
+            let mut args = vec!["explain", name, "--op", op.name()];
+            args.extend_from_slice(flags);
+            let out = topolab(&args);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            let reason = if not_offered(name, op) {
+                Refusal::NotImplemented
+            } else {
+                reason
+            };
+            assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+            assert!(
+                stderr.contains(&format!("refuses {op}: {reason}")),
+                "{args:?}: {stderr}"
+            );
+            assert!(out.stdout.is_empty(), "{args:?}");
+        }
+    }
+}
+
+/// Moving a vertex writes its position and nothing else: the new coordinates appear among the
+/// records written, and the faces are untouched.
+#[test]
+fn set_position_writes_the_vertex_position_only() {
+    for name in editable() {
+        let out = topolab(&["explain", name, "--op", "set-position", "--vertex", "3"]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(0), "{name}: {stdout}");
+        let writes = stdout
+            .split("writes (old -> new; + added, - removed):\n")
+            .nth(1)
+            .unwrap();
+        let lines: Vec<&str> = writes.lines().take_while(|l| !l.is_empty()).collect();
+        assert!(!lines.is_empty(), "{name}: {stdout}");
+        assert!(
+            lines
+                .iter()
+                .all(|l| !l.starts_with('+') && !l.starts_with('-')),
+            "{name}: nothing added or removed: {lines:?}"
         );
     }
 }

@@ -510,3 +510,90 @@ fn a_quick_report_measures_the_lectures_operations_on_every_editable_structure()
     }
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// The teaching section draws a flip, an edge split, a collapse and a vertex split on the
+/// index half-edge, the winged-edge and the CHE's level 2: a picture before and one after
+/// each, and the records it wrote, which results.json keeps and which are the lines
+/// `topolab explain NAME --op OP` prints.
+#[test]
+fn the_teaching_section_shows_four_edits_before_and_after_on_three_structures() {
+    let out = out_dir("teaching-edits");
+    let status = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args([
+            "report",
+            "--quick",
+            "--sizes",
+            "200",
+            "--meshes",
+            "grid",
+            "--structures",
+            "index-half-edge",
+            "--probe-mb",
+            "4",
+            "--sections",
+            "teaching",
+            "--out",
+        ])
+        .arg(&out)
+        .status()
+        .expect("run topolab");
+    assert!(status.success(), "topolab report failed: {status}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let edits = json["teaching_edits"].as_array().expect("teaching_edits");
+    assert_eq!(edits.len(), 12, "{edits:?}");
+    for op in ["flip-edge", "split-edge", "collapse-edge", "split-vertex"] {
+        for structure in ["index-half-edge", "winged-edge", "che-l2"] {
+            let e = edits
+                .iter()
+                .find(|e| e["op"] == op && e["structure"] == structure)
+                .unwrap_or_else(|| panic!("no {op} on {structure}"));
+            for side in ["before", "after"] {
+                assert!(
+                    !e[side]["faces"].as_array().unwrap().is_empty(),
+                    "{op} {structure} {side}"
+                );
+            }
+            // The block of this edit: its two pictures, before and after, each numbering the
+            // vertices.
+            let start = html
+                .find(&format!(
+                    "<div class=edit data-op=\"{op}\" data-structure=\"{structure}\">"
+                ))
+                .unwrap_or_else(|| panic!("no block for {op} on {structure}"));
+            let block = &html[start..];
+            let block = &block[..block.find("</details>").unwrap()];
+            assert_eq!(
+                block.matches("class=\"edit-picture\"").count(),
+                2,
+                "{block}"
+            );
+            assert!(block.contains(&format!(">before {op}</text>")), "{block}");
+            assert!(block.contains(&format!(">after {op}</text>")), "{block}");
+            assert!(block.contains(">0</text>"), "{block}");
+            // The lines explain --op prints for the same edit on the same default element.
+            let cli = Command::new(env!("CARGO_BIN_EXE_topolab"))
+                .args(["explain", structure, "--op", op])
+                .output()
+                .expect("run topolab");
+            let text = String::from_utf8_lossy(&cli.stdout);
+            let printed: Vec<&str> = text
+                .split("writes (old -> new; + added, - removed):\n")
+                .nth(1)
+                .unwrap()
+                .lines()
+                .take_while(|l| !l.is_empty())
+                .collect();
+            let kept: Vec<&str> = e["changes"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|l| l.as_str().unwrap())
+                .collect();
+            assert_eq!(kept, printed, "{op} on {structure}");
+            assert!(!kept.is_empty());
+        }
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}

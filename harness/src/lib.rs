@@ -16,6 +16,7 @@ pub mod checksum;
 pub mod compare;
 pub mod counting;
 pub mod decimate;
+pub mod edit_explain;
 pub mod findings;
 pub mod fit;
 pub mod html;

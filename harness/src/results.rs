@@ -56,6 +56,9 @@ pub struct Results {
     pub decimate: Vec<crate::decimate::DecimateRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
+    /// Edits shown record by record, with the mesh before and after (teaching section,
+    /// [`crate::edit_explain::teaching_edits`]).
+    pub teaching_edits: Vec<TeachingEdit>,
     /// Reads per query of every operator on every structure against mesh size, counted
     /// ([`crate::reads::count`]).
     pub reads: Vec<ReadsRow>,
@@ -365,6 +368,40 @@ pub struct Teaching {
     pub structure: String,
     /// Its `explain` text.
     pub text: String,
+}
+
+/// One edit on one structure for the teaching section: the records it wrote, as
+/// `topolab explain NAME --op OP` prints them, and the mesh before and after.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct TeachingEdit {
+    /// The operation.
+    pub op: topolab_structures::EditOp,
+    /// The structure.
+    pub structure: String,
+    /// The mesh, in words.
+    pub mesh: String,
+    /// The element edited, in words ("edge 1 (v1 - v3)").
+    pub subject: String,
+    /// The records that changed, one line each (`  key.field: old -> new`, `+ key: new`,
+    /// `- key: old`).
+    pub changes: Vec<String>,
+    /// The mesh before the edit, the element marked.
+    pub before: EditPicture,
+    /// The mesh after it, what the edit made marked.
+    pub after: EditPicture,
+}
+
+/// A small mesh to draw: its vertices (`None` where deleted), its faces and what is marked.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct EditPicture {
+    /// Each vertex's position, `None` for a deleted vertex.
+    pub vertices: Vec<Option<[f64; 3]>>,
+    /// The live faces, each its corners counter-clockwise.
+    pub faces: Vec<Vec<u32>>,
+    /// The vertices drawn marked.
+    pub marked_vertices: Vec<u32>,
+    /// The edges drawn marked, by their ends.
+    pub marked_edges: Vec<[u32; 2]>,
 }
 
 // The rows whose modules compute them from the records above (limits, hulls, reads per

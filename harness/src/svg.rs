@@ -1,5 +1,6 @@
 //! SVG drawings of the report: bar charts (drawn with plotters, like [`crate::plot`]'s log-log
-//! plots), mesh thumbnails ([`crate::thumbnail`]) and the CHE thesis chapter's Figure 4.10.
+//! plots), mesh thumbnails ([`crate::thumbnail`]), the CHE thesis chapter's Figure 4.10 and a
+//! small mesh before or after an edit ([`edit_picture`]).
 //! Everything is inline SVG with real `<text>`, no fonts or network. The thumbnails and the
 //! figure are drawings, not charts, and are written by hand: they place polygons and labels in
 //! their own geometry (a shaded projection of a mesh, an unfolded tetrahedron), which a chart
@@ -7,6 +8,7 @@
 
 use crate::plot::{self, Style};
 use crate::report::format::esc;
+use crate::results::EditPicture;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::fmt::Write;
@@ -209,6 +211,93 @@ pub fn figure_4_10() -> String {
     s
 }
 
+/// The colour of what an edit picture marks: the element edited, or what the edit made.
+pub const EDIT_MARK: &str = "#c0392b";
+
+/// A small mesh before or after an edit ([`EditPicture`]), seen from above (its x and y,
+/// where the lab's small meshes lie: the grid in z = 0, the open tetrahedron with its base
+/// there and its apex above the middle), fitted into `size` × `size` pixels under `title`:
+/// every face filled, every live vertex numbered, the marked edges and vertices in
+/// [`EDIT_MARK`].
+pub fn edit_picture(picture: &EditPicture, title: &str, size: f64) -> String {
+    let live: Vec<(usize, [f64; 3])> = picture
+        .vertices
+        .iter()
+        .enumerate()
+        .filter_map(|(v, p)| p.map(|p| (v, p)))
+        .collect();
+    let (top, margin) = (24.0, 16.0);
+    let mut s = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="edit-picture" width="{size}" height="{}" viewBox="0 0 {size} {}" font-family="sans-serif"><text x="{}" y="16" font-size="13" text-anchor="middle">{}</text>"#,
+        size + top,
+        size + top,
+        size / 2.0,
+        esc(title)
+    );
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for (_, p) in &live {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let span = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-12);
+    let scale = (size - 2.0 * margin) / span;
+    // Centred in the box, y upwards.
+    let off = (
+        margin + ((size - 2.0 * margin) - (hi[0] - lo[0]) * scale) / 2.0,
+        margin + ((size - 2.0 * margin) - (hi[1] - lo[1]) * scale) / 2.0,
+    );
+    let at = |v: u32| -> Option<(f64, f64)> {
+        let p = picture.vertices.get(v as usize).copied().flatten()?;
+        Some((
+            off.0 + (p[0] - lo[0]) * scale,
+            top + size - off.1 - (p[1] - lo[1]) * scale,
+        ))
+    };
+    for (t, f) in picture.faces.iter().enumerate() {
+        let points: Option<Vec<String>> = f
+            .iter()
+            .map(|&v| at(v).map(|(x, y)| format!("{x:.1},{y:.1}")))
+            .collect();
+        if let Some(points) = points {
+            let _ = write!(
+                s,
+                r##"<polygon points="{}" fill="{}" fill-opacity="0.8" stroke="#555" stroke-width="1"/>"##,
+                points.join(" "),
+                FIGURE_4_10_FILLS[t % 3]
+            );
+        }
+    }
+    for [a, b] in &picture.marked_edges {
+        if let (Some(p), Some(q)) = (at(*a), at(*b)) {
+            let _ = write!(
+                s,
+                r#"<line class="marked" x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{EDIT_MARK}" stroke-width="3.5"/>"#,
+                p.0, p.1, q.0, q.1
+            );
+        }
+    }
+    for (v, _) in &live {
+        let Some((x, y)) = at(*v as u32) else {
+            continue;
+        };
+        let marked = picture.marked_vertices.contains(&(*v as u32));
+        let (fill, colour) = if marked {
+            (EDIT_MARK, "white")
+        } else {
+            ("white", "black")
+        };
+        let _ = write!(
+            s,
+            r##"<circle cx="{x:.1}" cy="{y:.1}" r="9" fill="{fill}" stroke="#333"/><text x="{x:.1}" y="{:.1}" font-size="11" text-anchor="middle" fill="{colour}">{v}</text>"##,
+            y + 4.0
+        );
+    }
+    s.push_str("</svg>");
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -224,5 +313,32 @@ mod tests {
         // plotters writes colours in capitals.
         assert!(b.contains("24.0 B") && b.to_lowercase().contains(&style.hex()));
         assert!(b.contains("<title>containers: 20.0 B</title>") && b.contains(">\nx\n</text>"));
+    }
+
+    #[test]
+    fn an_edit_picture_numbers_the_live_vertices_and_marks_what_it_is_asked_to() {
+        // Two triangles on a square; vertex 4 deleted: it is neither drawn nor numbered.
+        let p = EditPicture {
+            vertices: vec![
+                Some([0.0, 0.0, 0.0]),
+                Some([1.0, 0.0, 0.0]),
+                Some([1.0, 1.0, 0.0]),
+                Some([0.0, 1.0, 0.0]),
+                None,
+            ],
+            faces: vec![vec![0, 1, 2], vec![0, 2, 3]],
+            marked_vertices: vec![2],
+            marked_edges: vec![[0, 2]],
+        };
+        let svg = edit_picture(&p, "before <flip>", 160.0);
+        assert_eq!(svg.matches("<polygon").count(), 2);
+        assert_eq!(svg.matches("<circle").count(), 4);
+        assert!(!svg.contains(">4</text>"), "{svg}");
+        assert_eq!(svg.matches(r#"class="marked""#).count(), 1);
+        assert_eq!(svg.matches(&format!(r#"fill="{EDIT_MARK}""#)).count(), 1);
+        assert!(svg.contains("before &lt;flip&gt;"), "{svg}");
+        // The square fills the box: vertex 0 bottom left, vertex 2 top right.
+        assert!(svg.contains(r#"cx="16.0" cy="168.0""#), "{svg}");
+        assert!(svg.contains(r#"cx="144.0" cy="40.0""#), "{svg}");
     }
 }

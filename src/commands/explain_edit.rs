@@ -1,48 +1,84 @@
-//! `topolab explain NAME --op flip|split|collapse --edge E [--mesh M]`: one edit on one
-//! structure (or, for `che`, on the four CHE levels), with the records it writes, old → new,
-//! in the field names of the structure's source (the lecture on polygon-mesh data structures
-//! for the half-edges, the edge list and the vertex list, the lecture on 3D convex hulls for
-//! the winged-edge's record, the CHE thesis chapter for the CHE's containers), and what it
-//! reads. Every structure the registry marks `[editable]` is explained
-//! ([`editable`]); the reads are described per family ([`Family`]). The C++ baselines edit
-//! too, but their records live inside the C++ library, out of this command's reach: asked for
-//! one, it says so, as a usage error.
+//! `topolab explain NAME --op OP [--edge E | --face F | --vertex V | --vertices A,B,...]
+//! [--face F --vertices A,B] [--mesh M]`: one edit on one structure (or, for `che`, on the four CHE levels), with the
+//! records it writes, old → new, in the field names of the structure's source (the lecture on
+//! polygon-mesh data structures for the half-edges, the edge list and the vertex list, the
+//! lecture on 3D convex hulls for the winged-edge's record, the CHE thesis chapter for the
+//! CHE's containers), and what it reads. Every structure the registry marks `[editable]` is
+//! explained ([`editable`]); the reads are described per family ([`Family`]). The C++
+//! baselines and the Rust crates edit too, but their records live inside their library, out of
+//! this command's reach: asked for one, it says so, as a usage error.
 //!
-//! Edges are numbered as `--trace` numbers them: the mesh's edges in order of first
-//! appearance (the index half-edge's edge ids), so `--edge E` is the same edge on every
-//! structure. `collapse` collapses the edge's first vertex into its second; `split` splits it
-//! at its midpoint. A refused edit exits with code 1 and the structure's reason.
+//! `--op` takes every [`EditOp`] by its name ([`ExplainOp`], from [`EditOp::ALL`]), and
+//! `flip`, `split` and `collapse` for `flip-edge`, `split-edge` and `collapse-edge`. What an
+//! operation acts on, and so which of `--edge`, `--face`, `--vertex` and `--vertices` it
+//! takes, is [`topolab_harness::edit_explain::edit`]'s, which also does the edit and lists the
+//! records ([`topolab_harness::edit_explain::explain_on`]): the report's teaching section shows
+//! the same lines. Elements are numbered the same on every structure: vertices and faces as the
+//! mesh's, edges as `--trace` numbers them (the mesh's edges in order of first appearance, the
+//! index half-edge's edge ids). `collapse-edge` collapses the edge's first vertex into its
+//! second; `split-edge` splits it at its midpoint, `split-face` at its centroid;
+//! `split-vertex V` between neighbours `L,R` puts the new vertex inside the faces that move;
+//! `garbage-collection` is shown after the deletion of `--vertex V` (not explained);
+//! `weld-meshes` welds the mesh to its mirror image across z = 0; `set-position V` moves the
+//! vertex halfway to the mesh's centroid; `select V` selects in the box around the vertex that
+//! reaches halfway to its nearest neighbour (nothing is written), and `rotate-selection V` and
+//! `scale-selection V` turn that selection by 30 degrees about the x axis, or scale it by 1/2,
+//! about the centroid of the vertex's neighbours; `insert-edge` takes a face and two of its
+//! corners (`--face F --vertices A,B`); `smooth` is one step of uniform Laplacian smoothing of
+//! the whole mesh.
 //!
-//! The records are each structure's [`MeshTopology::explain`] lines read as records
-//! ([`super::explain_records`]), except for the CHE levels, whose containers are listed entry
-//! by entry (`V[he]`, `O[he]`, `VH[v]`, `EH ∋ he`, `CH[k-1]`). The reads are described, not
-//! counted: the edit code reads its containers directly, not through the counted accessors
-//! `--trace` uses.
+//! Without an element, the first one on which the edit succeeds (tried on the index
+//! half-edge, on the open tetrahedron or, where none succeeds there, on the canonical `grid`,
+//! and, where none succeeds on triangles, on the canonical `quad-strip`),
+//! named, with one where it is refused and why. A refused edit exits with code 1 and the
+//! structure's reason ([`topolab_structures::Refusal`]); so does an operation a structure does
+//! not offer ([`topolab_structures::Refusal::NotImplemented`]). An element past the mesh's
+//! count, or of the wrong kind for the operation, is a usage error (code 2).
+//!
+//! The records are each structure's [`MeshTopology::explain`] lines read as records, except
+//! for the CHE levels, whose containers are listed entry by entry
+//! ([`topolab_harness::edit_explain::records`]). The reads are described, not counted: the
+//! edit code reads its containers directly, not through the counted accessors `--trace` uses.
 
-use super::explain_records::explained_records;
 use crate::input::{mesh_or_tetrahedron, Failure};
 use crate::registry::{
     missing_baseline, peer_crate, visit_editable, EditVisitor, CPP_BASELINES, NAMES,
 };
-use std::any::{Any, TypeId};
-use std::collections::HashMap;
+use std::any::TypeId;
 use std::fmt::Write;
-use topolab_structures::che::CheLevel;
-use topolab_structures::meshes;
+use std::sync::LazyLock;
+use topolab_harness::edit_explain::{
+    choose, default_case, edit, explain_on, kind_of, prepare, Choice, Prepared, Subject,
+    SubjectKind,
+};
 use topolab_structures::{
-    CheL0, CheL1, CheL2, CheL3, EdgeId, EdgeList, IndexHalfEdge, MeshEdit, MeshTopology,
-    PointerHalfEdge, PolygonSoup, VertexId, VertexList, WingedEdge,
+    CheL0, CheL1, CheL2, CheL3, EdgeList, EditOp, IndexHalfEdge, MeshEdit, MeshTopology,
+    PointerHalfEdge, PolygonSoup, VertexList, WingedEdge,
 };
 
-/// The edits `--op` explains.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum ExplainOp {
-    /// Flip the edge between its two triangles.
-    Flip,
-    /// Split the edge at its midpoint.
-    Split,
-    /// Collapse the edge's first vertex into its second.
-    Collapse,
+/// An editing operation as `--op` takes it: every [`EditOp`] by its name, and the names of
+/// the first version of `--op` (`flip`, `split`, `collapse`) as aliases.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct ExplainOp(pub EditOp);
+
+/// The values of `--op`, one per [`EditOp`] (from [`EditOp::ALL`]).
+static OPS: LazyLock<Vec<ExplainOp>> =
+    LazyLock::new(|| EditOp::ALL.iter().copied().map(ExplainOp).collect());
+
+impl clap::ValueEnum for ExplainOp {
+    fn value_variants<'a>() -> &'a [Self] {
+        &OPS
+    }
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let value = clap::builder::PossibleValue::new(self.0.name());
+        // The first `--op` named the three edge operations by their verb alone.
+        Some(match self.0 {
+            EditOp::FlipEdge => value.alias("flip"),
+            EditOp::SplitEdge => value.alias("split"),
+            EditOp::CollapseEdge => value.alias("collapse"),
+            _ => value,
+        })
+    }
 }
 
 /// The structures `--op` can explain: every one the registry marks `[editable]` (that
@@ -109,13 +145,118 @@ impl Family {
     }
 }
 
-/// One structure's explanation, for [`visit`].
+/// The element asked for on the command line: `--edge`, `--face`, `--vertex`, `--vertices`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Asked {
+    /// `--edge E`.
+    pub edge: Option<u32>,
+    /// `--face F`.
+    pub face: Option<u32>,
+    /// `--vertex V`.
+    pub vertex: Option<u32>,
+    /// `--vertices A,B,...`.
+    pub vertices: Vec<u32>,
+}
+
+impl Asked {
+    /// Only `--edge E`.
+    pub fn edge(e: u32) -> Self {
+        Self {
+            edge: Some(e),
+            ..Self::default()
+        }
+    }
+    /// The flags given, as written.
+    fn given(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some(e) = self.edge {
+            out.push(format!("--edge {e}"));
+        }
+        if let Some(f) = self.face {
+            out.push(format!("--face {f}"));
+        }
+        if let Some(v) = self.vertex {
+            out.push(format!("--vertex {v}"));
+        }
+        if !self.vertices.is_empty() {
+            out.push(format!("--vertices {}", join(&self.vertices)));
+        }
+        out
+    }
+
+    /// The subject asked for, if any, of the kind `op` takes; the wrong flags for it are a
+    /// usage error that says which it takes.
+    fn subject(&self, op: EditOp) -> Result<Option<Subject>, Failure> {
+        let given = self.given();
+        if given.is_empty() {
+            return Ok(None);
+        }
+        let kind = kind_of(op);
+        let vs = &self.vertices;
+        let only = |flag: bool| flag && given.len() == 1;
+        let subject = match kind {
+            SubjectKind::Vertex if only(self.vertex.is_some()) => self.vertex.map(Subject::Vertex),
+            SubjectKind::Edge if only(self.edge.is_some()) => self.edge.map(Subject::Edge),
+            SubjectKind::Face if only(self.face.is_some()) => self.face.map(Subject::Face),
+            SubjectKind::Corners if only(vs.len() >= 3) => Some(Subject::Vertices(vs.clone())),
+            SubjectKind::TwoVertices if only(vs.len() == 2) => Some(Subject::Vertices(vs.clone())),
+            SubjectKind::FaceAndCorners
+                if self.face.is_some() && vs.len() == 2 && given.len() == 2 =>
+            {
+                self.face.map(|face| Subject::FaceAndCorners {
+                    face,
+                    a: vs[0],
+                    b: vs[1],
+                })
+            }
+            SubjectKind::VertexAndNeighbours
+                if self.vertex.is_some() && vs.len() == 2 && given.len() == 2 =>
+            {
+                self.vertex.map(|vertex| Subject::VertexAndNeighbours {
+                    vertex,
+                    left: vs[0],
+                    right: vs[1],
+                })
+            }
+            _ => None,
+        };
+        subject.map(Some).ok_or_else(|| {
+            Failure::usage(format!(
+                "--op {op} takes {}, not {}",
+                kind.flags(),
+                given.join(" ")
+            ))
+        })
+    }
+}
+
+fn join(vs: &[u32]) -> String {
+    vs.iter().map(u32::to_string).collect::<Vec<_>>().join(",")
+}
+
+/// The command-line flags that ask for `subject` (what "try ..." suggests).
+fn flags_of(subject: &Subject) -> String {
+    match subject {
+        Subject::Nothing | Subject::MirrorImage | Subject::WholeMesh => String::new(),
+        Subject::FaceAndCorners { face, a, b } => format!("--face {face} --vertices {a},{b}"),
+        Subject::Vertex(v) => format!("--vertex {v}"),
+        Subject::Edge(e) => format!("--edge {e}"),
+        Subject::Face(f) => format!("--face {f}"),
+        Subject::Vertices(vs) => format!("--vertices {}", join(vs)),
+        Subject::VertexAndNeighbours {
+            vertex,
+            left,
+            right,
+        } => format!("--vertex {vertex} --vertices {left},{right}"),
+    }
+}
+
+/// One structure's explanation, for [`visit_editable`].
 struct Explain<'a> {
     soup: &'a PolygonSoup,
     label: &'a str,
-    op: ExplainOp,
-    edge: u32,
-    ends: [u32; 2],
+    op: EditOp,
+    prepared: &'a Prepared,
 }
 
 impl EditVisitor for Explain<'_> {
@@ -125,299 +266,273 @@ impl EditVisitor for Explain<'_> {
     }
 }
 
-/// The text of `topolab explain NAME --op OP [--edge E] [--mesh M]`: without `--edge`, the
-/// first edge on which the edit succeeds, among the first 64, tried on the index half-edge.
-pub fn run(
-    name: &str,
-    mesh: Option<&str>,
-    op: ExplainOp,
-    edge: Option<u32>,
-) -> Result<String, Failure> {
+/// The names `--op` explains for `name` (the four levels for `che`), or why it cannot.
+fn structures_of(name: &str) -> Result<Vec<&'static str>, Failure> {
     let editable = editable();
-    let names: Vec<&str> = if name == super::explain_che::NAME {
-        [CheL0::NAME, CheL1::NAME, CheL2::NAME, CheL3::NAME]
+    if name == super::explain_che::NAME {
+        return Ok([CheL0::NAME, CheL1::NAME, CheL2::NAME, CheL3::NAME]
             .into_iter()
             .filter(|n| editable.contains(n))
-            .collect()
-    } else if editable.contains(&name) {
-        vec![name]
-    } else if CPP_BASELINES.contains(&name) {
+            .collect());
+    }
+    if let Some(&found) = editable.iter().find(|&&n| n == name) {
+        return Ok(vec![found]);
+    }
+    Err(if CPP_BASELINES.contains(&name) {
         let absent = missing_baseline(name)
             .map(|why| format!(" (and it is not in this build: {why})"))
             .unwrap_or_default();
-        return Err(Failure::usage(format!(
+        Failure::usage(format!(
             "--op: {name} edits through its C++ library's own Euler operations, and its records live inside that library, which --op cannot list{absent}; `topolab list` and `topolab explain {name}` show its declared edit costs. The structures whose records --op shows: che (its four levels), {}",
             editable.join(", ")
-        )));
+        ))
     } else if let Some((krate, _)) = peer_crate(name) {
-        return Err(Failure::usage(format!(
+        Failure::usage(format!(
             "--op: {name} edits through the crate {krate}'s own calls, and its records live inside that crate, which --op cannot list; `topolab list` shows the operations it offers and their declared costs. The structures whose records --op shows: che (its four levels), {}",
             editable.join(", ")
-        )));
+        ))
     } else {
-        return Err(Failure::usage(format!(
+        Failure::usage(format!(
             "--op: {name:?} cannot edit (or is not a structure); the editable structures: che (its four levels), {}",
             editable.join(", ")
-        )));
-    };
-    let (mut soup, mut label) = mesh_or_tetrahedron(mesh, false, |s| {
-        400 * (s.num_corners() + s.num_vertices()) as u64
-    })?;
-    let mut reference = IndexHalfEdge::from_soup(&soup).map_err(|e| Failure {
-        message: format!("{label} is not an oriented manifold mesh: {e}"),
-        code: 1,
-    })?;
+        ))
+    })
+}
+
+/// The refusal of a [`Choice`], for the preface: `; it is refused on ... (why): try ...`.
+fn refused_hint(choice: &Choice, mesh_flag: &str) -> String {
+    choice
+        .refused
+        .as_ref()
+        .map(|(subject, why)| {
+            let flags = flags_of(subject);
+            if flags.is_empty() {
+                format!("; it is refused on {} ({why})", subject_words(subject))
+            } else {
+                format!(
+                    "; it is refused on {} ({why}): try {flags}{mesh_flag}",
+                    subject_words(subject)
+                )
+            }
+        })
+        .unwrap_or_default()
+}
+
+/// A subject in words, without the mesh (for the preface).
+fn subject_words(subject: &Subject) -> String {
+    match subject {
+        Subject::Nothing => "no element".to_string(),
+        Subject::MirrorImage => "the mirror image".to_string(),
+        Subject::WholeMesh => "the whole mesh".to_string(),
+        Subject::FaceAndCorners { face, a, b } => format!("face {face} from corner {a} to {b}"),
+        Subject::Vertex(v) => format!("vertex {v}"),
+        Subject::Edge(e) => format!("edge {e}"),
+        Subject::Face(f) => format!("face {f}"),
+        Subject::Vertices(vs) if vs.len() == 2 => format!("vertices {} and {}", vs[0], vs[1]),
+        Subject::Vertices(vs) => format!("corners {}", join(vs)),
+        Subject::VertexAndNeighbours {
+            vertex,
+            left,
+            right,
+        } => format!("vertex {vertex} between neighbours {left} and {right}"),
+    }
+}
+
+/// The text of `topolab explain NAME --op OP [element] [--mesh M]`; see the module docs.
+pub fn run(name: &str, mesh: Option<&str>, op: EditOp, asked: &Asked) -> Result<String, Failure> {
+    let names = structures_of(name)?;
+    let asked_subject = asked.subject(op)?;
     let mut preface = String::new();
-    let edge = match edge {
-        Some(edge) => edge,
-        None => {
-            let mut choice = chosen_edge(&soup, op);
-            // No such edit on the default mesh (no flip and no collapse succeeds on the open
-            // tetrahedron): the canonical grid, where each does.
-            if choice.success.is_none() && mesh.is_none() {
-                let refused_here = choice.refused.clone();
-                soup = meshes::canonical()
-                    .into_iter()
-                    .find(|m| m.name == "grid")
-                    .expect("the canonical grid")
-                    .soup;
-                reference = IndexHalfEdge::from_soup(&soup).expect("a grid is a manifold");
-                let why = refused_here
-                    .map(|(e, why)| format!(" (edge {e}: {why})"))
+    let kind = kind_of(op);
+    let single = kind.is_single();
+    let (soup, label, subject) = match (mesh, asked_subject) {
+        (None, None) => {
+            let case = default_case(op);
+            if let Some(tetra) = &case.on_tetrahedron {
+                let why = tetra
+                    .refused
+                    .as_ref()
+                    .map(|(s, why)| format!(" ({}: {why})", subject_words(s)))
                     .unwrap_or_default();
                 let _ = writeln!(
                     preface,
-                    "no {} succeeds on the open tetrahedron{why}: the canonical mesh `grid` instead",
-                    op_name(op)
+                    "no {op} succeeds on the open tetrahedron{why}: {} instead",
+                    case.label
                 );
-                label = "the canonical mesh `grid` (a 3x2 triangulated grid: --mesh grid)".into();
-                choice = chosen_edge(&soup, op);
             }
-            let Some(edge) = choice.success else {
-                return Err(Failure {
-                    message: format!(
-                        "no {} succeeds on the first {TRIED_EDGES} edges of {label}{}; name one with --edge",
-                        op_name(op),
-                        choice
-                            .refused
-                            .map(|(e, why)| format!(" (edge {e}: {why})"))
-                            .unwrap_or_default()
-                    ),
-                    code: 1,
-                });
+            let mesh_flag = case
+                .mesh_flag
+                .map(|m| format!(" --mesh {m}"))
+                .unwrap_or_default();
+            let subject = chosen(&case.choice, op, case.label, kind, &mesh_flag, &mut preface)?;
+            (case.soup, case.label.to_string(), subject)
+        }
+        (_, asked_subject) => {
+            let (soup, label) = mesh_or_tetrahedron(mesh, false, |s| {
+                400 * (s.num_corners() + s.num_vertices()) as u64
+            })?;
+            let subject = match asked_subject {
+                Some(subject) => subject,
+                None if single => {
+                    let choice = Choice {
+                        success: Some(choose_single(kind)),
+                        refused: None,
+                    };
+                    chosen(&choice, op, &label, kind, "", &mut preface)?
+                }
+                None => {
+                    let choice = choose(&soup, op);
+                    chosen(&choice, op, &label, kind, "", &mut preface)?
+                }
             };
-            let _ = writeln!(
-                preface,
-                "no --edge given: edge {edge} is the first edge of {label} on which {} succeeds{}",
-                op_name(op),
-                choice
-                    .refused
-                    .map(|(e, why)| format!("; it is refused on edge {e} ({why}): try --edge {e}"))
-                    .unwrap_or_default()
-            );
-            edge
+            (soup, label, subject)
         }
     };
-    if edge as usize >= reference.num_edges() {
-        return Err(Failure::usage(format!(
-            "--edge {edge}: {label} has {} edges (0 to {})",
-            reference.num_edges(),
-            reference.num_edges().saturating_sub(1)
-        )));
-    }
-    let ends = reference.edge_vertices(EdgeId(edge)).map(|v| v.0);
+    let reference = IndexHalfEdge::from_soup(&soup).map_err(|e| Failure {
+        message: format!("{label} is not an oriented manifold mesh: {e}"),
+        code: 1,
+    })?;
+    let prepared = prepare(op, subject, &soup, &reference)
+        .map_err(|e| Failure::usage(format!("--op {op}: {e} ({label})")))?;
     let mut out = preface;
     for n in names {
         let e = Explain {
             soup: &soup,
             label: &label,
             op,
-            edge,
-            ends,
+            prepared: &prepared,
         };
         out += &visit_editable(n, e).expect("an editable structure")?;
     }
     Ok(out)
 }
 
+/// The only subject of an operation that takes no element.
+fn choose_single(kind: SubjectKind) -> Subject {
+    match kind {
+        SubjectKind::MirrorImage => Subject::MirrorImage,
+        SubjectKind::WholeMesh => Subject::WholeMesh,
+        _ => Subject::Nothing,
+    }
+}
+
+/// The subject a [`Choice`] found, with the preface that names it and a refused one; a
+/// failure (exit code 1) when the edit succeeds on none tried.
+fn chosen(
+    choice: &Choice,
+    op: EditOp,
+    label: &str,
+    kind: SubjectKind,
+    mesh_flag: &str,
+    preface: &mut String,
+) -> Result<Subject, Failure> {
+    let single = kind.is_single();
+    let Some(subject) = choice.success.clone() else {
+        return Err(Failure {
+            message: format!(
+                "no {op} succeeds on the elements of {label} tried ({}){}; name one with {}",
+                if single {
+                    "its only one".to_string()
+                } else {
+                    format!("at most {} of them", topolab_harness::edit_explain::TRIED)
+                },
+                choice
+                    .refused
+                    .as_ref()
+                    .map(|(s, why)| format!(" ({}: {why})", subject_words(s)))
+                    .unwrap_or_default(),
+                kind.flags()
+            ),
+            code: 1,
+        });
+    };
+    if !single {
+        let _ = writeln!(
+            preface,
+            "no element given ({}): {} is the first on {label} on which {op} succeeds{}",
+            kind.flags(),
+            subject_words(&subject),
+            refused_hint(choice, mesh_flag)
+        );
+    }
+    Ok(subject)
+}
+
 impl Explain<'_> {
     fn run<M: MeshEdit + 'static>(self) -> Result<String, Failure> {
-        let mut m = M::from_soup(self.soup).map_err(|e| Failure {
-            message: format!("{} cannot store {}: {e}", M::NAME, self.label),
+        let spec = edit::<M>(self.op);
+        let op = self.op;
+        let what = &self.prepared.description;
+        let done = explain_on::<M>(self.soup, op, self.prepared).map_err(|e| Failure {
+            message: format!("{e} ({what} on {})", self.label),
             code: 1,
         })?;
-        let [a, b] = self.ends;
-        let id = edge_between(&m, a, b).expect("the edge is in every structure");
-        let before = records(&m);
-        let what = op_name(self.op);
-        let done = apply(&mut m, self.op, id, [VertexId(a), VertexId(b)]);
         let mut out = String::new();
         let w = &mut out;
+        let own = done
+            .own_id
+            .map(|id| format!("; the structure's {id}"))
+            .unwrap_or_default();
+        let _ = writeln!(w, "{}: {op} of {what}{own} on {}", M::NAME, self.label);
+        if let Some((setup, _)) = spec.setup {
+            let _ = writeln!(
+                w,
+                "first, not explained: {setup} of {what} (what {op} then collects)"
+            );
+        }
         let _ = writeln!(
             w,
-            "{}: {what} of edge {} (v{a} - v{b}; the structure's edge id {}) on {}",
-            M::NAME,
-            self.edge,
-            id.0,
-            self.label
+            "reads: {}",
+            reads(Family::of::<M>(), op, spec.reads, spec.local)
         );
-        if let Err(e) = done {
-            return Err(Failure {
-                message: format!("{e} (edge {} = v{a} - v{b} on {})", self.edge, self.label),
-                code: 1,
-            });
-        }
-        m.validate().map_err(|e| Failure {
-            message: format!("{} is invalid after {what}: {e}", M::NAME),
-            code: 1,
-        })?;
-        let _ = writeln!(w, "reads: {}", reads(Family::of::<M>(), self.op));
         let _ = writeln!(
             w,
             "  (described, not counted: the edit code reads its records directly, not through the counted accessors of --trace)"
         );
         let _ = writeln!(w, "writes (old -> new; + added, - removed):");
-        diff(w, &before, &records(&m));
+        for line in &done.changes {
+            let _ = writeln!(w, "{line}");
+        }
         let _ = writeln!(w);
         Ok(out)
     }
 }
 
-/// The name of an edit as `explain` prints it.
-fn op_name(op: ExplainOp) -> &'static str {
-    match op {
-        ExplainOp::Flip => "flip-edge",
-        ExplainOp::Split => "split-edge",
-        ExplainOp::Collapse => "collapse-edge",
+/// What `op` reads in a structure of `family`: the three edge operations described op by op
+/// ([`reads_of_three`]); the others as the neighbourhood the operation reads (`neighbourhood`,
+/// [`edit`]'s) and, where it reads one through the structure's relations (`local`), how the
+/// family reads and rewrites it ([`family_reads`]).
+fn reads(family: Family, op: EditOp, neighbourhood: &str, local: bool) -> String {
+    if let Some(text) = reads_of_three(family, op) {
+        return text.to_string();
     }
-}
-
-/// Does `op` on edge `id` of `m`, the edge from `a` to `b`: a flip, a split at its midpoint,
-/// or the collapse of `a` into `b`. A refused edit changes nothing (what `MeshEdit` promises).
-fn apply<M: MeshEdit>(
-    m: &mut M,
-    op: ExplainOp,
-    id: EdgeId,
-    [a, b]: [VertexId; 2],
-) -> topolab_structures::Result<()> {
-    match op {
-        ExplainOp::Flip => m.flip_edge(id),
-        ExplainOp::Split => {
-            let p = (m.position(a) + m.position(b)) / 2.0;
-            m.split_edge(id, p).map(drop)
-        }
-        ExplainOp::Collapse => m.collapse_edge(a, b),
+    if !local {
+        return neighbourhood.to_string();
     }
+    format!("{neighbourhood}; {}", family_reads(family, op))
 }
 
-/// Does `op` succeed on `edge` of `m` ([`apply`])? `Err` with the refusal.
-fn try_op(m: &mut IndexHalfEdge, op: ExplainOp, edge: u32) -> Result<(), String> {
-    let ends = m.edge_vertices(EdgeId(edge));
-    apply(m, op, EdgeId(edge), ends).map_err(|e| e.to_string())
-}
-
-/// What [`chosen_edge`] found: the first edge where the edit succeeds, and the first where
-/// it is refused, with the reason.
-struct Choice {
-    success: Option<u32>,
-    refused: Option<(u32, String)>,
-}
-
-/// Edges [`chosen_edge`] tries at most: a large mesh is not edited edge by edge.
-const TRIED_EDGES: u32 = 64;
-
-/// The first edge of `soup` (in the edge numbering `--edge` uses) on which `op` succeeds, and
-/// the first on which it is refused, among its first [`TRIED_EDGES`], tried on the index
-/// half-edge: every editable structure refuses what it refuses (the editing suite holds them
-/// to one model). Refused edits leave the structure as it was, so it is built again only after
-/// an edit that was done.
-fn chosen_edge(soup: &PolygonSoup, op: ExplainOp) -> Choice {
-    let mut choice = Choice {
-        success: None,
-        refused: None,
-    };
-    let Ok(mut m) = IndexHalfEdge::from_soup(soup) else {
-        return choice;
-    };
-    for e in 0..(m.num_edges() as u32).min(TRIED_EDGES) {
-        match try_op(&mut m, op, e) {
-            Ok(()) => {
-                choice.success.get_or_insert(e);
-                match IndexHalfEdge::from_soup(soup) {
-                    Ok(fresh) => m = fresh,
-                    Err(_) => break,
-                }
-            }
-            Err(why) => {
-                choice.refused.get_or_insert((e, why));
-            }
-        }
-        if choice.success.is_some() && choice.refused.is_some() {
-            break;
-        }
-    }
-    choice
-}
-
-/// The structure's id of the edge between `a` and `b`.
-fn edge_between<M: MeshTopology>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
-    let mut found = None;
-    m.vertex_edges(VertexId(a), |e| {
-        let [x, y] = m.edge_vertices(e).map(|v| v.0);
-        if (x, y) == (a, b) || (x, y) == (b, a) {
-            found.get_or_insert(e);
-        }
-    });
-    found
-}
-
-/// What the edit reads in a structure of `family`, in its source's field names.
-fn reads(family: Family, op: ExplainOp) -> &'static str {
+/// How a family reads a neighbourhood and writes its change, for the operations
+/// [`reads_of_three`] does not describe one by one.
+fn family_reads(family: Family, op: EditOp) -> &'static str {
     match (family, op) {
-        (Family::Che, ExplainOp::Flip) => {
-            "V[h], V[next(h)], V[prev(h)] (the corners a, b, x), O[h] = g (level 0: Algorithm 8's scan of V[]), V[prev(g)] (the corner y); the star of x to check that edge x-y is new (from VH[x] around by O[prev(h)] at levels 2-3, a scan of V[] at levels 0-1); then O[] of the two triangles' 6 half-edges (their outer opposites) and the fans of the 4 corners for VH[]; EH from a scan of O[] (levels 2-3)"
+        (Family::Che, EditOp::WeldVertices) => {
+            "the corners of the second vertex are renamed in a copy of V[], and the level's containers are built again from it (O[], VH[], EH, CH[] from V[]), refused before anything is replaced"
         }
-        (Family::Che, ExplainOp::Split) => {
-            "V[] of the edge's one or two triangles, O[h] (level 0: a scan of V[]), O[] of their outer half-edges, the fans of their corners for VH[]; EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the edge is on the boundary (level 3, Algorithm 4)"
+        (Family::HalfEdge, _) => {
+            "read by rotating around each vertex (the next of a half-edge's twin, from the vertex's edge field) and walking each face's cycle through next; the half-edges' next, prev, vert and face and the vertices' and faces' edge fields it relinks are written in place, new records appended, deleted ones marked until garbage collection"
         }
-        (Family::Che, ExplainOp::Collapse) => {
-            "the stars of both ends and of the two opposite corners (the link condition and OpenMesh's tetrahedron test: from VH[] and O[] at levels 2-3, scans of V[] at levels 0-1), V[] and O[] of the star of the removed vertex, the last triangles (moved into the removed ones' slots); EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the boundary is touched (level 3, Algorithm 4)"
+        (Family::Che, _) => {
+            "read through the level's relations: from VH[] around the fan by O[] at levels 2-3, by scans of V[] at levels 0-1 (level 0 finds an opposite by a scan of V[], Algorithm 8); then V[] of the triangles is rewritten (a removed triangle's slot taken by the last one), O[] of their outer half-edges and VH[] of their corners repaired, EH from a scan of O[] (levels 2-3), CH[] relabelled when the boundary is touched (level 3)"
         }
-        (Family::HalfEdge, ExplainOp::Flip) => {
-            "the edge's two half-edges and their next, prev, vert and face; the corners' rotation (next of twin) to check that the new edge is not there; the vertices' and faces' edge fields it repoints"
+        (Family::WingedEdge, _) => {
+            "read through the winged-edge's queries (a vertex's fan from its av through the wings, a face's cycle through the wings of its edges); then the faces are rewritten: edge records appended or re-pointed with their wings, the last edge and face records moving into freed slots"
         }
-        (Family::HalfEdge, ExplainOp::Split) => {
-            "the edge's half-edges and their next, prev, vert and face, and the face records of its triangles"
+        (Family::EdgeList, _) => {
+            "read through the edge list's queries, each a scan of all of E; then the polygons P are rewritten, new edges appended, the last edge and polygon moving into freed slots"
         }
-        (Family::HalfEdge, ExplainOp::Collapse) => {
-            "the rotations around both ends and the two opposite corners (the link condition and OpenMesh's tetrahedron test), then every half-edge leaving the removed vertex (its vert) and the next/prev/face of the two removed triangles"
-        }
-        (Family::WingedEdge, ExplainOp::Flip) => {
-            "the edge record (v1, v2, fccw, fcw) and its two triangles' cycles through the wings (pccw, nccw in fccw; pcw, ncw in fcw); the fan of the far corner from its av through the wings, to check that the new edge is not there; the fans of the four corners for the rewrite's manifold check; then the two faces are rewritten, the edge record in place, the wings of the four outer edges re-pointed"
-        }
-        (Family::WingedEdge, ExplainOp::Split) => {
-            "the edge record (v1, v2, fccw, fcw) and the cycles of its one or two triangles through the wings; the fans of their corners from av for the rewrite's manifold check; then the triangles are rewritten in two, the new edge records appended and the outer edges' wings re-pointed"
-        }
-        (Family::WingedEdge, ExplainOp::Collapse) => {
-            "the fans of both ends and of the two far corners from av through the wings (the link condition and OpenMesh's tetrahedron test), the cycles of the faces around the removed vertex; then those faces are rewritten around the kept vertex, the edges of the two removed triangles leave (the last edge and face records moving into their slots) and the wings around them are re-pointed"
-        }
-        (Family::EdgeList, ExplainOp::Flip) => {
-            "the edge E = (start, end, left, right), its two polygons P (lists of edge indices) and their edges' start and end; a scan of all of E for the far corner's edges (is the new edge there?) and for each corner's fan; then the two polygons are rewritten, the edge in place, and a scan of E finds the edges they share with the rest"
-        }
-        (Family::EdgeList, ExplainOp::Split) => {
-            "the edge E = (start, end, left, right), its one or two polygons P and their edges' ends; a scan of all of E for each corner's fan and for the edges the new polygons share with the rest; then the polygons are rewritten and the new edges appended"
-        }
-        (Family::EdgeList, ExplainOp::Collapse) => {
-            "a scan of all of E per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), the polygons around the removed vertex; then they are rewritten around the kept vertex, the edges and polygons of the two removed triangles leave (the last ones moving into their slots)"
-        }
-        (Family::VertexList, ExplainOp::Flip) => {
-            "a scan of all faces (lists of vertex indices) for the two that hold the edge, and for the far corner's neighbours (is the new edge there?); the faces around each of the four corners, a scan each; then the two faces' corners are rewritten in place"
-        }
-        (Family::VertexList, ExplainOp::Split) => {
-            "a scan of all faces for the one or two that hold the edge, and for the faces around each corner; then each triangle's corners are rewritten and one new triangle appended per side"
-        }
-        (Family::VertexList, ExplainOp::Collapse) => {
-            "a scan of all faces per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), then the faces around the removed vertex; they are rewritten around the kept vertex and the two removed triangles leave (the last faces moving into their slots)"
+        (Family::VertexList, _) => {
+            "read through the vertex list's queries, each a scan of all faces; then the faces' corners are rewritten, new faces appended, the last face moving into a freed slot"
         }
         (Family::Other, _) => {
             "not described for this structure: the records it writes are listed below"
@@ -425,138 +540,55 @@ fn reads(family: Family, op: ExplainOp) -> &'static str {
     }
 }
 
-/// A structure's records as `(key, value)`, in order.
-fn records<M: MeshEdit + 'static>(m: &M) -> Vec<(String, String)> {
-    let any: &dyn Any = m;
-    let mut out = if let Some(c) = any.downcast_ref::<CheL0>() {
-        che_records(
-            c.geometry().len(),
-            c.start_vertices(),
-            None,
-            None,
-            None,
-            None,
-        )
-    } else if let Some(c) = any.downcast_ref::<CheL1>() {
-        che_records(
-            c.geometry().len(),
-            c.start_vertices(),
-            Some(c.opposite()),
-            None,
-            None,
-            None,
-        )
-    } else if let Some(c) = any.downcast_ref::<CheL2>() {
-        che_records(
-            c.geometry().len(),
-            c.start_vertices(),
-            Some(c.level1().opposite()),
-            Some(c.vertex_half_edge()),
-            Some(c.edge_map()),
-            None,
-        )
-    } else if let Some(c) = any.downcast_ref::<CheL3>() {
-        let l2 = c.level2();
-        che_records(
-            c.geometry().len(),
-            c.start_vertices(),
-            Some(l2.level1().opposite()),
-            Some(l2.vertex_half_edge()),
-            Some(l2.edge_map()),
-            Some(c.curve_half_edge()),
-        )
-    } else {
-        explained_records(m)
-    };
-    for v in 0..m.num_vertices() {
-        if m.is_deleted_vertex(VertexId::new(v)) {
-            out.push((
-                format!("v{v}.deleted"),
-                "yes (marked until garbage collection)".to_string(),
-            ));
+/// What a flip, an edge split and a collapse read in a structure of `family`, in its
+/// source's field names, described op by op.
+fn reads_of_three(family: Family, op: EditOp) -> Option<&'static str> {
+    Some(match (family, op) {
+        (Family::Che, EditOp::FlipEdge) => {
+            "V[h], V[next(h)], V[prev(h)] (the corners a, b, x), O[h] = g (level 0: Algorithm 8's scan of V[]), V[prev(g)] (the corner y); the star of x to check that edge x-y is new (from VH[x] around by O[prev(h)] at levels 2-3, a scan of V[] at levels 0-1); then O[] of the two triangles' 6 half-edges (their outer opposites) and the fans of the 4 corners for VH[]; EH from a scan of O[] (levels 2-3)"
         }
-    }
-    out
-}
-
-/// The CHE's containers entry by entry.
-fn che_records(
-    vertices: usize,
-    v: &[u32],
-    o: Option<&[i32]>,
-    vh: Option<&[i32]>,
-    eh: Option<&[u32]>,
-    ch: Option<&[u32]>,
-) -> Vec<(String, String)> {
-    let mut out = vec![("G[]".to_string(), format!("{vertices} vertices"))];
-    for (he, x) in v.iter().enumerate() {
-        out.push((format!("V[{he}]"), x.to_string()));
-    }
-    for (he, x) in o.into_iter().flatten().enumerate() {
-        out.push((format!("O[{he}]"), x.to_string()));
-    }
-    for (x, he) in vh.into_iter().flatten().enumerate() {
-        out.push((format!("VH[{x}]"), he.to_string()));
-    }
-    for he in eh.into_iter().flatten() {
-        out.push((
-            format!("EH ∋ {he}"),
-            "(an edge's smaller half-edge)".to_string(),
-        ));
-    }
-    for (k, he) in ch.into_iter().flatten().enumerate() {
-        out.push((format!("CH[{k}]"), he.to_string()));
-    }
-    out
-}
-
-/// `name = value` fields of a record, if it is written so.
-fn fields(value: &str) -> Option<Vec<(&str, &str)>> {
-    let value = value.split("  (").next().unwrap_or(value);
-    value
-        .split(", ")
-        .map(|f| f.split_once(" = "))
-        .collect::<Option<Vec<_>>>()
-}
-
-/// Writes the records that changed, were added or were removed.
-fn diff(w: &mut String, before: &[(String, String)], after: &[(String, String)]) {
-    let index =
-        |list: &[(String, String)]| -> HashMap<String, String> { list.iter().cloned().collect() };
-    let (old_index, new_index) = (index(before), index(after));
-    let find = |list: &HashMap<String, String>, key: &str| list.get(key).cloned();
-    let mut any = false;
-    for (key, old) in before {
-        match find(&new_index, key) {
-            Some(new) if &new == old => {}
-            Some(new) => {
-                any = true;
-                match (fields(old), fields(&new)) {
-                    (Some(f), Some(g)) if f.len() == g.len() => {
-                        for ((name, x), (_, y)) in f.iter().zip(&g) {
-                            if x != y {
-                                let _ = writeln!(w, "  {key}.{name}: {x} -> {y}");
-                            }
-                        }
-                    }
-                    _ => {
-                        let _ = writeln!(w, "  {key}: {old} -> {new}");
-                    }
-                }
-            }
-            None => {
-                any = true;
-                let _ = writeln!(w, "- {key}: {old}");
-            }
+        (Family::Che, EditOp::SplitEdge) => {
+            "V[] of the edge's one or two triangles, O[h] (level 0: a scan of V[]), O[] of their outer half-edges, the fans of their corners for VH[]; EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the edge is on the boundary (level 3, Algorithm 4)"
         }
-    }
-    for (key, new) in after {
-        if find(&old_index, key).is_none() {
-            any = true;
-            let _ = writeln!(w, "+ {key}: {new}");
+        (Family::Che, EditOp::CollapseEdge) => {
+            "the stars of both ends and of the two opposite corners (the link condition and OpenMesh's tetrahedron test: from VH[] and O[] at levels 2-3, scans of V[] at levels 0-1), V[] and O[] of the star of the removed vertex, the last triangles (moved into the removed ones' slots); EH from a scan of O[] (levels 2-3); O[] labels of the whole mesh when the boundary is touched (level 3, Algorithm 4)"
         }
-    }
-    if !any {
-        let _ = writeln!(w, "  (no record changed)");
-    }
+        (Family::HalfEdge, EditOp::FlipEdge) => {
+            "the edge's two half-edges and their next, prev, vert and face; the corners' rotation (next of twin) to check that the new edge is not there; the vertices' and faces' edge fields it repoints"
+        }
+        (Family::HalfEdge, EditOp::SplitEdge) => {
+            "the edge's half-edges and their next, prev, vert and face, and the face records of its triangles"
+        }
+        (Family::HalfEdge, EditOp::CollapseEdge) => {
+            "the rotations around both ends and the two opposite corners (the link condition and OpenMesh's tetrahedron test), then every half-edge leaving the removed vertex (its vert) and the next/prev/face of the two removed triangles"
+        }
+        (Family::WingedEdge, EditOp::FlipEdge) => {
+            "the edge record (v1, v2, fccw, fcw) and its two triangles' cycles through the wings (pccw, nccw in fccw; pcw, ncw in fcw); the fan of the far corner from its av through the wings, to check that the new edge is not there; the fans of the four corners for the rewrite's manifold check; then the two faces are rewritten, the edge record in place, the wings of the four outer edges re-pointed"
+        }
+        (Family::WingedEdge, EditOp::SplitEdge) => {
+            "the edge record (v1, v2, fccw, fcw) and the cycles of its one or two triangles through the wings; the fans of their corners from av for the rewrite's manifold check; then the triangles are rewritten in two, the new edge records appended and the outer edges' wings re-pointed"
+        }
+        (Family::WingedEdge, EditOp::CollapseEdge) => {
+            "the fans of both ends and of the two far corners from av through the wings (the link condition and OpenMesh's tetrahedron test), the cycles of the faces around the removed vertex; then those faces are rewritten around the kept vertex, the edges of the two removed triangles leave (the last edge and face records moving into their slots) and the wings around them are re-pointed"
+        }
+        (Family::EdgeList, EditOp::FlipEdge) => {
+            "the edge E = (start, end, left, right), its two polygons P (lists of edge indices) and their edges' start and end; a scan of all of E for the far corner's edges (is the new edge there?) and for each corner's fan; then the two polygons are rewritten, the edge in place, and a scan of E finds the edges they share with the rest"
+        }
+        (Family::EdgeList, EditOp::SplitEdge) => {
+            "the edge E = (start, end, left, right), its one or two polygons P and their edges' ends; a scan of all of E for each corner's fan and for the edges the new polygons share with the rest; then the polygons are rewritten and the new edges appended"
+        }
+        (Family::EdgeList, EditOp::CollapseEdge) => {
+            "a scan of all of E per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), the polygons around the removed vertex; then they are rewritten around the kept vertex, the edges and polygons of the two removed triangles leave (the last ones moving into their slots)"
+        }
+        (Family::VertexList, EditOp::FlipEdge) => {
+            "a scan of all faces (lists of vertex indices) for the two that hold the edge, and for the far corner's neighbours (is the new edge there?); the faces around each of the four corners, a scan each; then the two faces' corners are rewritten in place"
+        }
+        (Family::VertexList, EditOp::SplitEdge) => {
+            "a scan of all faces for the one or two that hold the edge, and for the faces around each corner; then each triangle's corners are rewritten and one new triangle appended per side"
+        }
+        (Family::VertexList, EditOp::CollapseEdge) => {
+            "a scan of all faces per vertex of the link condition and OpenMesh's tetrahedron test (the rings of both ends and of the two far corners), then the faces around the removed vertex; they are rewritten around the kept vertex and the two removed triangles leave (the last faces moving into their slots)"
+        }
+        _ => return None,
+    })
 }

@@ -10,7 +10,6 @@ pub mod explain;
 pub mod explain_che;
 pub mod explain_costs;
 pub mod explain_edit;
-pub mod explain_records;
 pub mod explain_trace;
 pub mod hull;
 pub mod info;

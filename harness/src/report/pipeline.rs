@@ -179,6 +179,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         targets: Vec::new(),
         decimate: Vec::new(),
         teaching: Vec::new(),
+        teaching_edits: crate::edit_explain::teaching_edits(),
         reads: Vec::new(),
         notes,
         phases: Vec::new(),

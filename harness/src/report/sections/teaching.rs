@@ -1,8 +1,9 @@
-//! "Teaching": what each structure stores for the CHE thesis chapter's Figure 4.10.
+//! "Teaching": what each structure stores for the CHE thesis chapter's Figure 4.10, and
+//! edits shown record by record with the mesh before and after (`edits`).
 
 use crate::report::format::esc;
 use crate::report::section::{Page, Section};
-use crate::results::Results;
+use crate::results::{Results, TeachingEdit};
 use crate::svg;
 use std::fmt::Write;
 
@@ -19,7 +20,44 @@ fn teaching(h: &mut String, r: &Results) {
     h.push_str("</div></div>");
 }
 
-/// What each structure stores for the CHE thesis chapter's Figure 4.10.
+/// The edits of the run (`r.teaching_edits`), one block per operation: per structure, the
+/// mesh before and after (the element edited marked before, the edges and vertices the edit
+/// made marked after) and the records that changed, the lines `topolab explain NAME --op OP`
+/// prints.
+fn edits(h: &mut String, r: &Results) {
+    if r.teaching_edits.is_empty() {
+        return;
+    }
+    let _ = write!(h, "<h2>Teaching: one edit, record by record</h2><div class=read>Each edit on its default element, on three structures: the mesh before it (seen from above, vertices numbered, the element edited in red) and after it (in red what the edit made: the edges and vertices that are new, such as a flip's new edge or a collapse's edges from the vertex it kept; where none is new, the element's vertices that are left), and every record the structure wrote, old &rarr; new (<code>+</code> added, <code>-</code> removed), in the field names of its source. <code>topolab explain NAME --op OP</code> prints the same lines, from the same code, with what each edit reads.</div>");
+    let mut ops: Vec<_> = r.teaching_edits.iter().map(|e| e.op).collect();
+    ops.dedup();
+    for op in ops {
+        let of_op: Vec<&TeachingEdit> = r.teaching_edits.iter().filter(|e| e.op == op).collect();
+        let first = of_op[0];
+        let _ = write!(
+            h,
+            "<h3>{op}: {} on {}</h3><div class=teach>",
+            esc(&first.subject),
+            esc(&first.mesh)
+        );
+        for e in of_op {
+            let _ = write!(
+                h,
+                "<div class=edit data-op=\"{op}\" data-structure=\"{}\"><h4>{}</h4>{}{}<details open><summary>the records it wrote ({} lines)</summary><pre>{}</pre></details></div>",
+                esc(&e.structure),
+                esc(&e.structure),
+                svg::edit_picture(&e.before, &format!("before {op}"), 180.0),
+                svg::edit_picture(&e.after, &format!("after {op}"), 180.0),
+                e.changes.len(),
+                esc(&e.changes.join("\n"))
+            );
+        }
+        h.push_str("</div>");
+    }
+}
+
+/// What each structure stores for the CHE thesis chapter's Figure 4.10, and edits record by
+/// record.
 pub struct Teaching;
 
 impl Section for Teaching {
@@ -30,5 +68,6 @@ impl Section for Teaching {
     fn render(&self, h: &mut String, page: &Page) {
         teaching(h, page.r);
         crate::reads::section::teaching(h);
+        edits(h, page.r);
     }
 }

@@ -1,6 +1,9 @@
-//! A structure's records read from its [`MeshTopology::explain`] text, for `explain --op`'s
-//! old → new listing: one `(key, fields)` pair per record, the fields written `name = value,
-//! ...` where the structure's source names them, so that a change prints per field.
+//! A structure's records, for the old → new listing of an edit ([`records`], [`diff`]): one
+//! `(key, fields)` pair per record, the fields written `name = value, ...` where the
+//! structure's source names them, so that a change prints per field. The CHE levels' are
+//! their containers entry by entry (`G[v]`, `V[he]`, `O[he]`, `VH[v]`, `EH ∋ he`, `CH[k-1]`, the
+//! names of the CHE thesis chapter); every other structure's are its
+//! [`MeshTopology::explain`] lines read as records ([`explained_records`]).
 //!
 //! The texts come in three forms, each a family's:
 //! - `key: fields` lines (the half-edges' `HE_vert`, `HE_face`, `HE_edge` records, the vertex
@@ -15,7 +18,12 @@
 //! A position `(x, y, z)` followed by named fields (the winged-edge's `v: (x, y, z)  av = e`)
 //! is split into `x = …, y = …, z = …` and those fields.
 
-use topolab_structures::MeshTopology;
+use glam::DVec3;
+use std::any::Any;
+use std::collections::HashMap;
+use std::fmt::Write;
+use topolab_structures::che::CheLevel;
+use topolab_structures::{CheL0, CheL1, CheL2, CheL3, MeshEdit, MeshTopology, VertexId};
 
 /// The field names of the edge list's edge record `E = (start, end, left, right)`.
 const EDGE_LIST_EDGE: [&str; 4] = ["start", "end", "left", "right"];
@@ -125,6 +133,146 @@ fn with_position(value: &str) -> String {
         "x = {}, y = {}, z = {}, {tail}",
         coords[0], coords[1], coords[2]
     )
+}
+
+/// A structure's records as `(key, value)`, in order, with a record per vertex marked deleted
+/// (until garbage collection).
+pub fn records<M: MeshEdit + 'static>(m: &M) -> Vec<(String, String)> {
+    let any: &dyn Any = m;
+    let mut out = if let Some(c) = any.downcast_ref::<CheL0>() {
+        che_records(c.geometry(), c.start_vertices(), None, None, None, None)
+    } else if let Some(c) = any.downcast_ref::<CheL1>() {
+        che_records(
+            c.geometry(),
+            c.start_vertices(),
+            Some(c.opposite()),
+            None,
+            None,
+            None,
+        )
+    } else if let Some(c) = any.downcast_ref::<CheL2>() {
+        che_records(
+            c.geometry(),
+            c.start_vertices(),
+            Some(c.level1().opposite()),
+            Some(c.vertex_half_edge()),
+            Some(c.edge_map()),
+            None,
+        )
+    } else if let Some(c) = any.downcast_ref::<CheL3>() {
+        let l2 = c.level2();
+        che_records(
+            c.geometry(),
+            c.start_vertices(),
+            Some(l2.level1().opposite()),
+            Some(l2.vertex_half_edge()),
+            Some(l2.edge_map()),
+            Some(c.curve_half_edge()),
+        )
+    } else {
+        explained_records(m)
+    };
+    for v in 0..m.num_vertices() {
+        if m.is_deleted_vertex(VertexId::new(v)) {
+            out.push((
+                format!("v{v}.deleted"),
+                "yes (marked until garbage collection)".to_string(),
+            ));
+        }
+    }
+    out
+}
+
+/// The CHE's containers entry by entry.
+fn che_records(
+    g: &[DVec3],
+    v: &[u32],
+    o: Option<&[i32]>,
+    vh: Option<&[i32]>,
+    eh: Option<&[u32]>,
+    ch: Option<&[u32]>,
+) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = g
+        .iter()
+        .enumerate()
+        .map(|(x, p)| {
+            (
+                format!("G[{x}]"),
+                format!("x = {:.3}, y = {:.3}, z = {:.3}", p.x, p.y, p.z),
+            )
+        })
+        .collect();
+    for (he, x) in v.iter().enumerate() {
+        out.push((format!("V[{he}]"), x.to_string()));
+    }
+    for (he, x) in o.into_iter().flatten().enumerate() {
+        out.push((format!("O[{he}]"), x.to_string()));
+    }
+    for (x, he) in vh.into_iter().flatten().enumerate() {
+        out.push((format!("VH[{x}]"), he.to_string()));
+    }
+    for he in eh.into_iter().flatten() {
+        out.push((
+            format!("EH ∋ {he}"),
+            "(an edge's smaller half-edge)".to_string(),
+        ));
+    }
+    for (k, he) in ch.into_iter().flatten().enumerate() {
+        out.push((format!("CH[{k}]"), he.to_string()));
+    }
+    out
+}
+
+/// `name = value` fields of a record, if it is written so.
+fn fields(value: &str) -> Option<Vec<(&str, &str)>> {
+    let value = value.split("  (").next().unwrap_or(value);
+    value
+        .split(", ")
+        .map(|f| f.split_once(" = "))
+        .collect::<Option<Vec<_>>>()
+}
+
+/// The records that changed (`  key.field: old -> new` per field where both are written in
+/// fields, `  key: old -> new` otherwise), were removed (`- key: old`) or were added
+/// (`+ key: new`), one line each; `  (no record changed)` alone when none did.
+pub fn diff(before: &[(String, String)], after: &[(String, String)]) -> Vec<String> {
+    let index =
+        |list: &[(String, String)]| -> HashMap<String, String> { list.iter().cloned().collect() };
+    let (old_index, new_index) = (index(before), index(after));
+    let mut w = String::new();
+    for (key, old) in before {
+        match new_index.get(key) {
+            Some(new) if new == old => {}
+            Some(new) => match (fields(old), fields(new)) {
+                // Per field, where the fields differ (a change in the comment after them
+                // alone prints as a whole).
+                (Some(f), Some(g)) if f.len() == g.len() && f != g => {
+                    for ((name, x), (_, y)) in f.iter().zip(&g) {
+                        if x != y {
+                            let _ = writeln!(w, "  {key}.{name}: {x} -> {y}");
+                        }
+                    }
+                }
+                _ => {
+                    let _ = writeln!(w, "  {key}: {old} -> {new}");
+                }
+            },
+            None => {
+                let _ = writeln!(w, "- {key}: {old}");
+            }
+        }
+    }
+    for (key, new) in after {
+        if !old_index.contains_key(key) {
+            let _ = writeln!(w, "+ {key}: {new}");
+        }
+    }
+    let lines: Vec<String> = w.lines().map(str::to_string).collect();
+    if lines.is_empty() {
+        vec!["  (no record changed)".to_string()]
+    } else {
+        lines
+    }
 }
 
 #[cfg(test)]
