@@ -571,7 +571,7 @@ fn every_operation_succeeds_by_default_on_every_structure_and_names_its_element(
 /// row).
 #[test]
 fn a_refused_request_exits_with_its_typed_reason_on_every_structure() {
-    let cases: [(&[&str], EditOp, Refusal); 12] = [
+    let cases: [(&[&str], EditOp, Refusal); 13] = [
         // Edge 0 = v0 - v1 is on the boundary: one triangle.
         (&["--edge", "0"], EditOp::FlipEdge, Refusal::BoundaryEdge),
         // Edge 1 = v1 - v3: its flip would join v0 and v2, a boundary edge already.
@@ -619,6 +619,14 @@ fn a_refused_request_exits_with_its_typed_reason_on_every_structure() {
             &["--vertex", "0", "--vertices", "1,10", "--mesh", "grid"],
             EditOp::SplitVertex,
             Refusal::NotNeighbours,
+        ),
+        // v2 and v3 are both neighbours of v0, but the fan from v2 round to v3 crosses the
+        // boundary edge v2 - v0: the inverse of a boundary collapse, which no structure
+        // implements.
+        (
+            &["--vertex", "0", "--vertices", "2,3"],
+            EditOp::SplitVertex,
+            Refusal::NotImplemented,
         ),
         // A torus is closed: no boundary vertex to weld to its mirror image.
         (

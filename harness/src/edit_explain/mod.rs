@@ -886,8 +886,7 @@ fn candidates(kind: SubjectKind, m: &IndexHalfEdge) -> Vec<Subject> {
 /// tried on the index half-edge (among its first [`TRIED`] vertices, edges or faces, or the
 /// combinations of its first few vertices for the operations that take several): every
 /// editable structure refuses what it refuses (the editing suite holds them to one model),
-/// though not always with the same reason (a vertex split whose moving fan holds the boundary:
-/// `NotImplemented` on the half-edges, `NotNeighbours` on the others). A subject whose setup is refused
+/// with the same reason on the cases `explain`'s tests name. A subject whose setup is refused
 /// (a vertex that cannot be deleted, before a garbage collection) is skipped.
 pub fn choose(soup: &PolygonSoup, op: EditOp) -> Choice {
     let mut choice = Choice::default();

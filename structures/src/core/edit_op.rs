@@ -144,7 +144,8 @@ pub enum Refusal {
     SameVertex,
     /// A face with fewer than three corners or a repeated vertex.
     BadFace,
-    /// The result would have an edge with more than two faces.
+    /// The result would have an edge with more than two faces, or two faces running it the
+    /// same way (an oriented manifold's two faces of an edge run it in opposite directions).
     NonManifoldEdge,
     /// The result would have a vertex whose faces form several fans.
     NonManifoldVertex,
@@ -207,7 +208,9 @@ impl Refusal {
             Refusal::NoSuchElement => "an id is out of range or names a deleted element",
             Refusal::SameVertex => "both ids name the same vertex: a vertex cannot be welded to itself",
             Refusal::BadFace => "a face needs at least three distinct vertices",
-            Refusal::NonManifoldEdge => "an edge would have more than two faces",
+            Refusal::NonManifoldEdge => {
+                "an edge would have more than two faces, or two faces running it the same way"
+            }
             Refusal::NonManifoldVertex => "a vertex's faces would form several fans",
             Refusal::NotTriangles => "the faces around the edge must be triangles",
             Refusal::BoundaryEdge => {

@@ -347,9 +347,11 @@ pub fn split_vertex<M: FaceRewrite>(
     if !ring.contains(&left) || !ring.contains(&right) {
         return no(Refusal::NotNeighbours);
     }
-    // From the face running v → left, clockwise to the one running right → v: they move.
+    // From the face running v → left, clockwise to the one running right → v: they move. Both
+    // are neighbours (checked above), so a face missing on the way is the boundary inside the
+    // moving fan: the inverse of a boundary collapse, not implemented, as in the half-edges.
     let Some((mut f, mut c, _)) = face_with(m, v, left) else {
-        return no(Refusal::NotNeighbours);
+        return no(Refusal::NotImplemented);
     };
     let mut moved: Vec<(FaceId, Vec<VertexId>)> = Vec::new();
     loop {
@@ -364,7 +366,7 @@ pub fn split_vertex<M: FaceRewrite>(
             break;
         }
         let Some((g, d, _)) = face_with(m, v, before) else {
-            return no(Refusal::NotNeighbours);
+            return no(Refusal::NotImplemented);
         };
         (f, c) = (g, d);
     }

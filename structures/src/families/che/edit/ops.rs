@@ -497,20 +497,23 @@ impl Parts<'_> {
         if !ring.contains(&left) || !ring.contains(&right) || left == x || right == x {
             return Err(self.refuse(op, Refusal::NotNeighbours));
         }
-        // The fan that moves: from the triangle of x → left to the one of right → x.
-        let not_fan = || self.refuse(op, Refusal::NotNeighbours);
-        let mut h = self.find(x, left).ok_or_else(not_fan)?;
+        // The fan that moves: from the triangle of x → left to the one of right → x. Both are
+        // neighbours (checked above), so a triangle missing on the way is the boundary inside
+        // the moving fan: the inverse of a boundary collapse, not implemented, as in the
+        // half-edges.
+        let boundary_in_fan = || self.refuse(op, Refusal::NotImplemented);
+        let mut h = self.find(x, left).ok_or_else(boundary_in_fan)?;
         let mut moved = Vec::new();
         loop {
             if moved.contains(&(h / 3)) {
-                return Err(not_fan());
+                return Err(self.refuse(op, Refusal::NotNeighbours));
             }
             moved.push(h / 3);
             let before = self.v[pv(h) as usize];
             if before == right {
                 break;
             }
-            h = self.find(x, before).ok_or_else(not_fan)?;
+            h = self.find(x, before).ok_or_else(boundary_in_fan)?;
         }
         self.room(1, 2)?;
         let n = self.g.len() as u32;
