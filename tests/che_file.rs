@@ -3,7 +3,6 @@
 //! CHE gives every operator's sweep checksum of the owned CHE it was written from, and bad
 //! files are refused with a one-line message and the documented exit code.
 
-#[allow(dead_code)]
 mod common;
 
 use common::run::{scratch, text, topolab};
@@ -60,7 +59,11 @@ fn convert_info_and_check_a_che_file() {
     let out = dir.join("grid.che");
     let o = topolab(&["convert", "grid:50", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    assert!(text(&o.stdout).contains("level-2 CHE"), "{}", text(&o.stdout));
+    assert!(
+        text(&o.stdout).contains("level-2 CHE"),
+        "{}",
+        text(&o.stdout)
+    );
     // A 5 × 5 grid of squares, two triangles each: 6 · 6 = 36 vertices, 30 + 30 sides and 25
     // diagonals = 85 edges, 50 triangles; a disc, χ = 1.
     let o = topolab(&["info", out.to_str().unwrap(), "--json"]);
@@ -118,7 +121,12 @@ fn convert_info_and_check_a_che_file() {
         ]);
         assert!(o.status.success(), "{}", text(&o.stderr));
         let o = topolab(&["check", path.to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(0), "level {level}: {}", text(&o.stderr));
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "level {level}: {}",
+            text(&o.stderr)
+        );
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -128,9 +136,21 @@ fn bad_che_requests_are_refused_in_one_line_with_nothing_written() {
     let dir = scratch("che-refusals");
     let out = dir.join("x.che");
     let cases: [(&[&str], i32, &str); 4] = [
-        (&["convert", "quad-grid:20", "--to", "che"], 1, "triangles only"),
-        (&["convert", "torus", "--to", "che", "--level", "9"], 2, "--level 9"),
-        (&["convert", "torus", "--to", "obj", "--level", "1"], 2, "--level 1"),
+        (
+            &["convert", "quad-grid:20", "--to", "che"],
+            1,
+            "triangles only",
+        ),
+        (
+            &["convert", "torus", "--to", "che", "--level", "9"],
+            2,
+            "--level 9",
+        ),
+        (
+            &["convert", "torus", "--to", "obj", "--level", "1"],
+            2,
+            "--level 1",
+        ),
         (&["convert", "torus", "--to", "ply"], 2, "PLY"),
     ];
     for (args, code, says) in cases {

@@ -6,11 +6,11 @@ use crate::input::{
 };
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::summary::{shown, summarize, Summary};
 use std::path::Path;
 use std::time::Instant;
 use topolab_structures::che::CheFile;
 use topolab_structures::io::che_file::Container;
+use topolab_structures::summary::{shown, summarize, Summary};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
 struct InfoVisit<'a>(&'a PolygonSoup);

@@ -83,8 +83,12 @@ fn answers<M: MeshTopology>(m: &M) -> Vec<Vec<u64>> {
         let mut sides = Vec::new();
         m.face_edges(f, |e| sides.push(e));
         for e in sides {
-            let next = m.edge_successor(e, f).map_or(u64::MAX, |x: EdgeId| u64::from(x.0));
-            let prev = m.edge_predecessor(e, f).map_or(u64::MAX, |x| u64::from(x.0));
+            let next = m
+                .edge_successor(e, f)
+                .map_or(u64::MAX, |x: EdgeId| u64::from(x.0));
+            let prev = m
+                .edge_predecessor(e, f)
+                .map_or(u64::MAX, |x| u64::from(x.0));
             a.extend([next, prev]);
         }
         out.push(a);
@@ -121,11 +125,7 @@ where
         "{name} at level {L}, not verified"
     );
     mapped.verify().unwrap();
-    assert_eq!(
-        answers(&mapped),
-        expected,
-        "{name} at level {L}, verified"
-    );
+    assert_eq!(answers(&mapped), expected, "{name} at level {L}, verified");
     mapped.validate().unwrap();
     let header = mapped.file().header();
     assert_eq!(header.vertices, soup.num_vertices() as u64);
@@ -185,26 +185,25 @@ fn writing_refuses_what_the_level_refuses() {
     assert!(!path.exists(), "a refused write leaves no file");
 }
 
+/// Whether a refusal is the one a case expects.
+type Expected = fn(&CheFileProblem) -> bool;
+
 #[test]
 fn malformed_headers_and_lengths_are_typed_errors_on_open() {
     let good = level2_bytes(&meshes::torus(6, 4));
-    let cases: Vec<(&str, Vec<u8>, fn(&CheFileProblem) -> bool)> = vec![
+    let cases: Vec<(&str, Vec<u8>, Expected)> = vec![
         ("empty", Vec::new(), |p| {
             matches!(p, CheFileProblem::Short { bytes: 0 })
         }),
         ("short", good[..40].to_vec(), |p| {
             matches!(p, CheFileProblem::Short { bytes: 40 })
         }),
-        (
-            "truncated",
-            good[..good.len() - 64].to_vec(),
-            |p| matches!(p, CheFileProblem::LengthMismatch { .. }),
-        ),
-        (
-            "longer",
-            [good.clone(), vec![0; 64]].concat(),
-            |p| matches!(p, CheFileProblem::LengthMismatch { .. }),
-        ),
+        ("truncated", good[..good.len() - 64].to_vec(), |p| {
+            matches!(p, CheFileProblem::LengthMismatch { .. })
+        }),
+        ("longer", [good.clone(), vec![0; 64]].concat(), |p| {
+            matches!(p, CheFileProblem::LengthMismatch { .. })
+        }),
         (
             "magic",
             {

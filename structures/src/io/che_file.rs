@@ -353,7 +353,10 @@ impl Layout {
         let limit = i32::MAX as u64;
         let impossible = |reason: String| Err(CheFileProblem::ImpossibleCounts { reason });
         if header.vertices > limit {
-            return impossible(format!("{} vertices, more than i32 numbers", header.vertices));
+            return impossible(format!(
+                "{} vertices, more than i32 numbers",
+                header.vertices
+            ));
         }
         if header.triangles > limit / 3 {
             return impossible(format!(

@@ -150,7 +150,11 @@ impl CheL0 {
 
 /// `V[]` holds whole triangles of the `vertices` vertices: level 0's invariant, on slices so
 /// that a mapped CHE checks its containers with the same code.
-pub(crate) fn check_start_vertices(vertices: usize, v: &[u32], structure: &'static str) -> Result<()> {
+pub(crate) fn check_start_vertices(
+    vertices: usize,
+    v: &[u32],
+    structure: &'static str,
+) -> Result<()> {
     if !v.len().is_multiple_of(3) {
         return Err(Error::invariant(
             structure,

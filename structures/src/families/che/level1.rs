@@ -3,8 +3,8 @@
 //! still scans `V[]` for its first half-edge (Algorithm 6).
 
 use super::build::{build_chapter, build_fast, Checked};
-use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
 use super::level0::check_start_vertices;
+use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
 use super::{CheL0, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
@@ -84,7 +84,12 @@ impl CheL1 {
     /// `V[]` is valid and `O[]` pairs half-edges with the same vertices in opposite directions
     /// ([`check_opposites`]).
     pub(crate) fn check_opposites(&self, structure: &'static str) -> Result<()> {
-        check_opposites(self.geometry().len(), self.start_vertices(), &self.o, structure)
+        check_opposites(
+            self.geometry().len(),
+            self.start_vertices(),
+            &self.o,
+            structure,
+        )
     }
 
     pub(crate) fn container_bytes(&self) -> usize {
@@ -181,7 +186,7 @@ impl CheLevel for CheL1 {
         self.l0.start_vertices()
     }
 
-    /// Algorithm 6 ([`vertex_star_algorithm_6`]).
+    /// Algorithm 6 (`vertex_star_algorithm_6`, shared with the mapped level 1).
     fn vertex_star(
         &self,
         v: VertexId,

@@ -5,9 +5,9 @@
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
 use super::fan::{ranges_hold, Fan};
+use super::level1::check_opposites;
 use super::triangle;
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
-use super::level1::check_opposites;
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};

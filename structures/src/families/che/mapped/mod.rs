@@ -7,10 +7,10 @@
 //!   [`CheFile::check`] reads everything: the checksum, every id's range, the header's edge
 //!   count, and the level's invariants (the owned levels' `validate()`, the same functions).
 //! - [`MappedChe`] (`MappedCheL1`, `MappedCheL2`, `MappedCheL3`): levels 1–3 as a
-//!   [`MeshTopology`](crate::MeshTopology) structure, read-only. Its relations are the owned
+//!   [`MeshTopology`] structure, read-only. Its relations are the owned
 //!   levels' own: the `che_topology!` macro over the same [`CheLevel`] hooks, Algorithm 6 and
 //!   Algorithm 7's walk, and after a verification the timed two-ended walk (`Fan`). Level 0
-//!   (its algorithms are methods of the owned [`CheL0`](super::CheL0)) is checked and
+//!   (its algorithms are methods of the owned [`CheL0`]) is checked and
 //!   described as a file, not mapped as a structure.
 //!
 //! ## Which reads are checked
@@ -72,11 +72,11 @@ impl std::fmt::Debug for CheFile {
 /// The structure names of the four owned levels, by level.
 const OWNED_NAMES: [&str; 4] = [CheL0::NAME, CheL1::NAME, CheL2::NAME, CheL3::NAME];
 
+/// An entry out of its range: (index, value).
+type Outside = (u64, i64);
+
 /// The first entry of `xs` whose value `allowed` refuses, as (index, value).
-fn first_outside<T: Copy + Into<i64>>(
-    xs: &[T],
-    allowed: impl Fn(i64) -> bool,
-) -> Option<(u64, i64)> {
+fn first_outside<T: Copy + Into<i64>>(xs: &[T], allowed: impl Fn(i64) -> bool) -> Option<Outside> {
     xs.iter()
         .map(|&x| x.into())
         .enumerate()
@@ -152,7 +152,10 @@ impl CheFile {
         let stored = self.header().checksum;
         let computed = checksum(self.map.bytes());
         if computed != stored {
-            return Err(problem(CheFileProblem::ChecksumMismatch { stored, computed }));
+            return Err(problem(CheFileProblem::ChecksumMismatch {
+                stored,
+                computed,
+            }));
         }
         self.check_ids().map_err(problem)?;
         self.check_edge_count().map_err(problem)?;
@@ -174,7 +177,7 @@ impl CheFile {
             }
         };
         let half_edge_range = format!("a half-edge, 0 to {}", half_edges - 1);
-        let checks: [(Container, Option<(u64, i64)>, String); 6] = [
+        let checks: [(Container, Option<Outside>, String); 6] = [
             (
                 Container::V,
                 first_outside(self.start_vertices(), |x| (0..vertices).contains(&x)),
