@@ -134,8 +134,12 @@ pub enum Command {
         level: Option<u8>,
     },
     /// Decimate a triangle mesh by quadric error (as OpenMesh's Decimater with ModQuadric) to
-    /// `--faces N` or `--ratio R` of its faces and write it.
+    /// `--faces N` or `--ratio R` of its faces and write it; or through `--levels 50%,10%`,
+    /// writing every level of detail and the collapse record into a folder.
     Decimate(commands::decimate::DecimateArgs),
+    /// Rebuild a level of detail, by default the original, from the folder `decimate --levels`
+    /// wrote: its coarsest mesh and its collapse record, undone by vertex splits.
+    Reconstruct(commands::reconstruct::ReconstructArgs),
 }
 
 /// Runs a parsed command line; returns the process exit code.
@@ -195,6 +199,7 @@ pub fn run(cli: Cli) -> u8 {
             level,
         } => commands::convert::convert(&mesh, &out, to.as_deref(), level),
         Command::Decimate(args) => commands::decimate::run(&args),
+        Command::Reconstruct(args) => commands::reconstruct::run(&args),
     };
     match result {
         Ok(text) => match crate::output::print(&text) {

@@ -145,6 +145,57 @@ pub fn write_file(
     write_atomically(path, fill).map_err(|e| cannot(path, e))
 }
 
+/// What fills one file of [`write_files_together`].
+pub type Fill<'a> = Box<dyn FnOnce(&mut BufWriter<File>) -> std::io::Result<()> + 'a>;
+
+/// Writes the files `files` (name, filler) into the folder `dir` (created if missing) so that
+/// either all of them are there or none: each is filled as its [`temporary_path`] first, and
+/// only when every one is complete are they renamed over their names. When a fill fails (a
+/// full disk), the temporary files are removed, and so is the folder if this call created it.
+/// A rename within one folder needs no space and does not fail on a folder it could create
+/// files in; if one fails anyway, the files renamed before it stay (in a folder this call
+/// created, they go with it). A failure names the file (exit code 2).
+pub fn write_files_together(dir: &Path, files: Vec<(String, Fill<'_>)>) -> Result<(), Failure> {
+    // The highest folder this call creates, to remove if a file cannot be written.
+    let mut created = None;
+    let mut up = dir.to_path_buf();
+    while !up.as_os_str().is_empty() && !up.exists() {
+        created = Some(up.clone());
+        up = folder_of(&up);
+    }
+    std::fs::create_dir_all(dir).map_err(|e| cannot(dir, e))?;
+    let mut filled: Vec<(PathBuf, PathBuf)> = Vec::new();
+    let undo = |filled: &[(PathBuf, PathBuf)]| {
+        for (tmp, _) in filled {
+            let _ = std::fs::remove_file(tmp);
+        }
+        if let Some(top) = &created {
+            let _ = std::fs::remove_dir_all(top);
+        }
+    };
+    for (name, fill) in files {
+        let path = dir.join(&name);
+        let tmp = temporary_path(&path);
+        let written = File::create(&tmp).and_then(|file| {
+            let mut w = BufWriter::new(file);
+            fill(&mut w)?;
+            std::io::Write::flush(&mut w)
+        });
+        filled.push((tmp, path.clone()));
+        if let Err(e) = written {
+            undo(&filled);
+            return Err(cannot(&path, e));
+        }
+    }
+    for (i, (tmp, path)) in filled.iter().enumerate() {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            undo(&filled[i..]);
+            return Err(cannot(path, e));
+        }
+    }
+    Ok(())
+}
+
 /// Writes a command's text to standard output. A reader that stops reading (`topolab ... |
 /// head`) closes the pipe: that ends the output without an error, as for the other Unix
 /// tools, instead of the panic of `print!`. Any other failure to write is reported on stderr

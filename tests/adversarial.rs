@@ -71,6 +71,10 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("out", vec!["--out", "@DIR/decimated.obj"]),
         ],
         "convert" => vec![("mesh", vec!["torus"]), ("out", vec!["@DIR/converted.stl"])],
+        "reconstruct" => vec![
+            ("dir", vec!["@DIR/lod"]),
+            ("out", vec!["--out", "@DIR/rebuilt.obj"]),
+        ],
         _ => return None,
     })
 }
@@ -306,7 +310,131 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["convert", "torus", "--to", "che", "/proc/nope.che"],
         vec!["convert", "torus", "--to", "che", "/dev/full"],
         vec!["convert", "torus", "--to", "che", "@DIR/taken.obj"],
+        // Levels of detail: bad levels, levels with another target, outputs that are no
+        // folder or cannot be made.
+        vec!["decimate", "torus", "--levels", "", "--out", "@DIR/l"],
+        vec!["decimate", "torus", "--levels", "0%", "--out", "@DIR/l"],
+        vec!["decimate", "torus", "--levels", "100%", "--out", "@DIR/l"],
+        vec!["decimate", "torus", "--levels", "150%", "--out", "@DIR/l"],
+        vec![
+            "decimate", "torus", "--levels", "10%,50%", "--out", "@DIR/l",
+        ],
+        vec!["decimate", "torus", "--levels", "half", "--out", "@DIR/l"],
+        vec![
+            "decimate", "torus", "--levels", "50%", "--faces", "10", "--out", "@DIR/l",
+        ],
+        vec![
+            "decimate", "torus", "--levels", "50%", "--ratio", "0.5", "--out", "@DIR/l",
+        ],
+        vec![
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%,1%",
+            "--out",
+            "@DIR/l",
+        ],
+        vec!["decimate", "torus:600", "--levels", "50%", "--out", "@FILE"],
+        vec![
+            "decimate",
+            "torus:600",
+            "--levels",
+            "50%",
+            "--out",
+            "/proc/nope",
+        ],
+        vec![
+            "decimate",
+            "torus:1073741824",
+            "--levels",
+            "50%",
+            "--out",
+            "@DIR/l",
+        ],
+        // A folder missing, or not a folder; a record missing, cut short, of another
+        // version, with ids past the original's vertices, or not of this coarse mesh.
+        vec!["reconstruct", "@DIR/none", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@FILE", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR/lod-truncated", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR/lod-version", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR/lod-ids", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR/lod-mismatch", "--out", "@DIR/x.obj"],
+        vec!["reconstruct", "@DIR/lod-garbage", "--out", "@DIR/x.obj"],
+        // --to below the coarse mesh's faces, above the original's; outputs that cannot be
+        // written.
+        vec![
+            "reconstruct",
+            "@DIR/lod",
+            "--to",
+            "0",
+            "--out",
+            "@DIR/x.obj",
+        ],
+        vec![
+            "reconstruct",
+            "@DIR/lod",
+            "--to",
+            "99999",
+            "--out",
+            "@DIR/x.obj",
+        ],
+        vec!["reconstruct", "@DIR/lod", "--out", "/dev/full"],
+        vec!["reconstruct", "@DIR/lod", "--out", "/proc/nope.obj"],
+        vec!["reconstruct", "@DIR/lod", "--out", "@DIR/taken.obj"],
+        vec!["reconstruct", "@DIR/lod", "--out", "@DIR/x.ply"],
+        vec![
+            "reconstruct",
+            "@DIR/lod",
+            "--structure",
+            "lox-half-edge",
+            "--out",
+            "@DIR/x.obj",
+        ],
     ]
+}
+
+/// The level-of-detail folders of the scratch folder `dir`: `lod`, written by `topolab
+/// decimate --levels` (600 faces to 300 and 60), and copies with one thing wrong each.
+fn level_of_detail_folders(dir: &Path) {
+    let lod = dir.join("lod");
+    let made = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["decimate", "torus:600", "--levels", "50%,10%", "--out"])
+        .arg(&lod)
+        .output()
+        .expect("the binary runs");
+    assert!(made.status.success(), "{made:?}");
+    let record = std::fs::read_to_string(lod.join("collapses.txt")).unwrap();
+    let coarse = std::fs::read_to_string(lod.join("coarse.obj")).unwrap();
+    // The first collapse's line, its vertex ids past the original's 300-odd vertices.
+    let first = record.find("\n# from").unwrap() + 1;
+    let first = first + record[first..].find('\n').unwrap() + 1;
+    let end = first + record[first..].find('\n').unwrap();
+    let ids = format!("{}999999 0 1 2 0 0 0 0{}", &record[..first], &record[end..]);
+    let mismatch = coarse.replacen("v ", "v 9 9 9\n# was: ", 1);
+    for (name, record, coarse) in [
+        (
+            "lod-truncated",
+            record[..record.len() / 2].to_string(),
+            coarse.clone(),
+        ),
+        (
+            "lod-version",
+            record.replacen("topolab-collapses 1", "topolab-collapses 2", 1),
+            coarse.clone(),
+        ),
+        ("lod-ids", ids, coarse.clone()),
+        ("lod-mismatch", record.clone(), mismatch),
+        (
+            "lod-garbage",
+            "\u{0}\u{1}\u{fffd}".to_string(),
+            coarse.clone(),
+        ),
+    ] {
+        std::fs::create_dir_all(dir.join(name)).unwrap();
+        std::fs::write(dir.join(name).join("collapses.txt"), record).unwrap();
+        std::fs::write(dir.join(name).join("coarse.obj"), coarse).unwrap();
+    }
 }
 
 /// The outcome of one run.
@@ -398,6 +526,7 @@ fn scratch(name: &str) -> PathBuf {
         "OFF\n4 3 0\n0 0 0\n1 0 0\n0.5 0.8 0\n0.5 0.3 0.8\n3 0 1 3\n3 1 2 3\n3 2 0 3\n",
     )
     .unwrap();
+    level_of_detail_folders(&dir);
     dir
 }
 
@@ -508,11 +637,17 @@ fn every_subcommand_refuses_adversarial_arguments_quickly_in_one_line() {
         [
             "far.obj",
             "level9.che",
+            "lod",
+            "lod-garbage",
+            "lod-ids",
+            "lod-mismatch",
+            "lod-truncated",
+            "lod-version",
             "magic.che",
             "taken",
             "taken.obj",
             "tet.off",
-            "truncated.che"
+            "truncated.che",
         ]
     );
     std::fs::remove_dir_all(&dir).unwrap();

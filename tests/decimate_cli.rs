@@ -123,20 +123,20 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
             "at least 4",
         ),
         ("torus", vec!["--ratio", "1.5"], vec![], 2, "(0, 1]"),
+        // A structure without editing operations: the refusal says which structures decimate.
         (
             "torus",
-            vec!["--faces", "10"],
-            vec!["--structure", "che-l2"],
+            vec!["--faces", "20"],
+            vec!["--structure", "explicit"],
             2,
-            "editable",
+            "it has no editing operations; decimation and reconstruction run on the structures the decimation suite enrols",
         ),
-        // The winged-edge is editable: the refusal says why decimation does not run on it.
         (
             "torus",
-            vec!["--faces", "10"],
-            vec!["--structure", "winged-edge"],
+            vec!["--faces", "20"],
+            vec!["--structure", "nope"],
             2,
-            "only these two are enrolled in the decimation suite",
+            "unknown structure",
         ),
         (
             "torus",

@@ -15,6 +15,7 @@ pub mod explain_trace;
 pub mod hull;
 pub mod info;
 pub mod list;
+pub mod reconstruct;
 pub mod refine;
 pub mod refine_adaptive;
 pub mod repair;

@@ -7,12 +7,17 @@
 //! collapse; after the reconstruction `validate()` holds and the mesh is the original exactly
 //! ([`same_mesh`]: positions bit-identical, the same
 //! oriented faces through the documented id mapping). The eager strategy is also compared,
-//! collapse for collapse, with a naive oracle of OpenMesh's discipline ([`eager_oracle`]). The
+//! collapse for collapse, with a naive oracle of OpenMesh's discipline ([`eager_oracle`]).
+//! Levels of detail ([`levels_round_trip`]): the same meshes decimated through random levels,
+//! the record written in its file format ([`Record`]) and read back, and each level and the
+//! original rebuilt from the coarse mesh and that record alone. The
 //! [`decimate_conformance!`](macro@crate::decimate_conformance) macro enrols a structure in one
 //! line.
 
+use crate::algorithms::decimate::record::{fingerprint, Counts, Level, Record};
 use crate::algorithms::decimate::{
-    decimate, reconstruct, same_mesh, triangle_quadric, Quadric, Strategy,
+    canonical_input, decimate, decimate_levels, live_soup, reconstruct, reconstruct_from,
+    same_mesh, triangle_quadric, Quadric, Strategy,
 };
 use crate::core::edit::MeshEdit;
 use crate::core::ids::FaceId;
@@ -112,6 +117,118 @@ pub fn canonical<M: MeshEdit>() -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The random levels of the suite's case `seed` for `soup`: one to four targets, strictly
+/// decreasing fractions of its faces.
+fn levels_of(seed: u64, soup: &PolygonSoup) -> Vec<usize> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5bd1_e995);
+    let mut fractions: Vec<f64> = (0..rng.random_range(1..=4))
+        .map(|_| rng.random_range(0.01..1.0))
+        .collect();
+    fractions.sort_by(|a, b| b.total_cmp(a));
+    fractions.dedup();
+    fractions
+        .iter()
+        .map(|p| (p * soup.num_faces() as f64).round() as usize)
+        .collect()
+}
+
+/// Levels of detail through the record file, one case: [`random_mesh`] of `seed` built as `M`
+/// and decimated with `strategy` through random levels ([`decimate_levels`]), each level kept
+/// in canonical form ([`live_soup`]); the record written as text and read back (it must be the
+/// same record); then, from the coarse mesh and the record read back alone (built as `M`
+/// afresh, numbered as the file numbers it), a reconstruction to each level's face count
+/// (the same canonical mesh as the level, with that many faces) and to the original (the
+/// input's canonical form: every vertex at its original id with its position's bits, the same
+/// faces). `Ok(collapses)`, or what went wrong; a soup `M` refuses is `Ok(0)`.
+pub fn levels_round_trip<M: MeshEdit>(seed: u64, strategy: Strategy) -> Result<usize, String> {
+    let soup = random_mesh(seed);
+    let Ok(mut m) = M::from_soup(&soup) else {
+        return Ok(0);
+    };
+    let targets = levels_of(seed, &soup);
+    let identity: Vec<u32> = (0..soup.num_vertices() as u32).collect();
+    let mut soups = Vec::new();
+    let d = decimate_levels(&mut m, &targets, strategy, |m, _| {
+        soups.push(live_soup(m, &identity))
+    })
+    .map_err(|e| format!("decimate: {e}"))?;
+    let original = canonical_input(&soup);
+    let coarse = soups.last().ok_or("no level")?.clone();
+    let record = Record {
+        original: Counts::of(&original),
+        coarse: Counts::of(&coarse),
+        levels: d
+            .levels
+            .iter()
+            .zip(&soups)
+            .map(|(&collapses, s)| Level {
+                faces: s.num_faces(),
+                collapses,
+                fingerprint: fingerprint(s),
+            })
+            .collect(),
+        collapses: d.collapses,
+    };
+    let read = Record::parse(&record.to_text()).map_err(|e| format!("record: {e}"))?;
+    if read != record {
+        return Err("the record read back differs from the one written".into());
+    }
+    for (i, (level, state)) in read.levels.iter().zip(&soups).enumerate() {
+        // Short of its target only when no legal collapse was left: then nothing follows.
+        if level.faces > targets[i] && level.collapses < read.collapses.len() {
+            return Err(format!(
+                "level {i}: {} faces for a target of {}",
+                level.faces, targets[i]
+            ));
+        }
+        let rebuilt = rebuild::<M>(&coarse, &read, level.faces)?;
+        if rebuilt.num_faces() != level.faces || &rebuilt != state {
+            return Err(format!(
+                "level {i} ({} faces) rebuilt as another mesh of {} faces",
+                level.faces,
+                rebuilt.num_faces()
+            ));
+        }
+    }
+    let rebuilt = rebuild::<M>(&coarse, &read, read.original.faces)?;
+    let bits = |s: &PolygonSoup| -> Vec<[u64; 3]> {
+        s.positions
+            .iter()
+            .map(|p| p.to_array().map(f64::to_bits))
+            .collect()
+    };
+    if bits(&rebuilt) != bits(&original) {
+        return Err("the original's positions did not come back bit for bit".into());
+    }
+    if rebuilt != original {
+        return Err("the original's faces did not come back".into());
+    }
+    read.original
+        .check("the original", &rebuilt)
+        .map_err(|e| e.to_string())?;
+    Ok(read.collapses.len())
+}
+
+/// The state with at least `faces` faces rebuilt from `coarse` (as `M`) and `record`, in
+/// canonical form.
+fn rebuild<M: MeshEdit>(
+    coarse: &PolygonSoup,
+    record: &Record,
+    faces: usize,
+) -> Result<PolygonSoup, String> {
+    record
+        .coarse
+        .check("the coarse mesh", coarse)
+        .map_err(|e| e.to_string())?;
+    let mut m = M::from_soup(coarse).map_err(|e| format!("the coarse mesh: {e}"))?;
+    let keep = record.keep_for(faces).ok_or("faces out of range")?;
+    let r = reconstruct_from(&mut m, &record.collapses, keep, record.coarse_ids())
+        .map_err(|e| format!("reconstruct to {faces} faces: {e}"))?;
+    m.validate()
+        .map_err(|e| format!("invalid after reconstruction to {faces} faces: {e}"))?;
+    Ok(live_soup(&m, &r.original))
 }
 
 /// The eager strategy's discipline (OpenMesh's `DecimaterT` with `ModQuadricT` alone, see
@@ -246,6 +363,15 @@ macro_rules! decimate_conformance {
                 fn decimation_then_reconstruction_gives_the_mesh_back(seed in $crate::testing::proptest::prelude::any::<u64>()) {
                     for strategy in $crate::algorithms::decimate::Strategy::ALL {
                         if let Err(msg) = $crate::testing::decimating::run::<$ty>(seed, strategy) {
+                            panic!("{} on mesh seed {seed}: {msg}", <$ty as $crate::MeshTopology>::NAME);
+                        }
+                    }
+                }
+
+                #[test]
+                fn levels_come_back_from_the_coarse_mesh_and_the_record_file(seed in $crate::testing::proptest::prelude::any::<u64>()) {
+                    for strategy in $crate::algorithms::decimate::Strategy::ALL {
+                        if let Err(msg) = $crate::testing::decimating::levels_round_trip::<$ty>(seed, strategy) {
                             panic!("{} on mesh seed {seed}: {msg}", <$ty as $crate::MeshTopology>::NAME);
                         }
                     }

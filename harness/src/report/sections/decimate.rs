@@ -1,7 +1,8 @@
 //! "Decimation by quadric error, and reconstruction" (see [`crate::decimate`]): on the closed
 //! tori of the run up to [`MAX_FACES`], each mesh decimated to 10% of its faces by the lab's
-//! decimater on the two structures the decimation suite enrols, the index and the pointer
-//! half-edge, where asked for, with each [`Strategy`] (eager: OpenMesh's
+//! decimater on the index and the pointer half-edge (the two structures whose eager collapses
+//! are compared with OpenMesh's Decimater; the decimation suite enrols every editable one),
+//! where asked for, with each [`Strategy`] (eager: OpenMesh's
 //! Decimater step for step; lazy: the lab's), the reconstruction by vertex splits timed and
 //! checked, and by OpenMesh's and CGAL's decimaters natively, every result's error measured
 //! the same way.
@@ -41,7 +42,8 @@ pub const MAX_FACES: usize = 65_536;
 /// With `--quick`.
 const MAX_FACES_QUICK: usize = 16_384;
 
-/// The lab's structures that decimate.
+/// The lab's structures the report decimates (every editable one decimates; these two are
+/// the ones whose eager collapses are compared with OpenMesh's Decimater).
 const EDITABLE: [&str; 2] = ["index-half-edge", "pointer-half-edge"];
 
 /// The decimaters of the Targets row, which take turns on the run's largest torus: the index
@@ -367,7 +369,7 @@ fn render(h: &mut String, rows: &[DecimateRow]) {
     h.push_str(concat!(
         "<h2>Decimation by quadric error, and reconstruction</h2><div class=read><b>How to read it.</b> Thinning for level of detail, as the lecture on polygon-mesh data structures asks, with reconstruction possible again. ",
         "Each mesh is decimated to 10% of its faces by Garland and Heckbert's quadric error. ",
-        "The lab's decimater runs on the index and the pointer half-edge (of the editable structures, the two its test suite enrols) with two strategies, both with OpenMesh's area-weighted plane quadrics, a heap of vertices keyed by their best half-edge collapse (the error rounded to <code>f32</code>), the removed vertex collapsed onto its neighbour (no optimal placement), the structure's collapse test (the link condition and OpenMesh's tetrahedron test), and boundary vertices kept. ",
+        "The lab's decimater runs on the index and the pointer half-edge (of the editable structures, which its test suite all enrols, the two whose collapses are compared with OpenMesh's Decimater) with two strategies, both with OpenMesh's area-weighted plane quadrics, a heap of vertices keyed by their best half-edge collapse (the error rounded to <code>f32</code>), the removed vertex collapsed onto its neighbour (no optimal placement), the structure's collapse test (the link condition and OpenMesh's tetrahedron test), and boundary vertices kept. ",
         "<b>eager</b> rows run OpenMesh's <code>DecimaterT</code> with <code>ModQuadricT</code> step for step: every neighbour of a vertex tested for legality (<code>MeshEdit::check_collapse</code>, the structure's own test) before it is priced, only legal collapses heaped, one refused when it leaves the heap dropped, every neighbour of the removed vertex heaped again, no geometric test. ",
         "They and OpenMesh's Decimater run one algorithm, so their time ratio compares the structures: the Targets row is the index half-edge's eager decimation against OpenMesh. ",
         "<b>lazy</b> rows run the lab's own variant: collapses priced without a legality test and tested when they leave the heap (a refused vertex heaped again with its next-best neighbour), and a collapse that would flip or flatten a face skipped (OpenMesh's <code>ModNormalFlippingT</code> at 90°, which OpenMesh's row does not run): another algorithm, with fewer legality tests, shown beside but not a structure comparison. ",

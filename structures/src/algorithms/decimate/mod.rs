@@ -87,8 +87,12 @@
 
 mod heap;
 mod reconstruct;
+pub mod record;
 
-pub use reconstruct::{reconstruct, same_mesh, Difference, Reconstruction};
+pub use reconstruct::{
+    canonical_input, live_soup, reconstruct, reconstruct_from, same_mesh, Difference,
+    Reconstruction,
+};
 
 use crate::core::edit::MeshEdit;
 use crate::core::error::{Error, Result};
@@ -283,6 +287,10 @@ pub struct Decimation {
     pub faces_before: usize,
     /// Live faces after (at most the target, unless no legal collapse was left).
     pub faces_after: usize,
+    /// Per target of [`decimate_levels`], in order, the number of collapses done when it was
+    /// reached (the first that many of [`Decimation::collapses`]); one entry for
+    /// [`decimate`].
+    pub levels: Vec<usize>,
 }
 
 /// The decimater's state: the per-vertex arrays of `DecimaterT` and `ModQuadricT`.
@@ -461,6 +469,23 @@ pub fn decimate<M: MeshEdit>(
     target_faces: usize,
     strategy: Strategy,
 ) -> Result<Decimation> {
+    decimate_levels(m, &[target_faces], strategy, |_, _| {})
+}
+
+/// [`decimate`] through several targets in one run: the collapses go on, one heap and one set
+/// of quadrics throughout, until at most `targets[0]` live faces remain, then `at_level(m, 0)`
+/// sees the mesh, then on to `targets[1]`, and so on (the targets in the order given; one not
+/// below the live count is reached at once). A target no legal collapse reaches is passed
+/// with the mesh as far as it went. One run rather than one [`decimate`] per target, so that
+/// a level's collapses are those a single decimation to it would make: the quadrics keep
+/// what earlier collapses added to them. [`Decimation::levels`] says how many collapses were
+/// done at each level.
+pub fn decimate_levels<M: MeshEdit>(
+    m: &mut M,
+    targets: &[usize],
+    strategy: Strategy,
+    mut at_level: impl FnMut(&M, usize),
+) -> Result<Decimation> {
     let n = m.num_vertices();
     let mut faces = (0..m.num_faces())
         .filter(|&f| !m.is_deleted_face(FaceId::new(f)))
@@ -481,44 +506,48 @@ pub fn decimate<M: MeshEdit>(
         }
     }
     let mut support: Vec<u32> = Vec::with_capacity(16);
-    let c = &mut out.collapses;
-    while faces > target_faces {
-        let Some(v) = d.heap.pop(&d.priority) else {
-            break;
-        };
-        let (from, to) = (VertexId(v), VertexId(d.target[v as usize]));
-        let Some((left, right)) = wings(m, from, to) else {
-            // Not two triangles around the edge: the collapse would be refused.
-            d.refused(m, v, strategy);
-            continue;
-        };
-        if strategy == Strategy::Lazy && !keeps_faces(m, from, to) {
-            d.refused(m, v, strategy);
-            continue;
-        }
-        support.clear();
-        m.vertex_vertices(from, |w| support.push(w.0));
-        let position = m.position(from);
-        match m.collapse_edge(from, to) {
-            Ok(()) => {}
-            Err(Error::EditRefused { .. }) => {
+    for (level, &target_faces) in targets.iter().enumerate() {
+        let c = &mut out.collapses;
+        while faces > target_faces {
+            let Some(v) = d.heap.pop(&d.priority) else {
+                break;
+            };
+            let (from, to) = (VertexId(v), VertexId(d.target[v as usize]));
+            let Some((left, right)) = wings(m, from, to) else {
+                // Not two triangles around the edge: the collapse would be refused.
+                d.refused(m, v, strategy);
+                continue;
+            };
+            if strategy == Strategy::Lazy && !keeps_faces(m, from, to) {
                 d.refused(m, v, strategy);
                 continue;
             }
-            Err(e) => return Err(e),
+            support.clear();
+            m.vertex_vertices(from, |w| support.push(w.0));
+            let position = m.position(from);
+            match m.collapse_edge(from, to) {
+                Ok(()) => {}
+                Err(Error::EditRefused { .. }) => {
+                    d.refused(m, v, strategy);
+                    continue;
+                }
+                Err(e) => return Err(e),
+            }
+            faces -= 2;
+            c.from.push(v);
+            c.to.push(to.0);
+            c.left.push(left);
+            c.right.push(right);
+            c.position.push(position);
+            c.error.push(d.error(m, from, to).max(0.0));
+            let qv = d.quadric[v as usize];
+            d.quadric[to.index()].add_assign(&qv);
+            for &s in &support {
+                d.heap_vertex(m, s, strategy);
+            }
         }
-        faces -= 2;
-        c.from.push(v);
-        c.to.push(to.0);
-        c.left.push(left);
-        c.right.push(right);
-        c.position.push(position);
-        c.error.push(d.error(m, from, to).max(0.0));
-        let qv = d.quadric[v as usize];
-        d.quadric[to.index()].add_assign(&qv);
-        for &s in &support {
-            d.heap_vertex(m, s, strategy);
-        }
+        out.levels.push(c.len());
+        at_level(m, level);
     }
     out.faces_after = faces;
     Ok(out)

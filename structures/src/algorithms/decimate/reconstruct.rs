@@ -7,11 +7,13 @@
 //! vertex a new id, `num_vertices()` before its split; [`Reconstruction::original`] maps every
 //! vertex id of the rebuilt mesh to the id the vertex had before the decimation. Faces are
 //! compared as a set (each rotated to start at its smallest vertex), since face ids are not
-//! recorded.
+//! recorded. [`reconstruct_from`] starts from a mesh numbered otherwise (the coarse mesh read
+//! from a file) and may stop at any number of collapses; [`live_soup`] writes a state in the
+//! canonical form the level-of-detail files share.
 
 use super::Collapses;
 use crate::core::edit::MeshEdit;
-use crate::core::error::Result;
+use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
 
@@ -26,23 +28,60 @@ pub struct Reconstruction {
 /// Undoes `collapses` on `m` (the decimated mesh, not garbage-collected) by vertex splits, the
 /// last collapse first.
 pub fn reconstruct<M: MeshEdit>(m: &mut M, collapses: &Collapses) -> Result<Reconstruction> {
+    let identity = (0..m.num_vertices() as u32).collect();
+    reconstruct_from(m, collapses, 0, identity)
+}
+
+/// Undoes the collapses of `collapses` after the first `keep` on `m`, the last first, and
+/// says which original vertex each vertex of the result is: `m` is the mesh after all of
+/// them, numbered its own way, and `live_of[o]` is the id in `m` of original vertex `o`
+/// ([`u32::MAX`] for a vertex a collapse removed). [`reconstruct`] is this with `keep` 0 on
+/// the decimated mesh itself (its ids are the original ones); `topolab reconstruct` starts
+/// from the coarse mesh read from a file, whose vertices are the survivors in increasing
+/// original id. The result is the mesh after the first `keep` collapses.
+pub fn reconstruct_from<M: MeshEdit>(
+    m: &mut M,
+    collapses: &Collapses,
+    keep: usize,
+    live_of: Vec<u32>,
+) -> Result<Reconstruction> {
     let n = collapses.len();
-    m.reserve(n, 3 * n, 2 * n);
-    let mut original: Vec<u32> = (0..m.num_vertices() as u32).collect();
+    let keep = keep.min(n);
+    let splits = n - keep;
+    m.reserve(splits, 3 * splits, 2 * splits);
+    let mut original = vec![u32::MAX; m.num_vertices()];
+    for (o, &v) in live_of.iter().enumerate() {
+        if let Some(slot) = original.get_mut(v as usize) {
+            *slot = o as u32;
+        }
+    }
     // A vertex removed by a later collapse was re-created (with a new id) before an earlier
     // collapse that names it is undone: `current` follows each original id to its live one.
-    let mut current: Vec<u32> = original.clone();
-    for i in (0..n).rev() {
-        let id = |v: u32| VertexId(current[v as usize]);
+    let mut current = live_of;
+    for i in (keep..n).rev() {
+        let id = |v: u32| -> Result<VertexId> {
+            match current.get(v as usize) {
+                Some(&live) if live != u32::MAX => Ok(VertexId(live)),
+                _ => Err(Error::InvalidParameter {
+                    parameter: "collapse record",
+                    value: format!("collapse {i} names vertex {v}"),
+                    expected: "a record whose collapses name vertices present when undone",
+                }),
+            }
+        };
         let new = m.split_vertex(
-            id(collapses.to[i]),
+            id(collapses.to[i])?,
             collapses.position[i],
-            id(collapses.left[i]),
-            id(collapses.right[i]),
+            id(collapses.left[i])?,
+            id(collapses.right[i])?,
         )?;
         debug_assert_eq!(new.index(), original.len(), "split vertices are appended");
         original.push(collapses.from[i]);
-        current[collapses.from[i] as usize] = new.0;
+        let from = collapses.from[i] as usize;
+        if from >= current.len() {
+            current.resize(from + 1, u32::MAX);
+        }
+        current[from] = new.0;
     }
     for (v, o) in original.iter_mut().enumerate() {
         if m.is_deleted_vertex(VertexId::new(v)) {
@@ -50,6 +89,49 @@ pub fn reconstruct<M: MeshEdit>(m: &mut M, collapses: &Collapses) -> Result<Reco
         }
     }
     Ok(Reconstruction { original })
+}
+
+/// The live mesh of `m` as a soup in a canonical form, numbered through `original` (per vertex
+/// id of `m`, its original id; [`u32::MAX`] for none): the live vertices in increasing
+/// original id, numbered from 0 in that order, and the live faces each rotated to start at
+/// its smallest vertex, sorted. Two meshes with the same vertices (by original id, at the
+/// same positions) and the same oriented faces give the same soup whatever structure holds
+/// them and in whatever order it keeps its faces: what `topolab decimate --levels` writes for
+/// each level and `topolab reconstruct` for the state it rebuilds, so that their files compare
+/// byte for byte.
+pub fn live_soup<M: MeshEdit>(m: &M, original: &[u32]) -> PolygonSoup {
+    let mut live: Vec<(u32, u32)> = (0..m.num_vertices())
+        .filter(|&v| !m.is_deleted_vertex(VertexId::new(v)) && original[v] != u32::MAX)
+        .map(|v| (original[v], v as u32))
+        .collect();
+    live.sort_unstable();
+    let mut number = vec![u32::MAX; m.num_vertices()];
+    for (k, &(_, v)) in live.iter().enumerate() {
+        number[v as usize] = k as u32;
+    }
+    let positions = live.iter().map(|&(_, v)| m.position(VertexId(v))).collect();
+    let mut faces = Vec::new();
+    let mut face = Vec::new();
+    for f in 0..m.num_faces() {
+        let f = FaceId::new(f);
+        if m.is_deleted_face(f) {
+            continue;
+        }
+        face.clear();
+        m.face_vertices(f, |v| face.push(number[v.index()]));
+        faces.push(canonical(&face));
+    }
+    faces.sort_unstable();
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// `soup` in the canonical form of [`live_soup`]: its vertices as they are, its faces each
+/// rotated to start at its smallest vertex, sorted. What [`live_soup`] gives for a mesh built
+/// from `soup` before any edit.
+pub fn canonical_input(soup: &PolygonSoup) -> PolygonSoup {
+    let mut faces: Vec<Vec<u32>> = soup.faces().map(canonical).collect();
+    faces.sort_unstable();
+    PolygonSoup::from_polygons(soup.positions.clone(), &faces)
 }
 
 /// Where a rebuilt mesh differs from the original.
