@@ -130,15 +130,18 @@ pub enum Command {
         out: PathBuf,
     },
     /// Convert a mesh between the formats the lab reads (.obj, .off, .ply, .stl) and writes
-    /// (.obj, .off, binary .stl).
+    /// (.obj, .off, binary .stl), or to the CHE's containers as a memory-mappable .che file.
     Convert {
         /// A mesh file or a built-in mesh (see `topolab info --help`).
         mesh: String,
         /// The output file; its extension gives the format unless `--to` names it.
         out: PathBuf,
-        /// The output format: `obj`, `off` or `stl` (binary).
+        /// The output format: `obj`, `off`, `stl` (binary) or `che` (docs/che-format.md).
         #[arg(long)]
         to: Option<String>,
+        /// With `--to che`: the CHE level whose containers the file holds, 0 to 3 (default 2).
+        #[arg(long)]
+        level: Option<u8>,
     },
     /// Decimate a triangle mesh by quadric error (as OpenMesh's Decimater with ModQuadric) to
     /// `--faces N` or `--ratio R` of its faces and write it; or through `--levels 50%,10%`,
@@ -213,9 +216,12 @@ pub fn run(cli: Cli) -> u8 {
             levels,
             out,
         } => commands::subdivide::subdivide(&mesh, &scheme, levels, &out),
-        Command::Convert { mesh, out, to } => {
-            commands::convert::convert(&mesh, &out, to.as_deref())
-        }
+        Command::Convert {
+            mesh,
+            out,
+            to,
+            level,
+        } => commands::convert::convert(&mesh, &out, to.as_deref(), level),
         Command::Decimate(args) => commands::decimate::run(&args),
         Command::Reconstruct(args) => commands::reconstruct::run(&args),
     };

@@ -193,3 +193,26 @@ pub fn unknown_structure(name: &str) -> Failure {
         registry::NAMES.join(", ")
     ))
 }
+
+/// Does `path` end in `.che` (any case)?
+pub fn has_che_extension(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("che"))
+}
+
+/// Is `path` a `.che` file (docs/che-format.md): a regular file named `.che`, or one that
+/// starts with the `.che` magic whatever its name? Reads at most the magic's 8 bytes.
+pub fn is_che_file(path: &Path) -> bool {
+    use std::io::Read;
+    if !path.is_file() {
+        return false;
+    }
+    if has_che_extension(path) {
+        return true;
+    }
+    let mut start = [0u8; 8];
+    std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut start))
+        .is_ok_and(|()| start == topolab_structures::io::che_file::MAGIC)
+}

@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use topolab::cli::Cli;
+use topolab_structures::MeshTopology;
 
 /// The longest a refused run may take.
 const TIME_LIMIT: Duration = Duration::from_secs(10);
@@ -345,6 +346,26 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["compare", "@DIR", "@FILE"],
         vec!["compare", "@FILE", "@FILE", "--out", "/dev/null"],
         vec!["compare", "@FILE", "@FILE", "--out", "@FILE"],
+        // .che files (docs/che-format.md): bad files, and conversions that cannot be written.
+        vec!["info", "@DIR/truncated.che"],
+        vec!["check", "@DIR/truncated.che"],
+        vec!["info", "@DIR/magic.che"],
+        vec!["check", "@DIR/magic.che"],
+        vec!["info", "@DIR/level9.che"],
+        vec!["check", "@DIR/level9.che"],
+        vec!["convert", "quad-grid:20", "--to", "che", "@DIR/x.che"],
+        vec![
+            "convert",
+            "torus",
+            "--to",
+            "che",
+            "--level",
+            "9",
+            "@DIR/x.che",
+        ],
+        vec!["convert", "torus", "--to", "che", "/proc/nope.che"],
+        vec!["convert", "torus", "--to", "che", "/dev/full"],
+        vec!["convert", "torus", "--to", "che", "@DIR/taken.obj"],
         // Levels of detail: bad levels, levels with another target, outputs that are no
         // folder or cannot be made.
         vec!["decimate", "torus", "--levels", "", "--out", "@DIR/l"],
@@ -555,6 +576,7 @@ fn scratch(name: &str) -> PathBuf {
         "v 1e300 0 0\nv 0 1e300 0\nv 0 0 1e300\nv -1e300 -1e300 -1e300\n",
     )
     .unwrap();
+    che_files(&dir);
     std::fs::write(
         dir.join("tet.off"),
         "OFF\n4 3 0\n0 0 0\n1 0 0\n0.5 0.8 0\n0.5 0.3 0.8\n3 0 1 3\n3 1 2 3\n3 2 0 3\n",
@@ -562,6 +584,22 @@ fn scratch(name: &str) -> PathBuf {
     .unwrap();
     level_of_detail_folders(&dir);
     dir
+}
+
+/// The bad `.che` files of the curated cases: a valid file cut short, one with another magic,
+/// one whose header says level 9.
+fn che_files(dir: &Path) {
+    use topolab_structures::io::che_file::Containers;
+    let tet = topolab_structures::meshes::open_tetrahedron();
+    let che = topolab_structures::CheL2::from_soup(&tet).unwrap();
+    let good = Containers::level2(&che).to_bytes().unwrap();
+    std::fs::write(dir.join("truncated.che"), &good[..good.len() - 64]).unwrap();
+    let mut magic = good.clone();
+    magic[..8].copy_from_slice(b"OFF\n4 3 ");
+    std::fs::write(dir.join("magic.che"), magic).unwrap();
+    let mut level9 = good;
+    level9[16] = 9;
+    std::fs::write(dir.join("level9.che"), level9).unwrap();
 }
 
 /// The generic cases of one subcommand: each argument (but `help`) given each [`GENERIC`]
@@ -654,15 +692,18 @@ fn every_subcommand_refuses_adversarial_arguments_quickly_in_one_line() {
         left,
         [
             "far.obj",
+            "level9.che",
             "lod",
             "lod-garbage",
             "lod-ids",
             "lod-mismatch",
             "lod-truncated",
             "lod-version",
+            "magic.che",
             "taken",
             "taken.obj",
-            "tet.off"
+            "tet.off",
+            "truncated.che",
         ]
     );
     std::fs::remove_dir_all(&dir).unwrap();

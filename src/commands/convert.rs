@@ -1,14 +1,17 @@
-//! `topolab convert IN OUT [--to FORMAT]`: a mesh from any format the lab reads (OBJ, OFF,
-//! PLY, STL, or a built-in mesh) to one it writes (OBJ, OFF, binary STL), the format taken
-//! from OUT's extension unless `--to` names it. Vertex i and face j stay vertex i and face j
+//! `topolab convert IN OUT [--to FORMAT] [--level N]`: a mesh from any format the lab reads
+//! (OBJ, OFF, PLY, STL, or a built-in mesh) to one it writes (OBJ, OFF, binary STL), the
+//! format taken from OUT's extension unless `--to` names it; or, with `--to che` (or a `.che`
+//! OUT), the containers of the CHE of level N (default 2) as a memory-mappable file
+//! (docs/che-format.md). Vertex i and face j stay vertex i and face j
 //! (STL, which stores triangles only, receives a face of more than three corners as a fan of
 //! triangles; reading STL welds corners at exactly the same position).
 
-use crate::input::{load_mesh, Failure};
+use crate::input::{invalid_mesh_hint, load_mesh, refuse_empty, Failure};
 use crate::output::{check_file, check_writable, write_mesh_as};
 use std::path::Path;
 use std::time::Instant;
-use topolab_structures::Format;
+use topolab_structures::io::che_file;
+use topolab_structures::{CheL3, Error, Format, MeshTopology};
 
 /// The formats `--to` names, by their extension.
 const NAMES: [(&str, Format); 4] = [
@@ -18,21 +21,62 @@ const NAMES: [(&str, Format); 4] = [
     ("ply", Format::Ply),
 ];
 
-/// Converts `spec` to `out` (in `to`, a format name, or by `out`'s extension).
-pub fn convert(spec: &str, out: &Path, to: Option<&str>) -> Result<String, Failure> {
-    let format = match to {
-        Some(name) => NAMES
+/// What `convert` writes: a mesh format, or the CHE's containers.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+enum Target {
+    /// A mesh file the lab writes.
+    Mesh(Format),
+    /// A `.che` file (docs/che-format.md).
+    Che,
+}
+
+/// The `--to` name and extension of a `.che` file.
+const CHE: &str = "che";
+
+/// The CHE level `--level` defaults to: the first with the vertex star in O(deg v).
+const DEFAULT_LEVEL: u8 = 2;
+
+/// What to write: `to` (a format name), else `out`'s extension.
+fn target(out: &Path, to: Option<&str>) -> Result<Target, Failure> {
+    if let Some(name) = to {
+        if name.eq_ignore_ascii_case(CHE) {
+            return Ok(Target::Che);
+        }
+        return NAMES
             .iter()
             .find(|(n, _)| n.eq_ignore_ascii_case(name))
-            .map(|&(_, f)| f)
+            .map(|&(_, f)| Target::Mesh(f))
             .ok_or_else(|| {
                 Failure::usage(format!(
-                    "--to {name:?}: not a format; the lab writes obj, off and stl"
+                    "--to {name:?}: not a format; the lab writes obj, off, stl and che"
                 ))
-            })?,
-        None => topolab_structures::io::format_of(out)
-            .map_err(|e| Failure::usage(format!("cannot write: {e}; or name one with --to")))?,
+            });
+    }
+    if crate::input::has_che_extension(out) {
+        return Ok(Target::Che);
+    }
+    topolab_structures::io::format_of(out)
+        .map(Target::Mesh)
+        .map_err(|e| Failure::usage(format!("cannot write: {e}; or name one with --to")))
+}
+
+/// Converts `spec` to `out` (in `to`, a format name, or by `out`'s extension); `level` is the
+/// CHE level of a `.che` output.
+pub fn convert(
+    spec: &str,
+    out: &Path,
+    to: Option<&str>,
+    level: Option<u8>,
+) -> Result<String, Failure> {
+    let format = match target(out, to)? {
+        Target::Che => return convert_to_che(spec, out, level.unwrap_or(DEFAULT_LEVEL)),
+        Target::Mesh(format) => format,
     };
+    if let Some(level) = level {
+        return Err(Failure::usage(format!(
+            "--level {level}: a CHE level applies to a .che output (--to che) only"
+        )));
+    }
     check_writable(format, out)?;
     check_file(out)?;
     let started = Instant::now();
@@ -42,6 +86,46 @@ pub fn convert(spec: &str, out: &Path, to: Option<&str>) -> Result<String, Failu
         "{spec}: {} vertices, {} faces, written to {} as {format} ({:.2} s)\n",
         soup.num_vertices(),
         soup.num_faces(),
+        out.display(),
+        started.elapsed().as_secs_f64()
+    ))
+}
+
+/// Builds the CHE of `level` from `spec` and writes its containers to `out` atomically
+/// ([`che_file::write_mesh`]). Polygons and non-manifold meshes are refused as the level
+/// refuses them (exit code 1).
+fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> {
+    if level > 3 {
+        return Err(Failure::usage(format!(
+            "--level {level}: the CHE levels are 0, 1, 2 and 3"
+        )));
+    }
+    check_file(out)?;
+    let started = Instant::now();
+    // The memory of the work: the owned level built from the mesh (the file is streamed).
+    let soup = load_mesh(spec, |sample| {
+        drop(CheL3::from_soup(sample));
+        0
+    })?;
+    refuse_empty(spec, &soup)?;
+    che_file::write_mesh(&soup, level, out).map_err(|e| match e {
+        Error::Io { source, .. } => {
+            Failure::usage(format!("cannot write {}: {source}", out.display()))
+        }
+        e => Failure {
+            message: format!(
+                "cannot write {spec} as a level-{level} CHE: {e}{}",
+                invalid_mesh_hint(spec, &e)
+            ),
+            code: 1,
+        },
+    })?;
+    let bytes = std::fs::metadata(out).map_or(0, |m| m.len());
+    Ok(format!(
+        "{spec}: {} vertices, {} faces, written to {} as a level-{level} CHE ({bytes} bytes; `topolab info {}` maps it) ({:.2} s)\n",
+        soup.num_vertices(),
+        soup.num_faces(),
+        out.display(),
         out.display(),
         started.elapsed().as_secs_f64()
     ))

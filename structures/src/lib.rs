@@ -25,6 +25,11 @@
 //! | [`CheL2`] | `che-l2` | CHE level 2: + `VH[]` per vertex, edge map `EH` | no | no |
 //! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
+//! The CHE's containers are also written as a memory-mappable `.che` file
+//! ([`io::che_file`]) and queried in place through [`che::MappedChe`] (levels 1–3, not in the
+//! registry: a structure over a file, enrolled in the conformance suite in
+//! `structures/tests/che_file.rs`).
+//!
 //! [`hull`] builds the 3D convex hull of a point set on the [`WingedEdge`] with the three
 //! algorithms of the lecture on 3D convex hulls (gift wrapping, incremental, randomized
 //! incremental).
@@ -40,8 +45,10 @@
 //! | [`algorithms`] | the 3D convex hull, consistency checks and summary, refinement, orderings |
 //! | [`testing`] | the oracle, the conformance suite, canonical and generated meshes |
 #![deny(missing_docs)]
-// Unsafe code lives only in `families::half_edge::pointer::links` (real pointers are that
-// structure's point).
+// Unsafe code lives only where `allow(unsafe_code)` marks it: the pointer half-edge's links
+// (real pointers are that structure's point), the CHE's unchecked walk (`families::che::fan`,
+// and the two places that promise its ranges: `CheL2::fan`, `MappedChe::fan`), and the mapping
+// of `.che` files (`families::che::mapped::map`).
 #![deny(unsafe_code)]
 
 pub mod algorithms;

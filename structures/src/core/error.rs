@@ -278,6 +278,15 @@ pub enum Error {
         /// Why.
         reason: crate::core::edit_op::Refusal,
     },
+    /// A `.che` file (the CHE's containers, [`crate::io::che_file`]) that cannot be mapped or
+    /// whose check failed.
+    #[error("{path}: {problem}")]
+    CheFile {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        problem: crate::io::che_file::CheFileProblem,
+    },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.
     #[error("{library} failed in {call}: {reason}")]
@@ -320,6 +329,7 @@ impl Error {
             Error::ElementOutOfRange { .. } => "element-out-of-range",
             Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
+            Error::CheFile { .. } => "che-file",
         }
     }
 

@@ -39,6 +39,7 @@ pub fn format_of(path: &Path) -> Result<Format> {
     }
 }
 
+pub mod che_file;
 mod obj;
 mod off;
 mod ply;

@@ -177,6 +177,36 @@ impl<'a> Fan<'a> {
     }
 }
 
+/// R00, R01 and R02 over [`Fan::spokes`], for the mapped CHE once its file is verified
+/// ([`MappedChe`](super::MappedChe)). [`CheL2`](super::CheL2)'s relations compose the walk in
+/// the same way in their own bodies, left as they were timed.
+impl Fan<'_> {
+    /// R00: each spoke's far end, and the lone spoke's at a boundary vertex.
+    #[inline(always)]
+    pub(crate) fn neighbours(self, v: VertexId, mut f: impl FnMut(VertexId)) {
+        if let Some(b) = self.spokes(v, |e, _| f(self.far_end(e))) {
+            f(self.lone_far_end(b));
+        }
+    }
+
+    /// R01: each spoke's edge `min(e, O[e])`, and the lone spoke's.
+    #[inline(always)]
+    pub(crate) fn spoke_edges(self, v: VertexId, mut f: impl FnMut(crate::EdgeId)) {
+        let lone = self.spokes(v, |e, o| {
+            f(crate::EdgeId(if o < 0 { e.0 } else { e.0.min(o as u32) }))
+        });
+        if let Some(b) = lone {
+            f(crate::EdgeId(b.0));
+        }
+    }
+
+    /// R02: the triangle of each entering half-edge.
+    #[inline(always)]
+    pub(crate) fn star_triangles(self, v: VertexId, mut f: impl FnMut(crate::FaceId)) {
+        self.spokes(v, |e, _| f(super::triangle(e)));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

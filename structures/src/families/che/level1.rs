@@ -3,6 +3,7 @@
 //! still scans `V[]` for its first half-edge (Algorithm 6).
 
 use super::build::{build_chapter, build_fast, Checked};
+use super::level0::check_start_vertices;
 use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
 use super::{CheL0, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
@@ -80,30 +81,15 @@ impl CheL1 {
         self.check_opposites(<Self as MeshTopology>::NAME)
     }
 
-    /// `V[]` is valid and `O[]` pairs half-edges with the same vertices in opposite directions.
+    /// `V[]` is valid and `O[]` pairs half-edges with the same vertices in opposite directions
+    /// ([`check_opposites`]).
     pub(crate) fn check_opposites(&self, structure: &'static str) -> Result<()> {
-        self.l0.check_start_vertices(structure)?;
-        let v = self.start_vertices();
-        if self.o.len() != v.len() {
-            return Err(Error::invariant(structure, "O[] and V[] differ in length"));
-        }
-        for he in (0..v.len() as u32).map(HalfEdgeId) {
-            let Some(o) = opposite_of(&self.o, he) else {
-                continue;
-            };
-            let paired = o.index() < v.len()
-                && o != he
-                && self.o[o.index()] == he.0 as i32
-                && v[o.index()] == v[next(he).index()]
-                && v[next(o).index()] == v[he.index()];
-            if !paired {
-                return Err(Error::invariant(
-                    structure,
-                    format!("O[{he}] = {o} is not its opposite half-edge"),
-                ));
-            }
-        }
-        Ok(())
+        check_opposites(
+            self.geometry().len(),
+            self.start_vertices(),
+            &self.o,
+            structure,
+        )
     }
 
     pub(crate) fn container_bytes(&self) -> usize {
@@ -117,6 +103,79 @@ impl CheL1 {
     }
 }
 
+/// Level 1's invariant on slices (so that a mapped CHE checks its containers with the same
+/// code): `V[]` holds whole triangles of the `vertices` vertices, and `O[]` pairs half-edges
+/// with the same vertices in opposite directions.
+pub(crate) fn check_opposites(
+    vertices: usize,
+    v: &[u32],
+    o: &[i32],
+    structure: &'static str,
+) -> Result<()> {
+    check_start_vertices(vertices, v, structure)?;
+    if o.len() != v.len() {
+        return Err(Error::invariant(structure, "O[] and V[] differ in length"));
+    }
+    for he in (0..v.len() as u32).map(HalfEdgeId) {
+        let Some(twin) = opposite_of(o, he) else {
+            continue;
+        };
+        let paired = twin.index() < v.len()
+            && twin != he
+            && o[twin.index()] == he.0 as i32
+            && v[twin.index()] == v[next(he).index()]
+            && v[next(twin).index()] == v[he.index()];
+        if !paired {
+            return Err(Error::invariant(
+                structure,
+                format!("O[{he}] = {twin} is not its opposite half-edge"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Algorithm 6 (§4.6) over `V[]` and `O[]`: the first half-edge leaving `vertex` is found by
+/// scanning `V[]`. It may be an interior half-edge of a boundary vertex (the pseudo-code
+/// assumes it is not), so the walk first turns back, `h ← next(O[h])`, to the boundary
+/// half-edge leaving `vertex` (or all the way round), then walks the fan forward as
+/// Algorithm 7 does. Level 1's vertex star, owned ([`CheL1`]) or mapped.
+#[inline]
+pub(crate) fn vertex_star_algorithm_6(
+    v: &[u32],
+    o: &[i32],
+    vertex: VertexId,
+    mut trace: impl FnMut(StarRead),
+    corner: impl FnMut(HalfEdgeId),
+) -> Option<HalfEdgeId> {
+    let mut first = None;
+    for (he, &start) in (0u32..).map(HalfEdgeId).zip(v) {
+        traced!("V", he.0, start);
+        let start = VertexId(start);
+        trace(StarRead::Vertex { he, vertex: start });
+        if start == vertex {
+            first = Some(he);
+            break;
+        }
+    }
+    let he0 = first?;
+    let mut h = he0;
+    loop {
+        trace(StarRead::Opposite {
+            he: h,
+            opposite: o[h.index()],
+        });
+        match opposite_of(o, h) {
+            None => break,
+            Some(twin) => h = next(twin),
+        }
+        if h == he0 {
+            break;
+        }
+    }
+    fan_walk_algorithm_7(o, h, trace, corner)
+}
+
 impl CheLevel for CheL1 {
     const LEVEL: u8 = 1;
     const STAR_ALGORITHM: &'static str =
@@ -127,42 +186,14 @@ impl CheLevel for CheL1 {
         self.l0.start_vertices()
     }
 
-    /// Algorithm 6: the first half-edge leaving `v` is found by scanning `V[]`. It may be an
-    /// interior half-edge of a boundary vertex (the pseudo-code assumes it is not), so the
-    /// walk first turns back, `h ← next(O[h])`, to the boundary half-edge leaving `v` (or all
-    /// the way round), then walks the fan forward as Algorithm 7 does.
+    /// Algorithm 6 (`vertex_star_algorithm_6`, shared with the mapped level 1).
     fn vertex_star(
         &self,
         v: VertexId,
-        mut trace: impl FnMut(StarRead),
+        trace: impl FnMut(StarRead),
         corner: impl FnMut(HalfEdgeId),
     ) -> Option<HalfEdgeId> {
-        let mut first = None;
-        for (he, &start) in (0u32..).map(HalfEdgeId).zip(self.start_vertices()) {
-            traced!("V", he.0, start);
-            let vertex = VertexId(start);
-            trace(StarRead::Vertex { he, vertex });
-            if vertex == v {
-                first = Some(he);
-                break;
-            }
-        }
-        let he0 = first?;
-        let mut h = he0;
-        loop {
-            trace(StarRead::Opposite {
-                he: h,
-                opposite: self.o[h.index()],
-            });
-            match opposite_of(&self.o, h) {
-                None => break,
-                Some(o) => h = next(o),
-            }
-            if h == he0 {
-                break;
-            }
-        }
-        fan_walk_algorithm_7(&self.o, h, trace, corner)
+        vertex_star_algorithm_6(self.start_vertices(), &self.o, v, trace, corner)
     }
 
     #[inline(always)]

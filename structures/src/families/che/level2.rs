@@ -5,6 +5,7 @@
 
 use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
 use super::fan::{ranges_hold, Fan};
+use super::level1::check_opposites;
 use super::triangle;
 use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
@@ -133,33 +134,11 @@ impl CheL2 {
         self.check_cells(<Self as MeshTopology>::NAME)
     }
 
-    /// Levels 0–1 are valid, `VH[]` follows Algorithm 3's rule and `EH` holds every edge once.
+    /// Levels 0–1 are valid, `VH[]` follows Algorithm 3's rule and `EH` holds every edge once
+    /// ([`check_cells`]).
     pub(crate) fn check_cells(&self, structure: &'static str) -> Result<()> {
-        self.l1.check_opposites(structure)?;
-        self.check_ranges(structure)?;
         let (v, o) = (self.start_vertices(), self.l1.opposite());
-        if self.vh.len() != self.geometry().len() {
-            return Err(Error::invariant(structure, "VH[] and G[] differ in length"));
-        }
-        for (he, (&start, &opposite)) in v.iter().zip(o).enumerate() {
-            let stored = self.vh[start as usize];
-            let fits = stored >= 0
-                && v.get(stored as usize) == Some(&start)
-                && (opposite >= 0 || o[stored as usize] < 0);
-            if !fits {
-                return Err(Error::invariant(
-                    structure,
-                    format!("VH[{start}] = {stored} breaks Algorithm 3's rule for half-edge {he}"),
-                ));
-            }
-        }
-        if self.eh != edge_map_by_scan(o) {
-            return Err(Error::invariant(
-                structure,
-                "EH does not hold each edge's smaller half-edge",
-            ));
-        }
-        Ok(())
+        check_cells(self.geometry().len(), v, o, &self.vh, &self.eh, structure)
     }
 
     pub(crate) fn container_bytes(&self) -> usize {
@@ -179,6 +158,48 @@ impl CheL2 {
         )?;
         print_container(w, "EH[]", "i", &self.eh)
     }
+}
+
+/// Level 2's invariant on slices (so that a mapped CHE checks its containers with the same
+/// code): levels 0–1 are valid ([`check_opposites`]), every id is in range ([`ranges_hold`]),
+/// `VH[]` follows Algorithm 3's rule and `EH` holds every edge once.
+pub(crate) fn check_cells(
+    vertices: usize,
+    v: &[u32],
+    o: &[i32],
+    vh: &[i32],
+    eh: &[u32],
+    structure: &'static str,
+) -> Result<()> {
+    check_opposites(vertices, v, o, structure)?;
+    if !ranges_hold(v, o, vh) {
+        return Err(Error::invariant(
+            structure,
+            "V[], O[] and VH[] are not one entry per half-edge with every id in range",
+        ));
+    }
+    if vh.len() != vertices {
+        return Err(Error::invariant(structure, "VH[] and G[] differ in length"));
+    }
+    for (he, (&start, &opposite)) in v.iter().zip(o).enumerate() {
+        let stored = vh[start as usize];
+        let fits = stored >= 0
+            && v.get(stored as usize) == Some(&start)
+            && (opposite >= 0 || o[stored as usize] < 0);
+        if !fits {
+            return Err(Error::invariant(
+                structure,
+                format!("VH[{start}] = {stored} breaks Algorithm 3's rule for half-edge {he}"),
+            ));
+        }
+    }
+    if eh != edge_map_by_scan(o) {
+        return Err(Error::invariant(
+            structure,
+            "EH does not hold each edge's smaller half-edge",
+        ));
+    }
+    Ok(())
 }
 
 impl CheLevel for CheL2 {

@@ -7,7 +7,7 @@ use super::build::{
     boundary_curves_algorithm_4, build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan,
 };
 use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
-use super::{next_boundary_half_edge, CheL2, CheLevel, StarRead};
+use super::{next_boundary_half_edge, opposite_of, CheL2, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::core::reads;
@@ -25,7 +25,7 @@ pub struct CheL3 {
 }
 
 /// Table 4.1's level-3 column (level 2), with boundary curves in O(∂n1).
-fn level3_cost(op: Operator) -> Cost {
+pub(crate) fn level3_cost(op: Operator) -> Cost {
     match op {
         Operator::BoundaryCurves => Cost::Boundary,
         _ => level2_cost(op),
@@ -74,35 +74,7 @@ impl CheL3 {
     fn check_containers(&self) -> Result<()> {
         let structure = <Self as MeshTopology>::NAME;
         self.l2.check_cells(structure)?;
-        let o = self.l2.level1().opposite();
-        let mut walked = 0;
-        for (k, &start) in self.ch.iter().enumerate() {
-            let label = -(k as i32 + 1);
-            let mut he = HalfEdgeId(start);
-            loop {
-                if o.get(he.index()) != Some(&label) {
-                    return Err(Error::invariant(
-                        structure,
-                        format!(
-                            "half-edge {he} of boundary curve {} is not labelled {label}",
-                            k + 1
-                        ),
-                    ));
-                }
-                walked += 1;
-                he = next_boundary_half_edge(he, |h| self.twin(h));
-                if he.0 == start {
-                    break;
-                }
-            }
-        }
-        if walked != o.iter().filter(|&&x| x < 0).count() {
-            return Err(Error::invariant(
-                structure,
-                "a boundary half-edge is on no curve of CH[]",
-            ));
-        }
-        Ok(())
+        check_curves(self.l2.level1().opposite(), &self.ch, structure)
     }
 
     fn container_bytes(&self) -> usize {
@@ -117,6 +89,40 @@ impl CheL3 {
         )?;
         print_container(w, "CH[]", "k-1", &self.ch)
     }
+}
+
+/// Level 3's own invariant on slices (so that a mapped CHE checks its containers with the
+/// same code), for an `O[]` that already passed level 2's checks: each curve of `CH[]` is
+/// labelled `-k` in `O[]` all the way round, and every boundary half-edge is on one.
+pub(crate) fn check_curves(o: &[i32], ch: &[u32], structure: &'static str) -> Result<()> {
+    let mut walked = 0;
+    for (k, &start) in ch.iter().enumerate() {
+        let label = -(k as i32 + 1);
+        let mut he = HalfEdgeId(start);
+        loop {
+            if o.get(he.index()) != Some(&label) {
+                return Err(Error::invariant(
+                    structure,
+                    format!(
+                        "half-edge {he} of boundary curve {} is not labelled {label}",
+                        k + 1
+                    ),
+                ));
+            }
+            walked += 1;
+            he = next_boundary_half_edge(he, |h| opposite_of(o, h));
+            if he.0 == start {
+                break;
+            }
+        }
+    }
+    if walked != o.iter().filter(|&&x| x < 0).count() {
+        return Err(Error::invariant(
+            structure,
+            "a boundary half-edge is on no curve of CH[]",
+        ));
+    }
+    Ok(())
 }
 
 impl CheLevel for CheL3 {

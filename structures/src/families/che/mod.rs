@@ -168,6 +168,7 @@ mod level0;
 mod level1;
 mod level2;
 mod level3;
+pub mod mapped;
 mod topology;
 
 pub use build::{
@@ -179,6 +180,7 @@ pub use level0::CheL0;
 pub use level1::CheL1;
 pub use level2::CheL2;
 pub use level3::CheL3;
+pub use mapped::{CheFile, MappedChe, MappedCheL1, MappedCheL2, MappedCheL3};
 
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::core::reads::read;
@@ -311,33 +313,27 @@ pub trait CheLevel {
     /// [`CheLevel::vertex_star`]: the far end `V[next(he)]` of each corner's half-edge, and the
     /// start of the closing boundary half-edge.
     #[inline(always)]
-    fn neighbours(&self, v: VertexId, mut f: impl FnMut(VertexId)) {
-        let vs = self.start_vertices();
-        let neighbour = |h: HalfEdgeId| VertexId(read!("V", vs, h.index()));
-        if let Some(p) = self.vertex_star(v, |_| {}, |h| f(neighbour(next(h)))) {
-            f(neighbour(p));
-        }
+    fn neighbours(&self, v: VertexId, f: impl FnMut(VertexId)) {
+        by_star::neighbours(self, v, f)
     }
 
     /// R01 as the lab's query answers it. Defaults to the edge of each corner's half-edge
     /// along [`CheLevel::vertex_star`], and the closing one's.
     #[inline(always)]
-    fn spoke_edges(&self, v: VertexId, mut f: impl FnMut(EdgeId)) {
-        if let Some(p) = self.vertex_star(v, |_| {}, |h| f(self.edge_of(h))) {
-            f(self.edge_of(p));
-        }
+    fn spoke_edges(&self, v: VertexId, f: impl FnMut(EdgeId)) {
+        by_star::spoke_edges(self, v, f)
     }
 
     /// R02 as the lab's query answers it. Defaults to the triangle of each corner along
     /// [`CheLevel::vertex_star`].
     #[inline(always)]
-    fn star_triangles(&self, v: VertexId, mut f: impl FnMut(FaceId)) {
-        self.vertex_star(v, |_| {}, |h| f(triangle(h)));
+    fn star_triangles(&self, v: VertexId, f: impl FnMut(FaceId)) {
+        by_star::star_triangles(self, v, f)
     }
 
     /// Is `v` on the boundary? Defaults to walking the star (levels 0 and 1).
     fn vertex_on_boundary(&self, v: VertexId) -> bool {
-        self.vertex_star(v, |_| {}, |_| {}).is_some()
+        by_star::vertex_on_boundary(self, v)
     }
 
     /// R22 of triangle `t`. Defaults to the triangles across its three half-edges.
@@ -350,12 +346,8 @@ pub trait CheLevel {
     }
 
     /// Every edge once. Defaults to the half-edges that are the smaller of their pair.
-    fn each_edge(&self, mut f: impl FnMut(EdgeId)) {
-        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
-            if self.twin(he).is_none_or(|o| he < o) {
-                f(EdgeId(he.0));
-            }
-        }
+    fn each_edge(&self, f: impl FnMut(EdgeId)) {
+        by_star::each_edge(self, f)
     }
 
     /// Number of edges. Defaults to counting [`CheLevel::each_edge`].
@@ -368,10 +360,78 @@ pub trait CheLevel {
     /// The boundary curves. Defaults to the scan of levels 0–2 (§4.6): every boundary
     /// half-edge not yet on a written curve starts a new curve.
     fn walk_boundary_curves(&self, out: &mut BoundaryCurves) {
+        by_star::boundary_curves(self, out)
+    }
+}
+
+/// The default bodies of [`CheLevel`]'s relations, as functions, so that a level whose
+/// algorithm depends on a run-time condition (the mapped CHE, [`mapped`], walks its stars by
+/// [`CheLevel::vertex_star`] until its file is verified) can still call them.
+pub(crate) mod by_star {
+    use super::{next, triangle, walk_boundary_curve, CheLevel};
+    use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+    use crate::core::reads::read;
+    use crate::core::topology::BoundaryCurves;
+
+    /// R00 by [`CheLevel::vertex_star`]: the far end `V[next(he)]` of each corner's
+    /// half-edge, and the start of the closing boundary half-edge.
+    #[inline(always)]
+    pub(crate) fn neighbours<L: CheLevel + ?Sized>(
+        level: &L,
+        v: VertexId,
+        mut f: impl FnMut(VertexId),
+    ) {
+        let vs = level.start_vertices();
+        let neighbour = |h: HalfEdgeId| VertexId(read!("V", vs, h.index()));
+        if let Some(p) = level.vertex_star(v, |_| {}, |h| f(neighbour(next(h)))) {
+            f(neighbour(p));
+        }
+    }
+
+    /// R01 by [`CheLevel::vertex_star`]: the edge of each corner's half-edge, and the closing
+    /// one's.
+    #[inline(always)]
+    pub(crate) fn spoke_edges<L: CheLevel + ?Sized>(
+        level: &L,
+        v: VertexId,
+        mut f: impl FnMut(EdgeId),
+    ) {
+        if let Some(p) = level.vertex_star(v, |_| {}, |h| f(level.edge_of(h))) {
+            f(level.edge_of(p));
+        }
+    }
+
+    /// R02 by [`CheLevel::vertex_star`]: the triangle of each corner.
+    #[inline(always)]
+    pub(crate) fn star_triangles<L: CheLevel + ?Sized>(
+        level: &L,
+        v: VertexId,
+        mut f: impl FnMut(FaceId),
+    ) {
+        level.vertex_star(v, |_| {}, |h| f(triangle(h)));
+    }
+
+    /// Is `v` on the boundary? The star walked to its end.
+    pub(crate) fn vertex_on_boundary<L: CheLevel + ?Sized>(level: &L, v: VertexId) -> bool {
+        level.vertex_star(v, |_| {}, |_| {}).is_some()
+    }
+
+    /// Every edge once: the half-edges that are the smaller of their pair.
+    pub(crate) fn each_edge<L: CheLevel + ?Sized>(level: &L, mut f: impl FnMut(EdgeId)) {
+        for he in (0..level.start_vertices().len() as u32).map(HalfEdgeId) {
+            if level.twin(he).is_none_or(|o| he < o) {
+                f(EdgeId(he.0));
+            }
+        }
+    }
+
+    /// The scan of levels 0–2 (§4.6): every boundary half-edge not yet on a written curve
+    /// starts a new curve.
+    pub(crate) fn boundary_curves<L: CheLevel + ?Sized>(level: &L, out: &mut BoundaryCurves) {
         out.clear();
-        for he in (0..self.start_vertices().len() as u32).map(HalfEdgeId) {
-            if self.twin(he).is_none() && !out.edges.contains(&EdgeId(he.0)) {
-                walk_boundary_curve(he, |h| self.twin(h), out);
+        for he in (0..level.start_vertices().len() as u32).map(HalfEdgeId) {
+            if level.twin(he).is_none() && !out.edges.contains(&EdgeId(he.0)) {
+                walk_boundary_curve(he, |h| level.twin(h), out);
             }
         }
     }

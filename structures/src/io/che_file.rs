@@ -1,0 +1,851 @@
+//! The `.che` file: the containers of a Compact Half-Edge (the CHE thesis chapter's `G`, `V`,
+//! `O`, `VH`, `EH`, `CH`, as many as its level has) laid out to be memory-mapped.
+//! `docs/che-format.md` describes it byte by byte; in short:
+//!
+//! - a 64-byte header: magic, byte-order mark, format version, level, the counts (vertices,
+//!   triangles, edges, boundary curves) and a checksum;
+//! - then each container the level has, in the order `G`, `V`, `O`, `VH`, `EH`, `CH`, each
+//!   starting at a multiple of 64 bytes and padded with zeros to the next one; all numbers
+//!   little-endian. Every offset follows from the counts ([`Layout`]), so the header needs no
+//!   offset table, and the file's length is exactly the layout's.
+//!
+//! This module reads and writes the bytes only, in safe code: [`Header::parse`] and
+//! [`Layout::of_file`] check a file's first bytes and its length (O(1): opening a file of any
+//! size reads its header only), [`checksum`] reads it all. The CHE over the mapped containers
+//! is [`crate::che::mapped`].
+
+use crate::core::error::{Error, Result};
+use crate::core::soup::PolygonSoup;
+use glam::DVec3;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// The first 8 bytes of every `.che` file: `0x89 'C' 'H' 'E' '\r' '\n' 0x1A '\n'`. As PNG's
+/// signature does, the first byte is not ASCII and the line endings and end-of-file character
+/// after the name show a file that went through a text-mode transfer.
+pub const MAGIC: [u8; 8] = [0x89, b'C', b'H', b'E', b'\r', b'\n', 0x1A, b'\n'];
+
+/// The format version this build reads and writes.
+pub const VERSION: u32 = 1;
+
+/// The byte-order mark at byte 8, a `u32` written little-endian: bytes `0D 0C 0B 0A`.
+pub const BYTE_ORDER_MARK: u32 = 0x0A0B_0C0D;
+
+/// The header's length, and so the offset of the first container.
+pub const HEADER_BYTES: u64 = 64;
+
+/// Every container starts at a multiple of this many bytes (a cache line, and a multiple of
+/// every element's alignment).
+pub const ALIGNMENT: u64 = 64;
+
+/// Where the checksum is stored in the header (a `u64`).
+const CHECKSUM_AT: usize = 56;
+
+/// A container of the CHE, in file order.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Container {
+    /// `G[v]`: the position of each vertex, three `f64` (24 bytes).
+    G,
+    /// `V[he]`: the start vertex of each half-edge, `u32`.
+    V,
+    /// `O[he]`: the opposite half-edge, `i32`, negative on the boundary (level 1 on).
+    O,
+    /// `VH[v]`: a half-edge leaving each vertex, `i32`, `-1` for an unused vertex (level 2 on).
+    VH,
+    /// `EH`: each edge's smaller half-edge, in increasing order, `u32` (level 2 on).
+    EH,
+    /// `CH[k-1]`: a half-edge of boundary curve k, `u32` (level 3).
+    CH,
+}
+
+impl Container {
+    /// Every container, in file order.
+    pub const ALL: [Container; 6] = [
+        Container::G,
+        Container::V,
+        Container::O,
+        Container::VH,
+        Container::EH,
+        Container::CH,
+    ];
+
+    /// The chapter's name (`"G"`, `"V"`, ...).
+    pub const fn name(self) -> &'static str {
+        match self {
+            Container::G => "G",
+            Container::V => "V",
+            Container::O => "O",
+            Container::VH => "VH",
+            Container::EH => "EH",
+            Container::CH => "CH",
+        }
+    }
+
+    /// Bytes per element.
+    pub const fn element_bytes(self) -> u64 {
+        match self {
+            Container::G => 24,
+            _ => 4,
+        }
+    }
+
+    /// The lowest CHE level that stores it.
+    pub const fn first_level(self) -> u8 {
+        match self {
+            Container::G | Container::V => 0,
+            Container::O => 1,
+            Container::VH | Container::EH => 2,
+            Container::CH => 3,
+        }
+    }
+
+    fn index(self) -> usize {
+        self as usize
+    }
+}
+
+impl std::fmt::Display for Container {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}[]", self.name())
+    }
+}
+
+/// Why a `.che` file was refused: each a typed case of [`Error::CheFile`].
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CheFileProblem {
+    /// Fewer bytes than the header.
+    #[error("{bytes} bytes, shorter than the {HEADER_BYTES}-byte header")]
+    Short {
+        /// The file's length.
+        bytes: u64,
+    },
+    /// The first 8 bytes are not [`MAGIC`].
+    #[error("not a .che file: its first bytes are not the .che magic")]
+    WrongMagic,
+    /// The byte-order mark reads as big-endian.
+    #[error("written big-endian; the format is little-endian")]
+    BigEndian,
+    /// The byte-order mark is neither order.
+    #[error("byte-order mark {found:#010x} is not {BYTE_ORDER_MARK:#010x}")]
+    BadByteOrderMark {
+        /// What bytes 8–11 hold, read little-endian.
+        found: u32,
+    },
+    /// A format version this build does not read.
+    #[error("format version {found}; this build reads version {VERSION}")]
+    UnknownVersion {
+        /// The version in the header.
+        found: u32,
+    },
+    /// A level other than 0–3.
+    #[error("CHE level {found}; the levels are 0 to 3")]
+    UnknownLevel {
+        /// The level in the header.
+        found: u32,
+    },
+    /// A header field that must be zero is not.
+    #[error("reserved header bytes {at}..{} are not zero", at + 4)]
+    ReservedNotZero {
+        /// Its offset.
+        at: usize,
+    },
+    /// Counts no CHE can have: more half-edges or vertices than `i32` numbers, more edges than
+    /// half-edges, boundary curves below level 3.
+    #[error("impossible counts: {reason}")]
+    ImpossibleCounts {
+        /// Which count and why.
+        reason: String,
+    },
+    /// The file's length is not what its counts lay out.
+    #[error("{actual} bytes, but its counts lay out {expected} bytes")]
+    LengthMismatch {
+        /// What the counts lay out ([`Layout::file_bytes`]).
+        expected: u64,
+        /// The file's length.
+        actual: u64,
+    },
+    /// The mapped bytes do not start at an address aligned for the containers (never on the
+    /// systems the lab runs on: mappings start at a page boundary).
+    #[error("mapped at an address not aligned to {ALIGNMENT} bytes")]
+    Misaligned,
+    /// This machine is big-endian; the containers are mapped as they are stored.
+    #[error("mapping a .che file needs a little-endian machine")]
+    BigEndianMachine,
+    /// The checksum of the file's bytes is not the one in its header.
+    #[error("checksum mismatch: the header says {stored:#018x}, the bytes give {computed:#018x}")]
+    ChecksumMismatch {
+        /// The header's.
+        stored: u64,
+        /// The file's bytes'.
+        computed: u64,
+    },
+    /// A container holds an id outside the range its level allows.
+    #[error("{container}[{index}] = {value} is out of range ({allowed})")]
+    IdOutOfRange {
+        /// The container.
+        container: Container,
+        /// The entry.
+        index: u64,
+        /// Its value.
+        value: i64,
+        /// What it may be.
+        allowed: String,
+    },
+    /// A header count that the containers contradict (checked by `check`: the edges of levels
+    /// 0 and 1, which store no `EH`).
+    #[error("the header says {what} {stated}, the containers give {found}")]
+    CountMismatch {
+        /// Which count.
+        what: &'static str,
+        /// The header's.
+        stated: u64,
+        /// The containers'.
+        found: u64,
+    },
+    /// The file is a `.che` of another level than the one asked for.
+    #[error("a level-{found} CHE, not level {expected}")]
+    WrongLevel {
+        /// The level asked for.
+        expected: u8,
+        /// The file's.
+        found: u8,
+    },
+}
+
+impl CheFileProblem {
+    /// The [`Error`] for this problem in `path`.
+    pub fn at(self, path: &Path) -> Error {
+        Error::CheFile {
+            path: path.to_path_buf(),
+            problem: self,
+        }
+    }
+}
+
+/// A `.che` header (the first [`HEADER_BYTES`] bytes).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Header {
+    /// The CHE level, 0 to 3.
+    pub level: u8,
+    /// `n0`, the vertices (`G[]` and `VH[]` entries).
+    pub vertices: u64,
+    /// `n2`, the triangles (`V[]` and `O[]` hold `3·n2` entries).
+    pub triangles: u64,
+    /// `n1`, the edges (`EH` entries from level 2; stated at every level).
+    pub edges: u64,
+    /// The boundary curves (`CH[]` entries); 0 below level 3, which do not store them.
+    pub curves: u64,
+    /// [`checksum`] of the whole file.
+    pub checksum: u64,
+}
+
+fn u32_at(bytes: &[u8], at: usize) -> u32 {
+    u32::from_le_bytes(bytes[at..at + 4].try_into().expect("4 bytes"))
+}
+
+fn u64_at(bytes: &[u8], at: usize) -> u64 {
+    u64::from_le_bytes(bytes[at..at + 8].try_into().expect("8 bytes"))
+}
+
+impl Header {
+    /// Reads a header from the first bytes of a file: refuses a short file, another magic,
+    /// another byte order or version, a level outside 0–3 and reserved bytes that are not zero.
+    /// The counts are checked by [`Layout::of`].
+    pub fn parse(bytes: &[u8]) -> Result<Self, CheFileProblem> {
+        if (bytes.len() as u64) < HEADER_BYTES {
+            return Err(CheFileProblem::Short {
+                bytes: bytes.len() as u64,
+            });
+        }
+        if bytes[..8] != MAGIC {
+            return Err(CheFileProblem::WrongMagic);
+        }
+        match u32_at(bytes, 8) {
+            BYTE_ORDER_MARK => {}
+            m if m == BYTE_ORDER_MARK.swap_bytes() => return Err(CheFileProblem::BigEndian),
+            found => return Err(CheFileProblem::BadByteOrderMark { found }),
+        }
+        let version = u32_at(bytes, 12);
+        if version != VERSION {
+            return Err(CheFileProblem::UnknownVersion { found: version });
+        }
+        let level = u32_at(bytes, 16);
+        if level > 3 {
+            return Err(CheFileProblem::UnknownLevel { found: level });
+        }
+        if u32_at(bytes, 20) != 0 {
+            return Err(CheFileProblem::ReservedNotZero { at: 20 });
+        }
+        Ok(Header {
+            level: level as u8,
+            vertices: u64_at(bytes, 24),
+            triangles: u64_at(bytes, 32),
+            edges: u64_at(bytes, 40),
+            curves: u64_at(bytes, 48),
+            checksum: u64_at(bytes, CHECKSUM_AT),
+        })
+    }
+
+    /// The header's bytes.
+    pub fn to_bytes(&self) -> [u8; HEADER_BYTES as usize] {
+        let mut b = [0u8; HEADER_BYTES as usize];
+        b[..8].copy_from_slice(&MAGIC);
+        b[8..12].copy_from_slice(&BYTE_ORDER_MARK.to_le_bytes());
+        b[12..16].copy_from_slice(&VERSION.to_le_bytes());
+        b[16..20].copy_from_slice(&u32::from(self.level).to_le_bytes());
+        b[24..32].copy_from_slice(&self.vertices.to_le_bytes());
+        b[32..40].copy_from_slice(&self.triangles.to_le_bytes());
+        b[40..48].copy_from_slice(&self.edges.to_le_bytes());
+        b[48..56].copy_from_slice(&self.curves.to_le_bytes());
+        b[56..64].copy_from_slice(&self.checksum.to_le_bytes());
+        b
+    }
+
+    /// `3·n2`, the half-edges.
+    pub fn half_edges(&self) -> u64 {
+        self.triangles.saturating_mul(3)
+    }
+
+    /// How many elements `c` holds at this level (0 for a container the level does not store).
+    pub fn count(&self, c: Container) -> u64 {
+        if self.level < c.first_level() {
+            return 0;
+        }
+        match c {
+            Container::G | Container::VH => self.vertices,
+            Container::V | Container::O => self.half_edges(),
+            Container::EH => self.edges,
+            Container::CH => self.curves,
+        }
+    }
+}
+
+/// Where one container lies in the file.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Section {
+    /// The byte offset of its first element, a multiple of [`ALIGNMENT`].
+    pub offset: u64,
+    /// Its elements.
+    pub len: u64,
+}
+
+/// The offsets of a file's containers, derived from its header's counts.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// The header.
+    pub header: Header,
+    sections: [Option<Section>; 6],
+    /// The file's length: the last container's end, padded to [`ALIGNMENT`].
+    pub file_bytes: u64,
+}
+
+/// `x` rounded up to a multiple of [`ALIGNMENT`], `None` past `u64`.
+fn aligned(x: u64) -> Option<u64> {
+    x.checked_next_multiple_of(ALIGNMENT)
+}
+
+impl Layout {
+    /// The layout of `header`'s counts: refuses counts no CHE can have (more half-edges or
+    /// vertices than `i32` numbers, more edges than half-edges, curves below level 3 or more
+    /// curves than half-edges).
+    pub fn of(header: Header) -> Result<Self, CheFileProblem> {
+        let limit = i32::MAX as u64;
+        let impossible = |reason: String| Err(CheFileProblem::ImpossibleCounts { reason });
+        if header.vertices > limit {
+            return impossible(format!(
+                "{} vertices, more than i32 numbers",
+                header.vertices
+            ));
+        }
+        if header.triangles > limit / 3 {
+            return impossible(format!(
+                "{} triangles, more half-edges than i32 numbers",
+                header.triangles
+            ));
+        }
+        if header.edges > header.half_edges() {
+            return impossible(format!(
+                "{} edges for {} half-edges",
+                header.edges,
+                header.half_edges()
+            ));
+        }
+        if header.level < 3 && header.curves != 0 {
+            return impossible(format!(
+                "{} boundary curves stored at level {}, which has no CH[]",
+                header.curves, header.level
+            ));
+        }
+        if header.curves > header.half_edges() {
+            return impossible(format!(
+                "{} boundary curves for {} half-edges",
+                header.curves,
+                header.half_edges()
+            ));
+        }
+        // Below these limits every product and sum fits u64 many times over.
+        let mut sections = [None; 6];
+        let mut at = HEADER_BYTES;
+        for c in Container::ALL {
+            if header.level < c.first_level() {
+                continue;
+            }
+            let len = header.count(c);
+            sections[c.index()] = Some(Section { offset: at, len });
+            at = aligned(at + len * c.element_bytes()).expect("bounded counts");
+        }
+        Ok(Layout {
+            header,
+            sections,
+            file_bytes: at,
+        })
+    }
+
+    /// [`Header::parse`] and [`Layout::of`] for a file whose length is `file_bytes` and whose
+    /// first bytes are `start` (at least the header, if the file has it), then refuses a
+    /// length other than the layout's. O(1): only the header is read.
+    pub fn of_file(start: &[u8], file_bytes: u64) -> Result<Self, CheFileProblem> {
+        let layout = Layout::of(Header::parse(start)?)?;
+        if layout.file_bytes != file_bytes {
+            return Err(CheFileProblem::LengthMismatch {
+                expected: layout.file_bytes,
+                actual: file_bytes,
+            });
+        }
+        Ok(layout)
+    }
+
+    /// Where container `c` lies, `None` if the level does not store it.
+    pub fn section(&self, c: Container) -> Option<Section> {
+        self.sections[c.index()]
+    }
+}
+
+/// The file's checksum: every 8-byte little-endian word `w` of the file in order, with the
+/// header's checksum field read as 0, folded as `h = (h ^ w) · 0x100000001B3` (wrapping),
+/// from `h = 0xCBF29CE484222325` (FNV-1a's constants, a word at a time). Each step is a
+/// bijection of `h` for a given word, so a change confined to one word always changes the
+/// result. Not cryptographic. A `.che` file's length is a multiple of 8 ([`ALIGNMENT`]).
+pub fn checksum(bytes: &[u8]) -> u64 {
+    let mut h = Checksum::new();
+    h.feed(bytes);
+    h.finish()
+}
+
+/// [`checksum`] fed piece by piece (the writer hashes the file as it lays it out).
+struct Checksum {
+    h: u64,
+    /// Bytes fed so far.
+    at: u64,
+    /// The bytes of an unfinished word.
+    pending: [u8; 8],
+    pending_len: usize,
+}
+
+impl Checksum {
+    const START: u64 = 0xCBF2_9CE4_8422_2325;
+    const PRIME: u64 = 0x0000_0100_0000_01B3;
+
+    fn new() -> Self {
+        Self {
+            h: Self::START,
+            at: 0,
+            pending: [0; 8],
+            pending_len: 0,
+        }
+    }
+
+    #[inline]
+    fn word(&mut self, w: u64) {
+        // The word at byte 56 is the checksum field itself, read as 0.
+        let w = if self.at == CHECKSUM_AT as u64 { 0 } else { w };
+        self.h = (self.h ^ w).wrapping_mul(Self::PRIME);
+        self.at += 8;
+    }
+
+    fn feed(&mut self, mut bytes: &[u8]) {
+        while self.pending_len > 0 && !bytes.is_empty() {
+            self.pending[self.pending_len] = bytes[0];
+            self.pending_len += 1;
+            bytes = &bytes[1..];
+            if self.pending_len == 8 {
+                self.pending_len = 0;
+                self.word(u64::from_le_bytes(self.pending));
+            }
+        }
+        let mut words = bytes.chunks_exact(8);
+        for w in &mut words {
+            self.word(u64::from_le_bytes(w.try_into().expect("8 bytes")));
+        }
+        for &b in words.remainder() {
+            self.pending[self.pending_len] = b;
+            self.pending_len += 1;
+        }
+    }
+
+    fn finish(mut self) -> u64 {
+        if self.pending_len > 0 {
+            self.pending[self.pending_len..].fill(0);
+            self.pending_len = 0;
+            self.word(u64::from_le_bytes(self.pending));
+        }
+        self.h
+    }
+}
+
+/// A container's elements as little-endian bytes.
+trait LittleEndian {
+    /// How many elements.
+    fn count(&self) -> usize;
+    /// Appends the bytes of elements `range` to `out`.
+    fn put(&self, range: std::ops::Range<usize>, out: &mut Vec<u8>);
+}
+
+impl LittleEndian for &[DVec3] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn put(&self, range: std::ops::Range<usize>, out: &mut Vec<u8>) {
+        for p in &self[range] {
+            for x in p.to_array() {
+                out.extend_from_slice(&x.to_le_bytes());
+            }
+        }
+    }
+}
+
+macro_rules! little_endian_ids {
+    ($($t:ty),*) => {$(
+        impl LittleEndian for &[$t] {
+            fn count(&self) -> usize {
+                self.len()
+            }
+            fn put(&self, range: std::ops::Range<usize>, out: &mut Vec<u8>) {
+                for x in &self[range] {
+                    out.extend_from_slice(&x.to_le_bytes());
+                }
+            }
+        }
+    )*};
+}
+little_endian_ids!(u32, i32);
+
+/// The containers of one CHE level, borrowed, to write as a `.che` file.
+#[derive(Copy, Clone, Debug)]
+pub struct Containers<'a> {
+    /// The level, 0 to 3.
+    pub level: u8,
+    /// `G[]`.
+    pub g: &'a [DVec3],
+    /// `V[]`.
+    pub v: &'a [u32],
+    /// `O[]` (level 1 on; empty below).
+    pub o: &'a [i32],
+    /// `VH[]` (level 2 on; empty below).
+    pub vh: &'a [i32],
+    /// `EH` (level 2 on; empty below).
+    pub eh: &'a [u32],
+    /// `CH[]` (level 3; empty below).
+    pub ch: &'a [u32],
+    /// The number of edges, stated in the header at every level (`EH`'s length from level 2).
+    pub edges: u64,
+}
+
+impl<'a> Containers<'a> {
+    /// The containers of an owned level 0 (its edges counted by sorting, O(n log n)).
+    pub fn level0(m: &'a crate::CheL0) -> Self {
+        use crate::MeshTopology;
+        Self {
+            level: 0,
+            g: m.geometry(),
+            v: crate::che::CheLevel::start_vertices(m),
+            o: &[],
+            vh: &[],
+            eh: &[],
+            ch: &[],
+            edges: m.num_edges() as u64,
+        }
+    }
+
+    /// The containers of an owned level 1.
+    pub fn level1(m: &'a crate::CheL1) -> Self {
+        let o = m.opposite();
+        Self {
+            level: 1,
+            o,
+            edges: o
+                .iter()
+                .enumerate()
+                .filter(|&(he, &x)| x < 0 || (he as i64) < i64::from(x))
+                .count() as u64,
+            ..Self::level0(m.level0())
+        }
+    }
+
+    /// The containers of an owned level 2.
+    pub fn level2(m: &'a crate::CheL2) -> Self {
+        Self {
+            level: 2,
+            vh: m.vertex_half_edge(),
+            eh: m.edge_map(),
+            edges: m.edge_map().len() as u64,
+            ..Self::level1(m.level1())
+        }
+    }
+
+    /// The containers of an owned level 3 (`O[]` with its curve labels).
+    pub fn level3(m: &'a crate::CheL3) -> Self {
+        Self {
+            level: 3,
+            ch: m.curve_half_edge(),
+            ..Self::level2(m.level2())
+        }
+    }
+
+    /// The header of these containers, its checksum not yet computed (0); refuses counts no
+    /// `.che` file can state ([`Layout::of`]) or containers of the wrong lengths.
+    fn header(&self) -> Result<Header, CheFileProblem> {
+        let header = Header {
+            level: self.level,
+            vertices: self.g.len() as u64,
+            triangles: (self.v.len() / 3) as u64,
+            edges: self.edges,
+            curves: self.ch.len() as u64,
+            checksum: 0,
+        };
+        let layout = Layout::of(header)?;
+        let lengths = [
+            self.g.len(),
+            self.v.len(),
+            self.o.len(),
+            self.vh.len(),
+            self.eh.len(),
+            self.ch.len(),
+        ];
+        for (c, len) in Container::ALL.into_iter().zip(lengths) {
+            let expected = layout.section(c).map_or(0, |s| s.len);
+            if len as u64 != expected {
+                return Err(CheFileProblem::CountMismatch {
+                    what: c.name(),
+                    stated: expected,
+                    found: len as u64,
+                });
+            }
+        }
+        Ok(header)
+    }
+
+    /// Lays the file out into `out`, a piece at a time (the header with `checksum`).
+    fn emit(
+        &self,
+        checksum: u64,
+        out: &mut impl FnMut(&[u8]) -> std::io::Result<()>,
+    ) -> std::io::Result<()> {
+        let header = Header {
+            checksum,
+            ..self.header().expect("checked by the caller")
+        };
+        out(&header.to_bytes())?;
+        let mut at = HEADER_BYTES;
+        let mut buffer: Vec<u8> = Vec::with_capacity(1 << 16);
+        let mut section = |values: &dyn LittleEndian| -> std::io::Result<()> {
+            for i in (0..values.count()).step_by(1024) {
+                buffer.clear();
+                values.put(i..(i + 1024).min(values.count()), &mut buffer);
+                out(&buffer)?;
+                at += buffer.len() as u64;
+            }
+            let padding = aligned(at).expect("bounded") - at;
+            out(&[0u8; ALIGNMENT as usize][..padding as usize])?;
+            at += padding;
+            Ok(())
+        };
+        let stored: [(u8, &dyn LittleEndian); 6] = [
+            (0, &self.g),
+            (0, &self.v),
+            (1, &self.o),
+            (2, &self.vh),
+            (2, &self.eh),
+            (3, &self.ch),
+        ];
+        for (level, values) in stored {
+            if self.level >= level {
+                section(values)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The whole file in memory (for tests and small meshes; [`Containers::write`] streams).
+    pub fn to_bytes(&self) -> Result<Vec<u8>> {
+        self.header().map_err(|p| p.at(Path::new("(memory)")))?;
+        let mut bytes = Vec::new();
+        let mut push = |b: &[u8]| {
+            bytes.extend_from_slice(b);
+            Ok(())
+        };
+        self.emit(0, &mut push).expect("writing to memory");
+        let sum = checksum(&bytes);
+        bytes[CHECKSUM_AT..CHECKSUM_AT + 8].copy_from_slice(&sum.to_le_bytes());
+        Ok(bytes)
+    }
+
+    /// Writes the `.che` file `path` atomically ([`super::write_atomically`]): the bytes are
+    /// laid out twice, once into the checksum and once into the file.
+    pub fn write(&self, path: &Path) -> Result<()> {
+        self.header().map_err(|p| p.at(path))?;
+        let mut sum = Checksum::new();
+        let mut hash = |b: &[u8]| {
+            sum.feed(b);
+            Ok(())
+        };
+        self.emit(0, &mut hash).expect("hashing does not fail");
+        let sum = sum.finish();
+        super::write_atomically(path, |w| {
+            let mut write = |b: &[u8]| w.write_all(b);
+            self.emit(sum, &mut write)
+        })
+        .map_err(|source| Error::Io {
+            path: PathBuf::from(path),
+            source,
+        })
+    }
+}
+
+/// Builds the owned CHE of `level` from `soup` and writes it to `path` as a `.che` file
+/// ([`Containers::write`], atomically). Refuses a level other than 0–3 and what the level
+/// refuses (polygons, non-manifold edges and vertices: the owned levels' typed errors).
+pub fn write_mesh(soup: &PolygonSoup, level: u8, path: &Path) -> Result<()> {
+    use crate::MeshTopology;
+    match level {
+        0 => Containers::level0(&crate::CheL0::from_soup(soup)?).write(path),
+        1 => Containers::level1(&crate::CheL1::from_soup(soup)?).write(path),
+        2 => Containers::level2(&crate::CheL2::from_soup(soup)?).write(path),
+        3 => Containers::level3(&crate::CheL3::from_soup(soup)?).write(path),
+        _ => Err(Error::InvalidParameter {
+            parameter: "level",
+            value: level.to_string(),
+            expected: "a CHE level: 0, 1, 2 or 3",
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header(level: u8) -> Header {
+        Header {
+            level,
+            vertices: 4,
+            triangles: 3,
+            edges: 6,
+            curves: if level == 3 { 1 } else { 0 },
+            checksum: 0,
+        }
+    }
+
+    #[test]
+    fn containers_start_at_multiples_of_64_in_file_order() {
+        let layout = Layout::of(header(3)).unwrap();
+        // G: 4 · 24 = 96 bytes from 64 → 160, padded to 192; V: 9 · 4 = 36 → 228 → 256;
+        // O → 320; VH: 16 bytes → 384; EH: 24 bytes → 448; CH: 4 bytes → 512.
+        let offsets: Vec<u64> = Container::ALL
+            .iter()
+            .map(|&c| layout.section(c).unwrap().offset)
+            .collect();
+        assert_eq!(offsets, [64, 192, 256, 320, 384, 448]);
+        assert_eq!(layout.file_bytes, 512);
+        let level1 = Layout::of(header(1)).unwrap();
+        assert_eq!(level1.section(Container::VH), None);
+        assert_eq!(level1.file_bytes, 320);
+    }
+
+    #[test]
+    fn the_header_reads_back_and_refuses_what_it_does_not_know() {
+        let h = Header {
+            checksum: 0x1234,
+            ..header(2)
+        };
+        let bytes = h.to_bytes();
+        assert_eq!(Header::parse(&bytes), Ok(h));
+        assert_eq!(
+            Header::parse(&bytes[..63]),
+            Err(CheFileProblem::Short { bytes: 63 })
+        );
+        let mut b = bytes;
+        b[1] = b'X';
+        assert_eq!(Header::parse(&b), Err(CheFileProblem::WrongMagic));
+        let mut b = bytes;
+        b[8..12].copy_from_slice(&BYTE_ORDER_MARK.to_be_bytes());
+        assert_eq!(Header::parse(&b), Err(CheFileProblem::BigEndian));
+        let mut b = bytes;
+        b[12] = 2;
+        assert_eq!(
+            Header::parse(&b),
+            Err(CheFileProblem::UnknownVersion { found: 2 })
+        );
+        let mut b = bytes;
+        b[16] = 9;
+        assert_eq!(
+            Header::parse(&b),
+            Err(CheFileProblem::UnknownLevel { found: 9 })
+        );
+        let mut b = bytes;
+        b[21] = 1;
+        assert_eq!(
+            Header::parse(&b),
+            Err(CheFileProblem::ReservedNotZero { at: 20 })
+        );
+    }
+
+    #[test]
+    fn impossible_counts_and_wrong_lengths_are_refused() {
+        let too_many = Header {
+            triangles: u64::MAX,
+            ..header(1)
+        };
+        assert!(matches!(
+            Layout::of(too_many),
+            Err(CheFileProblem::ImpossibleCounts { .. })
+        ));
+        let curves_at_level_2 = Header {
+            curves: 1,
+            ..header(2)
+        };
+        assert!(matches!(
+            Layout::of(curves_at_level_2),
+            Err(CheFileProblem::ImpossibleCounts { .. })
+        ));
+        let bytes = header(2).to_bytes();
+        assert_eq!(
+            Layout::of_file(&bytes, 64),
+            Err(CheFileProblem::LengthMismatch {
+                expected: 448,
+                actual: 64
+            })
+        );
+    }
+
+    #[test]
+    fn the_checksum_ignores_its_own_field_and_sees_any_one_word() {
+        let mut bytes = vec![0u8; 128];
+        let base = checksum(&bytes);
+        bytes[CHECKSUM_AT] = 7;
+        assert_eq!(checksum(&bytes), base, "the checksum field is read as 0");
+        bytes[CHECKSUM_AT] = 0;
+        for at in (0..128).filter(|at| !(CHECKSUM_AT..CHECKSUM_AT + 8).contains(at)) {
+            let mut flipped = bytes.clone();
+            flipped[at] ^= 1;
+            assert_ne!(checksum(&flipped), base, "byte {at}");
+        }
+        // Fed piece by piece as in one piece.
+        let data: Vec<u8> = (0..200u32).map(|i| (i * 37) as u8).collect();
+        let mut h = Checksum::new();
+        for piece in data.chunks(13) {
+            h.feed(piece);
+        }
+        assert_eq!(h.finish(), checksum(&data));
+    }
+}

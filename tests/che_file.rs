@@ -1,0 +1,167 @@
+//! `.che` files (docs/che-format.md) through the CLI and the harness's checksums: `convert --to
+//! che` writes a file that `info` describes from its header and `check` verifies, the mapped
+//! CHE gives every operator's sweep checksum of the owned CHE it was written from, and bad
+//! files are refused with a one-line message and the documented exit code.
+
+mod common;
+
+use common::run::{scratch, text, topolab};
+use std::path::Path;
+use topolab_structures::che::MappedChe;
+use topolab_structures::io::che_file::write_mesh;
+use topolab_structures::meshes;
+use topolab_structures::{CheL1, CheL2, CheL3, MeshTopology, Operator, PolygonSoup};
+
+/// Every operator's sweep checksum of `owned` and of its level written to `path` and mapped,
+/// both before and after the mapped file's verification.
+fn same_checksums<Owned: MeshTopology, const L: u8>(name: &str, soup: &PolygonSoup, path: &Path)
+where
+    MappedChe<L>: MeshTopology,
+{
+    let owned = Owned::from_soup(soup).unwrap();
+    write_mesh(soup, L, path).unwrap();
+    let mut mapped = MappedChe::<L>::open(path).unwrap();
+    for verified in [false, true] {
+        if verified {
+            mapped.verify().unwrap();
+        }
+        for op in Operator::ALL {
+            assert_eq!(
+                common::checksum(&mapped, op),
+                common::checksum(&owned, op),
+                "{name}, level {L}, {op:?}, verified {verified}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_mapped_che_gives_the_owned_checksums_on_the_canonical_meshes_and_a_torus() {
+    let dir = scratch("che-checksums");
+    let mut cases: Vec<(String, PolygonSoup)> = meshes::canonical()
+        .into_iter()
+        .filter(|m| CheL2::from_soup(&m.soup).is_ok())
+        .map(|m| (m.name.to_string(), m.soup))
+        .collect();
+    cases.push(("torus".into(), meshes::torus(30, 20)));
+    for (name, soup) in &cases {
+        let path = dir.join(format!("{name}.che"));
+        same_checksums::<CheL1, 1>(name, soup, &path);
+        same_checksums::<CheL2, 2>(name, soup, &path);
+        same_checksums::<CheL3, 3>(name, soup, &path);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn convert_info_and_check_a_che_file() {
+    let dir = scratch("che-cli");
+    let out = dir.join("grid.che");
+    let o = topolab(&["convert", "grid:50", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stdout).contains("level-2 CHE"),
+        "{}",
+        text(&o.stdout)
+    );
+    // A 5 × 5 grid of squares, two triangles each: 6 · 6 = 36 vertices, 30 + 30 sides and 25
+    // diagonals = 85 edges, 50 triangles; a disc, χ = 1.
+    let o = topolab(&["info", out.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["level"], 2);
+    assert_eq!(v["vertices"], 36);
+    assert_eq!(v["edges"], 85);
+    assert_eq!(v["faces"], 50);
+    assert_eq!(v["euler_characteristic"], 1);
+    assert_eq!(v["memory_mapped"], true);
+    assert_eq!(
+        v["bytes"].as_u64().unwrap(),
+        std::fs::metadata(&out).unwrap().len()
+    );
+    let o = topolab(&["info", out.to_str().unwrap()]);
+    assert!(text(&o.stdout).contains("opened in"), "{}", text(&o.stdout));
+    let o = topolab(&["check", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(text(&o.stdout).contains("no problems found"));
+    // Detected by its magic under another name.
+    let renamed = dir.join("grid.bin");
+    std::fs::copy(&out, &renamed).unwrap();
+    let o = topolab(&["check", renamed.to_str().unwrap(), "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["clean"], true);
+    // One flipped byte in the containers: opens, and check finds it (exit code 1).
+    let mut bytes = std::fs::read(&out).unwrap();
+    let last = bytes.len() - 200;
+    bytes[last] ^= 0x40;
+    let flipped = dir.join("flipped.che");
+    std::fs::write(&flipped, &bytes).unwrap();
+    assert!(topolab(&["info", flipped.to_str().unwrap()])
+        .status
+        .success());
+    let o = topolab(&["check", flipped.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o.stderr).contains("checksum mismatch"),
+        "{}",
+        text(&o.stderr)
+    );
+    // Every level converts and checks clean.
+    for level in ["0", "1", "3"] {
+        let path = dir.join(format!("torus-{level}.che"));
+        let o = topolab(&[
+            "convert",
+            "torus:500",
+            "--to",
+            "che",
+            "--level",
+            level,
+            path.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let o = topolab(&["check", path.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "level {level}: {}",
+            text(&o.stderr)
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_che_requests_are_refused_in_one_line_with_nothing_written() {
+    let dir = scratch("che-refusals");
+    let out = dir.join("x.che");
+    let cases: [(&[&str], i32, &str); 4] = [
+        (
+            &["convert", "quad-grid:20", "--to", "che"],
+            1,
+            "triangles only",
+        ),
+        (
+            &["convert", "torus", "--to", "che", "--level", "9"],
+            2,
+            "--level 9",
+        ),
+        (
+            &["convert", "torus", "--to", "obj", "--level", "1"],
+            2,
+            "--level 1",
+        ),
+        (&["convert", "torus", "--to", "ply"], 2, "PLY"),
+    ];
+    for (args, code, says) in cases {
+        let mut args = args.to_vec();
+        args.push(out.to_str().unwrap());
+        let o = topolab(&args);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+        assert!(!out.exists(), "{args:?} wrote a file");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
