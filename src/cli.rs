@@ -87,16 +87,25 @@ pub enum Command {
         /// neighbours of `split-vertex --vertex V`.
         #[arg(long, value_delimiter = ',', requires = "op")]
         vertices: Vec<u32>,
+        /// With `--op weld-edges`: the two boundary edges, comma-separated (the second sewn
+        /// onto the first).
+        #[arg(long, value_delimiter = ',', requires = "op")]
+        edges: Vec<u32>,
+        /// With `--op weld-faces`: the two faces, comma-separated (both removed, their
+        /// boundaries sewn together).
+        #[arg(long, value_delimiter = ',', requires = "op")]
+        faces: Vec<u32>,
         /// With `--trace`: more structures side by side, comma-separated.
         #[arg(long, value_delimiter = ',', requires = "trace")]
         structures: Vec<String>,
         /// Do one edit (any editing operation, by its name; `flip`, `split` and `collapse` for
-        /// the three edge operations) on the element `--edge`, `--face`, `--vertex` or
-        /// `--vertices` names, as the operation needs, and print the records it writes,
+        /// the three edge operations) on the element `--edge`, `--face`, `--vertex`,
+        /// `--vertices`, `--edges` or `--faces` names, as the operation needs, and print the records it writes,
         /// old -> new, and what it reads (`collapse-edge`: the edge's first vertex into its
         /// second). A refused edit exits with code 1 and the reason. Without an element, the
         /// first on which the edit succeeds (on the open tetrahedron, or, where none does, on
-        /// the canonical `grid`), named, with one where it is refused and why.
+        /// the canonical `grid`, the `quad-strip` or a torus), named, with one where it is
+        /// refused and why.
         /// `explain che --op ...` edits the four CHE levels.
         #[arg(long, value_enum, conflicts_with = "trace")]
         op: Option<commands::explain_edit::ExplainOp>,
@@ -169,6 +178,8 @@ pub fn run(cli: Cli) -> u8 {
             face,
             vertex,
             vertices,
+            edges,
+            faces,
             op: Some(op),
             ..
         } => commands::explain_edit::run(
@@ -180,6 +191,8 @@ pub fn run(cli: Cli) -> u8 {
                 face,
                 vertex,
                 vertices,
+                edges,
+                faces,
             },
         ),
         Command::Explain {

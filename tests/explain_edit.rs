@@ -508,6 +508,8 @@ fn named_element(op: EditOp) -> &'static str {
         EditOp::SplitVertex => ", between its neighbours ",
         EditOp::WeldVertices => "of vertices ",
         EditOp::WeldMeshes => "its mirror image",
+        EditOp::WeldEdges => ", the second sewn onto the first",
+        EditOp::WeldFaces => ", both removed and their boundaries sewn together",
         EditOp::SetPosition => "moved halfway to the mesh's centroid",
         EditOp::Select | EditOp::RotateSelection | EditOp::ScaleSelection => "(the selection: ",
         EditOp::InsertEdge => ", by a new edge from v",

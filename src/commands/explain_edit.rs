@@ -25,11 +25,13 @@
 //! `scale-selection V` turn that selection by 30 degrees about the x axis, or scale it by 1/2,
 //! about the centroid of the vertex's neighbours; `insert-edge` takes a face and two of its
 //! corners (`--face F --vertices A,B`); `smooth` is one step of uniform Laplacian smoothing of
-//! the whole mesh.
+//! the whole mesh; `weld-edges` sews the second of two boundary edges (`--edges E,F`) onto the
+//! first, `weld-faces` removes two faces (`--faces F,G`) and sews their boundaries together.
 //!
 //! Without an element, the first one on which the edit succeeds (tried on the index
 //! half-edge, on the open tetrahedron or, where none succeeds there, on the canonical `grid`,
-//! and, where none succeeds on triangles, on the canonical `quad-strip`),
+//! where none succeeds on triangles, on the canonical `quad-strip`, and where none succeeds on
+//! an open mesh, on a torus of 128 triangles),
 //! named, with one where it is refused and why. A refused edit exits with code 1 and the
 //! structure's reason ([`topolab_structures::Refusal`]); so does an operation a structure does
 //! not offer ([`topolab_structures::Refusal::NotImplemented`]). An element past the mesh's
@@ -156,6 +158,10 @@ pub struct Asked {
     pub vertex: Option<u32>,
     /// `--vertices A,B,...`.
     pub vertices: Vec<u32>,
+    /// `--edges E,F`.
+    pub edges: Vec<u32>,
+    /// `--faces F,G`.
+    pub faces: Vec<u32>,
 }
 
 impl Asked {
@@ -181,6 +187,12 @@ impl Asked {
         if !self.vertices.is_empty() {
             out.push(format!("--vertices {}", join(&self.vertices)));
         }
+        if !self.edges.is_empty() {
+            out.push(format!("--edges {}", join(&self.edges)));
+        }
+        if !self.faces.is_empty() {
+            out.push(format!("--faces {}", join(&self.faces)));
+        }
         out
     }
 
@@ -200,6 +212,12 @@ impl Asked {
             SubjectKind::Face if only(self.face.is_some()) => self.face.map(Subject::Face),
             SubjectKind::Corners if only(vs.len() >= 3) => Some(Subject::Vertices(vs.clone())),
             SubjectKind::TwoVertices if only(vs.len() == 2) => Some(Subject::Vertices(vs.clone())),
+            SubjectKind::TwoEdges if only(self.edges.len() == 2) => {
+                Some(Subject::Edges([self.edges[0], self.edges[1]]))
+            }
+            SubjectKind::TwoFaces if only(self.faces.len() == 2) => {
+                Some(Subject::Faces([self.faces[0], self.faces[1]]))
+            }
             SubjectKind::FaceAndCorners
                 if self.face.is_some() && vs.len() == 2 && given.len() == 2 =>
             {
@@ -239,6 +257,8 @@ fn flags_of(subject: &Subject) -> String {
     match subject {
         Subject::Nothing | Subject::MirrorImage | Subject::WholeMesh => String::new(),
         Subject::FaceAndCorners { face, a, b } => format!("--face {face} --vertices {a},{b}"),
+        Subject::Edges([e, f]) => format!("--edges {e},{f}"),
+        Subject::Faces([f, g]) => format!("--faces {f},{g}"),
         Subject::Vertex(v) => format!("--vertex {v}"),
         Subject::Edge(e) => format!("--edge {e}"),
         Subject::Face(f) => format!("--face {f}"),
@@ -325,6 +345,8 @@ fn subject_words(subject: &Subject) -> String {
         Subject::MirrorImage => "the mirror image".to_string(),
         Subject::WholeMesh => "the whole mesh".to_string(),
         Subject::FaceAndCorners { face, a, b } => format!("face {face} from corner {a} to {b}"),
+        Subject::Edges([e, f]) => format!("edges {e} and {f}"),
+        Subject::Faces([f, g]) => format!("faces {f} and {g}"),
         Subject::Vertex(v) => format!("vertex {v}"),
         Subject::Edge(e) => format!("edge {e}"),
         Subject::Face(f) => format!("face {f}"),

@@ -214,7 +214,9 @@ pub(crate) fn edit_cost(op: EditOp) -> Cost {
     match op {
         EditOp::AddVertex | EditOp::SplitEdge => Cost::Constant,
         // Welding meshes is the trait's rebuild from the welded face list.
-        EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
+        EditOp::GarbageCollection | EditOp::WeldEdges | EditOp::WeldFaces | EditOp::WeldMeshes => {
+            Cost::Linear
+        }
         EditOp::AddFace
         | EditOp::WeldVertices
         | EditOp::DeleteFace

@@ -26,7 +26,7 @@ use std::collections::HashSet;
 use topolab_structures::algorithms::select::{
     rotate_selection, scale_selection, select_vertices_in, smooth_step, Aabb, VertexSelection,
 };
-use topolab_structures::algorithms::weld::weld_meshes;
+use topolab_structures::algorithms::weld::{weld_edges, weld_faces, weld_meshes};
 use topolab_structures::meshes;
 use topolab_structures::{
     EdgeId, EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Refusal,
@@ -57,6 +57,10 @@ pub enum SubjectKind {
     FaceAndCorners,
     /// The whole mesh: every vertex (no element to name).
     WholeMesh,
+    /// Two edges (`--edges E,F`).
+    TwoEdges,
+    /// Two faces (`--faces F,G`).
+    TwoFaces,
 }
 
 impl SubjectKind {
@@ -87,6 +91,8 @@ impl SubjectKind {
                 "--face F --vertices A,B (two corners of the face that are not neighbours in it)"
             }
             SubjectKind::WholeMesh => "no element (every vertex of the mesh of --mesh)",
+            SubjectKind::TwoEdges => "--edges E,F (two boundary edges)",
+            SubjectKind::TwoFaces => "--faces F,G",
         }
     }
 }
@@ -128,6 +134,10 @@ pub enum Subject {
     },
     /// The whole mesh ([`SubjectKind::WholeMesh`]).
     WholeMesh,
+    /// Two edges ([`SubjectKind::TwoEdges`]).
+    Edges([u32; 2]),
+    /// Two faces ([`SubjectKind::TwoFaces`]).
+    Faces([u32; 2]),
 }
 
 impl Subject {
@@ -144,6 +154,8 @@ impl Subject {
             Subject::MirrorImage => SubjectKind::MirrorImage,
             Subject::FaceAndCorners { .. } => SubjectKind::FaceAndCorners,
             Subject::WholeMesh => SubjectKind::WholeMesh,
+            Subject::Edges(_) => SubjectKind::TwoEdges,
+            Subject::Faces(_) => SubjectKind::TwoFaces,
         }
     }
 }
@@ -163,6 +175,9 @@ pub struct Target {
     pub edge: Option<EdgeId>,
     /// The structure's id of the face.
     pub face: Option<FaceId>,
+    /// The structure's ids of the second edge (found to check that it is there: a weld of
+    /// edges names both by their ends) and of the second face, of a weld of two.
+    pub second: (Option<EdgeId>, Option<FaceId>),
     /// Where a new vertex goes: the edge's midpoint, the face's centroid, a point inside the
     /// fan that moves in a vertex split, the centroid of the mesh for an unused vertex.
     pub point: DVec3,
@@ -352,6 +367,28 @@ pub fn edit<M: MeshEdit>(op: EditOp) -> Edit<M> {
             "the edge's two faces and their cycles of corners (is it interior, and would the merged polygon repeat a corner?)",
             |m, t| m.delete_edge(t.edge()?),
         ),
+        EditOp::WeldEdges => Edit {
+            kind: K::TwoEdges,
+            reads: "every face (the boundary sides, to find how each edge runs); the welded face list is built again, the second edge's ends renamed as the first's and gone, later vertex ids moving down",
+            local: false,
+            setup: None,
+            call: |m, t| {
+                let (e, g) = ([t.vertex(0)?, t.vertex(1)?], [t.vertex(2)?, t.vertex(3)?]);
+                *m = weld_edges(m, e, g)?;
+                Ok(())
+            },
+        },
+        EditOp::WeldFaces => Edit {
+            kind: K::TwoFaces,
+            reads: "both faces' corners and positions (which corners meet: the closest pairing), then every face; the face list without the two is built again, the second face's corners renamed as the first's and gone, later vertex ids moving down",
+            local: false,
+            setup: None,
+            call: |m, t| {
+                let second = t.second.1.ok_or_else(|| Target::missing("a second face"))?;
+                *m = weld_faces(m, t.face()?, second)?;
+                Ok(())
+            },
+        },
         EditOp::Smooth => Edit {
             kind: K::WholeMesh,
             reads: "every vertex: is it on the boundary, and its neighbours' positions (R00), summed in increasing id order; every interior vertex's new position is written after all are read",
@@ -406,6 +443,8 @@ pub struct Prepared {
     ends: Option<[u32; 2]>,
     /// The face's corners, for a face.
     corners: Option<Vec<u32>>,
+    /// The second edge's ends and the second face's corners, for a weld of two.
+    second: (Option<[u32; 2]>, Option<Vec<u32>>),
     /// See [`Target::point`].
     point: DVec3,
     /// See [`Target::other`].
@@ -483,6 +522,7 @@ pub fn prepare(
         vertices: Vec::new(),
         ends: None,
         corners: None,
+        second: (None, None),
         point: centroid(soup.positions.iter().copied()),
         other: None,
         description: String::new(),
@@ -575,6 +615,49 @@ pub fn prepare(
             )
         }
         Subject::WholeMesh => "every vertex of the mesh".to_string(),
+        Subject::Edges([e, f]) => {
+            let ne = reference.num_edges();
+            let mut ends = Vec::new();
+            for id in [*e, *f] {
+                if id as usize >= ne {
+                    return Err(out_of_range(E::Edge, id, ne));
+                }
+                ends.push(reference.edge_vertices(EdgeId(id)).map(|v| v.0));
+            }
+            prepared.ends = Some(ends[0]);
+            prepared.second.0 = Some(ends[1]);
+            prepared.vertices = vec![ends[0][0], ends[0][1], ends[1][0], ends[1][1]];
+            format!(
+                "edges {e} (v{} - v{}) and {f} (v{} - v{}), the second sewn onto the first",
+                ends[0][0], ends[0][1], ends[1][0], ends[1][1]
+            )
+        }
+        Subject::Faces([f, g]) => {
+            let nf = reference.num_faces();
+            let mut words = Vec::new();
+            let mut both = Vec::new();
+            for id in [*f, *g] {
+                if id as usize >= nf {
+                    return Err(out_of_range(E::Face, id, nf));
+                }
+                let c = corners_of(reference, FaceId(id));
+                words.push(format!(
+                    "face {id} ({})",
+                    c.iter()
+                        .map(|v| format!("v{v}"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ));
+                both.push(c);
+            }
+            prepared.vertices = both.concat();
+            prepared.second.1 = Some(both.pop().expect("two faces"));
+            prepared.corners = both.pop();
+            format!(
+                "{} and {}, both removed and their boundaries sewn together",
+                words[0], words[1]
+            )
+        }
     };
     Ok(prepared)
 }
@@ -646,10 +729,21 @@ impl Prepared {
             Some(c) => Some(face_with_corners(m, c)?),
             None => None,
         };
+        let second = (
+            match self.second.0 {
+                Some([a, b]) => Some(edge_between(m, a, b)?),
+                None => None,
+            },
+            match &self.second.1 {
+                Some(c) => Some(face_with_corners(m, c)?),
+                None => None,
+            },
+        );
         Some(Target {
             vertices: self.vertices.iter().map(|&v| VertexId(v)).collect(),
             edge,
             face,
+            second,
             point: self.point,
             other: self.other.clone(),
         })
@@ -826,6 +920,9 @@ pub const TRIED: usize = 64;
 /// neighbours of a split.
 const TRIED_VERTICES: u32 = 12;
 
+/// The edges among which [`choose`] looks for pairs to weld.
+const TRIED_EDGES: usize = 12;
+
 /// The subjects of `kind` that [`choose`] tries on `m`, in order, at most [`TRIED`] of a kind
 /// that has one per element (vertices, edges, faces); combinations of the first
 /// [`TRIED_VERTICES`] vertices for the kinds that take several.
@@ -836,6 +933,44 @@ fn candidates(kind: SubjectKind, m: &IndexHalfEdge) -> Vec<Subject> {
         SubjectKind::Nothing => vec![Subject::Nothing],
         SubjectKind::MirrorImage => vec![Subject::MirrorImage],
         SubjectKind::WholeMesh => vec![Subject::WholeMesh],
+        SubjectKind::TwoEdges => {
+            let few = m.num_edges().min(TRIED_EDGES) as u32;
+            (0..few)
+                .flat_map(|e| (0..few).filter(move |&f| f != e).map(move |f| [e, f]))
+                .map(Subject::Edges)
+                .collect()
+        }
+        SubjectKind::TwoFaces => {
+            let n = m.num_faces() as u32;
+            // Face 0 with each other face, farthest first (a weld of faces needs faces apart),
+            // then the nearest (which names a refusal).
+            let centre = |f: u32| {
+                centroid(
+                    corners_of(m, FaceId(f))
+                        .into_iter()
+                        .map(|v| m.position(VertexId(v))),
+                )
+            };
+            let mut others: Vec<u32> = (1..n).collect();
+            others.sort_by(|&a, &b| {
+                centre(b)
+                    .distance_squared(centre(0))
+                    .total_cmp(&centre(a).distance_squared(centre(0)))
+            });
+            let mut out: Vec<Subject> = others
+                .iter()
+                .take(TRIED / 2)
+                .map(|&g| Subject::Faces([0, g]))
+                .collect();
+            out.extend(
+                others
+                    .iter()
+                    .rev()
+                    .take(TRIED / 2)
+                    .map(|&g| Subject::Faces([0, g])),
+            );
+            out
+        }
         SubjectKind::FaceAndCorners => first(m.num_faces())
             .flat_map(|f| {
                 let c = corners_of(m, FaceId(f));
@@ -963,7 +1098,12 @@ pub const GRID: &str = "the canonical mesh `grid` (a 3x2 triangulated grid: --me
 pub const QUAD_STRIP: &str =
     "the canonical mesh `quad-strip` (three quads in a row: --mesh quad-strip)";
 
-/// [`DefaultCase`] of `op`.
+/// The label of the torus the welds of faces are shown on.
+pub const TORUS: &str = "a torus of 128 triangles (--mesh torus:128)";
+
+/// [`DefaultCase`] of `op`: the first of the open tetrahedron, `grid`, `quad-strip` and a
+/// torus of 128 triangles (a weld of two faces needs faces apart on a closed mesh) on which
+/// `op` succeeds, or the last.
 pub fn default_case(op: EditOp) -> DefaultCase {
     let soup = meshes::open_tetrahedron();
     let choice = choose(&soup, op);
@@ -976,25 +1116,28 @@ pub fn default_case(op: EditOp) -> DefaultCase {
             on_tetrahedron: None,
         };
     }
-    let grid = meshes::grid(3, 2, true);
-    let on_grid = choose(&grid, op);
-    if on_grid.success.is_some() {
-        return DefaultCase {
-            choice: on_grid,
-            soup: grid,
-            label: GRID,
-            mesh_flag: Some("grid"),
-            on_tetrahedron: Some(choice),
-        };
+    let others: [(fn() -> PolygonSoup, &'static str, &'static str); 3] = [
+        (|| meshes::grid(3, 2, true), GRID, "grid"),
+        (|| meshes::quad_strip(3), QUAD_STRIP, "quad-strip"),
+        (|| meshes::torus_with_triangles(128), TORUS, "torus:128"),
+    ];
+    let mut case = None;
+    for (make, label, flag) in others {
+        let other = make();
+        let found = choose(&other, op);
+        let done = found.success.is_some();
+        case = Some(DefaultCase {
+            choice: found,
+            soup: other,
+            label,
+            mesh_flag: Some(flag),
+            on_tetrahedron: Some(choice.clone()),
+        });
+        if done {
+            break;
+        }
     }
-    let quads = meshes::quad_strip(3);
-    DefaultCase {
-        choice: choose(&quads, op),
-        soup: quads,
-        label: QUAD_STRIP,
-        mesh_flag: Some("quad-strip"),
-        on_tetrahedron: Some(choice),
-    }
+    case.expect("three meshes tried")
 }
 
 /// The operations the report's teaching section draws, each on the index half-edge, the

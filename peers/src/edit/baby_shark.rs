@@ -116,6 +116,8 @@ impl MeshEdit for BabySharkCornerTable {
             EditOp::FlipEdge
                 | EditOp::CollapseEdge
                 | EditOp::GarbageCollection
+                | EditOp::WeldEdges
+                | EditOp::WeldFaces
                 | EditOp::WeldMeshes
                 | EditOp::SetPosition
                 | EditOp::Select

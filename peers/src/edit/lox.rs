@@ -28,6 +28,8 @@ fn supports(op: EditOp) -> bool {
             | EditOp::AddFace
             | EditOp::SplitFace
             | EditOp::GarbageCollection
+            | EditOp::WeldEdges
+            | EditOp::WeldFaces
             | EditOp::WeldMeshes
             | EditOp::SetPosition
             | EditOp::Select

@@ -147,6 +147,8 @@ impl MeshEdit for TriMesh {
                 | EditOp::SplitEdge
                 | EditOp::SplitFace
                 | EditOp::GarbageCollection
+                | EditOp::WeldEdges
+                | EditOp::WeldFaces
                 | EditOp::WeldMeshes
                 | EditOp::SetPosition
                 | EditOp::Select

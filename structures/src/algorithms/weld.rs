@@ -1,14 +1,30 @@
-//! Welding whole meshes, the lecture on polygon-mesh data structures' "weld meshes" (*Netze
-//! verschweißen*): [`weld_meshes`] appends mesh B to mesh A and merges each boundary vertex
+//! Welding, the lecture on polygon-mesh data structures' "weld vertices, edges, faces" and
+//! "weld whole meshes" (*Ecken, Kanten, Faces … verschweißen*, *Ganze Netze verschweißen*);
+//! the lecture names the operations, not a method, so what follows is the lab's choice.
+//! [`weld_meshes`] appends mesh B to mesh A and merges each boundary vertex
 //! of B with the boundary vertex of A at the same place (within a tolerance), where the
 //! boundary curves run against each other, so that the two surfaces share the edges along
 //! which they meet. Vertex welding inside one mesh is [`MeshEdit::weld_vertices`].
+//! [`weld_edges`] sews two boundary edges of one mesh into one edge (the ends of a strip into
+//! a ring); [`weld_faces`] removes two faces of one mesh and sews their boundaries together
+//! (two facing faces become a tunnel, a handle).
 //!
 //! The result is built from the welded face list ([`MeshTopology::from_soup`]), O(n + m) for
 //! every structure: appending B costs O(m) anyway, and a structure's own `add_face` could not
 //! take B's faces one at a time in an arbitrary order (a face that meets the rest at a vertex
 //! only would make it non-manifold until its neighbours come). A's vertices keep their ids,
 //! B's unmatched vertices follow in their order; A's faces come first, then B's.
+//!
+//! [`weld_edges`] and [`weld_faces`] are rebuilds too, O(n) for every structure: the welded
+//! face list is built again, the vertices welded away leave and the others keep their order
+//! (ids move down past the ones that left, deleted slots are collected, as a garbage
+//! collection would); a welded vertex keeps the position of the first edge's (face's) corner.
+//! They are refused (op [`EditOp::WeldEdges`], [`EditOp::WeldFaces`]), nothing changed, where
+//! an id names nothing, or two vertices no edge joins ([`Refusal::NoSuchElement`]), both name the same element
+//! ([`Refusal::SameElement`]), an edge is not on the boundary ([`Refusal::InteriorEdge`]), the
+//! faces differ in their number of corners or share a corner ([`Refusal::FaceMismatch`]), or
+//! the result is not an oriented manifold (as below); and by a structure that does not offer
+//! them ([`Refusal::NotImplemented`]).
 //!
 //! Refused with [`Error::EditRefused`] (op [`EditOp::WeldMeshes`]), nothing built:
 //! - no boundary vertex of B lies within the tolerance of one of A ([`Refusal::NothingToWeld`]);
@@ -27,11 +43,145 @@ use glam::DVec3;
 use std::collections::{HashMap, HashSet};
 
 fn refuse<M: MeshTopology>(reason: Refusal) -> Error {
+    refuse_op::<M>(EditOp::WeldMeshes, reason)
+}
+
+fn refuse_op<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
     Error::EditRefused {
         structure: M::NAME,
-        op: EditOp::WeldMeshes,
+        op,
         reason,
     }
+}
+
+/// `M` built from the welded `soup`, or `op` refused with the reason the build gives.
+fn rebuilt<M: MeshEdit>(op: EditOp, soup: &PolygonSoup) -> Result<M> {
+    M::from_soup(soup).map_err(|e| match e {
+        Error::NonManifoldEdge { .. } => refuse_op::<M>(op, Refusal::NonManifoldEdge),
+        Error::InconsistentOrientation { .. } => refuse_op::<M>(op, Refusal::Orientation),
+        Error::NonManifoldVertex { .. } => refuse_op::<M>(op, Refusal::NonManifoldVertex),
+        Error::RepeatedVertex { .. } => refuse_op::<M>(op, Refusal::BadFace),
+        other => other,
+    })
+}
+
+/// `m` with its faces `faces` (vertex ids of `m`) and vertex `v` renamed `rename[v]` where
+/// given: the vertices renamed and the deleted ones leave, the rest keep their order.
+fn rebuilt_renamed<M: MeshEdit>(
+    op: EditOp,
+    m: &M,
+    faces: Vec<Vec<u32>>,
+    rename: &HashMap<u32, u32>,
+) -> Result<M> {
+    let mut id = vec![u32::MAX; m.num_vertices()];
+    let mut positions = Vec::with_capacity(m.num_vertices());
+    for v in (0..m.num_vertices()).map(VertexId::new) {
+        if !m.is_deleted_vertex(v) && !rename.contains_key(&v.0) {
+            id[v.index()] = positions.len() as u32;
+            positions.push(m.position(v));
+        }
+    }
+    let faces: Vec<Vec<u32>> = faces
+        .into_iter()
+        .map(|f| {
+            f.into_iter()
+                .map(|v| id[*rename.get(&v).unwrap_or(&v) as usize])
+                .collect()
+        })
+        .collect();
+    rebuilt(op, &PolygonSoup::from_polygons(positions, &faces))
+}
+
+/// Refuses `op` on a structure that does not offer it.
+fn offered<M: MeshEdit>(op: EditOp) -> Result<()> {
+    if M::supports(op) {
+        Ok(())
+    } else {
+        Err(refuse_op::<M>(op, Refusal::NotImplemented))
+    }
+}
+
+/// Sews boundary edge `g` of `m` onto boundary edge `e`, each named by its two ends (edge ids
+/// are each structure's own): with `e` run a → b and `g` run c → d by their faces, c becomes b
+/// and d becomes a, so that the two faces run the welded edge in opposite directions (see the
+/// module docs for the ids and the refusals). Two edges that share an end are zipped from it;
+/// the ends of a strip, welded, make a ring.
+pub fn weld_edges<M: MeshEdit>(m: &M, e: [VertexId; 2], g: [VertexId; 2]) -> Result<M> {
+    let op = EditOp::WeldEdges;
+    offered::<M>(op)?;
+    let live = |v: VertexId| v.index() < m.num_vertices() && !m.is_deleted_vertex(v);
+    let joined = |[a, b]: [VertexId; 2]| {
+        let mut found = false;
+        if live(a) && live(b) {
+            m.vertex_vertices(a, |w| found |= w == b);
+        }
+        found
+    };
+    if !joined(e) || !joined(g) {
+        return Err(refuse_op::<M>(op, Refusal::NoSuchElement));
+    }
+    let unordered = |[a, b]: [VertexId; 2]| (a.0.min(b.0), a.0.max(b.0));
+    if unordered(e) == unordered(g) {
+        return Err(refuse_op::<M>(op, Refusal::SameElement));
+    }
+    let faces = faces_of(m);
+    let sides = boundary_sides(&faces);
+    let side_of = |e: [VertexId; 2]| {
+        sides
+            .iter()
+            .copied()
+            .find(|&(p, q)| (p.min(q), p.max(q)) == unordered(e))
+            .ok_or_else(|| refuse_op::<M>(op, Refusal::InteriorEdge))
+    };
+    let ((a, b), (c, d)) = (side_of(e)?, side_of(g)?);
+    let rename: HashMap<u32, u32> = [(c, b), (d, a)]
+        .into_iter()
+        .filter(|(from, to)| from != to)
+        .collect();
+    rebuilt_renamed(op, m, faces, &rename)
+}
+
+/// Removes faces `f` and `g` of `m` and sews their boundaries together: corner i of `f`
+/// meets corner r − i of `g` (counter-clockwise, mod k: facing faces run opposite ways), with
+/// r the turn that brings the paired corners closest (the least sum of squared distances; the
+/// first such). See the module docs for the ids and the refusals.
+pub fn weld_faces<M: MeshEdit>(m: &M, f: FaceId, g: FaceId) -> Result<M> {
+    let op = EditOp::WeldFaces;
+    offered::<M>(op)?;
+    let live = |f: FaceId| f.index() < m.num_faces() && !m.is_deleted_face(f);
+    if !live(f) || !live(g) {
+        return Err(refuse_op::<M>(op, Refusal::NoSuchElement));
+    }
+    if f == g {
+        return Err(refuse_op::<M>(op, Refusal::SameElement));
+    }
+    let corners = |f: FaceId| {
+        let mut c = Vec::new();
+        m.face_vertices(f, |v| c.push(v.0));
+        c
+    };
+    let (cf, cg) = (corners(f), corners(g));
+    let k = cf.len();
+    if cg.len() != k || cf.iter().any(|v| cg.contains(v)) {
+        return Err(refuse_op::<M>(op, Refusal::FaceMismatch));
+    }
+    let at = |v: u32| m.position(VertexId(v));
+    let paired = |r: usize, i: usize| cg[(r + k - i) % k];
+    let spread = |r: usize| -> f64 {
+        (0..k)
+            .map(|i| at(cf[i]).distance_squared(at(paired(r, i))))
+            .sum()
+    };
+    let r = (0..k)
+        .min_by(|&x, &y| spread(x).total_cmp(&spread(y)))
+        .unwrap_or(0);
+    let rename: HashMap<u32, u32> = (0..k).map(|i| (paired(r, i), cf[i])).collect();
+    let faces: Vec<Vec<u32>> = (0..m.num_faces())
+        .map(FaceId::new)
+        .filter(|&h| h != f && h != g && !m.is_deleted_face(h))
+        .map(corners)
+        .collect();
+    rebuilt_renamed(op, m, faces, &rename)
 }
 
 /// The live faces of `m` as vertex lists (deleted faces skipped; vertex ids as the structure's).
@@ -172,11 +322,5 @@ pub fn weld_meshes<M: MeshEdit>(a: &M, b: &M, tolerance: f64) -> Result<M> {
             .map(|f| f.into_iter().map(|v| map[v as usize]).collect()),
     );
     let soup = PolygonSoup::from_polygons(positions, &faces);
-    M::from_soup(&soup).map_err(|e| match e {
-        Error::NonManifoldEdge { .. } => refuse::<M>(Refusal::NonManifoldEdge),
-        Error::InconsistentOrientation { .. } => refuse::<M>(Refusal::Orientation),
-        Error::NonManifoldVertex { .. } => refuse::<M>(Refusal::NonManifoldVertex),
-        Error::RepeatedVertex { .. } => refuse::<M>(Refusal::BadFace),
-        other => other,
-    })
+    rebuilt(EditOp::WeldMeshes, &soup)
 }

@@ -31,6 +31,12 @@ pub enum EditOp {
     GarbageCollection,
     /// Merge two vertices into one ([`MeshEdit::weld_vertices`](crate::core::edit::MeshEdit::weld_vertices)).
     WeldVertices,
+    /// Sew two boundary edges of one mesh into one
+    /// ([`weld_edges`](crate::algorithms::weld::weld_edges)): a rebuild, O(n) everywhere.
+    WeldEdges,
+    /// Remove two faces of one mesh and sew their boundaries together
+    /// ([`weld_faces`](crate::algorithms::weld::weld_faces)): a rebuild, O(n) everywhere.
+    WeldFaces,
     /// Append a mesh and weld it along matching boundary curves
     /// ([`weld_meshes`](crate::algorithms::weld::weld_meshes)): a rebuild, O(n) everywhere.
     WeldMeshes,
@@ -72,7 +78,7 @@ pub enum EditOp {
 
 impl EditOp {
     /// Every operation, in the order above.
-    pub const ALL: [EditOp; 19] = [
+    pub const ALL: [EditOp; 21] = [
         EditOp::AddVertex,
         EditOp::AddFace,
         EditOp::DeleteFace,
@@ -84,6 +90,8 @@ impl EditOp {
         EditOp::SplitVertex,
         EditOp::GarbageCollection,
         EditOp::WeldVertices,
+        EditOp::WeldEdges,
+        EditOp::WeldFaces,
         EditOp::WeldMeshes,
         EditOp::SetPosition,
         EditOp::Select,
@@ -108,6 +116,8 @@ impl EditOp {
             EditOp::SplitVertex => "split-vertex",
             EditOp::GarbageCollection => "garbage-collection",
             EditOp::WeldVertices => "weld-vertices",
+            EditOp::WeldEdges => "weld-edges",
+            EditOp::WeldFaces => "weld-faces",
             EditOp::WeldMeshes => "weld-meshes",
             EditOp::SetPosition => "set-position",
             EditOp::Select => "select",
@@ -197,6 +207,12 @@ pub enum Refusal {
     /// A vertex moved onto the position of another: explicit storage tells vertices apart by
     /// their coordinates only.
     PositionTaken,
+    /// A weld of an element to itself: both ids name the same edge or face.
+    SameElement,
+    /// A weld of edges given an interior edge: only boundary edges (one face) can be sewn.
+    InteriorEdge,
+    /// Faces to weld with different numbers of corners, or sharing a corner.
+    FaceMismatch,
     /// A case this structure does not implement yet (named in its docs).
     NotImplemented,
 }
@@ -233,6 +249,15 @@ impl Refusal {
             }
             Refusal::PositionTaken => {
                 "another vertex is at that position, and this structure tells vertices apart by their coordinates"
+            }
+            Refusal::SameElement => {
+                "both ids name the same element: it cannot be welded to itself"
+            }
+            Refusal::InteriorEdge => {
+                "an edge to weld has two faces: only boundary edges can be sewn together"
+            }
+            Refusal::FaceMismatch => {
+                "the faces to weld must have the same number of corners and no corner in common"
             }
             Refusal::NotImplemented => "this case is not implemented by this structure",
         }

@@ -285,12 +285,15 @@ impl Edit {
 }
 
 /// The operations the random sequences draw ([`Edit::op`]): every operation but garbage
-/// collection (done by every structure, drawn as [`Edit::Collect`]) and the weld of whole
-/// meshes (a rebuild, tested by the weld tests).
+/// collection (done by every structure, drawn as [`Edit::Collect`]) and the welds of edges,
+/// faces and whole meshes (rebuilds, tested by the weld tests).
 pub fn drawn() -> impl Iterator<Item = EditOp> {
-    EditOp::ALL
-        .into_iter()
-        .filter(|op| !matches!(op, EditOp::GarbageCollection | EditOp::WeldMeshes))
+    EditOp::ALL.into_iter().filter(|op| {
+        !matches!(
+            op,
+            EditOp::GarbageCollection | EditOp::WeldEdges | EditOp::WeldFaces | EditOp::WeldMeshes
+        )
+    })
 }
 
 fn edge_between<M: MeshEdit>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
@@ -1391,6 +1394,16 @@ macro_rules! edit_conformance {
             }
 
             #[test]
+            fn edge_and_face_welds_give_the_meshes_built_directly_or_are_refused() {
+                if !<$ty as $crate::MeshEdit>::supports($crate::EditOp::WeldEdges) {
+                    return;
+                }
+                let checked = $crate::testing::weld::weld_edge_and_face_cases::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert_eq!(checked, 8);
+            }
+
+            #[test]
             fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
                 $crate::testing::editing::vertex_welds::<$ty>(false);
             }
@@ -1430,6 +1443,16 @@ macro_rules! edit_conformance {
             }
 
             #[test]
+            fn edge_and_face_welds_give_the_meshes_built_directly_or_are_refused() {
+                if !<$ty as $crate::MeshEdit>::supports($crate::EditOp::WeldEdges) {
+                    return;
+                }
+                let checked = $crate::testing::weld::weld_edge_and_face_cases::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert_eq!(checked, 8);
+            }
+
+            #[test]
             fn vertex_welds_zip_and_close_boundaries_or_are_refused() {
                 $crate::testing::editing::vertex_welds::<$ty>(true);
             }
@@ -1464,6 +1487,16 @@ macro_rules! edit_conformance {
                 let cut = $crate::testing::weld::weld_halves::<$ty>()
                     .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
                 assert!(cut >= 3, "only {cut} meshes cut and welded");
+            }
+
+            #[test]
+            fn edge_and_face_welds_give_the_meshes_built_directly_or_are_refused() {
+                if !<$ty as $crate::MeshEdit>::supports($crate::EditOp::WeldEdges) {
+                    return;
+                }
+                let checked = $crate::testing::weld::weld_edge_and_face_cases::<$ty>()
+                    .unwrap_or_else(|msg| panic!("{}: {msg}", <$ty as $crate::MeshTopology>::NAME));
+                assert_eq!(checked, 8);
             }
 
             #[test]

@@ -416,3 +416,149 @@ pub fn weld_vertex_cases<M: MeshEdit>() -> Result<usize, String> {
     }
     Ok(cases)
 }
+
+/// A closed ring of `w` columns of squares (two triangles each) and one row: [`band`] with
+/// its last column of vertices made its first, built directly.
+fn ring(w: u32) -> PolygonSoup {
+    let id = |i: u32, j: u32| j * w + i % w;
+    let band = band(w);
+    let positions = (0..2)
+        .flat_map(|j| (0..w).map(move |i| (i, j)))
+        .map(|(i, j)| band.positions[(j * (w + 1) + i) as usize])
+        .collect();
+    let mut faces = Vec::new();
+    for i in 0..w {
+        faces.push(vec![id(i, 0), id(i + 1, 0), id(i + 1, 1)]);
+        faces.push(vec![id(i, 0), id(i + 1, 1), id(i, 1)]);
+    }
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// The weld of edges and of faces ([`weld_edges`], [`weld_faces`]) on structure `M`, against
+/// meshes built directly: the two end edges of a [`band`] welded give its [`ring`]; two far
+/// faces of a torus welded give one of the k meshes their corners' k pairings make (a
+/// torus with a handle: genus 2). Then the refusals: an element welded to itself, an interior
+/// edge, faces sharing a corner or of different sizes, ids past the counts. Returns the
+/// number of cases checked.
+pub fn weld_edge_and_face_cases<M: MeshEdit>() -> Result<usize, String> {
+    use crate::algorithms::weld::{weld_edges, weld_faces};
+    use crate::core::ids::{FaceId, VertexId};
+    let mut checked = 0;
+    let w = 4;
+    let band_soup = band(w);
+    let m = M::from_soup(&band_soup).map_err(|e| e.to_string())?;
+    let edge = |a: u32, b: u32| [VertexId(a), VertexId(b)];
+    // The first column's edge (0, w + 1) and the last one's (w, 2w + 1).
+    let (first, last) = (edge(0, w + 1), edge(w, 2 * w + 1));
+    let welded = weld_edges(&m, first, last).map_err(|e| format!("band ends: {e}"))?;
+    compare(&welded, &ring(w)).map_err(|e| format!("the band's ends welded: {e}"))?;
+    checked += 1;
+    let diagonal = edge(0, w + 2);
+    let cases: [(&str, crate::Result<M>, Refusal); 3] = [
+        (
+            "an edge welded to itself",
+            weld_edges(&m, first, first),
+            Refusal::SameElement,
+        ),
+        (
+            "an interior edge",
+            weld_edges(&m, first, diagonal),
+            Refusal::InteriorEdge,
+        ),
+        (
+            "two vertices no edge joins",
+            weld_edges(&m, first, edge(0, 2)),
+            Refusal::NoSuchElement,
+        ),
+    ];
+    for (what, got, want) in cases {
+        let got = refusal(got);
+        if got != Some(want) {
+            return Err(format!("{what}: {got:?}, not {want:?}"));
+        }
+        checked += 1;
+    }
+
+    // Two faces of a torus: face 0 and the one whose centroid is farthest from it.
+    let torus = meshes::torus(8, 6);
+    let faces: Vec<Vec<u32>> = torus.faces().map(|f| f.to_vec()).collect();
+    let centre = |f: &[u32]| {
+        f.iter()
+            .map(|&v| torus.positions[v as usize])
+            .sum::<DVec3>()
+    };
+    let far = (1..faces.len())
+        .max_by(|&a, &b| {
+            let d = |g: usize| centre(&faces[g]).distance_squared(centre(&faces[0]));
+            d(a).total_cmp(&d(b))
+        })
+        .expect("faces");
+    let m = M::from_soup(&torus).map_err(|e| e.to_string())?;
+    let welded =
+        weld_faces(&m, FaceId(0), FaceId(far as u32)).map_err(|e| format!("torus: {e}"))?;
+    let (cf, cg) = (&faces[0], &faces[far]);
+    let k = cf.len();
+    let pairing = |r: usize| {
+        // g's corner (r − i) mod k becomes f's corner i; the others keep their order.
+        let gone = |v: u32| cg.contains(&v);
+        let number = |v: u32| v - (0..v).filter(|&u| gone(u)).count() as u32;
+        let name = |v: u32| match cg.iter().position(|&x| x == v) {
+            Some(j) => cf[(r + k - j) % k],
+            None => v,
+        };
+        let kept: Vec<Vec<u32>> = faces
+            .iter()
+            .enumerate()
+            .filter(|&(f, _)| f != 0 && f != far)
+            .map(|(_, f)| f.iter().map(|&v| number(name(v))).collect())
+            .collect();
+        let positions = (0..torus.num_vertices() as u32)
+            .filter(|&v| !gone(v))
+            .map(|v| torus.positions[v as usize])
+            .collect();
+        PolygonSoup::from_polygons(positions, &kept)
+    };
+    let matches = (0..k)
+        .filter(|&r| compare(&welded, &pairing(r)).is_ok())
+        .count();
+    if matches != 1 {
+        return Err(format!(
+            "two far faces of a torus welded: the result is {matches} of the {k} pairings"
+        ));
+    }
+    checked += 1;
+    let m = M::from_soup(&torus).map_err(|e| e.to_string())?;
+    let mut neighbour = None;
+    for (g, f) in faces.iter().enumerate().skip(1) {
+        if f.iter().any(|v| faces[0].contains(v)) {
+            neighbour = Some(g);
+            break;
+        }
+    }
+    let neighbour = neighbour.expect("a face touching face 0") as u32;
+    let cases: [(&str, crate::Result<M>, Refusal); 3] = [
+        (
+            "a face welded to itself",
+            weld_faces(&m, FaceId(0), FaceId(0)),
+            Refusal::SameElement,
+        ),
+        (
+            "faces sharing a corner",
+            weld_faces(&m, FaceId(0), FaceId(neighbour)),
+            Refusal::FaceMismatch,
+        ),
+        (
+            "a face past the count",
+            weld_faces(&m, FaceId(0), FaceId::new(m.num_faces())),
+            Refusal::NoSuchElement,
+        ),
+    ];
+    for (what, got, want) in cases {
+        let got = refusal(got);
+        if got != Some(want) {
+            return Err(format!("{what}: {got:?}, not {want:?}"));
+        }
+        checked += 1;
+    }
+    Ok(checked)
+}

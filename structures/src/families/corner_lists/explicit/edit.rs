@@ -68,6 +68,8 @@ impl MeshEdit for ExplicitStorage {
             | EditOp::SplitVertex
             | EditOp::GarbageCollection
             | EditOp::WeldVertices
+            | EditOp::WeldEdges
+            | EditOp::WeldFaces
             | EditOp::WeldMeshes
             | EditOp::InsertEdge
             | EditOp::DeleteEdge => Cost::Linear,

@@ -67,6 +67,8 @@ fn cost(op: EditOp) -> Cost {
         | EditOp::SplitEdge
         | EditOp::SplitFace
         | EditOp::GarbageCollection
+        | EditOp::WeldEdges
+        | EditOp::WeldFaces
         | EditOp::WeldMeshes => Cost::Linear,
         EditOp::AddFace
         | EditOp::DeleteFace

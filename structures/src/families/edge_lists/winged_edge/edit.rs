@@ -54,7 +54,9 @@ use glam::DVec3;
 fn cost(op: EditOp) -> Cost {
     match op {
         EditOp::AddVertex => Cost::Constant,
-        EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
+        EditOp::GarbageCollection | EditOp::WeldEdges | EditOp::WeldFaces | EditOp::WeldMeshes => {
+            Cost::Linear
+        }
         EditOp::AddFace
         | EditOp::DeleteFace
         | EditOp::DeleteVertex

@@ -151,7 +151,9 @@ fn edit_cost<M: MeshTopology>(op: EditOp, predecessor: Cost) -> Cost {
     match op {
         EditOp::AddVertex => Cost::Constant,
         EditOp::SplitEdge => predecessor,
-        EditOp::GarbageCollection | EditOp::WeldMeshes => Cost::Linear,
+        EditOp::GarbageCollection | EditOp::WeldEdges | EditOp::WeldFaces | EditOp::WeldMeshes => {
+            Cost::Linear
+        }
         EditOp::AddFace
         | EditOp::WeldVertices
         | EditOp::DeleteFace
