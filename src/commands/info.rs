@@ -29,7 +29,7 @@ fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<Result<Summary, Err
 }
 
 /// The text of `topolab info MESH [--structure NAME] [--json]`. A `.che` file is described
-/// from its header ([`che_info`]), whatever `--structure` says.
+/// from its header (`che_info`), whatever `--structure` says.
 pub fn info(spec: &str, structure: &str, json: bool) -> Result<String, Failure> {
     if is_che_file(Path::new(spec)) {
         return che_info(spec, json);

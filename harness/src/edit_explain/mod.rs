@@ -1101,6 +1101,9 @@ pub const QUAD_STRIP: &str =
 /// The label of the torus the welds of faces are shown on.
 pub const TORUS: &str = "a torus of 128 triangles (--mesh torus:128)";
 
+/// Builds one of the meshes [`default_case`] tries.
+type MakeMesh = fn() -> PolygonSoup;
+
 /// [`DefaultCase`] of `op`: the first of the open tetrahedron, `grid`, `quad-strip` and a
 /// torus of 128 triangles (a weld of two faces needs faces apart on a closed mesh) on which
 /// `op` succeeds, or the last.
@@ -1116,7 +1119,7 @@ pub fn default_case(op: EditOp) -> DefaultCase {
             on_tetrahedron: None,
         };
     }
-    let others: [(fn() -> PolygonSoup, &'static str, &'static str); 3] = [
+    let others: [(MakeMesh, &'static str, &'static str); 3] = [
         (|| meshes::grid(3, 2, true), GRID, "grid"),
         (|| meshes::quad_strip(3), QUAD_STRIP, "quad-strip"),
         (|| meshes::torus_with_triangles(128), TORUS, "torus:128"),

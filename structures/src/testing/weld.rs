@@ -434,8 +434,9 @@ fn ring(w: u32) -> PolygonSoup {
     PolygonSoup::from_polygons(positions, &faces)
 }
 
-/// The weld of edges and of faces ([`weld_edges`], [`weld_faces`]) on structure `M`, against
-/// meshes built directly: the two end edges of a [`band`] welded give its [`ring`]; two far
+/// The weld of edges and of faces ([`crate::algorithms::weld::weld_edges`],
+/// [`crate::algorithms::weld::weld_faces`]) on structure `M`, against meshes built directly:
+/// the two end edges of a band of squares welded give its ring, built closed; two far
 /// faces of a torus welded give one of the k meshes their corners' k pairings make (a
 /// torus with a handle: genus 2). Then the refusals: an element welded to itself, an interior
 /// edge, faces sharing a corner or of different sizes, ids past the counts. Returns the
