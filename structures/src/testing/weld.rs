@@ -434,6 +434,20 @@ fn ring(w: u32) -> PolygonSoup {
     PolygonSoup::from_polygons(positions, &faces)
 }
 
+/// Each case's result must be its refusal; returns how many were.
+fn refused_as<M>(cases: [(&str, crate::Result<M>, Refusal); 3]) -> Result<usize, String> {
+    for (what, got, want) in cases.iter().map(|(w, g, r)| (w, g.as_ref().err(), r)) {
+        let got = match got {
+            Some(Error::EditRefused { reason, .. }) => Some(*reason),
+            _ => None,
+        };
+        if got != Some(*want) {
+            return Err(format!("{what}: {got:?}, not {want:?}"));
+        }
+    }
+    Ok(cases.len())
+}
+
 /// The weld of edges and of faces ([`crate::algorithms::weld::weld_edges`],
 /// [`crate::algorithms::weld::weld_faces`]) on structure `M`, against meshes built directly:
 /// the two end edges of a band of squares welded give its ring, built closed; two far
@@ -472,13 +486,7 @@ pub fn weld_edge_and_face_cases<M: MeshEdit>() -> Result<usize, String> {
             Refusal::NoSuchElement,
         ),
     ];
-    for (what, got, want) in cases {
-        let got = refusal(got);
-        if got != Some(want) {
-            return Err(format!("{what}: {got:?}, not {want:?}"));
-        }
-        checked += 1;
-    }
+    checked += refused_as(cases)?;
 
     // Two faces of a torus: face 0 and the one whose centroid is farthest from it.
     let torus = meshes::torus(8, 6);
@@ -554,12 +562,6 @@ pub fn weld_edge_and_face_cases<M: MeshEdit>() -> Result<usize, String> {
             Refusal::NoSuchElement,
         ),
     ];
-    for (what, got, want) in cases {
-        let got = refusal(got);
-        if got != Some(want) {
-            return Err(format!("{what}: {got:?}, not {want:?}"));
-        }
-        checked += 1;
-    }
+    checked += refused_as(cases)?;
     Ok(checked)
 }
