@@ -48,7 +48,7 @@ pub struct Results {
     pub local_refinement: crate::changing::LocalRefinement,
     /// The lecture's editing operations, one at a time, on the editable structures and
     /// explicit storage ([`crate::report::sections::edit_ops`]).
-    pub edit_ops: Vec<crate::report::sections::edit_ops::EditOpRow>,
+    pub edit_ops: Vec<EditOpRow>,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
     pub targets: Vec<crate::targets::plan::Turns>,
@@ -719,4 +719,49 @@ mod tests {
 }"#
         );
     }
+}
+
+/// What one cell of the report's edit-ops section ([`crate::report::sections::edit_ops`])
+/// gave.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[serde(rename_all = "kebab-case", tag = "status")]
+pub enum EditOpOutcome {
+    /// Timed.
+    Measured {
+        /// Median nanoseconds per operation over the samples.
+        ns_per_op: f64,
+        /// Samples, each on a fresh mesh.
+        samples: usize,
+        /// Operations timed together per sample.
+        ops_per_sample: usize,
+        /// The samples' checksums, summed (compared between structures).
+        checksum: u64,
+    },
+    /// The structure does not offer the operation.
+    NotOffered,
+    /// Skipped: the declared cost predicts too long, or the preparation needs an operation
+    /// the structure does not offer.
+    Skipped {
+        /// Why (the same words on every mesh, so that the notes group them).
+        reason: String,
+        /// What differs by mesh (the estimate).
+        detail: Option<String>,
+    },
+}
+
+/// One operation on one structure and torus.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct EditOpRow {
+    /// The operation.
+    pub op: topolab_structures::EditOp,
+    /// The torus.
+    pub mesh: String,
+    /// Its faces.
+    pub faces: usize,
+    /// The structure.
+    pub structure: String,
+    /// The cost it declares for the operation.
+    pub declared: Cost,
+    /// What was measured, or why not.
+    pub outcome: EditOpOutcome,
 }

@@ -36,11 +36,20 @@
 //!   about a deleted element are meaningless. A vertex left without faces by a deleted face is
 //!   kept, unused, as a file's unused vertices are; [`MeshEdit::delete_vertex`] removes one.
 
-pub use crate::core::edit_op::{per_vertex_pass, EditOp, Refusal};
+pub use crate::core::edit_op::{EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::{Cost, MeshTopology};
 use glam::DVec3;
+
+/// The cost of a pass over all n vertices that asks each a query of cost `query` (the
+/// smoothing step's neighbours): O(n) for a local query, O(n²) for a scan.
+pub const fn per_vertex_pass(query: Cost) -> Cost {
+    match query {
+        Cost::Constant | Cost::Log | Cost::Local | Cost::LocalSquared => Cost::Linear,
+        Cost::Boundary | Cost::Linear | Cost::LocalTimesLinear | Cost::Quadratic => Cost::Quadratic,
+    }
+}
 
 /// The declared cost of one [`EditOp::Smooth`] step on `M`: a pass over the n vertices that
 /// asks each its neighbours (R00) and whether it is on the boundary, at `M`'s costs of those

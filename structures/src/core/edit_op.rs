@@ -2,8 +2,6 @@
 //! for their declared costs) and the reasons an edit is refused ([`Refusal`]): named below the
 //! trait and the errors, which both speak of them.
 
-use crate::core::topology::Cost;
-
 /// One editing operation of [`MeshEdit`](crate::core::edit::MeshEdit), for its declared cost.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -127,15 +125,6 @@ impl EditOp {
             EditOp::DeleteEdge => "delete-edge",
             EditOp::Smooth => "smooth",
         }
-    }
-}
-
-/// The cost of a pass over all n vertices that asks each a query of cost `query` (the
-/// smoothing step's neighbours): O(n) for a local query, O(n²) for a scan.
-pub const fn per_vertex_pass(query: Cost) -> Cost {
-    match query {
-        Cost::Constant | Cost::Log | Cost::Local | Cost::LocalSquared => Cost::Linear,
-        Cost::Boundary | Cost::Linear | Cost::LocalTimesLinear | Cost::Quadratic => Cost::Quadratic,
     }
 }
 

@@ -285,7 +285,7 @@ pub enum Error {
         /// The file.
         path: PathBuf,
         /// What is wrong with it.
-        problem: crate::io::che_file::CheFileProblem,
+        problem: crate::io::che_file::format::CheFileProblem,
     },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.

@@ -26,6 +26,7 @@ use crate::checksum::mix;
 use crate::phases::Phase;
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
+use crate::results::{EditOpOutcome, EditOpRow};
 use crate::skips::{self, Skip};
 use crate::timing::median;
 use std::fmt::Write;
@@ -76,50 +77,6 @@ fn samples(quick: bool) -> usize {
     } else {
         15
     }
-}
-
-/// What one cell gave.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-#[serde(rename_all = "kebab-case", tag = "status")]
-pub enum EditOpOutcome {
-    /// Timed.
-    Measured {
-        /// Median nanoseconds per operation over the samples.
-        ns_per_op: f64,
-        /// Samples, each on a fresh mesh.
-        samples: usize,
-        /// Operations timed together per sample.
-        ops_per_sample: usize,
-        /// The samples' checksums, summed (compared between structures).
-        checksum: u64,
-    },
-    /// The structure does not offer the operation.
-    NotOffered,
-    /// Skipped: the declared cost predicts too long, or the preparation needs an operation
-    /// the structure does not offer.
-    Skipped {
-        /// Why (the same words on every mesh, so that the notes group them).
-        reason: String,
-        /// What differs by mesh (the estimate).
-        detail: Option<String>,
-    },
-}
-
-/// One operation on one structure and torus.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct EditOpRow {
-    /// The operation.
-    pub op: EditOp,
-    /// The torus.
-    pub mesh: String,
-    /// Its faces.
-    pub faces: usize,
-    /// The structure.
-    pub structure: String,
-    /// The cost it declares for the operation.
-    pub declared: Cost,
-    /// What was measured, or why not.
-    pub outcome: EditOpOutcome,
 }
 
 /// The elements one operation of cost `c` reads on a mesh of `n` elements (valence k ≈ 6;
