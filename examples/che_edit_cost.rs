@@ -11,10 +11,10 @@
 //! ```
 
 use std::time::Instant;
+use topolab_harness::edit_explain::edge_between;
 use topolab_harness::timing::median;
 use topolab_structures::{
-    meshes, CheL0, CheL1, CheL2, CheL3, EdgeId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup,
-    VertexId,
+    meshes, CheL0, CheL1, CheL2, CheL3, IndexHalfEdge, MeshEdit, PolygonSoup, VertexId,
 };
 
 /// The operations timed.
@@ -34,17 +34,6 @@ impl Rng {
         self.0 ^= self.0 << 17;
         (self.0 % n as u64) as usize
     }
-}
-
-fn edge_between<M: MeshTopology>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
-    let mut found = None;
-    m.vertex_edges(VertexId(a), |e| {
-        let [x, y] = m.edge_vertices(e).map(|v| v.0);
-        if (x, y) == (a, b) || (x, y) == (b, a) {
-            found.get_or_insert(e);
-        }
-    });
-    found
 }
 
 /// Median nanoseconds of `count` operations `op` on random edges of `soup` in `M`, and how

@@ -23,6 +23,7 @@
 
 use crate::changing::mesh_checksum;
 use crate::checksum::mix;
+use crate::edit_explain::edge_between;
 use crate::phases::Phase;
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
@@ -37,7 +38,7 @@ use topolab_structures::algorithms::select::{
 };
 use topolab_structures::glam::{DQuat, DVec3};
 use topolab_structures::{
-    Cost, EdgeId, EditOp, ExplicitStorage, FaceId, MeshEdit, MeshTopology, PolygonSoup, VertexId,
+    Cost, EditOp, ExplicitStorage, FaceId, MeshEdit, MeshTopology, PolygonSoup, VertexId,
 };
 
 /// The operations measured, in the order of the lecture's list: moving and selecting
@@ -137,18 +138,6 @@ impl Targets {
             half_box: (hi - lo) * 0.05,
         }
     }
-}
-
-/// The edge between `a` and `b` in `m`, by a rotation around `a`.
-fn edge_between<M: MeshTopology>(m: &M, a: u32, b: u32) -> Option<EdgeId> {
-    let mut found = None;
-    m.vertex_edges(VertexId(a), |e| {
-        let [x, y] = m.edge_vertices(e);
-        if (x.0 == a && y.0 == b) || (x.0 == b && y.0 == a) {
-            found = Some(e);
-        }
-    });
-    found
 }
 
 /// The face of `m` holding the directed side a → b.
