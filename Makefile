@@ -3,7 +3,7 @@
 
 CARGO ?= cargo
 
-.PHONY: deps test report data
+.PHONY: deps test report data scale
 
 # Installs the system and Python packages and fetches the C++ sources the lab uses, where this
 # machine allows it.
@@ -27,3 +27,8 @@ data:
 report: deps
 	@python3 bench-data/fetch.py || echo "make report: some real meshes are missing (see above); the report goes on without them"
 	$(CARGO) run --release --quiet -- report
+
+# The scale run: the largest torus each structure holds on this machine, and the CHE from a
+# memory-mapped .che file in memory and beyond it: reports/scale-latest/ (docs/scale.md).
+scale: deps
+	$(CARGO) run --release --quiet -- scale

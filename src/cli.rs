@@ -156,6 +156,31 @@ pub enum Command {
     /// `--faces N` or `--ratio R` of its faces and write it; or through `--levels 50%,10%`,
     /// writing every level of detail and the collapse record into a folder.
     Decimate(commands::decimate::DecimateArgs),
+    /// The largest mesh each structure holds on this machine: tori from 1k triangles up four
+    /// times larger each step, each structure built and measured in a process of its own until
+    /// the memory would not hold the next size (shown refused, with the estimate); then the CHE
+    /// from a memory-mapped .che file, in memory and in a memory cgroup smaller than the file.
+    /// Writes results.json and index.html (docs/scale.md).
+    Scale(commands::scale::ScaleArgs),
+    /// The scale run's worker: one structure on one torus, measured, as JSON.
+    #[command(hide = true)]
+    ScaleCell {
+        /// The structure.
+        #[arg(long)]
+        structure: String,
+        /// Triangles of the torus.
+        #[arg(long)]
+        triangles: u64,
+    },
+    /// The scale run's worker: a level-2 .che file opened and swept, as JSON.
+    #[command(hide = true)]
+    ScaleMapped {
+        /// The .che file.
+        file: PathBuf,
+        /// Join the cgroup whose `cgroup.procs` this is first.
+        #[arg(long)]
+        cgroup_procs: Option<PathBuf>,
+    },
     /// Rebuild a level of detail, by default the original, from the folder `decimate --levels`
     /// wrote: its coarsest mesh and its collapse record, undone by vertex splits.
     Reconstruct(commands::reconstruct::ReconstructArgs),
@@ -237,6 +262,17 @@ pub fn run(cli: Cli) -> u8 {
         } => commands::convert::convert(&mesh, &out, to.as_deref(), level),
         Command::Decimate(args) => commands::decimate::run(&args),
         Command::Reconstruct(args) => commands::reconstruct::run(&args),
+        Command::Scale(args) => {
+            let command = std::env::args().collect::<Vec<_>>().join(" ");
+            commands::scale::scale(&args, command)
+        }
+        Command::ScaleCell {
+            structure,
+            triangles,
+        } => commands::scale::cell::cell(&structure, triangles),
+        Command::ScaleMapped { file, cgroup_procs } => {
+            commands::scale::mapped::sweep(&file, cgroup_procs.as_deref())
+        }
     };
     match result {
         Ok(text) => match crate::output::print(&text) {

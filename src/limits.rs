@@ -51,7 +51,8 @@ pub fn sample_mesh() -> PolygonSoup {
 /// Bytes the system can still give this process: `MemAvailable` of `/proc/meminfo` (what the
 /// kernel estimates can be allocated without swapping), lowered to the headroom of the cgroup
 /// (v2) mounted at `/sys/fs/cgroup` when that has a limit (`memory.max - memory.current`): in
-/// a container, its own cgroup, whose limit the host's `MemAvailable` does not show. (On a
+/// a container, its own cgroup, whose limit the host's `MemAvailable` does not show; or, under
+/// cgroup v1, to the headroom of the process's own memory cgroup (`cgroup_v1_headroom`). (On a
 /// host, the root cgroup there has no `memory.max`, and a limit on a nested cgroup is not
 /// seen.) `None` where neither can be read (not Linux): nothing is
 /// refused for memory then. The environment variable `TOPOLAB_AVAILABLE_MEMORY` (bytes), when
@@ -73,12 +74,38 @@ pub fn available() -> Option<u64> {
             .ok()
     };
     // "max" (no limit) does not parse: no cgroup headroom then.
-    let cgroup =
-        read("memory.max").map(|max| max.saturating_sub(read("memory.current").unwrap_or(0)));
+    let cgroup = read("memory.max")
+        .map(|max| max.saturating_sub(read("memory.current").unwrap_or(0)))
+        .or_else(cgroup_v1_headroom);
     match (meminfo, cgroup) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
     }
+}
+
+/// The headroom of this process's own memory cgroup under cgroup v1 (the `memory` controller
+/// mounted at `/sys/fs/cgroup/memory`, the process's group named by `/proc/self/cgroup`):
+/// `memory.limit_in_bytes - memory.usage_in_bytes`. A group without a limit reports a limit
+/// near 2^63, which the `MemAvailable` it is compared with makes harmless. `None` where there
+/// is no such controller.
+fn cgroup_v1_headroom() -> Option<u64> {
+    let groups = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+    let path = groups.lines().find_map(|l| {
+        let mut parts = l.splitn(3, ':');
+        let (_, controllers, path) = (parts.next()?, parts.next()?, parts.next()?);
+        controllers
+            .split(',')
+            .any(|c| c == "memory")
+            .then_some(path)
+    })?;
+    let read = |file: &str| -> Option<u64> {
+        std::fs::read_to_string(format!("/sys/fs/cgroup/memory{path}/{file}"))
+            .ok()?
+            .trim()
+            .parse()
+            .ok()
+    };
+    Some(read("memory.limit_in_bytes")?.saturating_sub(read("memory.usage_in_bytes").unwrap_or(0)))
 }
 
 /// `bytes` for people: `1.5 GB`, `320.0 MB`, `12.0 kB`, `12 bytes` (powers of 1000).
@@ -95,17 +122,24 @@ pub fn human(bytes: u64) -> String {
 /// Refuses (exit code 2) a request whose estimated peak heap `bytes` exceeds the available
 /// memory, unless `--allow-memory` was given; `what` names the request as the user wrote it.
 pub fn admit(what: &str, bytes: u64) -> Result<(), Failure> {
-    let Some(free) = available() else {
+    let Some(free) = exceeds_available(bytes) else {
         return Ok(());
     };
-    if bytes <= free || ALLOW_MEMORY.load(Ordering::Relaxed) {
-        return Ok(());
-    }
     Err(Failure::usage(format!(
         "{what} needs about {} of memory, more than the {} available; --allow-memory runs it anyway",
         human(bytes),
         human(free)
     )))
+}
+
+/// The memory available, when `bytes` exceed it and `--allow-memory` was not given: the reason
+/// to refuse a request of `bytes`. `None`: go on (it fits, it is allowed, or nothing can be
+/// read).
+pub fn exceeds_available(bytes: u64) -> Option<u64> {
+    if ALLOW_MEMORY.load(Ordering::Relaxed) {
+        return None;
+    }
+    available().filter(|&free| bytes > free)
 }
 
 /// How many elements of `bytes_per_element` bytes each the available memory holds: the cap a
@@ -119,6 +153,15 @@ pub fn affordable(bytes_per_element: u64) -> Option<u64> {
     available().map(|free| free / bytes_per_element.max(1))
 }
 
+/// The most triangles `u32` ids number: three corner (half-edge) ids per triangle, each below
+/// `u32::MAX`, so about 1.43 billion triangles, whatever the structure (the vertices, about
+/// half the triangles, stay far below).
+pub const MAX_TRIANGLES: u64 = topolab_harness::scale::ID_LIMIT_TRIANGLES;
+
+/// [`MAX_TRIANGLES`] as the refusals say it.
+const MAX_TRIANGLES_TEXT: &str =
+    "a triangle mesh of at most 1.43 billion triangles, three corner ids each";
+
 /// Refuses (exit code 2) counts that `u32` ids cannot number: each must be below `u32::MAX`,
 /// the limit [`PolygonSoup::check`] enforces. `counts` pairs a name (`corners`, `points`) with
 /// a count (saturated: `u128::MAX` for "more than anything").
@@ -126,13 +169,14 @@ pub fn within_u32(what: &str, counts: &[(&str, u128)]) -> Result<(), Failure> {
     match counts.iter().find(|(_, n)| *n >= u32::MAX as u128) {
         None => Ok(()),
         Some((name, n)) => Err(Failure::usage(format!(
-            "{what} makes {} {name}, more than u32 ids number (at most {}); no option allows it",
+            "{what} makes {} {name}, more than u32 ids number (at most {}: {}); no option allows it",
             if *n == u128::MAX {
                 "more than 2^128".to_string()
             } else {
                 n.to_string()
             },
-            u32::MAX - 1
+            u32::MAX - 1,
+            MAX_TRIANGLES_TEXT
         ))),
     }
 }

@@ -75,6 +75,17 @@ fn baseline(subcommand: &str) -> Option<Vec<(&'static str, Vec<&'static str>)>> 
             ("dir", vec!["@DIR/lod"]),
             ("out", vec!["--out", "@DIR/rebuilt.obj"]),
         ],
+        "scale" => vec![
+            ("max_triangles", vec!["--max-triangles", "1000"]),
+            ("structures", vec!["--structures", "che-l2"]),
+            ("mapped_triangles", vec!["--mapped-triangles", "0"]),
+            ("out", vec!["--out", "@DIR/scale"]),
+        ],
+        "scale-cell" => vec![
+            ("structure", vec!["--structure", "che-l2"]),
+            ("triangles", vec!["--triangles", "1000"]),
+        ],
+        "scale-mapped" => vec![("file", vec!["@DIR/truncated.che"])],
         _ => return None,
     })
 }
@@ -94,6 +105,28 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["hull", "--random", "10000000000", "--shape", "ball"],
         vec!["report", "--out", "/proc/nope"],
         vec!["info", "torus:99999999999"],
+        // The scale run past the ids' limit, its workers on a huge torus and a bad file.
+        vec![
+            "scale",
+            "--max-triangles",
+            "2000000000",
+            "--out",
+            "@DIR/scale",
+        ],
+        vec![
+            "scale-cell",
+            "--structure",
+            "che-l2",
+            "--triangles",
+            "99999999999",
+        ],
+        vec!["scale-mapped", "@DIR/truncated.che"],
+        vec![
+            "scale-mapped",
+            "@DIR/truncated.che",
+            "--cgroup-procs",
+            "@DIR/taken",
+        ],
         vec!["hull", "@DIR/far.obj"],
         // Huge counts: past u32 ids, or hundreds of GB.
         vec!["info", "torus:1073741824"],

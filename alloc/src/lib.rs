@@ -369,6 +369,33 @@ pub fn thread_cpu_ns() -> Option<u64> {
     }
 }
 
+/// Drops the pages of `file` from the page cache (`posix_fadvise(POSIX_FADV_DONTNEED)` after
+/// writing back its dirty pages): the next read of the file, or of a mapping of it, comes from
+/// the disk. The scale run's cold sweeps of a `.che` file need it. An error where the system
+/// refuses (and on systems without `posix_fadvise`, where nothing is dropped).
+pub fn drop_file_cache(file: &std::fs::File) -> std::io::Result<()> {
+    file.sync_all()?;
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::fd::AsRawFd;
+        // SAFETY: the descriptor is open for the call's duration (borrowed from `file`);
+        // `posix_fadvise` only advises the kernel about the file's cached pages.
+        let code =
+            unsafe { libc::posix_fadvise(file.as_raw_fd(), 0, 0, libc::POSIX_FADV_DONTNEED) };
+        if code != 0 {
+            return Err(std::io::Error::from_raw_os_error(code));
+        }
+        Ok(())
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "dropping a file's cached pages needs Linux's posix_fadvise",
+        ))
+    }
+}
+
 /// Whose CPU time [`cpu_seconds`] reads.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Who {

@@ -51,6 +51,13 @@ pub const OPENMESH_BUILD: Option<&str> = if HAS_OPENMESH {
     None
 };
 
+/// [`OPENMESH_BUILD`], or why this build has no OpenMesh: the line a run's Machine block shows.
+pub fn openmesh_description() -> String {
+    OPENMESH_BUILD
+        .map(str::to_string)
+        .unwrap_or_else(|| format!("not in this build: {OPENMESH_MISSING}"))
+}
+
 /// `true` when this build includes the OpenMesh baseline.
 pub const HAS_OPENMESH: bool = cfg!(has_openmesh);
 

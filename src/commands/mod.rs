@@ -20,4 +20,5 @@ pub mod refine_adaptive;
 pub mod repair;
 pub mod report;
 pub mod report_sections;
+pub mod scale;
 pub mod subdivide;

@@ -8,7 +8,8 @@ use crate::results::Results;
 use std::fmt::Write;
 use topolab_structures::Step;
 
-const CSS: &str = r#"
+/// The report's style sheet, shared by the pages the lab writes in its format (the scale run's).
+pub(crate) const CSS: &str = r#"
 body{font-family:system-ui,sans-serif;max-width:1400px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}
 h1{margin-bottom:.2em} h2{border-bottom:2px solid #ddd;padding-bottom:.2em;margin-top:2em}
 table{border-collapse:collapse;font-size:12px;margin:1em 0;display:block;overflow-x:auto;max-width:100%} th,td{border:1px solid #ccc;padding:3px 6px;text-align:right}

@@ -148,13 +148,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     let mut results = Results {
         format_version: FORMAT_VERSION,
         baselines: Vec::new(),
-        machine: machine::facts(
-            &topolab_baselines::OPENMESH_BUILD
-                .map(str::to_string)
-                .unwrap_or_else(|| {
-                    format!("not in this build: {}", topolab_baselines::OPENMESH_MISSING)
-                }),
-        ),
+        machine: machine::facts(&topolab_baselines::openmesh_description()),
         probe,
         settings: Settings {
             quick: req.quick,

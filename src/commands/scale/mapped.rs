@@ -1,0 +1,226 @@
+//! The scale run's `.che` part: a torus written as a level-2 `.che` file by `topolab convert`,
+//! then opened and swept by a worker process (`topolab scale-mapped FILE`, [`sweep`]) twice:
+//! with the machine's memory, and in a memory cgroup whose limit is a quarter of the file
+//! ([`super::group`]), so the file cannot stay resident and every sweep reads it from the
+//! disk. Each sweep's result is compared with the in-memory CHE's on the same torus.
+
+use super::ended;
+use super::group::MemoryGroup;
+use crate::failure::Failure;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+use topolab_harness::kernels::{self, Queries};
+use topolab_harness::scale::proc::faults;
+use topolab_harness::scale::{time_kernel, Check, MappedRun, Outcome, ScaleCell, Timing};
+use topolab_structures::che::{CheFile, MappedCheL2};
+use topolab_structures::{BoundaryCurves, MeshTopology, Operator};
+
+/// Seconds the later sweeps may take (at least 3 runs).
+const LATER_BUDGET_S: f64 = 2.0;
+
+/// The limit of the cgroup run, as a fraction of the file: a quarter.
+const LIMIT_DIVISOR: u64 = 4;
+
+/// The smallest limit the cgroup run is made with: the sweeping process's own memory (its
+/// program, about 10 MB resident, and its list of every vertex, 4 bytes each) must fit well
+/// below it, or the kernel ends the process instead of dropping the file's pages.
+const MIN_LIMIT: u64 = 128 << 20;
+
+/// Removes the file when dropped (the run's `.che` file is scratch).
+struct Scratch(PathBuf);
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+/// Writes a torus of `triangles` as a level-2 `.che` file under `scratch`, sweeps it without
+/// and with a memory limit below its size; returns the runs and what the reader should know
+/// (why a limited run could not be made). An error when the file cannot be written.
+pub(super) fn run(
+    triangles: u64,
+    scratch: &Path,
+    cells: &[ScaleCell],
+) -> Result<(Vec<MappedRun>, Vec<String>), String> {
+    let exe = std::env::current_exe().map_err(|e| format!("cannot find this program: {e}"))?;
+    let file = Scratch(scratch.join(format!("topolab-scale-{}.che", std::process::id())));
+    eprintln!(
+        "scale: .che part: converting torus:{triangles} to {}",
+        file.0.display()
+    );
+    let t = Instant::now();
+    let out = Command::new(&exe)
+        .args(["convert", &format!("torus:{triangles}")])
+        .arg(&file.0)
+        .args(["--to", "che", "--level", "2"])
+        .output()
+        .map_err(|e| format!("cannot start topolab convert: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "topolab convert: {}",
+            ended(out.status, &out.stderr)
+        ));
+    }
+    let convert_s = t.elapsed().as_secs_f64();
+    let in_memory_check = cells
+        .iter()
+        .filter(|c| c.triangles == triangles)
+        .find_map(|c| match &c.outcome {
+            Outcome::Measured(m) => m.r00_sweep.map(|t| t.check),
+            _ => None,
+        });
+    let mut runs = Vec::new();
+    let mut notes = Vec::new();
+    let mut free = sweep_in_child(&exe, &file.0, None)?;
+    free.limit_how = "none".into();
+    runs.push(free);
+    let file_bytes = runs[0].file_bytes;
+    let limit = file_bytes / LIMIT_DIVISOR;
+    if limit < MIN_LIMIT {
+        notes.push(format!(
+            "the .che file was not swept beyond memory: at {}, a quarter of it is below the {} the sweeping process needs for itself (its program and its list of vertices); --mapped-triangles 16000000 or more makes a file large enough",
+            crate::limits::human(file_bytes),
+            crate::limits::human(MIN_LIMIT)
+        ));
+    } else {
+        match MemoryGroup::create(limit) {
+            Ok(group) => {
+                eprintln!(
+                    "scale: .che part: sweeping in a memory cgroup limited to {}",
+                    crate::limits::human(limit)
+                );
+                match sweep_in_child(&exe, &file.0, Some(&group.procs())) {
+                    Ok(mut limited) => {
+                        limited.memory_limit = Some(limit);
+                        limited.limit_how = group.how();
+                        limited.group_peak_bytes = group.peak();
+                        runs.push(limited);
+                    }
+                    Err(why) => notes.push(format!(
+                        "the .che file's sweep in a memory cgroup of {} failed: {why}",
+                        crate::limits::human(limit)
+                    )),
+                }
+            }
+            Err(why) => notes.push(format!(
+                "the .che file was not swept beyond memory: {why} (a memory cgroup needs root or a delegated cgroup)"
+            )),
+        }
+    }
+    for r in &mut runs {
+        r.convert_s = convert_s;
+        r.in_memory_check = in_memory_check;
+        if let Some(c) = in_memory_check {
+            if !c.agrees(r.first_sweep.check) || !c.agrees(r.later_sweeps.check) {
+                notes.push(format!(
+                    "the .che file's R00 sweep and the in-memory CHE's disagree ({:?}, {:?} against {c:?})",
+                    r.first_sweep.check, r.later_sweeps.check
+                ));
+            }
+        }
+    }
+    Ok((runs, notes))
+}
+
+/// Runs `topolab scale-mapped` on `file` (in the cgroup whose `cgroup.procs` is `group`).
+fn sweep_in_child(exe: &Path, file: &Path, group: Option<&Path>) -> Result<MappedRun, String> {
+    let mut cmd = Command::new(exe);
+    cmd.arg("scale-mapped").arg(file);
+    if let Some(procs) = group {
+        cmd.arg("--cgroup-procs").arg(procs);
+    }
+    let out = cmd
+        .output()
+        .map_err(|e| format!("cannot start topolab scale-mapped: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "topolab scale-mapped: {}",
+            ended(out.status, &out.stderr)
+        ));
+    }
+    serde_json::from_slice(&out.stdout)
+        .map_err(|e| format!("topolab scale-mapped printed no measurement ({e})"))
+}
+
+fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> Failure {
+    Failure::usage(format!("{}: {what}: {e}", file.display()))
+}
+
+/// `topolab scale-mapped FILE [--cgroup-procs PATH]` (hidden: the scale run's worker): joins
+/// the cgroup when given, drops the file's pages from the page cache, opens it three times,
+/// sweeps R00 once before verifying (the bounds-checked reads, from the disk), verifies it,
+/// then sweeps again until [`LATER_BUDGET_S`] (the verified walk); prints a [`MappedRun`] as
+/// JSON. Only level-2 files.
+pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure> {
+    if let Some(procs) = cgroup_procs {
+        // Only an existing `cgroup.procs` file: never a file of another name, never created.
+        if procs.file_name() != Some(std::ffi::OsStr::new("cgroup.procs")) {
+            return Err(Failure::usage(format!(
+                "--cgroup-procs {}: not a cgroup's cgroup.procs file",
+                procs.display()
+            )));
+        }
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(procs)
+            .and_then(|mut f| {
+                std::io::Write::write_all(&mut f, std::process::id().to_string().as_bytes())
+            })
+            .map_err(|e| failure(procs, "cannot join the cgroup", e))?;
+    }
+    let cached = std::fs::File::open(file).map_err(|e| failure(file, "cannot open", e))?;
+    crate::alloc::drop_file_cache(&cached)
+        .map_err(|e| failure(file, "cannot drop its pages from the page cache", e))?;
+    drop(cached);
+    let mut open_ms = Vec::new();
+    for _ in 0..3 {
+        let t = Instant::now();
+        let opened = CheFile::open(file).map_err(|e| failure(file, "cannot open", e))?;
+        open_ms.push(t.elapsed().as_secs_f64() * 1e3);
+        drop(opened);
+    }
+    let mut m =
+        MappedCheL2::open(file).map_err(|e| failure(file, "cannot open as CHE level 2", e))?;
+    let vertices = m.num_vertices() as u64;
+    let every = Queries::every_vertex(&m);
+    let mut curves = BoundaryCurves::default();
+    let before = faults();
+    let t = Instant::now();
+    let first = kernels::run(&m, Operator::R00, &every, &mut curves);
+    let ns = t.elapsed().as_secs_f64() * 1e9 / vertices.max(1) as f64;
+    let first_faults = faults().since(before);
+    let first_sweep = Timing {
+        ns,
+        min: ns,
+        max: ns,
+        reps: 1,
+        check: Check::Exact(first),
+    };
+    let t = Instant::now();
+    m.verify()
+        .map_err(|e| failure(file, "does not verify", e))?;
+    let verify_ms = t.elapsed().as_secs_f64() * 1e3;
+    let before = faults();
+    let later_sweeps = time_kernel(vertices, LATER_BUDGET_S, || {
+        Check::Exact(kernels::run(&m, Operator::R00, &every, &mut curves))
+    });
+    let later_faults = faults().since(before);
+    let run = MappedRun {
+        triangles: m.num_faces() as u64,
+        level: 2,
+        file_bytes: m.file().file_bytes(),
+        convert_s: 0.0,
+        open_ms,
+        verify_ms,
+        memory_limit: None,
+        limit_how: String::new(),
+        first_sweep,
+        first_faults,
+        later_sweeps,
+        later_faults,
+        group_peak_bytes: None,
+        in_memory_check: None,
+    };
+    Ok(serde_json::to_string(&run).expect("a run serializes") + "\n")
+}
