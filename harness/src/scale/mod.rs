@@ -178,12 +178,14 @@ pub enum Check {
 }
 
 impl Check {
-    /// Whether two results agree: exactly, or to 1e-9 relative for sums.
+    /// Whether two results agree: exactly, or for sums to 1e-6 relative, and absolute below 1
+    /// (the report's rule: a torus's coordinates sum to nearly 0, where tens of millions of
+    /// terms added in another order differ by more than 1e-9).
     pub fn agrees(self, other: Check) -> bool {
         match (self, other) {
             (Check::Exact(a), Check::Exact(b)) => a == b,
             (Check::Float(a), Check::Float(b)) => {
-                (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0)
+                (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
             }
             _ => false,
         }
@@ -220,9 +222,7 @@ pub fn time_kernel(elements: u64, budget_s: f64, mut kernel: impl FnMut() -> Che
     };
     let mut times = Vec::new();
     let start = Instant::now();
-    while times.len() < at_least
-        || (times.len() < 21 && start.elapsed().as_secs_f64() < budget_s)
-    {
+    while times.len() < at_least || (times.len() < 21 && start.elapsed().as_secs_f64() < budget_s) {
         let t = Instant::now();
         let check = std::hint::black_box(kernel());
         times.push(t.elapsed().as_secs_f64() * 1e9 / elements.max(1) as f64);
@@ -284,8 +284,10 @@ mod tests {
 
     #[test]
     fn sums_agree_to_rounding_and_checksums_exactly() {
-        assert!(Check::Float(1.0).agrees(Check::Float(1.0 + 1e-12)));
-        assert!(!Check::Float(1.0).agrees(Check::Float(1.0 + 1e-6)));
+        assert!(Check::Float(1.0).agrees(Check::Float(1.0 + 1e-9)));
+        assert!(Check::Float(9.74e-7).agrees(Check::Float(9.76e-7)));
+        assert!(!Check::Float(1.0).agrees(Check::Float(1.0 + 1e-5)));
+        assert!(!Check::Float(1e6).agrees(Check::Float(1e6 + 10.0)));
         assert!(Check::Exact(7).agrees(Check::Exact(7)));
         assert!(!Check::Exact(7).agrees(Check::Exact(8)));
         assert!(!Check::Exact(7).agrees(Check::Float(7.0)));
