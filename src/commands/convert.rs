@@ -92,7 +92,7 @@ pub fn convert(
 }
 
 /// Builds the CHE of `level` from `spec` and writes its containers to `out` atomically
-/// ([`che_file::write_mesh`]). Polygons and non-manifold meshes are refused as the level
+/// ([`che_file::write_mesh_owned`]: the mesh's arrays become the CHE's, never held twice). Polygons and non-manifold meshes are refused as the level
 /// refuses them (exit code 1).
 fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> {
     if level > 3 {
@@ -108,7 +108,8 @@ fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> 
         0
     })?;
     refuse_empty(spec, &soup)?;
-    che_file::write_mesh(&soup, level, out).map_err(|e| match e {
+    let (vertices, faces) = (soup.num_vertices(), soup.num_faces());
+    che_file::write_mesh_owned(soup, level, out).map_err(|e| match e {
         Error::Io { source, .. } => {
             Failure::usage(format!("cannot write {}: {source}", out.display()))
         }
@@ -122,9 +123,7 @@ fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> 
     })?;
     let bytes = std::fs::metadata(out).map_or(0, |m| m.len());
     Ok(format!(
-        "{spec}: {} vertices, {} faces, written to {} as a level-{level} CHE ({bytes} bytes; `topolab info {}` maps it) ({:.2} s)\n",
-        soup.num_vertices(),
-        soup.num_faces(),
+        "{spec}: {vertices} vertices, {faces} faces, written to {} as a level-{level} CHE ({bytes} bytes; `topolab info {}` maps it) ({:.2} s)\n",
         out.display(),
         out.display(),
         started.elapsed().as_secs_f64()

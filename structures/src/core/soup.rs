@@ -110,6 +110,31 @@ impl PolygonSoup {
             .map(move |w| &self.indices[w[0] as usize..w[1] as usize])
     }
 
+    /// A soup of triangles: `indices` holds three corners per triangle, in order (the
+    /// inverse of [`PolygonSoup::into_triangles`]).
+    ///
+    /// # Panics
+    /// If `indices.len()` is not a multiple of 3, or the corners are past `u32`.
+    pub fn from_triangles(positions: Vec<DVec3>, indices: Vec<u32>) -> Self {
+        assert!(indices.len() % 3 == 0, "three corners per triangle");
+        let corners = u32::try_from(indices.len()).expect("corners numbered by u32");
+        Self {
+            positions,
+            offsets: (0..=corners).step_by(3).collect(),
+            indices,
+        }
+    }
+
+    /// The positions and the flat index buffer of a soup of triangles, taken without a copy
+    /// (the face offsets, three apart, are dropped); the soup itself when it has a face of
+    /// another size.
+    pub fn into_triangles(self) -> std::result::Result<(Vec<DVec3>, Vec<u32>), Self> {
+        if !self.is_triangle_mesh() {
+            return Err(self);
+        }
+        Ok((self.positions, self.indices))
+    }
+
     /// The flat index buffer (all corners of all faces).
     #[inline]
     pub fn indices(&self) -> &[u32] {

@@ -79,6 +79,13 @@ fn level0_containers(
     soup: &PolygonSoup,
     structure: &'static str,
 ) -> Result<(Vec<DVec3>, Vec<u32>)> {
+    check_level0(soup, structure)?;
+    Ok((soup.positions.clone(), soup.indices().to_vec()))
+}
+
+/// What [`level0_containers`] refuses: polygons, and more half-edges or vertices than `i32`
+/// numbers.
+fn check_level0(soup: &PolygonSoup, structure: &'static str) -> Result<()> {
     if !soup.is_triangle_mesh() {
         let (face, corners) = soup.first_non_triangle().unwrap_or((0, 0));
         return Err(Error::NotTriangles {
@@ -98,7 +105,7 @@ fn level0_containers(
             });
         }
     }
-    Ok((soup.positions.clone(), soup.indices().to_vec()))
+    Ok(())
 }
 
 /// The exact error for a soup in which the fast construction found a non-manifold edge, an
@@ -128,6 +135,25 @@ pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<
         return Err(refusal(soup, structure));
     }
     Ok(Checked { g, v, o, vh })
+}
+
+/// [`build_fast`] consuming the soup: its positions and corners become `G[]` and `V[]`
+/// without a copy, so the soup and the structure are never held at once. A soup it refuses is
+/// put back together for the shared checks to name the problem.
+pub(crate) fn build_fast_owned(soup: PolygonSoup, structure: &'static str) -> Result<Checked> {
+    check_level0(&soup, structure)?;
+    let (g, v) = soup
+        .into_triangles()
+        .map_err(|soup| refusal(&soup, structure))?;
+    let refuse =
+        |g: Vec<DVec3>, v: Vec<u32>| refusal(&PolygonSoup::from_triangles(g, v), structure);
+    if !g.iter().all(|p| p.is_finite()) {
+        return Err(refuse(g, v));
+    }
+    match opposites_and_vertex_half_edges(&v, g.len()) {
+        Some((o, vh)) if every_vertex_one_fan(&o, &vh) => Ok(Checked { g, v, o, vh }),
+        _ => Err(refuse(g, v)),
+    }
 }
 
 /// The chapter's construction: the soup checked by the shared edge analysis, then

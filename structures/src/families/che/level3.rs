@@ -6,7 +6,7 @@
 use super::build::{
     boundary_curves_algorithm_4, build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan,
 };
-use super::{che_topology, level2::level2_cost, print_container, vec_bytes, walk_boundary_curve};
+use super::{che_topology, level2::level2_cost, printed, vec_bytes, walk_boundary_curve};
 use super::{next_boundary_half_edge, opposite_of, CheL2, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -35,7 +35,7 @@ pub(crate) fn level3_cost(op: Operator) -> Cost {
 che_topology!(CheL3, "che-l3", level3_cost);
 
 impl CheL3 {
-    fn from_level2(mut l2: CheL2) -> Result<Self> {
+    pub(crate) fn from_level2(mut l2: CheL2) -> Result<Self> {
         let ch = l2.relabel_opposites(Self::NAME, boundary_curves_algorithm_4)?;
         Ok(Self { l2, ch })
     }
@@ -83,11 +83,7 @@ impl CheL3 {
 
     fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         self.l2.print_containers(w)?;
-        writeln!(
-            w,
-            "CH[] a half-edge of each boundary curve (O[he] = -k on curve k = index + 1):"
-        )?;
-        print_container(w, "CH[]", "k-1", &self.ch)
+        printed::curves(w, &self.ch)
     }
 }
 

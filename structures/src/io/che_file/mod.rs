@@ -545,9 +545,70 @@ pub fn write_mesh(soup: &PolygonSoup, level: u8, path: &Path) -> Result<()> {
     }
 }
 
+/// [`write_mesh`] consuming the soup: its positions and corners become the level's `G[]`
+/// and `V[]` without a copy, so the soup and the structure are never held at once: the peak
+/// is the level's containers and its construction's temporaries, not those plus the soup.
+/// The file is the same, byte for byte. What `topolab convert --to che` writes.
+pub fn write_mesh_owned(soup: PolygonSoup, level: u8, path: &Path) -> Result<()> {
+    use crate::che::{CheL0, CheL1, CheL2, CheL3};
+    use crate::families::che::build::build_fast_owned;
+    use crate::MeshTopology;
+    let level2 = |soup, name| {
+        build_fast_owned(soup, name)
+            .and_then(|c| CheL2::from_checked(c, crate::che::edge_map_by_scan, name))
+    };
+    match level {
+        0 => build_fast_owned(soup, CheL0::NAME)
+            .and_then(|c| Containers::level0(&CheL0::from_parts(c.g, c.v)).write(path)),
+        1 => build_fast_owned(soup, CheL1::NAME)
+            .and_then(|c| Containers::level1(&CheL1::from_checked(c).0).write(path)),
+        2 => level2(soup, CheL2::NAME).and_then(|m| Containers::level2(&m).write(path)),
+        3 => level2(soup, CheL3::NAME)
+            .and_then(CheL3::from_level2)
+            .and_then(|m| Containers::level3(&m).write(path)),
+        _ => Err(Error::InvalidParameter {
+            parameter: "level",
+            value: level.to_string(),
+            expected: "a CHE level: 0, 1, 2 or 3",
+        }),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_soup_consumed_writes_the_same_file_and_refuses_alike() {
+        let dir = std::env::temp_dir().join(format!("topolab-che-owned-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for soup in [crate::meshes::torus(8, 5), crate::meshes::grid(6, 4, true)] {
+            for level in 0..=3 {
+                let (a, b) = (dir.join("a.che"), dir.join("b.che"));
+                write_mesh(&soup, level, &a).unwrap();
+                write_mesh_owned(soup.clone(), level, &b).unwrap();
+                assert_eq!(
+                    std::fs::read(&a).unwrap(),
+                    std::fs::read(&b).unwrap(),
+                    "level {level}"
+                );
+            }
+        }
+        // A non-manifold edge (three triangles on one edge) and a quad: the same refusals.
+        let fan = PolygonSoup::from_polygons(
+            vec![glam::DVec3::ZERO; 5],
+            &[[0u32, 1, 2], [1, 0, 3], [0, 1, 4]],
+        );
+        let quad = PolygonSoup::from_polygons(vec![glam::DVec3::ZERO; 4], &[[0u32, 1, 2, 3]]);
+        for soup in [fan, quad] {
+            let path = dir.join("bad.che");
+            let a = write_mesh(&soup, 2, &path).unwrap_err().to_string();
+            let b = write_mesh_owned(soup, 2, &path).unwrap_err().to_string();
+            assert_eq!(a, b);
+            assert!(!path.exists());
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     fn header(level: u8) -> Header {
         Header {
