@@ -165,3 +165,53 @@ fn bad_che_requests_are_refused_in_one_line_with_nothing_written() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn explain_reads_a_che_file_through_the_mapping_as_the_owned_level_explains_its_mesh() {
+    let dir = scratch("che-explain");
+    for level in ["1", "2", "3"] {
+        let file = dir.join(format!("grid-l{level}.che"));
+        let o = topolab(&[
+            "convert",
+            "grid:50",
+            file.to_str().unwrap(),
+            "--level",
+            level,
+        ]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let name = format!("che-l{level}");
+        let mapped = topolab(&["explain", &name, "--mesh", file.to_str().unwrap()]);
+        assert!(mapped.status.success(), "{}", text(&mapped.stderr));
+        let owned = topolab(&["explain", &name, "--mesh", "grid:50"]);
+        assert!(owned.status.success(), "{}", text(&owned.stderr));
+        let mapped = text(&mapped.stdout);
+        assert!(mapped.contains("verified"), "{mapped}");
+        let records = &mapped[mapped.find("G[] geometry").unwrap()..];
+        assert!(records.len() > 200, "{mapped}");
+        assert!(text(&owned.stdout).contains(records), "{mapped}");
+        // The level is the file's: another level's name is refused, naming the right one.
+        let other = if level == "1" { "che-l2" } else { "che-l1" };
+        let o = topolab(&["explain", other, "--mesh", file.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(
+            text(&o.stderr).contains(&format!("explain {name} --mesh")),
+            "{}",
+            text(&o.stderr)
+        );
+    }
+    // A trace reads meshes, and says so.
+    let file = dir.join("grid-l2.che");
+    let o = topolab(&[
+        "explain",
+        "che-l2",
+        "--mesh",
+        file.to_str().unwrap(),
+        "--trace",
+        "r00",
+        "--vertex",
+        "0",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(text(&o.stderr).lines().count(), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -5,11 +5,13 @@
 use super::explain_che;
 use super::explain_trace::{explain_trace, TraceRequest};
 use super::list::Row;
-use crate::input::{mesh_or_tetrahedron, unknown_structure, Failure};
+use crate::input::{is_che_file, mesh_or_tetrahedron, unknown_structure, Failure};
 use crate::limits;
 use crate::registry::{self, StructureVisitor};
+use std::path::Path;
 use topolab_harness::reads::trace::Query;
-use topolab_structures::{Error, MeshTopology, PolygonSoup};
+use topolab_structures::che::{CheFile, MappedChe};
+use topolab_structures::{CheL3, Error, MeshTopology, PolygonSoup};
 
 /// The text of `topolab explain NAME [--mesh M] [--trace OP --vertex N]`: the CHE levels for
 /// `che`, one structure's records otherwise; with `--trace`, the reads of one query ([`run_traced`]).
@@ -40,6 +42,15 @@ pub fn run_traced(
     mesh: Option<&str>,
     trace: Option<TraceRequest>,
 ) -> Result<String, Failure> {
+    if let Some(path) = mesh.filter(|m| is_che_file(Path::new(m))) {
+        if let Some(request) = trace {
+            return Err(Failure::usage(format!(
+                "--trace {} reads a mesh: {path} is a .che file, which `explain {name} --mesh {path}` explains record by record (the trace of a .che file's mesh: `--mesh` its source mesh)",
+                request.op
+            )));
+        }
+        return explain_che_file(name, path);
+    }
     let Some(request) = trace else {
         return if name == explain_che::NAME {
             explain_che::explain_che(mesh, None, None)
@@ -88,4 +99,59 @@ fn explain(name: &str, mesh: Option<&str>) -> Result<String, Failure> {
             message: format!("{name} cannot store {label}: {e}"),
             code: 1,
         })
+}
+
+/// `explain che-lN --mesh FILE.che` (or `explain che --mesh FILE.che`): the records of the
+/// file's level, read through the memory-mapped containers after the file is verified (one
+/// pass, as `topolab check` reads it). A level-0 file is described by `info`, not mapped.
+fn explain_che_file(name: &str, path: &str) -> Result<String, Failure> {
+    let bad_file = |e: Error| Failure::usage(format!("{path}: {e}"));
+    let file = CheFile::open(Path::new(path)).map_err(bad_file)?;
+    let level = file.level();
+    let structure = format!("che-l{level}");
+    if name != explain_che::NAME && name != structure {
+        return Err(Failure::usage(format!(
+            "{path} holds the containers of CHE level {level}: `explain {structure} --mesh {path}` (or `explain che --mesh {path}`) explains it"
+        )));
+    }
+    if level == 0 {
+        return Err(Failure::usage(format!(
+            "{path} is a level-0 file, described (`topolab info {path}`) and checked (`topolab check {path}`) but not mapped as a structure: its relations scan"
+        )));
+    }
+    // The text: bytes per triangle of the explanation of the limits module's sample, scaled.
+    let sample = limits::sample_mesh();
+    let mut text = String::new();
+    CheL3::from_soup(&sample)
+        .expect("the sample is a manifold triangle mesh")
+        .explain(&mut text)
+        .expect("writing to a String cannot fail");
+    let bytes = limits::scale(
+        text.len() as u64 + limits::growing_text(&text),
+        sample.num_faces() as u64,
+        file.header().triangles,
+    );
+    limits::admit(&format!("explain {name} --mesh {path}"), bytes)?;
+    let mut out = format!("{structure} for {path}\n\n");
+    match level {
+        1 => explain_mapped::<1>(file, path, &mut out),
+        2 => explain_mapped::<2>(file, path, &mut out),
+        _ => explain_mapped::<3>(file, path, &mut out),
+    }?;
+    Ok(out)
+}
+
+/// The records of a mapped level, verified first.
+fn explain_mapped<const L: u8>(file: CheFile, path: &str, out: &mut String) -> Result<(), Failure>
+where
+    MappedChe<L>: MeshTopology,
+{
+    let mut m =
+        MappedChe::<L>::from_file(file).map_err(|e| Failure::usage(format!("{path}: {e}")))?;
+    m.verify().map_err(|e| Failure {
+        message: format!("{path} does not verify: {e} (`topolab check {path}` lists it)"),
+        code: 1,
+    })?;
+    m.explain(out).expect("writing to a String cannot fail");
+    Ok(())
 }

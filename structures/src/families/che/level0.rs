@@ -2,7 +2,7 @@
 //! neighbour scans `V[]` (Algorithms 5, 8, 9).
 
 use super::build::{build_fast, Checked};
-use super::{che_topology, half_edges_of, next, prev, print_container, triangle};
+use super::{che_topology, half_edges_of, next, prev, printed, triangle};
 use super::{vec_bytes, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -131,20 +131,8 @@ impl CheL0 {
     }
 
     pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
-        writeln!(
-            w,
-            "G[] geometry, one entry per vertex (n0 = {}):",
-            self.g.len()
-        )?;
-        for (i, p) in self.g.iter().enumerate() {
-            writeln!(w, "  G[{i}] = ({:.3}, {:.3}, {:.3})", p.x, p.y, p.z)?;
-        }
-        writeln!(
-            w,
-            "V[] start vertex of each half-edge (3·n2 = {}; triangle t owns 3t, 3t+1, 3t+2):",
-            self.v.len()
-        )?;
-        print_container(w, "V[]", "he", &self.v)
+        printed::geometry(w, &self.g)?;
+        printed::start_vertices(w, &self.v)
     }
 }
 

@@ -4,7 +4,7 @@
 
 use super::build::{build_chapter, build_fast, Checked};
 use super::level0::check_start_vertices;
-use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, print_container, vec_bytes};
+use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, printed, vec_bytes};
 use super::{CheL0, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, HalfEdgeId, VertexId};
@@ -98,8 +98,7 @@ impl CheL1 {
 
     pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         self.l0.print_containers(w)?;
-        writeln!(w, "O[] opposite half-edge (negative on the boundary):")?;
-        print_container(w, "O[]", "he", &self.o)
+        printed::opposites(w, &self.o)
     }
 }
 

@@ -7,7 +7,7 @@ use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_
 use super::fan::{ranges_hold, Fan};
 use super::level1::check_opposites;
 use super::triangle;
-use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, print_container, vec_bytes};
+use super::{che_topology, fan_walk_algorithm_7, level1::level1_cost, printed, vec_bytes};
 use super::{CheL1, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -147,16 +147,7 @@ impl CheL2 {
 
     pub(crate) fn print_containers(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
         self.l1.print_containers(w)?;
-        writeln!(
-            w,
-            "VH[] a half-edge leaving each vertex (the boundary one on the boundary):"
-        )?;
-        print_container(w, "VH[]", "v", &self.vh)?;
-        writeln!(
-            w,
-            "EH edge map: edge i is the half-edge EH[i] = min(he, O[he]):"
-        )?;
-        print_container(w, "EH[]", "i", &self.eh)
+        printed::vertex_half_edges_and_edge_map(w, &self.vh, &self.eh)
     }
 }
 

@@ -161,7 +161,7 @@
 //! run meets them.
 
 mod access;
-mod build;
+pub(crate) mod build;
 mod edit;
 mod fan;
 mod level0;
@@ -520,6 +520,66 @@ pub(crate) fn print_container<T: std::fmt::Display>(
         write!(w, "{x:>4}")?;
     }
     writeln!(w)
+}
+
+/// How each of the CHE's containers is printed, with the heading that says what it holds: the
+/// owned levels and the memory-mapped ones print their containers alike.
+pub(crate) mod printed {
+    use super::print_container;
+    use glam::DVec3;
+    use std::fmt::{Result, Write};
+
+    /// `G[]`, a position per line.
+    pub(crate) fn geometry(w: &mut dyn Write, g: &[DVec3]) -> Result {
+        writeln!(w, "G[] geometry, one entry per vertex (n0 = {}):", g.len())?;
+        for (i, p) in g.iter().enumerate() {
+            writeln!(w, "  G[{i}] = ({:.3}, {:.3}, {:.3})", p.x, p.y, p.z)?;
+        }
+        Ok(())
+    }
+
+    /// `V[]`.
+    pub(crate) fn start_vertices(w: &mut dyn Write, v: &[u32]) -> Result {
+        writeln!(
+            w,
+            "V[] start vertex of each half-edge (3·n2 = {}; triangle t owns 3t, 3t+1, 3t+2):",
+            v.len()
+        )?;
+        print_container(w, "V[]", "he", v)
+    }
+
+    /// `O[]`.
+    pub(crate) fn opposites(w: &mut dyn Write, o: &[i32]) -> Result {
+        writeln!(w, "O[] opposite half-edge (negative on the boundary):")?;
+        print_container(w, "O[]", "he", o)
+    }
+
+    /// `VH[]` and `EH`.
+    pub(crate) fn vertex_half_edges_and_edge_map(
+        w: &mut dyn Write,
+        vh: &[i32],
+        eh: &[u32],
+    ) -> Result {
+        writeln!(
+            w,
+            "VH[] a half-edge leaving each vertex (the boundary one on the boundary):"
+        )?;
+        print_container(w, "VH[]", "v", vh)?;
+        writeln!(
+            w,
+            "EH edge map: edge i is the half-edge EH[i] = min(he, O[he]):"
+        )?;
+        print_container(w, "EH[]", "i", eh)
+    }
+
+    /// `CH[]`.
+    pub(crate) fn curves(w: &mut dyn Write, ch: &[u32]) -> Result {
+        writeln!(
+            w,
+            "CH[] a half-edge of each boundary curve (O[he] = -k on curve k = index + 1):"
+        )?;
+        print_container(w, "CH[]", "k-1", ch)
+    }
 }
 
 /// `Vec` bytes as allocated (capacity).

@@ -40,8 +40,8 @@ use super::level1::{check_opposites, level1_cost, vertex_star_algorithm_6};
 use super::level2::{check_cells, level2_cost};
 use super::level3::{check_curves, level3_cost};
 use super::{
-    by_star, che_topology, fan_walk_algorithm_7, next, opposite_of, print_container,
-    walk_boundary_curve, CheLevel, StarRead,
+    by_star, che_topology, fan_walk_algorithm_7, next, opposite_of, printed, walk_boundary_curve,
+    CheLevel, StarRead,
 };
 use super::{CheL0, CheL1, CheL2, CheL3};
 use crate::core::error::{Error, Result};
@@ -420,23 +420,14 @@ impl<const L: u8> MappedChe<L> {
                 "not verified"
             }
         )?;
-        writeln!(
-            w,
-            "G[] geometry, one entry per vertex (n0 = {}):",
-            self.geometry().len()
-        )?;
-        for (i, p) in self.geometry().iter().enumerate() {
-            writeln!(w, "  G[{i}] = ({:.3}, {:.3}, {:.3})", p.x, p.y, p.z)?;
-        }
-        let v = self.file.start_vertices();
-        print_container(w, "V[]", "he", v)?;
-        print_container(w, "O[]", "he", self.opposite())?;
+        printed::geometry(w, self.geometry())?;
+        printed::start_vertices(w, self.file.start_vertices())?;
+        printed::opposites(w, self.opposite())?;
         if L >= 2 {
-            print_container(w, "VH[]", "v", self.vertex_half_edge())?;
-            print_container(w, "EH[]", "i", self.edge_map())?;
+            printed::vertex_half_edges_and_edge_map(w, self.vertex_half_edge(), self.edge_map())?;
         }
         if L >= 3 {
-            print_container(w, "CH[]", "k-1", self.curve_half_edge())?;
+            printed::curves(w, self.curve_half_edge())?;
         }
         Ok(())
     }
