@@ -64,7 +64,10 @@ fn each_structure_climbs_until_the_memory_refuses_and_every_result_agrees() {
             assert_eq!(c["outcome"], "measured", "{s}: {c}");
             let faces = c["faces"].as_u64().unwrap();
             let asked = c["triangles"].as_u64().unwrap();
-            assert!(faces.abs_diff(asked) * 50 < asked, "{s}: {faces} for {asked}");
+            assert!(
+                faces.abs_diff(asked) * 50 < asked,
+                "{s}: {faces} for {asked}"
+            );
             assert!(c["peak_bytes"].as_u64().unwrap() >= c["start_bytes"].as_u64().unwrap());
             assert!(c["resident_bytes"].as_u64().unwrap() > 0, "{s}: {c}");
             assert!(c["construction_ns_per_face"].as_f64().unwrap() > 0.0);
