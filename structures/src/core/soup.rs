@@ -116,7 +116,10 @@ impl PolygonSoup {
     /// # Panics
     /// If `indices.len()` is not a multiple of 3, or the corners are past `u32`.
     pub fn from_triangles(positions: Vec<DVec3>, indices: Vec<u32>) -> Self {
-        assert!(indices.len().is_multiple_of(3), "three corners per triangle");
+        assert!(
+            indices.len().is_multiple_of(3),
+            "three corners per triangle"
+        );
         let corners = u32::try_from(indices.len()).expect("corners numbered by u32");
         Self {
             positions,

@@ -370,6 +370,13 @@ impl<'a> Containers<'a> {
     /// The containers of an owned level 0 (its edges counted by sorting, O(n log n)).
     pub fn level0(m: &'a crate::CheL0) -> Self {
         use crate::MeshTopology;
+        Self::geometry_and_corners(m, m.num_edges() as u64)
+    }
+
+    /// `G[]` and `V[]` of `m` and nothing else, with `edges` for the header: what every level
+    /// starts from (the higher levels count their edges from `O[]` or `EH`, without the
+    /// sort level 0 needs, which took a copy of every half-edge).
+    fn geometry_and_corners(m: &'a crate::CheL0, edges: u64) -> Self {
         Self {
             level: 0,
             g: m.geometry(),
@@ -378,22 +385,22 @@ impl<'a> Containers<'a> {
             vh: &[],
             eh: &[],
             ch: &[],
-            edges: m.num_edges() as u64,
+            edges,
         }
     }
 
     /// The containers of an owned level 1.
     pub fn level1(m: &'a crate::CheL1) -> Self {
         let o = m.opposite();
+        let edges = o
+            .iter()
+            .enumerate()
+            .filter(|&(he, &x)| x < 0 || (he as i64) < i64::from(x))
+            .count() as u64;
         Self {
             level: 1,
             o,
-            edges: o
-                .iter()
-                .enumerate()
-                .filter(|&(he, &x)| x < 0 || (he as i64) < i64::from(x))
-                .count() as u64,
-            ..Self::level0(m.level0())
+            ..Self::geometry_and_corners(m.level0(), edges)
         }
     }
 
