@@ -115,6 +115,26 @@ pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<Polyg
     Ok(parsed.generate())
 }
 
+/// [`load_mesh`] for work that consumes the mesh (its arrays become the result's, as
+/// `convert --to che` builds the CHE): `work` takes a copy of the sample by value and is
+/// measured with it, so the mesh is counted once, in the work's peak, and not again as the
+/// soup it is generated into.
+pub fn load_mesh_consumed(
+    spec: &str,
+    work: impl Fn(PolygonSoup) -> u64,
+) -> Result<PolygonSoup, Failure> {
+    let work = |sample: &PolygonSoup| work(sample.clone());
+    let path = Path::new(spec);
+    if path.exists() {
+        let soup = read_file(spec, path)?;
+        admit_work(spec, &MeshSize::of(&soup), 0, work)?;
+        return Ok(soup);
+    }
+    let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
+    admit_work(spec, &parsed.size(), 0, work)?;
+    Ok(parsed.generate())
+}
+
 /// The size of the built-in mesh `spec` names, when it names one and no file (`None` for a
 /// file, or a name that is not a built-in mesh: [`load_mesh`] says why).
 pub fn built_in_size(spec: &str) -> Option<MeshSize> {

@@ -6,12 +6,12 @@
 //! (STL, which stores triangles only, receives a face of more than three corners as a fan of
 //! triangles; reading STL welds corners at exactly the same position).
 
-use crate::input::{invalid_mesh_hint, load_mesh, refuse_empty, Failure};
+use crate::input::{invalid_mesh_hint, load_mesh, load_mesh_consumed, refuse_empty, Failure};
 use crate::output::{check_file, check_writable, write_mesh_as};
 use std::path::Path;
 use std::time::Instant;
 use topolab_structures::io::che_file;
-use topolab_structures::{CheL3, Error, Format, MeshTopology};
+use topolab_structures::{Error, Format};
 
 /// The formats `--to` names, by their extension.
 const NAMES: [(&str, Format); 4] = [
@@ -102,9 +102,10 @@ fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> 
     }
     check_file(out)?;
     let started = Instant::now();
-    // The memory of the work: the owned level built from the mesh (the file is streamed).
-    let soup = load_mesh(spec, |sample| {
-        drop(CheL3::from_soup(sample));
+    // The memory of the work: the level built from the mesh it consumes (the file is
+    // streamed).
+    let soup = load_mesh_consumed(spec, |sample| {
+        drop(che_file::OwnedLevel::build(sample, level));
         0
     })?;
     refuse_empty(spec, &soup)?;

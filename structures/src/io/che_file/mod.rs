@@ -552,33 +552,64 @@ pub fn write_mesh(soup: &PolygonSoup, level: u8, path: &Path) -> Result<()> {
     }
 }
 
-/// [`write_mesh`] consuming the soup: its positions and corners become the level's `G[]`
-/// and `V[]` without a copy, so the soup and the structure are never held at once: the peak
-/// is the level's containers and its construction's temporaries, not those plus the soup.
-/// The file is the same, byte for byte. What `topolab convert --to che` writes.
-pub fn write_mesh_owned(soup: PolygonSoup, level: u8, path: &Path) -> Result<()> {
-    use crate::che::{CheL0, CheL1, CheL2, CheL3};
-    use crate::families::che::build::build_fast_owned;
-    use crate::MeshTopology;
-    let level2 = |soup, name| {
-        build_fast_owned(soup, name)
-            .and_then(|c| CheL2::from_checked(c, crate::che::edge_map_by_scan, name))
-    };
-    match level {
-        0 => build_fast_owned(soup, CheL0::NAME)
-            .and_then(|c| Containers::level0(&CheL0::from_parts(c.g, c.v)).write(path)),
-        1 => build_fast_owned(soup, CheL1::NAME)
-            .and_then(|c| Containers::level1(&CheL1::from_checked(c).0).write(path)),
-        2 => level2(soup, CheL2::NAME).and_then(|m| Containers::level2(&m).write(path)),
-        3 => level2(soup, CheL3::NAME)
-            .and_then(CheL3::from_level2)
-            .and_then(|m| Containers::level3(&m).write(path)),
-        _ => Err(Error::InvalidParameter {
-            parameter: "level",
-            value: level.to_string(),
-            expected: "a CHE level: 0, 1, 2 or 3",
-        }),
+/// An owned CHE level built from a soup it consumed ([`OwnedLevel::build`]), ready to be
+/// written ([`OwnedLevel::write`]).
+pub enum OwnedLevel {
+    /// Level 0.
+    L0(crate::CheL0),
+    /// Level 1.
+    L1(crate::CheL1),
+    /// Level 2.
+    L2(crate::CheL2),
+    /// Level 3.
+    L3(crate::CheL3),
+}
+
+impl OwnedLevel {
+    /// The CHE of `level` built from `soup`, consumed: its positions and corners become
+    /// `G[]` and `V[]` without a copy, so the soup and the structure are never held at once
+    /// (the peak is the level's containers and its construction's temporaries). Refuses what
+    /// the level's `from_soup` refuses, alike, and a level other than 0–3.
+    pub fn build(soup: PolygonSoup, level: u8) -> Result<Self> {
+        use crate::che::{CheL0, CheL1, CheL2, CheL3};
+        use crate::families::che::build::build_fast_owned;
+        use crate::MeshTopology;
+        let level2 = |soup, name| {
+            build_fast_owned(soup, name)
+                .and_then(|c| CheL2::from_checked(c, crate::che::edge_map_by_scan, name))
+        };
+        Ok(match level {
+            0 => build_fast_owned(soup, CheL0::NAME)
+                .map(|c| Self::L0(CheL0::from_parts(c.g, c.v)))?,
+            1 => build_fast_owned(soup, CheL1::NAME).map(|c| Self::L1(CheL1::from_checked(c).0))?,
+            2 => Self::L2(level2(soup, CheL2::NAME)?),
+            3 => Self::L3(level2(soup, CheL3::NAME).and_then(CheL3::from_level2)?),
+            _ => {
+                return Err(Error::InvalidParameter {
+                    parameter: "level",
+                    value: level.to_string(),
+                    expected: "a CHE level: 0, 1, 2 or 3",
+                })
+            }
+        })
     }
+
+    /// Writes the level's containers to `path` ([`Containers::write`], atomically).
+    pub fn write(&self, path: &Path) -> Result<()> {
+        match self {
+            Self::L0(m) => Containers::level0(m),
+            Self::L1(m) => Containers::level1(m),
+            Self::L2(m) => Containers::level2(m),
+            Self::L3(m) => Containers::level3(m),
+        }
+        .write(path)
+    }
+}
+
+/// [`write_mesh`] consuming the soup ([`OwnedLevel::build`]): the same file, byte for byte,
+/// without holding the soup and the structure at once. What `topolab convert --to che` writes.
+pub fn write_mesh_owned(soup: PolygonSoup, level: u8, path: &Path) -> Result<()> {
+    OwnedLevel::build(soup, level)?.write(path)
 }
 
 #[cfg(test)]
