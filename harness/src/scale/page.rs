@@ -81,7 +81,7 @@ pub fn render(r: &ScaleResults) -> String {
 
 fn fits(h: &mut String, r: &ScaleResults) {
     let mem = r.memory_available;
-    let _ = write!(h, "<h2>Which structure fits my mesh</h2><div class=read><b>How to read it.</b> Per structure, the largest torus built and measured on this machine, and what each triangle took there: <i>resident</i>, the structure alone as the kernel holds it once built; <i>peak</i>, the whole building process at its highest (the soup it is built from, the structure, the build's temporaries). The last columns divide memory by the peak per triangle: on this machine ({} available when the run started) that is an estimate, and on machines with 10× and 100× its memory it is <b>extrapolated</b> on paper, nothing measured; no structure of the lab goes past {} triangles, the most its <code>u32</code> ids number (three corner ids per triangle, below 2<sup>32</sup>).</div>", bytes(mem as f64), count(ID_LIMIT_TRIANGLES));
+    let _ = write!(h, "<h2>Which structure fits my mesh</h2><div class=read><b>How to read it.</b> Per structure, the largest torus built and measured on this machine, and what each triangle took there: <i>resident</i>, the structure alone as the kernel holds it once built; <i>peak</i>, the whole building process at its highest (the soup it is built from, the structure, the build's temporaries). The last columns divide memory by the peak per triangle (less the program's few MB): on this machine, the memory available when the next size was refused (else {}, available when the run started), an estimate consistent with that refusal; and on machines with 10× and 100× its memory it is <b>extrapolated</b> on paper, nothing measured; no structure of the lab goes past {} triangles, the most its <code>u32</code> ids number (three corner ids per triangle, below 2<sup>32</sup>).</div>", bytes(mem as f64), count(ID_LIMIT_TRIANGLES));
     let _ = write!(h, "<table><tr><th class=l>structure</th><th>largest measured</th><th>resident bytes / triangle</th><th>peak bytes / triangle</th><th>next size</th><th>fits here (estimate)</th><th>10× memory, {} (extrapolated)</th><th>100× memory, {} (extrapolated)</th></tr>", bytes(10.0 * mem as f64), bytes(100.0 * mem as f64));
     for e in &r.structures {
         let rows = measured(r, &e.name);
@@ -95,9 +95,18 @@ fn fits(h: &mut String, r: &ScaleResults) {
             continue;
         };
         let peak = per_tri(m.peak_bytes, m);
-        let next = stop(r, &e.name).map_or("not asked".into(), stop_text);
+        let stopped = stop(r, &e.name);
+        let next = stopped.map_or("not asked".into(), stop_text);
+        // The memory the refusal saw, else the run's at its start; less the program's own.
+        let here = match stopped.map(|c| &c.outcome) {
+            Some(Outcome::Refused {
+                available_bytes, ..
+            }) => *available_bytes,
+            _ => mem,
+        };
+        let grows = per_tri(m.peak_bytes.saturating_sub(m.start_bytes), m);
         let cell = |memory: u64| {
-            let n = holds(memory, peak);
+            let n = holds(memory.saturating_sub(m.start_bytes), grows);
             if n == ID_LIMIT_TRIANGLES {
                 format!("{} (the ids' limit)", count(n))
             } else {
@@ -112,7 +121,7 @@ fn fits(h: &mut String, r: &ScaleResults) {
             per_tri(m.resident_bytes, m),
             peak,
             next,
-            cell(mem),
+            cell(here),
             cell(mem.saturating_mul(10)),
             cell(mem.saturating_mul(100)),
         );
@@ -461,7 +470,15 @@ fn mapped(h: &mut String, r: &ScaleResults) {
             }
             Some(Check::Exact(c)) => format!("<b>differs from the in-memory CHE's ({c:x})</b>"),
             Some(_) => "<b>differs</b>".to_string(),
-            None => "not compared (no in-memory sweep at this size)".to_string(),
+            None if r.mapped.iter().all(|o| {
+                o.triangles != m.triangles
+                    || (o.first_sweep.check.agrees(m.first_sweep.check)
+                        && o.later_sweeps.check.agrees(m.first_sweep.check))
+            }) =>
+            {
+                "not compared with an in-memory CHE (none at this size); every sweep of the file the same, with and without the limit".to_string()
+            }
+            None => "<b>differs between the sweeps of the file</b>".to_string(),
         };
         let opens: Vec<String> = m.open_ms.iter().map(|t| format!("{t:.3}")).collect();
         let _ = write!(
