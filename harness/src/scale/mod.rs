@@ -261,8 +261,9 @@ pub struct MappedRun {
     pub memory_limit: Option<u64>,
     /// How the limit was set, or why none could be.
     pub limit_how: String,
-    /// The first R00 sweep after opening: the page tables empty, every page read from the
-    /// page cache or the disk (a single run).
+    /// The first R00 sweep after opening, before the verification (the bounds-checked reads),
+    /// the file's pages dropped from the page cache before: every page read from the disk (a
+    /// single run).
     pub first_sweep: Timing,
     /// Page faults of the first sweep.
     pub first_faults: Faults,
