@@ -212,13 +212,24 @@ pub struct Timing {
 /// seconds have gone by, at least 3 and at most 21; only one when the untimed run alone took
 /// more than a third of the budget (a scan on a large mesh: seconds a run). Panics if two runs
 /// return different results: a kernel that is not deterministic cannot be compared.
-pub fn time_kernel(elements: u64, budget_s: f64, mut kernel: impl FnMut() -> Check) -> Timing {
+pub fn time_kernel(elements: u64, budget_s: f64, kernel: impl FnMut() -> Check) -> Timing {
+    time_kernel_runs(elements, budget_s, 1, kernel)
+}
+
+/// [`time_kernel`] with at least `fewest` timed runs however long each takes (and 3 while
+/// they are short): for a few slow runs that must still be a median.
+pub fn time_kernel_runs(
+    elements: u64,
+    budget_s: f64,
+    fewest: usize,
+    mut kernel: impl FnMut() -> Check,
+) -> Timing {
     let untimed = Instant::now();
     let first = kernel();
     let at_least = if 3.0 * untimed.elapsed().as_secs_f64() > budget_s {
-        1
+        fewest.max(1)
     } else {
-        3
+        fewest.max(3)
     };
     let mut times = Vec::new();
     let start = Instant::now();

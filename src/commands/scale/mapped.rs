@@ -12,12 +12,16 @@ use std::process::Command;
 use std::time::Instant;
 use topolab_harness::kernels::{self, Queries};
 use topolab_harness::scale::proc::faults;
-use topolab_harness::scale::{time_kernel, Check, MappedRun, Outcome, ScaleCell, Timing};
+use topolab_harness::scale::{time_kernel_runs, Check, MappedRun, Outcome, ScaleCell, Timing};
 use topolab_structures::che::{CheFile, MappedCheL2};
 use topolab_structures::{BoundaryCurves, MeshTopology, Operator};
 
-/// Seconds the later sweeps may take (at least 3 runs).
+/// Seconds the later sweeps may take, beyond their fewest runs.
 const LATER_BUDGET_S: f64 = 2.0;
+
+/// The fewest later sweeps, however long each takes: their median is the warm figure the
+/// 256M target reads, and one run of a sweep of 128M vertices varied by half.
+const LATER_RUNS: usize = 3;
 
 /// The limit of the cgroup run, as a fraction of the file: a quarter.
 const LIMIT_DIVISOR: u64 = 4;
@@ -150,8 +154,8 @@ fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> Failure {
 /// `topolab scale-mapped FILE [--cgroup-procs PATH]` (hidden: the scale run's worker): joins
 /// the cgroup when given, drops the file's pages from the page cache, opens it three times,
 /// sweeps R00 once before verifying (the bounds-checked reads, from the disk), verifies it,
-/// then sweeps again until [`LATER_BUDGET_S`] (the verified walk); prints a [`MappedRun`] as
-/// JSON. Only level-2 files.
+/// then sweeps again, [`LATER_RUNS`] times at least and until [`LATER_BUDGET_S`] (the
+/// verified walk); prints a [`MappedRun`] as JSON. Only level-2 files.
 pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure> {
     if let Some(procs) = cgroup_procs {
         // Only an existing `cgroup.procs` file: never a file of another name, never created.
@@ -202,7 +206,7 @@ pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure
         .map_err(|e| failure(file, "does not verify", e))?;
     let verify_ms = t.elapsed().as_secs_f64() * 1e3;
     let before = faults();
-    let later_sweeps = time_kernel(vertices, LATER_BUDGET_S, || {
+    let later_sweeps = time_kernel_runs(vertices, LATER_BUDGET_S, LATER_RUNS, || {
         Check::Exact(kernels::run(&m, Operator::R00, &every, &mut curves))
     });
     let later_faults = faults().since(before);

@@ -106,6 +106,8 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
     crate::output::check_folder(&args.out, &FILES)?;
     let probe_mb = args.probe_mb.unwrap_or(PROBE_MB);
     admit_smallest(&structures, probe_mb)?;
+    // The build's facts as the run starts (its commit is the binary's, not a later edit's).
+    let machine = topolab_harness::machine::facts(&topolab_baselines::openmesh_description());
     let memory_available = limits::available().unwrap_or(0);
     eprintln!(
         "scale: {} structures, sizes up to {max_triangles} triangles, {} available; the memory probe first (alone)",
@@ -140,7 +142,7 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
     let results = ScaleResults {
         format: FORMAT.into(),
         command,
-        machine: topolab_harness::machine::facts(&topolab_baselines::openmesh_description()),
+        machine,
         memory_total: memory_total(),
         memory_available,
         structures: structures
