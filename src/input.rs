@@ -103,6 +103,16 @@ fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
 /// it returns bytes to add to its measured peak, usually 0: a text's growth,
 /// [`limits::growing_text`]).
 pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<PolygonSoup, Failure> {
+    load_for(spec, true, work)
+}
+
+/// [`load_mesh`] and [`load_mesh_consumed`]: `count_soup` says whether a generated mesh's soup
+/// is counted besides `work` (not when `work` holds it already).
+fn load_for(
+    spec: &str,
+    count_soup: bool,
+    work: impl Fn(&PolygonSoup) -> u64,
+) -> Result<PolygonSoup, Failure> {
     let path = Path::new(spec);
     if path.exists() {
         let soup = read_file(spec, path)?;
@@ -111,7 +121,8 @@ pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<Polyg
     }
     let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
     let size = parsed.size();
-    admit_work(spec, &size, size.soup_bytes(), work)?;
+    let soup = if count_soup { size.soup_bytes() } else { 0 };
+    admit_work(spec, &size, soup, work)?;
     Ok(parsed.generate())
 }
 
@@ -123,16 +134,7 @@ pub fn load_mesh_consumed(
     spec: &str,
     work: impl Fn(PolygonSoup) -> u64,
 ) -> Result<PolygonSoup, Failure> {
-    let work = |sample: &PolygonSoup| work(sample.clone());
-    let path = Path::new(spec);
-    if path.exists() {
-        let soup = read_file(spec, path)?;
-        admit_work(spec, &MeshSize::of(&soup), 0, work)?;
-        return Ok(soup);
-    }
-    let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
-    admit_work(spec, &parsed.size(), 0, work)?;
-    Ok(parsed.generate())
+    load_for(spec, false, |sample| work(sample.clone()))
 }
 
 /// The size of the built-in mesh `spec` names, when it names one and no file (`None` for a
