@@ -1,7 +1,7 @@
 //! The scale run's `.che` part: a torus written as a level-2 `.che` file by `topolab convert`,
 //! then opened and swept by a worker process (`topolab scale-mapped FILE`, [`sweep`]) twice:
 //! with the machine's memory, and in a memory cgroup whose limit is a quarter of the file
-//! ([`super::group`]), so the file cannot stay resident and every sweep reads it from the
+//! (the `group` module), so the file cannot stay resident and every sweep reads it from the
 //! disk. Each sweep's result is compared with the in-memory CHE's on the same torus.
 
 use super::ended;
@@ -154,7 +154,7 @@ fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> Failure {
 /// `topolab scale-mapped FILE [--cgroup-procs PATH]` (hidden: the scale run's worker): joins
 /// the cgroup when given, drops the file's pages from the page cache, opens it three times,
 /// sweeps R00 once before verifying (the bounds-checked reads, from the disk), verifies it,
-/// then sweeps again, [`LATER_RUNS`] times at least and until [`LATER_BUDGET_S`] (the
+/// then sweeps again, three times at least and until two seconds have gone by (the
 /// verified walk); prints a [`MappedRun`] as JSON. Only level-2 files.
 pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure> {
     if let Some(procs) = cgroup_procs {
