@@ -158,8 +158,9 @@ pub struct Measure {
     /// Laplacian smoothing of every vertex (the workload), ns per vertex; `None` where R00
     /// or the boundary test scans.
     pub smoothing: Option<Timing>,
-    /// Page faults during the sweeps and the smoothing (zero when the structure stays
-    /// resident, as it should below the memory).
+    /// Page faults during the sweeps and the smoothing: no major fault while the structure
+    /// stays resident; the minor ones are the kernels' own buffers touched the first time (the
+    /// list of every vertex, smoothing's output).
     pub sweep_faults: Faults,
 }
 
