@@ -61,11 +61,7 @@ pub fn available() -> Option<u64> {
     if let Some(bytes) = std::env::var_os("TOPOLAB_AVAILABLE_MEMORY") {
         return bytes.to_str().and_then(|b| b.trim().parse().ok());
     }
-    let meminfo = std::fs::read_to_string("/proc/meminfo").ok().and_then(|m| {
-        let line = m.lines().find(|l| l.starts_with("MemAvailable:"))?;
-        let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-        Some(kib * 1024)
-    });
+    let meminfo = topolab_harness::machine::meminfo("MemAvailable");
     let read = |file: &str| -> Option<u64> {
         std::fs::read_to_string(format!("/sys/fs/cgroup/{file}"))
             .ok()?
@@ -83,29 +79,54 @@ pub fn available() -> Option<u64> {
     }
 }
 
-/// The headroom of this process's own memory cgroup under cgroup v1 (the `memory` controller
-/// mounted at `/sys/fs/cgroup/memory`, the process's group named by `/proc/self/cgroup`):
+/// The headroom of this process's own memory cgroup under cgroup v1 ([`memory_cgroup`]):
 /// `memory.limit_in_bytes - memory.usage_in_bytes`. A group without a limit reports a limit
 /// near 2^63, which the `MemAvailable` it is compared with makes harmless. `None` where there
 /// is no such controller.
 fn cgroup_v1_headroom() -> Option<u64> {
-    let groups = std::fs::read_to_string("/proc/self/cgroup").ok()?;
-    let path = groups.lines().find_map(|l| {
-        let mut parts = l.splitn(3, ':');
-        let (_, controllers, path) = (parts.next()?, parts.next()?, parts.next()?);
-        controllers
-            .split(',')
-            .any(|c| c == "memory")
-            .then_some(path)
-    })?;
+    let (dir, CgroupVersion::V1) = memory_cgroup()? else {
+        return None;
+    };
     let read = |file: &str| -> Option<u64> {
-        std::fs::read_to_string(format!("/sys/fs/cgroup/memory{path}/{file}"))
+        std::fs::read_to_string(dir.join(file))
             .ok()?
             .trim()
             .parse()
             .ok()
     };
     Some(read("memory.limit_in_bytes")?.saturating_sub(read("memory.usage_in_bytes").unwrap_or(0)))
+}
+
+/// Which cgroup interface holds a process's memory limit.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum CgroupVersion {
+    /// cgroup v1, the `memory` controller's hierarchy (`memory.limit_in_bytes`).
+    V1,
+    /// cgroup v2, the unified hierarchy (`memory.max`).
+    V2,
+}
+
+/// The folder of this process's own memory cgroup (named by `/proc/self/cgroup`) and its
+/// interface: the `memory` controller's group under `/sys/fs/cgroup/memory` (v1), else the
+/// unified group under `/sys/fs/cgroup` (v2). `None` where there is neither.
+pub fn memory_cgroup() -> Option<(std::path::PathBuf, CgroupVersion)> {
+    use std::path::Path;
+    let groups = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+    for line in groups.lines() {
+        let mut parts = line.splitn(3, ':');
+        let (_, controllers, path) = (parts.next()?, parts.next()?, parts.next()?);
+        if controllers.split(',').any(|c| c == "memory") {
+            let dir = Path::new("/sys/fs/cgroup/memory").join(path.trim_start_matches('/'));
+            if dir.join("memory.limit_in_bytes").exists() {
+                return Some((dir, CgroupVersion::V1));
+            }
+        }
+    }
+    let v2 = groups.lines().find_map(|l| l.strip_prefix("0::"))?;
+    let dir = Path::new("/sys/fs/cgroup").join(v2.trim_start_matches('/'));
+    dir.join("cgroup.controllers")
+        .exists()
+        .then_some((dir, CgroupVersion::V2))
 }
 
 /// `bytes` for people: `1.5 GB`, `320.0 MB`, `12.0 kB`, `12 bytes` (powers of 1000).

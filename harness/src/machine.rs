@@ -3,6 +3,18 @@
 
 use std::process::Command;
 
+/// A field of `/proc/meminfo` (`MemTotal`, `MemAvailable`, ...), bytes; `None` where it cannot
+/// be read (not Linux).
+pub fn meminfo(field: &str) -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| {
+        l.strip_prefix(field)
+            .is_some_and(|rest| rest.starts_with(':'))
+    })?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
 /// Machine and build facts.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Machine {
@@ -100,15 +112,8 @@ pub fn facts(openmesh: &str) -> Machine {
             format!("L{level}{k} {size}")
         })
         .collect();
-    let memory = std::fs::read_to_string("/proc/meminfo")
-        .ok()
-        .and_then(|m| {
-            m.lines()
-                .next()
-                .map(|l| l.split_whitespace().nth(1).unwrap_or("0").to_string())
-        })
-        .and_then(|kb| kb.parse::<f64>().ok())
-        .map(|kb| format!("{:.1} GiB", kb / (1024.0 * 1024.0)))
+    let memory = meminfo("MemTotal")
+        .map(|b| format!("{:.1} GiB", b as f64 / (1u64 << 30) as f64))
         .unwrap_or_else(|| "unknown".into());
     let dirty = run("git", &["status", "--porcelain", "--untracked-files=no"])
         .is_some_and(|s| !s.is_empty());

@@ -143,7 +143,7 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
         format: FORMAT.into(),
         command,
         machine,
-        memory_total: memory_total(),
+        memory_total: topolab_harness::machine::meminfo("MemTotal").unwrap_or(0),
         memory_available,
         structures: structures
             .iter()
@@ -416,17 +416,6 @@ fn disagreements(cells: &[ScaleCell]) -> Vec<String> {
         }
     }
     notes
-}
-
-/// `MemTotal` of `/proc/meminfo`, bytes (0 where unreadable).
-fn memory_total() -> u64 {
-    std::fs::read_to_string("/proc/meminfo")
-        .ok()
-        .and_then(|m| {
-            let line = m.lines().find(|l| l.starts_with("MemTotal:"))?;
-            line.split_whitespace().nth(1)?.parse::<u64>().ok()
-        })
-        .map_or(0, |kib| kib * 1024)
 }
 
 /// Writes `results.json` and `index.html` into `out`, together.
