@@ -46,6 +46,14 @@ pub const fn mix(a: u64, b: u64) -> u64 {
     h ^ (h >> 31)
 }
 
+/// Whether two workload results (sums of coordinates) agree: within 1e-6 relative, and
+/// absolute below 1, since summing in another order (each structure walks a vertex's
+/// neighbours from its own start) changes the last bits, and a closed mesh's coordinates sum
+/// to nearly 0, where tens of millions of terms differ by more than 1e-9.
+pub fn sums_agree(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
+}
+
 /// An undirected edge as one number: smaller end vertex in the high half.
 #[inline(always)]
 pub const fn edge_key(a: u32, b: u32) -> u64 {

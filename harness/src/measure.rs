@@ -615,7 +615,7 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
                         sum0.parse::<f64>().unwrap_or(f64::NAN),
                         sum.parse::<f64>().unwrap_or(f64::NAN),
                     );
-                    (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
+                    crate::checksum::sums_agree(a, b)
                 } else {
                     sum0 == sum
                 };

@@ -179,15 +179,12 @@ pub enum Check {
 }
 
 impl Check {
-    /// Whether two results agree: exactly, or for sums to 1e-6 relative, and absolute below 1
-    /// (the report's rule: a torus's coordinates sum to nearly 0, where tens of millions of
-    /// terms added in another order differ by more than 1e-9).
+    /// Whether two results agree: exactly, or for sums by the report's rule
+    /// ([`crate::checksum::sums_agree`]).
     pub fn agrees(self, other: Check) -> bool {
         match (self, other) {
             (Check::Exact(a), Check::Exact(b)) => a == b,
-            (Check::Float(a), Check::Float(b)) => {
-                (a - b).abs() <= 1e-6 * a.abs().max(b.abs()).max(1.0)
-            }
+            (Check::Float(a), Check::Float(b)) => crate::checksum::sums_agree(a, b),
             _ => false,
         }
     }

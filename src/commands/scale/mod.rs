@@ -105,7 +105,7 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
     let structures = chosen_structures(args.structures.as_deref())?;
     crate::output::check_folder(&args.out, &FILES)?;
     let probe_mb = args.probe_mb.unwrap_or(PROBE_MB);
-    admit_smallest(&structures, probe_mb)?;
+    let first_estimates = admit_smallest(&structures, probe_mb)?;
     // The build's facts as the run starts (its commit is the binary's, not a later edit's).
     let machine = topolab_harness::machine::facts(&topolab_baselines::openmesh_description());
     let memory_available = limits::available().unwrap_or(0);
@@ -121,8 +121,8 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
         .filter(|&n| n <= max_triangles)
         .collect();
     let mut cells = Vec::new();
-    for (i, name) in structures.iter().enumerate() {
-        climb(name, &sizes, &mut cells, (i + 1, structures.len()));
+    for (i, (name, first)) in structures.iter().zip(first_estimates).enumerate() {
+        climb(name, first, &sizes, &mut cells, (i + 1, structures.len()));
     }
     let mut notes = disagreements(&cells);
     let mapped_triangles = args
@@ -215,20 +215,22 @@ fn chosen_structures(asked: Option<&[String]>) -> Result<Vec<String>, Failure> {
 
 /// Refuses (exit code 2) a run the memory cannot start: the probe's two arrays, or the smallest
 /// size of every structure asked for, above what is available (a structure that alone does
-/// not fit is shown refused instead).
-fn admit_smallest(structures: &[String], probe_mb: u64) -> Result<(), Failure> {
-    let smallest = structures
+/// not fit is shown refused instead). Returns each structure's estimate for the smallest size,
+/// which its climb starts from.
+fn admit_smallest(structures: &[String], probe_mb: u64) -> Result<Vec<(u64, String)>, Failure> {
+    let first: Vec<(u64, String)> = structures
         .iter()
-        .map(|s| estimate(s, LADDER[0], None).0)
-        .min()
-        .unwrap_or(0);
+        .map(|s| estimate(s, LADDER[0], None))
+        .collect();
+    let smallest = first.iter().map(|(bytes, _)| *bytes).min().unwrap_or(0);
     limits::admit(
         &format!(
             "the scale run (its memory probe, then {} triangles)",
             LADDER[0]
         ),
         smallest.max(2 * (probe_mb << 20)),
-    )
+    )?;
+    Ok(first)
 }
 
 /// A structure's family.
@@ -287,11 +289,21 @@ pub(crate) fn estimate(
 }
 
 /// One structure up the ladder: each size measured in a process of its own until one is
-/// refused (it would not fit) or fails.
-fn climb(name: &str, sizes: &[u64], cells: &mut Vec<ScaleCell>, (i, of): (usize, usize)) {
+/// refused (it would not fit) or fails. `first` is the estimate of the smallest size.
+fn climb(
+    name: &str,
+    first: (u64, String),
+    sizes: &[u64],
+    cells: &mut Vec<ScaleCell>,
+    (i, of): (usize, usize),
+) {
     let mut previous: Option<(u64, Measure)> = None;
+    let mut first = Some(first);
     for &n in sizes {
-        let (estimate_bytes, basis) = estimate(name, n, previous.as_ref().map(|(n, m)| (*n, m)));
+        let (estimate_bytes, basis) = match (&previous, first.take()) {
+            (None, Some(first)) => first,
+            _ => estimate(name, n, previous.as_ref().map(|(n, m)| (*n, m))),
+        };
         if let Some(available_bytes) = limits::exceeds_available(estimate_bytes) {
             eprintln!(
                 "scale [{i}/{of}] {name} at {n} triangles: refused, needs about {}, {} available",
