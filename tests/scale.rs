@@ -135,6 +135,13 @@ fn the_che_file_answers_as_the_in_memory_che_and_opens_in_milliseconds() {
     assert!(!in_memory.is_null());
     assert_eq!(&run["first_sweep"]["check"], in_memory);
     assert_eq!(&run["later_sweeps"]["check"], in_memory);
+    // Two more fills of the page cache, each swept to the same answer.
+    let refills = run["refills"].as_array().unwrap();
+    assert_eq!(refills.len(), 2);
+    assert!(
+        refills.iter().all(|t| &t["check"] == in_memory),
+        "{refills:?}"
+    );
     assert_eq!(run["open_ms"].as_array().unwrap().len(), 3);
     assert!(run["file_bytes"].as_u64().unwrap() > 16_000 * 40);
     // A file this small is not swept beyond memory, and the run says why.

@@ -281,10 +281,33 @@ pub struct MappedRun {
     pub later_sweeps: Timing,
     /// Page faults of the later sweeps, all runs.
     pub later_faults: Faults,
+    /// Without a memory limit: the later sweeps again after each further fill of the page
+    /// cache (the file unmapped, its pages dropped, the file opened and verified again, which
+    /// reads it in anew). Where the page cache places a file's pages changes a warm sweep's
+    /// time from one fill to the next while the runs of one fill agree (docs/scale.md), so the
+    /// warm figure is the median over fills ([`MappedRun::warm`]). Empty in a limited run,
+    /// whose sweeps read the disk.
+    #[serde(default)]
+    pub refills: Vec<Timing>,
     /// The highest memory the cgroup charged (its resident memory and page cache), bytes.
     pub group_peak_bytes: Option<u64>,
     /// The in-memory CHE's R00 sweep result on the same torus, when the run measured it.
     pub in_memory_check: Option<Check>,
+}
+
+impl MappedRun {
+    /// The later sweeps of every fill of the page cache: the first fill's, then the refills'.
+    pub fn fills(&self) -> impl Iterator<Item = &Timing> {
+        std::iter::once(&self.later_sweeps).chain(&self.refills)
+    }
+
+    /// The warm sweep: the fill whose median time is the median of the fills' (the upper one
+    /// of an even count).
+    pub fn warm(&self) -> Timing {
+        let mut fills: Vec<&Timing> = self.fills().collect();
+        fills.sort_by(|a, b| a.ns.total_cmp(&b.ns));
+        *fills[fills.len() / 2]
+    }
 }
 
 #[cfg(test)]
@@ -329,5 +352,42 @@ mod tests {
         });
         assert_eq!((t.reps, calls), (1, 2));
         assert_eq!(t.check, Check::Exact(6));
+    }
+
+    #[test]
+    fn the_warm_sweep_of_a_mapped_file_is_the_median_fill() {
+        let at = |ns: f64| Timing {
+            ns,
+            min: ns,
+            max: ns,
+            reps: 3,
+            check: Check::Exact(1),
+        };
+        let mut run = MappedRun {
+            triangles: 1,
+            level: 2,
+            file_bytes: 1,
+            convert_s: 0.0,
+            open_ms: vec![],
+            verify_ms: 0.0,
+            memory_limit: None,
+            limit_how: String::new(),
+            first_sweep: at(90.0),
+            first_faults: Faults::default(),
+            later_sweeps: at(20.0),
+            later_faults: Faults::default(),
+            refills: vec![],
+            group_peak_bytes: None,
+            in_memory_check: None,
+        };
+        // One fill (a limited run, or a run recorded before the refills): its own sweeps.
+        assert_eq!(run.warm().ns, 20.0);
+        // The slow first fill is outvoted; the cold first sweep never counts.
+        run.refills = vec![at(11.0), at(12.0)];
+        assert_eq!(run.warm().ns, 12.0);
+        assert_eq!(run.fills().count(), 3);
+        // An even count takes the upper of the two middle fills.
+        run.refills.push(at(10.0));
+        assert_eq!(run.warm().ns, 12.0);
     }
 }

@@ -231,8 +231,8 @@ fn target_tuples(r: &ScaleResults) -> Vec<Tuple> {
     let large = at(256_000_000).map(|t| (t, "in memory")).or_else(|| {
         mapped_whole.map(|m| {
             (
-                m.later_sweeps,
-                "from the memory-mapped .che file, warm (the in-memory build was refused)",
+                m.warm(),
+                "from the memory-mapped .che file, warm: the median of its fills of the page cache (the in-memory build was refused)",
             )
         })
     });
@@ -454,18 +454,18 @@ fn cells(h: &mut String, r: &ScaleResults) {
 }
 
 fn mapped(h: &mut String, r: &ScaleResults) {
-    h.push_str("<h2>The CHE from a memory-mapped file</h2><div class=read><b>How to read it.</b> A torus written by <code>topolab convert --to che</code> (docs/che-format.md) and opened in place: the sweeping process first drops the file's pages from the page cache, then opens it three times (the first open reads the header from the disk; opening reads the header and maps the file, whatever its size); the first sweep runs before the verification, with bounds-checked reads, every page from the disk; the verification (one pass: the checksum, every id's range) follows, then the later sweeps with the verified walk, which find the pages mapped while the file fits the memory. Where the sweeping process runs in a memory cgroup whose limit is a quarter of the file, the file cannot stay resident: every pass reads most of it from the disk again, and the answers are still exact (compared with the in-memory CHE's on the same torus where the run built one, and between the sweeps of the file). Faults count the kernel's faults, not pages: readahead brings many pages per major fault.</div>");
+    h.push_str("<h2>The CHE from a memory-mapped file</h2><div class=read><b>How to read it.</b> A torus written by <code>topolab convert --to che</code> (docs/che-format.md) and opened in place: the sweeping process first drops the file's pages from the page cache, then opens it three times (the first open reads the header from the disk; opening reads the header and maps the file, whatever its size); the first sweep runs before the verification, with bounds-checked reads, every page from the disk; the verification (one pass: the checksum, every id's range) follows, then the later sweeps with the verified walk, which find the pages mapped while the file fits the memory. Without a limit, the page cache is filled twice more (the file unmapped, its pages dropped, the file opened and verified again) and swept after each fill: where the kernel places the file's pages changes the warm time from one fill to the next while the runs of one fill agree, so the warm figure is the median over the fills. Where the sweeping process runs in a memory cgroup whose limit is a quarter of the file, the file cannot stay resident: every pass reads most of it from the disk again, and the answers are still exact (compared with the in-memory CHE's on the same torus where the run built one, and between the sweeps of the file). Faults count the kernel's faults, not pages: readahead brings many pages per major fault.</div>");
     if r.mapped.is_empty() {
         h.push_str("<p>This run opened no .che file.</p>");
         return;
     }
-    h.push_str("<table><tr><th>triangles</th><th>level</th><th>file</th><th>convert</th><th>opens</th><th>verify</th><th class=l>memory limit</th><th>first sweep ns/vertex (faults minor, major)</th><th>later sweeps ns/vertex (faults)</th><th>peak charged to the group</th><th>result</th></tr>");
+    h.push_str("<table><tr><th>triangles</th><th>level</th><th>file</th><th>convert</th><th>opens</th><th>verify</th><th class=l>memory limit</th><th>first sweep ns/vertex (faults minor, major)</th><th>later sweeps ns/vertex (faults)</th><th>warm after each fill of the page cache, ns/vertex</th><th>peak charged to the group</th><th>result</th></tr>");
     for m in &r.mapped {
         let limit = m
             .memory_limit
             .map_or("the machine's".to_string(), |b| bytes(b as f64));
         let agree = match m.in_memory_check {
-            Some(c) if c.agrees(m.later_sweeps.check) && c.agrees(m.first_sweep.check) => {
+            Some(c) if c.agrees(m.first_sweep.check) && m.fills().all(|t| c.agrees(t.check)) => {
                 "the in-memory CHE's".to_string()
             }
             Some(Check::Exact(c)) => format!("<b>differs from the in-memory CHE's ({c:x})</b>"),
@@ -473,7 +473,7 @@ fn mapped(h: &mut String, r: &ScaleResults) {
             None if r.mapped.iter().all(|o| {
                 o.triangles != m.triangles
                     || (o.first_sweep.check.agrees(m.first_sweep.check)
-                        && o.later_sweeps.check.agrees(m.first_sweep.check))
+                        && o.fills().all(|t| t.check.agrees(m.first_sweep.check)))
             }) =>
             {
                 "not compared with an in-memory CHE (none at this size); every sweep of the file the same, with and without the limit".to_string()
@@ -481,9 +481,15 @@ fn mapped(h: &mut String, r: &ScaleResults) {
             None => "<b>differs between the sweeps of the file</b>".to_string(),
         };
         let opens: Vec<String> = m.open_ms.iter().map(|t| format!("{t:.3}")).collect();
+        let fills = if m.refills.is_empty() {
+            "–".to_string()
+        } else {
+            let each: Vec<String> = m.fills().map(|t| ns(t.ns)).collect();
+            format!("{} (median {})", each.join(", "), ns(m.warm().ns))
+        };
         let _ = write!(
             h,
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.1} s</td><td>{} ms</td><td>{:.0} ms</td><td class=l>{} ({})</td><td>{} ({}, {})</td><td>{} ({}, {})</td><td>{}</td><td class=l>{agree}</td></tr>",
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.1} s</td><td>{} ms</td><td>{:.0} ms</td><td class=l>{} ({})</td><td>{} ({}, {})</td><td>{} ({}, {})</td><td>{fills}</td><td>{}</td><td class=l>{agree}</td></tr>",
             count(m.triangles), m.level, bytes(m.file_bytes as f64), m.convert_s, opens.join(", "), m.verify_ms,
             limit, esc(&m.limit_how),
             ns(m.first_sweep.ns), m.first_faults.minor, m.first_faults.major,
