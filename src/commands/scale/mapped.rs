@@ -24,7 +24,7 @@ const LATER_BUDGET_S: f64 = 2.0;
 const LATER_RUNS: usize = 3;
 
 /// Fills of the page cache in the run without a memory limit, each followed by the later
-/// sweeps: the warm time changed by up to 2× from one fill to the next on the project's
+/// sweeps: the warm time changed by nearly 2× from one fill to the next on the project's
 /// machine (docs/scale.md), so one fill is not a measurement of it.
 const FILLS: usize = 3;
 
@@ -160,6 +160,22 @@ fn drop_pages(file: &Path) -> Result<(), Failure> {
         .map_err(|e| failure(file, "cannot drop its pages from the page cache", e))
 }
 
+fn open_level2(file: &Path) -> Result<MappedCheL2, Failure> {
+    MappedCheL2::open(file).map_err(|e| failure(file, "cannot open as CHE level 2", e))
+}
+
+fn verify(m: &mut MappedCheL2, file: &Path) -> Result<(), Failure> {
+    m.verify().map_err(|e| failure(file, "does not verify", e))
+}
+
+/// The verified walk's R00 sweeps over `every` vertex: at least [`LATER_RUNS`], until
+/// [`LATER_BUDGET_S`] have gone by.
+fn warm_sweeps(m: &MappedCheL2, every: &Queries, curves: &mut BoundaryCurves) -> Timing {
+    time_kernel_runs(m.num_vertices() as u64, LATER_BUDGET_S, LATER_RUNS, || {
+        Check::Exact(kernels::run(m, Operator::R00, every, curves))
+    })
+}
+
 fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> Failure {
     Failure::usage(format!("{}: {what}: {e}", file.display()))
 }
@@ -196,8 +212,7 @@ pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure
         open_ms.push(t.elapsed().as_secs_f64() * 1e3);
         drop(opened);
     }
-    let mut m =
-        MappedCheL2::open(file).map_err(|e| failure(file, "cannot open as CHE level 2", e))?;
+    let mut m = open_level2(file)?;
     let vertices = m.num_vertices() as u64;
     let every = Queries::every_vertex(&m);
     let mut curves = BoundaryCurves::default();
@@ -214,13 +229,10 @@ pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure
         check: Check::Exact(first),
     };
     let t = Instant::now();
-    m.verify()
-        .map_err(|e| failure(file, "does not verify", e))?;
+    verify(&mut m, file)?;
     let verify_ms = t.elapsed().as_secs_f64() * 1e3;
     let before = faults();
-    let later_sweeps = time_kernel_runs(vertices, LATER_BUDGET_S, LATER_RUNS, || {
-        Check::Exact(kernels::run(&m, Operator::R00, &every, &mut curves))
-    });
+    let later_sweeps = warm_sweeps(&m, &every, &mut curves);
     let later_faults = faults().since(before);
     // Each further fill: unmapped first (the kernel does not drop pages that are mapped), then
     // the verification reads the file into the page cache again.
@@ -229,16 +241,9 @@ pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure
         for _ in 1..FILLS {
             drop(m);
             drop_pages(file)?;
-            m = MappedCheL2::open(file)
-                .map_err(|e| failure(file, "cannot open as CHE level 2", e))?;
-            m.verify()
-                .map_err(|e| failure(file, "does not verify", e))?;
-            refills.push(time_kernel_runs(
-                vertices,
-                LATER_BUDGET_S,
-                LATER_RUNS,
-                || Check::Exact(kernels::run(&m, Operator::R00, &every, &mut curves)),
-            ));
+            m = open_level2(file)?;
+            verify(&mut m, file)?;
+            refills.push(warm_sweeps(&m, &every, &mut curves));
         }
     }
     let run = MappedRun {
