@@ -185,7 +185,7 @@ fn status(call: &'static str, code: i32) -> Result<()> {
 }
 
 /// Which CGAL class a [`Cgal`] holds: what differs between the two (see the module docs).
-pub trait CgalStructure {
+pub trait CgalStructure: 'static {
     /// The structure's name in the lab (CLI, JSON, report).
     const NAME: &'static str;
     /// The shim's structure code.

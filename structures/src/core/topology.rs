@@ -119,7 +119,10 @@ impl BoundaryCurves {
 ///   check covers them (the index half-edge's per-half-edge arrays).
 /// - **Baselines** (OpenMesh) are used as their documented API is used, inside their own
 ///   loops ([`MeshTopology::native`]), and are not re-tuned.
-pub trait MeshTopology: Sized {
+///
+/// A structure owns what it stores (`'static`): the harness holds every structure of a mesh
+/// side by side, as one kind of value, through the rounds of a measurement.
+pub trait MeshTopology: Sized + 'static {
     /// The kebab-case name used in the CLI, JSON and report.
     const NAME: &'static str;
 

@@ -101,7 +101,7 @@ use std::fmt::Write;
 ///
 /// `H` is how the storage names a half-edge while walking: a `u32` index for arrays, a
 /// reference to the record for pointers. Half-edge ids (`id`) follow [`HalfEdgeArrays`].
-pub trait HalfEdgeLinks: Sized {
+pub trait HalfEdgeLinks: Sized + 'static {
     /// A half-edge while walking.
     type H<'a>: Copy + Eq
     where

@@ -65,7 +65,7 @@ use glam::DVec3;
 use std::fmt::Write;
 
 /// Where a grid's vertices are: computed ([`Implicit`]) or stored ([`Positions`]).
-pub trait GridGeometry: Sized {
+pub trait GridGeometry: Sized + 'static {
     /// The structure's name.
     const NAME: &'static str;
     /// The geometry of a grid of `shape` with these positions, or why it cannot hold them.
