@@ -9,10 +9,11 @@ mod common;
 use common::{close, report_skip, NoMeter};
 use std::time::Duration;
 use topolab::registry::{self, StructureVisitor};
-use topolab_harness::kernels::{run, run_workload, sample_queries, Kernel, Queries, QuerySet};
+use topolab_harness::kernels::{run, run_workload, Kernel, Queries, QuerySet};
 use topolab_harness::kernels::{Workload, WorkloadBuffers};
 use topolab_harness::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
 use topolab_harness::results::{Measurement, Status, Subject};
+use topolab_harness::rounds::{round_sets, PASS};
 use topolab_structures::{
     meshes, BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, Sample,
     VertexId, VertexList,
@@ -95,24 +96,20 @@ fn timed_cells() -> Vec<(Subject, Kernel)> {
 fn cells_are_native_with_generic_checksums<M: MeshTopology>(mesh: &str, soup: &PolygonSoup) {
     // Fewer sampled queries than elements, so that a kernel answering other queries than the
     // sample's (every element, or every edge of a sampled face) gives another checksum.
-    let set = sample_queries(soup, 8, 3);
     let case = MeshCase {
         name: mesh,
         family: mesh,
         soup,
-        queries: &set,
+        seed: 3,
     };
-    let plan = Plan {
-        cell_budget: Duration::from_millis(1),
-        cell_max: Duration::from_secs(60),
-        min_reps: 1,
-        max_reps: 2,
-        light: false,
-    };
+    let plan = Plan::fixed(Duration::from_secs(60), 2, 8, false);
     let (mut out, mut est) = (Vec::new(), Estimator::default());
     measure_structure::<M>(&case, &plan, &NoMeter, &mut est, &mut out).unwrap();
     let m = M::from_soup(soup).unwrap();
-    let (all, sampled) = (Queries::all(&m, soup), Queries::sampled(&m, &set));
+    // A sampled cell's checksum is its first round's first pass.
+    let set = &round_sets(&case, &plan)[0];
+    let all = Queries::all(&m, soup);
+    let sampled = Queries::sampled(&m, set).passes(PASS).remove(0);
     let (mut curves, mut buf) = (BoundaryCurves::default(), WorkloadBuffers::default());
     let cells = timed_cells();
     assert_eq!(out.len(), cells.len(), "{} on {mesh}: {out:?}", M::NAME);

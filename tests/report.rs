@@ -73,12 +73,31 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
             assert!(m["ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
         }
     }
-    // Construction: warm builds (`ns_per_item`) and cold ones beside them.
+    // Construction: warm builds (`ns_per_item`) everywhere, cold ones beside them on the
+    // largest torus, whose table shows them.
     for m in ms
         .iter()
         .filter(|m| m["operator"] == "construction" && m["status"] == "measured")
     {
-        assert!(m["cold_ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+        assert!(m["ns_per_item"].as_f64().unwrap() > 0.0, "{m}");
+        assert_eq!(
+            m["cold_ns_per_item"].as_f64().is_some_and(|c| c > 0.0),
+            m["mesh"] == "torus-800",
+            "{m}"
+        );
+    }
+    // Every measured cell has its interval around its value, from its rounds.
+    for m in ms.iter().filter(|m| m["status"] == "measured") {
+        let ci = m["ns_per_item_ci"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{m}"));
+        let (lo, hi, x) = (
+            ci[0].as_f64().unwrap(),
+            ci[1].as_f64().unwrap(),
+            m["ns_per_item"].as_f64().unwrap(),
+        );
+        assert!(lo <= x && x <= hi, "{m}");
+        assert!(m["rounds"].as_u64().unwrap() >= 6, "{m}");
     }
     // A limit on the sweeps of the structures that declare their access, none on the others.
     let sweep = |s: &str, op: &str| {
@@ -288,12 +307,15 @@ fn findings_are_written_from_the_results(out: &Path, ms: &[serde_json::Value]) {
         } else {
             format!("{ns:.1}")
         };
+        // A row tied with the one above it (their intervals overlap) is marked ≈.
         let at = md
             .find(&format!("| {s} |"))
+            .or_else(|| md.find(&format!("| ≈ {s} |")))
             .unwrap_or_else(|| panic!("{s} is not listed in\n{md}"));
         let line = md[at..].lines().next().unwrap();
+        // The median, then its interval in brackets.
         assert!(
-            line.contains(&format!("| {shown} |")),
+            line.contains(&format!("| {shown} [")),
             "{s}: {shown} not in {line}"
         );
         rows.push((at, ns));

@@ -6,8 +6,10 @@
 //! are numbered or where each face's cycle starts. Structures that disagree stop the report.
 
 use crate::checksum::mix;
+use crate::timing::interval::Interval;
 use crate::timing::median;
-use std::time::Instant;
+use crate::timing::meter::MemoryMeter;
+use crate::timing::turns::Stopwatch;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{FaceId, MeshTopology, Result};
 
@@ -59,18 +61,53 @@ pub struct ChangingRow {
     pub faces: usize,
     /// The structure.
     pub structure: String,
-    /// Median seconds of the runs (the workload only: each run starts from a fresh build,
-    /// not timed).
+    /// Median seconds of the rounds (the workload only: each run starts from a fresh build,
+    /// not timed), in the measuring thread's CPU time.
     pub seconds: f64,
-    /// Runs.
+    /// Runs: one a round.
     pub runs: usize,
     /// Nanoseconds per face of the input, median.
     pub ns_per_face: f64,
+    /// The interval of that median ([`Interval::of_median`]), ns per face.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ns_per_face_ci: Option<[f64; 2]>,
+    /// Seconds of each round, in round order (every structure of the mesh ran in every
+    /// round, so round `i` of two rows was taken in turns).
+    pub round_seconds: Vec<f64>,
     /// The resulting mesh.
     pub result: MeshChecksum,
     /// The costs the structure declares for the operations the workload does ([`declared`]);
     /// empty for a baseline run natively.
     pub declared: String,
+}
+
+impl ChangingRow {
+    /// The row of `structure`'s `rounds` of `workload` on `mesh` of `faces` faces.
+    pub fn of(
+        workload: Changing,
+        (mesh, faces): (&str, usize),
+        structure: &str,
+        rounds: &Rounds,
+        declared: String,
+    ) -> Self {
+        let per_face = 1e9 / faces.max(1) as f64;
+        let seconds = rounds.median();
+        ChangingRow {
+            workload,
+            mesh: mesh.into(),
+            faces,
+            structure: structure.into(),
+            seconds,
+            runs: rounds.seconds.len(),
+            ns_per_face: seconds * per_face,
+            ns_per_face_ci: rounds
+                .interval()
+                .map(|i| [i.low * per_face, i.high * per_face]),
+            round_seconds: rounds.seconds.clone(),
+            result: rounds.result,
+            declared,
+        }
+    }
 }
 
 /// The costs `M` declares for the operations of `workload`, as the report shows them
@@ -115,13 +152,16 @@ pub struct LocalRefinementRow {
     pub mesh: String,
     /// The structure.
     pub structure: String,
-    /// Median seconds of the runs (the refinement only: each run starts from a fresh build,
-    /// not timed).
+    /// Median seconds of the rounds (the refinement only: each run starts from a fresh build,
+    /// not timed), in the measuring thread's CPU time.
     pub seconds: f64,
-    /// Runs.
+    /// Runs: one a round.
     pub runs: usize,
     /// Nanoseconds per edge split, median.
     pub ns_per_split: f64,
+    /// The interval of that median ([`Interval::of_median`]), ns per split.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ns_per_split_ci: Option<[f64; 2]>,
     /// The refined mesh, the same on every structure (the refinement does not depend on it).
     pub result: MeshChecksum,
     /// The costs the structure declares for the operations the refinement does.
@@ -152,33 +192,87 @@ pub struct LocalRefinementCase {
     pub uniform_faces: u64,
 }
 
-/// Times `workload` `runs` times: each run builds a fresh mesh with `build` (not timed), runs
-/// `work` on it (timed) and checks the result with `check`; every run must give the same
-/// result.
-pub fn time<T>(
-    runs: usize,
-    mut build: impl FnMut() -> Result<T>,
-    mut work: impl FnMut(&mut T) -> Result<()>,
-    check: impl Fn(&T) -> MeshChecksum,
-) -> Result<(f64, MeshChecksum), String> {
-    let mut times = Vec::with_capacity(runs);
-    let mut result: Option<MeshChecksum> = None;
-    for _ in 0..runs.max(1) {
+/// One structure's runs of a changing workload, one call a run: each builds a fresh mesh (not
+/// timed), times the work on it in the measuring thread's CPU time ([`Stopwatch`]) and answers
+/// the seconds and the resulting mesh's [`MeshChecksum`].
+pub type Runner<'a> = Box<dyn FnMut(&dyn MemoryMeter) -> Result<(f64, MeshChecksum), String> + 'a>;
+
+/// The [`Runner`] of `work` on meshes from `build`, checked with `check`.
+pub fn runner<'a, T: 'a>(
+    mut build: impl FnMut() -> Result<T> + 'a,
+    mut work: impl FnMut(&mut T) -> Result<()> + 'a,
+    check: impl Fn(&T) -> MeshChecksum + 'a,
+) -> Runner<'a> {
+    Box::new(move |meter| {
         let mut mesh = build().map_err(|e| e.to_string())?;
-        let start = Instant::now();
+        let watch = Stopwatch::start(meter);
         work(&mut mesh).map_err(|e| e.to_string())?;
-        times.push(start.elapsed().as_secs_f64());
-        let got = check(&mesh);
-        match result {
-            Some(r) if r != got => {
-                return Err(format!("two runs gave different meshes: {r:?} and {got:?}"))
-            }
-            _ => result = Some(got),
-        }
-        drop(mesh);
+        let seconds = watch.ns() * 1e-9;
+        Ok((seconds, check(&mesh)))
+    })
+}
+
+/// What [`in_rounds`] measured of one structure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rounds {
+    /// Seconds of each round, in round order.
+    pub seconds: Vec<f64>,
+    /// The mesh every run made.
+    pub result: MeshChecksum,
+}
+
+impl Rounds {
+    /// The median seconds.
+    pub fn median(&self) -> f64 {
+        let mut v = self.seconds.clone();
+        v.sort_by(f64::total_cmp);
+        median(&v)
     }
-    times.sort_by(f64::total_cmp);
-    Ok((median(&times), result.expect("one run at least")))
+
+    /// The interval of the median, seconds ([`Interval::of_median`]).
+    pub fn interval(&self) -> Option<Interval> {
+        Interval::of_median(&self.seconds)
+    }
+}
+
+/// Runs every runner of `runners` once per round for `rounds` rounds, in a fresh random order
+/// each round (seeded by `seed`), as the size sweep's rounds run structures
+/// ([`crate::rounds`]): a change of load hits the structures of a round alike. Every run of a
+/// structure must make the mesh its first run made; a failed run names its structure.
+pub fn in_rounds(
+    runners: &mut [(&str, Runner<'_>)],
+    rounds: usize,
+    seed: u64,
+    meter: &dyn MemoryMeter,
+) -> Result<Vec<Rounds>, String> {
+    use rand::seq::SliceRandom;
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut out: Vec<Option<Rounds>> = vec![None; runners.len()];
+    for round in 1..=rounds.max(1) {
+        let mut order: Vec<usize> = (0..runners.len()).collect();
+        order.shuffle(&mut rng);
+        for i in order {
+            let (name, run) = &mut runners[i];
+            let (seconds, got) = run(meter).map_err(|e| format!("{name}, round {round}: {e}"))?;
+            match &mut out[i] {
+                None => {
+                    out[i] = Some(Rounds {
+                        seconds: vec![seconds],
+                        result: got,
+                    })
+                }
+                Some(r) if r.result != got => {
+                    return Err(format!(
+                        "{name}: two runs gave different meshes: {:?} and {got:?}",
+                        r.result
+                    ))
+                }
+                Some(r) => r.seconds.push(seconds),
+            }
+        }
+    }
+    Ok(out.into_iter().flatten().collect())
 }
 
 /// Fails, loudly, when two structures changed the same mesh into different meshes.
@@ -224,23 +318,63 @@ mod tests {
     use topolab_structures::algorithms::changing::Changing;
     use topolab_structures::{meshes, IndexHalfEdge, PointerHalfEdge, PolygonSoup};
 
+    use crate::timing::meter::Uncounted as NoMeter;
+
     fn row<M: MeshTopology + topolab_structures::MeshEdit>(
         soup: &PolygonSoup,
         w: Changing,
     ) -> ChangingRow {
-        let (seconds, result) =
-            time(2, || M::from_soup(soup), |m| w.run(m), mesh_checksum).expect("runs");
-        ChangingRow {
-            workload: w,
-            mesh: "torus".into(),
-            faces: soup.num_faces(),
-            structure: M::NAME.into(),
-            seconds,
-            runs: 2,
-            ns_per_face: seconds * 1e9 / soup.num_faces() as f64,
-            result,
-            declared: declared::<M>(w),
-        }
+        let mut runners = [(
+            M::NAME,
+            runner(|| M::from_soup(soup), move |m| w.run(m), mesh_checksum),
+        )];
+        let rounds = in_rounds(&mut runners, 2, 1, &NoMeter).expect("runs");
+        let row = ChangingRow::of(
+            w,
+            ("torus", soup.num_faces()),
+            M::NAME,
+            &rounds[0],
+            declared::<M>(w),
+        );
+        assert_eq!((row.runs, row.round_seconds.len()), (2, 2));
+        row
+    }
+
+    #[test]
+    fn rounds_run_every_runner_and_a_run_that_changes_its_mesh_fails() {
+        let soup = meshes::torus(6, 5);
+        let calls = std::cell::Cell::new(0);
+        let mut runners: Vec<(&str, Runner)> = vec![
+            (
+                "a",
+                runner(
+                    || IndexHalfEdge::from_soup(&soup),
+                    |_| Ok(()),
+                    mesh_checksum,
+                ),
+            ),
+            (
+                "b",
+                runner(
+                    || IndexHalfEdge::from_soup(&soup),
+                    |_| Ok(()),
+                    move |m| {
+                        calls.set(calls.get() + 1);
+                        let mut c = mesh_checksum(m);
+                        c.face_hash ^= (calls.get() == 3) as u64;
+                        c
+                    },
+                ),
+            ),
+        ];
+        let err = in_rounds(&mut runners, 4, 7, &NoMeter).unwrap_err();
+        assert!(
+            err.starts_with("b: two runs gave different meshes"),
+            "{err}"
+        );
+        let rounds = in_rounds(&mut runners[..1], 3, 7, &NoMeter).unwrap();
+        assert_eq!(rounds[0].seconds.len(), 3);
+        assert!(rounds[0].interval().is_some());
     }
 
     #[test]

@@ -62,6 +62,15 @@ fn cell<'a>(
     })
 }
 
+/// Whether two cells' intervals separate (they can be told apart); without intervals, whether
+/// their medians differ.
+fn interval_separates(a: &Measurement, b: &Measurement) -> bool {
+    match (a.ns_per_item_ci, b.ns_per_item_ci) {
+        (Some([a0, a1]), Some([b0, b1])) => a1 < b0 || b1 < a0,
+        _ => a.ns_per_item != b.ns_per_item,
+    }
+}
+
 /// A number of nanoseconds with the digits it deserves.
 fn ns(x: f64) -> String {
     if x >= 100.0 {
@@ -89,9 +98,9 @@ fn choosing(md: &mut String, r: &Results) {
         );
         (
             build.and_then(|m| Some(m.bytes? as f64 / m.triangles.max(1) as f64)),
-            build.and_then(|m| m.ns_per_item),
-            sweep.and_then(|m| m.ns_per_item),
-            smooth.and_then(|m| m.ns_per_item),
+            build,
+            sweep,
+            smooth,
         )
     };
     let mut rows: Vec<_> = r
@@ -102,23 +111,37 @@ fn choosing(md: &mut String, r: &Results) {
     if rows.iter().all(|(_, (_, _, sweep, _))| sweep.is_none()) {
         return;
     }
+    let time = |m: Option<&Measurement>| m.and_then(|m| m.ns_per_item);
     rows.sort_by(|a, b| {
         let key = |x: Option<f64>| x.unwrap_or(f64::INFINITY);
-        key(a.1 .2).total_cmp(&key(b.1 .2))
+        key(time(a.1 .2)).total_cmp(&key(time(b.1 .2)))
     });
     let _ = writeln!(
         md,
-        "## The structures on {mesh} ({tri} triangles)\n\nSorted by the vertex 1-ring sweep (R00 over every vertex); medians of the size sweep's runs, structures timed one after another. Bytes: the built structure's heap, geometry included, every block counted by its usable size.\n\n| structure | bytes/triangle | construction ns/face | R00 sweep ns/vertex | smoothing ns/vertex |\n|---|--:|--:|--:|--:|"
+        "## The structures on {mesh} ({tri} triangles)\n\nSorted by the vertex 1-ring sweep (R00 over every vertex); each time the median of its rounds (each round on fresh builds of every structure, in a random order) with its interval in brackets. A row marked ≈ cannot be told apart from the row above it by the sweep: their intervals overlap. Bytes: the built structure's heap, geometry included, every block counted by its usable size.\n\n| structure | bytes/triangle | construction ns/face | R00 sweep ns/vertex | smoothing ns/vertex |\n|---|--:|--:|--:|--:|"
     );
-    let opt = |x: Option<f64>| x.map(ns).unwrap_or_else(|| "–".into());
+    let opt = |m: Option<&Measurement>| match m.and_then(|m| Some((m.ns_per_item?, m))) {
+        Some((x, m)) => match m.ns_per_item_ci {
+            Some([lo, hi]) => format!("{} [{}–{}]", ns(x), ns(lo), ns(hi)),
+            None => ns(x),
+        },
+        None => "–".into(),
+    };
     let (measured, absent): (Vec<_>, Vec<_>) =
         rows.iter().partition(|(_, (bytes, build, sweep, smooth))| {
-            [bytes, build, sweep, smooth].iter().any(|x| x.is_some())
+            bytes.is_some() || build.is_some() || sweep.is_some() || smooth.is_some()
         });
+    let mut above: Option<&Measurement> = None;
     for (name, (bytes, build, sweep, smooth)) in measured {
+        let tied = match (above, sweep) {
+            (Some(a), Some(b)) => !interval_separates(a, b),
+            _ => false,
+        };
+        above = sweep.or(above);
         let _ = writeln!(
             md,
-            "| {name} | {} | {} | {} | {} |",
+            "| {}{name} | {} | {} | {} | {} |",
+            if tied { "≈ " } else { "" },
             bytes
                 .map(|b| format!("{b:.0}"))
                 .unwrap_or_else(|| "–".into()),
@@ -145,7 +168,7 @@ fn target_line(what: &str, ratio: Option<f64>, spread: Option<&Spread>, goal: f6
         return format!("| {what} | not measured | ≤ {goal}× | – |");
     };
     let spread = match spread {
-        Some(s) => format!("{:.2}–{:.2}, {} rounds", s.min, s.max, s.rounds),
+        Some(s) => format!("interval {:.2}–{:.2}, {} rounds", s.low, s.high, s.rounds),
         None => "one after the other".into(),
     };
     let met = if v <= goal { "met" } else { "**missed**" };

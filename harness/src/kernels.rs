@@ -94,8 +94,52 @@ pub fn sample_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
     };
     let vertices = pick(&mut rng, nv);
     let faces = pick(&mut rng, nf);
+    let edges = corner_edges(soup, pick(&mut rng, nc));
+    QuerySet {
+        vertices,
+        faces,
+        edges,
+    }
+}
+
+/// A fresh draw of `count` queries of each kind for `soup`, in random order (not sorted by id:
+/// the queries of a sampled round are random accesses, as a user's queries are): without
+/// repetition when the mesh has that many elements, with repetition on a smaller mesh. The
+/// sampled rounds of the report draw one set per round ([`crate::rounds`]).
+pub fn draw_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
+    use rand::seq::SliceRandom;
+    use rand::Rng;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (nv, nf, nc) = (soup.num_vertices(), soup.num_faces(), soup.num_corners());
+    let pick = |rng: &mut ChaCha8Rng, n: usize| -> Vec<u32> {
+        if n == 0 {
+            return Vec::new();
+        }
+        let mut v: Vec<u32> = if count <= n {
+            sample(rng, n, count)
+                .into_iter()
+                .map(|i| i as u32)
+                .collect()
+        } else {
+            (0..count).map(|_| rng.random_range(0..n) as u32).collect()
+        };
+        v.shuffle(rng);
+        v
+    };
+    let vertices = pick(&mut rng, nv);
+    let faces = pick(&mut rng, nf);
+    let edges = corner_edges(soup, pick(&mut rng, nc));
+    QuerySet {
+        vertices,
+        faces,
+        edges,
+    }
+}
+
+/// The edges of `corners` of `soup` as (end, end, face of the corner).
+fn corner_edges(soup: &PolygonSoup, corners: Vec<u32>) -> Vec<(u32, u32, u32)> {
     let offsets = soup.offsets();
-    let edges = pick(&mut rng, nc)
+    corners
         .into_iter()
         .map(|c| {
             let c = c as usize;
@@ -103,12 +147,7 @@ pub fn sample_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
             let n = soup.next_corner(c, f);
             (soup.indices()[c], soup.indices()[n], f as u32)
         })
-        .collect();
-    QuerySet {
-        vertices,
-        faces,
-        edges,
-    }
+        .collect()
 }
 
 /// Query elements in one structure's ids, prepared outside any timed region.
@@ -139,6 +178,16 @@ impl Queries {
         let mut edges = Vec::with_capacity(m.num_edges());
         m.for_each_edge(|e| edges.push(e));
         let by_ends = edges_by_ends(m, &edges);
+        Self::all_by(m, soup, edges, &by_ends)
+    }
+
+    /// [`Queries::all`] from `m`'s `edges` and their look-up table by end vertices.
+    fn all_by<M: MeshTopology>(
+        m: &M,
+        soup: &PolygonSoup,
+        edges: Vec<EdgeId>,
+        by_ends: &HashMap<u64, EdgeId>,
+    ) -> Self {
         let mut edge_faces = Vec::with_capacity(soup.num_corners());
         for (f, face) in soup.faces().enumerate() {
             for (i, &a) in face.iter().enumerate() {
@@ -180,7 +229,25 @@ impl Queries {
     pub fn sampled<M: MeshTopology>(m: &M, set: &QuerySet) -> Self {
         let mut edges = Vec::with_capacity(m.num_edges());
         m.for_each_edge(|e| edges.push(e));
+        Self::sampled_by(&edges_by_ends(m, &edges), set)
+    }
+
+    /// Every element of `m` (as [`Queries::all`]) and each of `sets` in `m`'s ids (as
+    /// [`Queries::sampled`]), with one look-up table of edges for all of them.
+    pub fn all_and_sampled<M: MeshTopology>(
+        m: &M,
+        soup: &PolygonSoup,
+        sets: &[QuerySet],
+    ) -> (Self, Vec<Self>) {
+        let mut edges = Vec::with_capacity(m.num_edges());
+        m.for_each_edge(|e| edges.push(e));
         let by_ends = edges_by_ends(m, &edges);
+        let sampled = sets.iter().map(|s| Self::sampled_by(&by_ends, s)).collect();
+        (Self::all_by(m, soup, edges, &by_ends), sampled)
+    }
+
+    /// `set` in the ids of the structure whose edges by end vertices are `by_ends`.
+    fn sampled_by(by_ends: &HashMap<u64, EdgeId>, set: &QuerySet) -> Self {
         let edge = |a: u32, b: u32| by_ends[&edge_key(a, b)];
         Self {
             vertices: set.vertices.iter().map(|&v| VertexId(v)).collect(),
@@ -210,6 +277,34 @@ impl Queries {
             edge_faces: pick(&self.edge_faces, n),
             dense: false,
         }
+    }
+
+    /// This set cut into passes of `size` queries of each kind: pass `j` holds the `j`-th
+    /// `size` vertices, edges, faces and (edge, face) pairs (fewer in the last pass of a kind,
+    /// none past its end). The passes of a sampled round ([`crate::rounds`]).
+    pub fn passes(&self, size: usize) -> Vec<Self> {
+        let size = size.max(1);
+        let longest = [
+            self.vertices.len(),
+            self.edges.len(),
+            self.faces.len(),
+            self.edge_faces.len(),
+        ]
+        .into_iter()
+        .max()
+        .unwrap_or(0);
+        fn part<T: Copy>(all: &[T], j: usize, size: usize) -> Vec<T> {
+            all.iter().skip(j * size).take(size).copied().collect()
+        }
+        (0..longest.div_ceil(size))
+            .map(|j| Self {
+                vertices: part(&self.vertices, j, size),
+                edges: part(&self.edges, j, size),
+                faces: part(&self.faces, j, size),
+                edge_faces: part(&self.edge_faces, j, size),
+                dense: false,
+            })
+            .collect()
     }
 
     /// The queries `op` asks over this set, as a baseline's sampled kernel takes them

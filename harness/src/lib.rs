@@ -32,6 +32,7 @@ pub mod reads;
 pub mod repaired;
 pub mod report;
 pub mod results;
+pub mod rounds;
 pub mod scale;
 pub mod skips;
 pub mod svg;

@@ -1,14 +1,16 @@
-//! Measuring one structure on one mesh: construction (time and memory), every operator's sweep
-//! and sampled kernels, the workloads. Cells whose estimated time exceeds the budget are
-//! skipped with the estimate; checksums are compared across structures by [`cross_check`].
+//! What measuring a structure on a mesh is made of, whatever runs it: how it is built
+//! ([`Builder`]), the mesh and the plan ([`MeshCase`], [`Plan`]), which cells are too long to
+//! run ([`Estimator`]: skipped with their estimate), one kernel timed on a built structure
+//! ([`time_kernel`], the estimates' probes and the benches), and the check of every checksum
+//! across structures ([`cross_check`]). The size sweep itself runs in rounds
+//! ([`crate::rounds`]; [`measure_structure`] is one structure's rounds alone).
 //!
 //! The estimate of a cell extrapolates its run at the last smaller size of the mesh's family
 //! by the declared cost ([`Estimator`]). The first size of a family has nothing to
 //! extrapolate from, so there the estimate is the structure's time per query on this mesh
-//! times the cell's number of queries: the time per query of the operator's sampled cell
-//! (measured before its sweep for that reason), or of a probe of [`PROBE_QUERIES`] of its
-//! sampled queries when the sampled cell has not run. Without it, a single
-//! `--sizes 1000000` ran the scanning structures' quadratic sweeps in full (hours).
+//! times the cell's number of queries: the time per query of a probe of [`PROBE_QUERIES`] of
+//! its sampled queries. Without it, a single `--sizes 1000000` ran the scanning structures'
+//! quadratic sweeps in full (hours).
 //!
 //! A baseline behind an FFI ([`MeshTopology::native`]) is timed by its own loops in every
 //! cell: construction, sweeps, sampled kernels (its queries handed over in the library's own
@@ -16,14 +18,16 @@
 //! native kernel that fails is an error of the measurement, never a fallback to the generic
 //! kernel, which would time the FFI instead of the library.
 
-use crate::kernels::{run, run_workload, Kernel, Queries, QuerySet, Workload, WorkloadBuffers};
+use crate::kernels::{run, Kernel, Queries};
 use crate::results::{Measurement, Status, Subject};
+pub use crate::rounds::measure_structure;
+use crate::rounds::RoundPlan;
 pub use crate::timing::meter::MemoryMeter;
-use crate::timing::{median, time, Budget, Timing};
+use crate::timing::{time, Budget, Timing};
 use std::collections::HashMap;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use topolab_structures::{
-    BoundaryCurves, BuildFacts, Constructed, Input, MeshTopology, Operator, PolygonSoup,
+    BoundaryCurves, BuildFacts, Constructed, MeshTopology, Operator, PolygonSoup,
     SeparateConstruction,
 };
 
@@ -71,7 +75,7 @@ impl<'a, M: MeshTopology> Builder<'a, M> {
     }
 
     /// The message for a build that failed after the first one succeeded.
-    fn failure(&self, e: topolab_structures::Error) -> String {
+    pub(crate) fn failure(&self, e: topolab_structures::Error) -> String {
         if self.is_native() {
             format!("native kernel failed: {e}")
         } else {
@@ -89,23 +93,49 @@ pub struct MeshCase<'a> {
     pub family: &'a str,
     /// The mesh.
     pub soup: &'a PolygonSoup,
-    /// The sampled queries (the same for every structure).
-    pub queries: &'a QuerySet,
+    /// The seed of its sampled queries: round `r` draws with `seed + r`
+    /// ([`crate::rounds::round_sets`]), the same for every structure.
+    pub seed: u64,
 }
 
-/// Budgets of a run.
+/// How a mesh is measured.
 #[derive(Copy, Clone, Debug)]
 pub struct Plan {
-    /// Time for repeating one cell.
-    pub cell_budget: Duration,
     /// Skip a cell whose single run is estimated above this.
     pub cell_max: Duration,
-    /// At least this many timed runs per cell.
-    pub min_reps: usize,
-    /// At most this many.
-    pub max_reps: usize,
     /// Only construction and the R00 sweep (for meshes shown in one table, such as real ones).
     pub light: bool,
+    /// Whether the sampled cells are timed (a mesh whose tables show sweeps only skips them).
+    pub sampled: bool,
+    /// Only construction and the boundary operators, but every cell of a structure that stores
+    /// grids only: what the tables read of an open grid.
+    pub boundary_only: bool,
+    /// The rounds.
+    pub rounds: RoundPlan,
+    /// Sampled queries drawn per kind and round.
+    pub samples: usize,
+}
+
+impl Plan {
+    /// A plan of exactly `rounds` rounds, none extra (the first with a cold build), and
+    /// `samples` sampled queries per kind and round: for tests and probes, which check what is
+    /// measured rather than how surely.
+    pub fn fixed(cell_max: Duration, rounds: usize, samples: usize, light: bool) -> Plan {
+        Plan {
+            cell_max,
+            light,
+            sampled: true,
+            boundary_only: false,
+            rounds: RoundPlan {
+                min_rounds: rounds,
+                max_rounds: rounds,
+                extra: 0.0,
+                cold_rounds: 1,
+                seed: 1,
+            },
+            samples,
+        }
+    }
 }
 
 /// Sampled queries timed to estimate a cell with no smaller size before it: few enough that
@@ -127,19 +157,29 @@ const PROBE_BUDGET: Budget = Budget {
 /// next size's before running it.
 #[derive(Clone, Debug, Default)]
 pub struct Estimator {
-    last: HashMap<EstimatorKey, (usize, f64)>,
+    pub(crate) last: HashMap<EstimatorKey, (usize, f64)>,
 }
 
 /// (structure, family, operator, kernel).
 type EstimatorKey = (&'static str, String, Subject, Kernel);
 
 impl Estimator {
-    fn key(s: &'static str, fam: &str, subject: Subject, kernel: Kernel) -> EstimatorKey {
+    pub(crate) fn key(
+        s: &'static str,
+        fam: &str,
+        subject: Subject,
+        kernel: Kernel,
+    ) -> EstimatorKey {
         (s, fam.into(), subject, kernel)
     }
 
     /// Estimated ns of one run at `triangles`, scaling the last run by `exponent`.
-    fn estimate(&self, key: &EstimatorKey, triangles: usize, exponent: f64) -> Option<f64> {
+    pub(crate) fn estimate(
+        &self,
+        key: &EstimatorKey,
+        triangles: usize,
+        exponent: f64,
+    ) -> Option<f64> {
         self.last
             .get(key)
             .map(|&(n, ns)| ns * (triangles as f64 / n as f64).max(1.0).powf(exponent))
@@ -148,7 +188,7 @@ impl Estimator {
 
 /// Marks `cell` skipped, with its estimated ns per item, when one run is estimated (`ns`)
 /// above the plan's `cell_max`; returns whether it did.
-fn skips(cell: &mut Measurement, ns: Option<f64>, plan: &Plan) -> bool {
+pub(crate) fn skips(cell: &mut Measurement, ns: Option<f64>, plan: &Plan) -> bool {
     match ns {
         Some(ns) if ns > plan.cell_max.as_nanos() as f64 => {
             cell.status = Status::Skipped;
@@ -159,10 +199,9 @@ fn skips(cell: &mut Measurement, ns: Option<f64>, plan: &Plan) -> bool {
     }
 }
 
-/// Time per query of `op` on `m`, in ns: from `known` (the operator's sampled cell, or an
-/// earlier probe), else timed on the `probe` queries and remembered. `None` when the probe
+/// Time per query of `op` on `m`, in ns: from `known` (an earlier probe), else timed on the `probe` queries and remembered. `None` when the probe
 /// has no query of that kind (a mesh without edges).
-fn per_query_ns<M: MeshTopology>(
+pub(crate) fn per_query_ns<M: MeshTopology>(
     m: &M,
     op: Operator,
     probe: &Queries,
@@ -184,7 +223,11 @@ fn per_query_ns<M: MeshTopology>(
 
 /// An empty cell of `M`, marked native for a baseline, whose every cell is timed (or, skipped,
 /// would be) by its own loop; a timed cell is marked again by the loop that ran.
-fn measurement<M: MeshTopology>(subject: Subject, kernel: Kernel, case: &MeshCase) -> Measurement {
+pub(crate) fn measurement<M: MeshTopology>(
+    subject: Subject,
+    kernel: Kernel,
+    case: &MeshCase,
+) -> Measurement {
     Measurement {
         native: M::native().is_some(),
         ..Measurement::new(
@@ -196,283 +239,6 @@ fn measurement<M: MeshTopology>(subject: Subject, kernel: Kernel, case: &MeshCas
             case.soup.num_faces(),
         )
     }
-}
-
-/// Measures `M` on `case`: appends one [`Measurement`] per cell to `out`. Fails when a kernel
-/// is not deterministic or a baseline's native kernel fails.
-pub fn measure_structure<M: MeshTopology>(
-    case: &MeshCase,
-    plan: &Plan,
-    meter: &dyn MemoryMeter,
-    est: &mut Estimator,
-    out: &mut Vec<Measurement>,
-) -> Result<(), String> {
-    let budget = Budget {
-        time: plan.cell_budget,
-        min_reps: plan.min_reps,
-        max_reps: plan.max_reps,
-    };
-    let n = case.soup.num_faces();
-    // Construction: memory first (one build, counted by the allocator and kept for the
-    // queries), then the timed builds with nothing counted. The build is the one the clock
-    // times, a baseline's own construction included (not `from_soup`, whose checks and edge
-    // analysis are the lab's), and its finishing step, whose tables the structure keeps.
-    let mut cons = measurement::<M>(Subject::Construction, Kernel::Construction, case);
-    let refused = |mut cons: Measurement, e: topolab_structures::Error, out: &mut Vec<_>| {
-        cons.status = Status::Refused;
-        cons.note = Some(format!("{}: {e}", e.kind()));
-        out.push(cons);
-        Ok(())
-    };
-    let builder = match Builder::<M>::new(case.soup) {
-        Ok(builder) => builder,
-        Err(e) => return refused(cons, e, out),
-    };
-    meter.counting(true);
-    meter.reset_peak();
-    let before = meter.current();
-    let built = builder.build().and_then(|b| builder.finish(b));
-    let peak = meter.peak().saturating_sub(before);
-    let held = meter.current().saturating_sub(before);
-    meter.counting(false);
-    let mut m = match built {
-        Ok(m) => m,
-        Err(e) => return refused(cons, e, out),
-    };
-    cons.bytes = Some(held as u64);
-    cons.peak_bytes = Some(peak as u64);
-    cons.declared_bytes = Some(m.heap_bytes() as u64);
-    // Construction is timed with at least three runs and a second's budget whatever the cell
-    // budget: one build of a 1M-triangle mesh is a single noisy sample otherwise.
-    let construction_budget = Budget {
-        time: budget.time.max(Duration::from_secs(1)),
-        min_reps: 3,
-        max_reps: plan.max_reps.min(7),
-    };
-    let builds = time_construction(&builder, construction_budget, meter)
-        .map_err(|e| format!("{} construction on {}: {e}", M::NAME, case.name))?;
-    let faces = n.max(1);
-    cons.native = builds.native;
-    fill(&mut cons, builds.warm, faces, None);
-    cons.page_faults = builds.warm_faults;
-    cons.cold_ns_per_item = Some(builds.cold.median_ns / faces as f64);
-    cons.cold_page_faults = builds.cold_faults;
-    out.push(cons);
-
-    // A light plan times the vertex 1-ring sweep only: its queries are the vertices, without
-    // the edges and (edge, face) pairs whose hash map of edges, built twice per structure,
-    // took longer than the sweep itself on the 3.3M refined armadillo.
-    let (all, sampled) = if plan.light {
-        (
-            Queries::every_vertex(&m),
-            Queries::sampled_vertices(case.queries),
-        )
-    } else {
-        (
-            Queries::all(&m, case.soup),
-            Queries::sampled(&m, case.queries),
-        )
-    };
-    let probe = sampled.spread(PROBE_QUERIES);
-    // Time per query of each operator on this mesh, for cells with no smaller size before.
-    let mut per_query: HashMap<Operator, f64> = HashMap::new();
-    let mut curves = BoundaryCurves::default();
-    for op in Operator::ALL {
-        // Boundary curves are one question about the whole mesh: nothing to sample. Sampled
-        // first otherwise: its time per query is the estimate of the sweep after it.
-        let kernels: &[Kernel] = if op.input() == Input::Mesh {
-            &[Kernel::Sweep]
-        } else {
-            &[Kernel::Sampled, Kernel::Sweep]
-        };
-        for &kernel in kernels {
-            if plan.light && (op != Operator::R00 || kernel != Kernel::Sweep) {
-                continue;
-            }
-            let q = if kernel == Kernel::Sweep {
-                &all
-            } else {
-                &sampled
-            };
-            let items = q.count(op);
-            let mut cell = measurement::<M>(Subject::Query(op), kernel, case);
-            cell.items = items;
-            // A sweep's run grows with n^(1+e), a sampled run (fixed count) with n^e.
-            let e =
-                M::cost(op).expected_exponent() + if kernel == Kernel::Sweep { 1.0 } else { 0.0 };
-            let key = Estimator::key(M::NAME, case.family, Subject::Query(op), kernel);
-            let context =
-                |e: String| format!("{} {} {kernel} on {}: {e}", M::NAME, op.name(), case.name);
-            let estimate = match est.estimate(&key, n, e) {
-                Some(ns) => Some(ns),
-                // Boundary curves have no sampled kernel. Finding them decides for every edge
-                // whether it is on the boundary, so their estimate is a boundary-edge sweep's
-                // (the scanning structures' O(n) test per edge is their O(n²)).
-                None if op.input() == Input::Mesh => {
-                    let edge = Operator::BoundaryEdge;
-                    per_query_ns(&m, edge, &probe, &mut per_query, &mut curves)
-                        .map_err(context)?
-                        .map(|ns| ns * all.count(edge) as f64)
-                }
-                None => per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
-                    .map_err(context)?
-                    .map(|ns| ns * items as f64),
-            };
-            if skips(&mut cell, estimate, plan) {
-                out.push(cell);
-                continue;
-            }
-            let (t, sum, native) =
-                time_kernel(&m, op, kernel, q, &mut curves, budget).map_err(context)?;
-            if kernel == Kernel::Sampled && items > 0 {
-                per_query.insert(op, t.median_ns / items as f64);
-            }
-            cell.native = native;
-            fill(&mut cell, t, items.max(1), Some(sum.to_string()));
-            est.last.insert(key, (n, t.median_ns));
-            out.push(cell);
-        }
-    }
-    let native = M::native();
-    let mut buf = WorkloadBuffers::default();
-    for w in Workload::ALL.into_iter().filter(|_| !plan.light) {
-        let mut cell = measurement::<M>(Subject::Workload(w), Kernel::Workload, case);
-        let items = w.items(m.num_vertices(), m.num_faces());
-        cell.items = items;
-        // A workload asks its relations once per element: its run grows like n^(1+e) for the
-        // costliest relation it uses.
-        let e = 1.0
-            + w.relations()
-                .iter()
-                .map(|&op| M::cost(op).expected_exponent())
-                .fold(0.0, f64::max);
-        let key = Estimator::key(M::NAME, case.family, Subject::Workload(w), Kernel::Workload);
-        let estimate = match est.estimate(&key, n, e) {
-            Some(ns) => Some(ns),
-            // With no smaller size: the relations it asks, once per element, at this mesh's
-            // time per query (the sampled cells measured above).
-            None => {
-                let mut ns = 0.0;
-                for &op in w.relations() {
-                    let per = per_query_ns(&m, op, &probe, &mut per_query, &mut curves)
-                        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
-                    ns += per.unwrap_or(0.0) * all.count(op) as f64;
-                }
-                Some(ns)
-            }
-        };
-        if skips(&mut cell, estimate, plan) {
-            out.push(cell);
-            continue;
-        }
-        cell.native = native.is_some();
-        let (t, r) = match native {
-            Some(k) => time_native(budget, || k.workload(&mut m, w).map(f64::to_bits)),
-            None => time(budget, || run_workload(&m, w, &mut buf).to_bits()),
-        }
-        .map_err(|e| format!("{} {} on {}: {e}", M::NAME, w.name(), case.name))?;
-        fill(
-            &mut cell,
-            t,
-            items.max(1),
-            Some(format!("{:.9e}", f64::from_bits(r))),
-        );
-        est.last.insert(key, (n, t.median_ns));
-        out.push(cell);
-    }
-    Ok(())
-}
-
-/// Construction timed two ways. *Warm*: after one build to warm up, the median of builds that
-/// reuse the memory the build before them freed (with glibc told to keep freed memory, as the
-/// report does, they take no page fault whatever ran before). *Cold*: each build right after
-/// the allocator returned its free memory to the kernel, so it faults in every page it
-/// touches. The page faults of each are counted around the builds, and each build is timed in
-/// the thread's CPU time when the meter knows it ([`MemoryMeter::thread_cpu_ns`]; page faults
-/// are system time, so they count). Only [`Builder::build`] is timed: each structure is
-/// finished and dropped after the clock (a destructor that frees a million records is not
-/// construction).
-struct Builds {
-    /// The warm builds.
-    warm: Timing,
-    /// Median minor page faults of a warm build.
-    warm_faults: Option<u64>,
-    /// The cold builds.
-    cold: Timing,
-    /// Median minor page faults of a cold build.
-    cold_faults: Option<u64>,
-    /// Whether the baseline's own construction was timed
-    /// ([`topolab_structures::SeparateConstruction`]).
-    native: bool,
-}
-
-/// At most this many cold builds: each one faults in the whole structure, and their spread is
-/// the kernel's, not the structure's.
-const COLD_BUILDS: usize = 3;
-
-/// Times the builds of `builder` (see [`Builds`]): the baseline's own construction when it has
-/// one, [`MeshTopology::from_soup`] otherwise. Fails when a build fails or builds a different
-/// number of faces than the first.
-fn time_construction<M: MeshTopology>(
-    builder: &Builder<M>,
-    budget: Budget,
-    meter: &dyn MemoryMeter,
-) -> Result<Builds, String> {
-    // After the clock: the structure finished, its faces counted (the check that each build
-    // is whole), and the structure dropped.
-    let faces = |built: topolab_structures::Result<Constructed<M>>| {
-        built
-            .and_then(|b| builder.finish(b))
-            .map(|m| m.num_faces())
-            .map_err(|e| builder.failure(e))
-    };
-    let warm_up = Instant::now();
-    let built = builder.build();
-    let long = warm_up.elapsed() > budget.time;
-    let first = faces(built)?;
-    // A build longer than the budget is timed once (its work dominates its noise).
-    let min_reps = if long { 1 } else { budget.min_reps };
-    let runs = |cold: bool, max_reps: usize| -> Result<(Timing, Option<u64>), String> {
-        let (mut ns, mut faults) = (Vec::new(), Vec::new());
-        let start = Instant::now();
-        while ns.len() < min_reps.min(max_reps)
-            || (ns.len() < max_reps && start.elapsed() < budget.time)
-        {
-            if cold {
-                meter.release_free_memory();
-            }
-            let before = meter.minor_faults();
-            let (cpu, t) = (meter.thread_cpu_ns(), Instant::now());
-            let built = std::hint::black_box(builder.build());
-            let wall = t.elapsed().as_nanos() as u64;
-            ns.push(match (cpu, meter.thread_cpu_ns()) {
-                (Some(a), Some(b)) => b.saturating_sub(a),
-                _ => wall,
-            } as f64);
-            if let (Some(a), Some(b)) = (before, meter.minor_faults()) {
-                faults.push(b.saturating_sub(a) as f64);
-            }
-            let built = faces(built)?;
-            if built != first {
-                return Err(format!(
-                    "build {} has {built} faces, the first had {first}",
-                    ns.len()
-                ));
-            }
-        }
-        faults.sort_by(f64::total_cmp);
-        let faults = (faults.len() == ns.len()).then(|| median(&faults) as u64);
-        Ok((Timing::of(ns), faults))
-    };
-    let (warm, warm_faults) = runs(false, budget.max_reps)?;
-    let (cold, cold_faults) = runs(true, COLD_BUILDS.min(budget.max_reps))?;
-    Ok(Builds {
-        warm,
-        warm_faults,
-        cold,
-        cold_faults,
-        native: builder.is_native(),
-    })
 }
 
 /// Times one kernel of `op` on a built structure: the structure's native loop when it is a
@@ -541,58 +307,6 @@ fn time_native<T: PartialEq + std::fmt::Debug>(
         .ok_or_else(|| "native kernel failed without an error".into())
 }
 
-/// Builds `M` from `case` and times one sweep of `op` over every element (for comparisons
-/// of one operator across meshes, such as element orderings). A refusal is a refused cell.
-pub fn measure_sweep<M: MeshTopology>(
-    case: &MeshCase,
-    op: Operator,
-    plan: &Plan,
-) -> Result<Measurement, String> {
-    let mut cell = measurement::<M>(Subject::Query(op), Kernel::Sweep, case);
-    let m = match M::from_soup(case.soup) {
-        Ok(m) => m,
-        Err(e) => {
-            cell.status = Status::Refused;
-            cell.note = Some(format!("{}: {e}", e.kind()));
-            return Ok(cell);
-        }
-    };
-    // A vertex operator's sweep needs the vertices only (see `Queries::every_vertex`).
-    let q = if op.input() == Input::Vertex {
-        Queries::every_vertex(&m)
-    } else {
-        Queries::all(&m, case.soup)
-    };
-    cell.items = q.count(op);
-    let budget = Budget {
-        time: plan.cell_budget,
-        min_reps: plan.min_reps,
-        max_reps: plan.max_reps,
-    };
-    let (t, sum, native) = time_kernel(
-        &m,
-        op,
-        Kernel::Sweep,
-        &q,
-        &mut BoundaryCurves::default(),
-        budget,
-    )
-    .map_err(|e| format!("{} {} on {}: {e}", M::NAME, op.name(), case.name))?;
-    cell.native = native;
-    let items = cell.items.max(1);
-    fill(&mut cell, t, items, Some(sum.to_string()));
-    Ok(cell)
-}
-
-fn fill(cell: &mut Measurement, t: crate::timing::Timing, items: usize, checksum: Option<String>) {
-    let per = |ns: f64| ns / items as f64;
-    cell.ns_per_item = Some(per(t.median_ns));
-    cell.min_ns_per_item = Some(per(t.min_ns));
-    cell.max_ns_per_item = Some(per(t.max_ns));
-    cell.reps = t.reps;
-    cell.checksum = checksum;
-}
-
 /// Compares every measured checksum of `mesh` across structures; an error names the operator,
 /// kernel, mesh and the structures that disagree. Workload results (floats) agree within a
 /// relative 1e-6.
@@ -634,7 +348,7 @@ pub fn cross_check(measurements: &[Measurement], mesh: &str) -> Result<(), Strin
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernels::sample_queries;
+    use crate::kernels::Workload;
     use std::cell::Cell;
     use topolab_structures::{meshes, Error, ExplicitStorage, MeshTopology, Result, VertexList};
 
@@ -649,15 +363,9 @@ mod tests {
         fn reset_peak(&self) {}
     }
 
-    /// Few, short repetitions; cells estimated above `cell_max` skipped.
+    /// Two rounds of 16 sampled queries; cells estimated above `cell_max` skipped.
     fn short_plan(cell_max: Duration) -> Plan {
-        Plan {
-            cell_budget: Duration::from_millis(1),
-            cell_max,
-            min_reps: 1,
-            max_reps: 3,
-            light: false,
-        }
+        Plan::fixed(cell_max, 2, 16, false)
     }
 
     #[test]
@@ -667,24 +375,18 @@ mod tests {
         // boundary curves and the workloads built on them are quadratic: ~10k queries of
         // ~60k corners each, seconds each; the budget is 20 ms.
         let soup = meshes::torus_with_triangles(20_000);
-        let q = sample_queries(&soup, 16, 3);
         let case = MeshCase {
             name: "torus-20k",
             family: "torus",
             soup: &soup,
-            queries: &q,
+            seed: 3,
         };
-        // The estimates come from medians of at least five runs (the probes' and the sampled
-        // cells', unless a warm-up alone outlasts the 50 ms budget), so that a run or two
-        // stretched by the scheduler cannot decide. The budget
-        // sits between what runs and what scans, in this unoptimized test build: 16 scanning
-        // queries take ~0.6 ms, the cheapest quadratic sweep (R00) ~0.4 s.
-        let plan = Plan {
-            cell_budget: Duration::from_millis(50),
-            min_reps: 5,
-            max_reps: 9,
-            ..short_plan(Duration::from_millis(20))
-        };
+        // The estimates come from medians of at least five runs of a probe (unless its warm-up
+        // alone outlasts the 50 ms budget), so that a run or two stretched by the scheduler
+        // cannot decide. The budget sits between what runs and what scans, in this unoptimized
+        // test build: 16 scanning queries take ~0.6 ms, the cheapest quadratic sweep (R00)
+        // ~0.4 s.
+        let plan = short_plan(Duration::from_millis(20));
         let (mut out, mut est) = (Vec::new(), Estimator::default());
         measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
             .unwrap();
@@ -723,14 +425,50 @@ mod tests {
     }
 
     #[test]
+    fn a_light_plan_skips_a_quadratic_sweep_by_its_probe_too() {
+        // The refined meshes are measured light (construction and the R00 sweep), at their
+        // family's first size: only the probe of the first round's vertices can tell that the
+        // vertex list's sweep is quadratic. Without it, a 3.3M-triangle mesh swept for hours.
+        let soup = meshes::torus_with_triangles(20_000);
+        let case = MeshCase {
+            name: "torus-20k",
+            family: "refined",
+            soup: &soup,
+            seed: 3,
+        };
+        let plan = Plan::fixed(Duration::from_millis(20), 2, 16, true);
+        let (mut out, mut est) = (Vec::new(), Estimator::default());
+        measure_structure::<VertexList>(&case, &plan, &NoMeter(Cell::new(0)), &mut est, &mut out)
+            .unwrap();
+        let kinds: Vec<(Subject, Kernel, Status)> = out
+            .iter()
+            .map(|m| (m.operator, m.kernel, m.status))
+            .collect();
+        assert_eq!(
+            kinds,
+            [
+                (
+                    Subject::Construction,
+                    Kernel::Construction,
+                    Status::Measured
+                ),
+                (
+                    Subject::Query(Operator::R00),
+                    Kernel::Sweep,
+                    Status::Skipped
+                )
+            ]
+        );
+    }
+
+    #[test]
     fn measures_every_cell_and_cross_checks() {
         let soup = meshes::torus(6, 5);
-        let q = sample_queries(&soup, 8, 3);
         let case = MeshCase {
             name: "t",
             family: "torus",
             soup: &soup,
-            queries: &q,
+            seed: 3,
         };
         let plan = short_plan(Duration::from_secs(1));
         let (mut out, mut est) = (Vec::new(), Estimator::default());

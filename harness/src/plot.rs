@@ -15,8 +15,10 @@
 //!   [`Family`], never from its name.
 //! - **Markers tell lines apart in print**: each line of a plot gets its own marker shape
 //!   (seven shapes, filled then hollow), so a grey printout still separates them.
-//! - **Hover titles** (`<title>`): each point gives the structure, the size and the median,
-//!   fastest and slowest run and the number of repetitions. plotters' SVG backend writes no
+//! - **Intervals**: each point's interval of its median, when it has one, is a vertical bar
+//!   through its marker in its line's colour.
+//! - **Hover titles** (`<title>`): each point gives the structure, the size, the median, its
+//!   interval and the number of rounds. plotters' SVG backend writes no
 //!   `<title>` (nor `class`), so these are added to its output by `finish`: one invisible
 //!   circle over each marker holds the point's title.
 
@@ -182,19 +184,19 @@ pub fn styles(families: &[Family]) -> Vec<Style> {
         .collect()
 }
 
-/// One measured point: the median and, when known, the spread of the runs.
+/// One measured point: the median and, when known, the interval of the median.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct Point {
     /// x (size).
     pub x: f64,
     /// y: the median.
     pub y: f64,
-    /// Fastest run.
-    pub min: Option<f64>,
-    /// Slowest run.
-    pub max: Option<f64>,
-    /// Timed runs.
-    pub reps: usize,
+    /// The interval's low end.
+    pub low: Option<f64>,
+    /// The interval's high end.
+    pub high: Option<f64>,
+    /// Rounds of the median.
+    pub rounds: usize,
 }
 
 /// One line of a plot.
@@ -384,16 +386,16 @@ pub(crate) fn colour(style: &Style) -> RGBColor {
     RGBColor(r, g, b)
 }
 
-/// The hover title of one point: structure, size, median, fastest and slowest run, runs.
+/// The hover title of one point: structure, size, median, its interval, rounds.
 fn hover_title(name: &str, p: &Point, unit: &str) -> String {
-    let spread = match (p.min, p.max) {
-        (Some(a), Some(b)) => format!(" (fastest {}, slowest {})", value(a), value(b)),
+    let spread = match (p.low, p.high) {
+        (Some(a), Some(b)) => format!(" (interval {} to {})", value(a), value(b)),
         _ => String::new(),
     };
-    let reps = match p.reps {
+    let reps = match p.rounds {
         0 => String::new(),
-        1 => ", 1 run".into(),
-        n => format!(", {n} runs"),
+        1 => ", 1 round".into(),
+        n => format!(", {n} rounds"),
     };
     format!(
         "{} at {}: median {} {}{spread}{reps}",
@@ -465,6 +467,16 @@ fn draw_loglog(
                 chart.draw_series(DashedLineSeries::new(xy, 7, 4, stroke))?;
             } else {
                 chart.draw_series(LineSeries::new(xy, stroke))?;
+            }
+        }
+        // The intervals under the markers, thin, in their line's colour.
+        for (line, pts) in shown {
+            for point in pts {
+                if let (Some(lo), Some(hi)) = (point.low, point.high) {
+                    let (lo, hi) = (lo.clamp(y0, y1), hi.clamp(y0, y1));
+                    let bar = vec![(point.x, lo), (point.x, hi)];
+                    chart.draw_series(LineSeries::new(bar, colour(&line.style).stroke_width(1)))?;
+                }
             }
         }
         // Every marker after every line, so no line hides another line's points.
@@ -611,9 +623,9 @@ mod tests {
                     .map(|k| Point {
                         x: 1e3 * 4f64.powi(k),
                         y: (1 + i) as f64 * 10f64.powi(4 - k),
-                        min: Some(1.0),
-                        max: Some(2.0),
-                        reps: 3,
+                        low: Some(1.0),
+                        high: Some(2.0),
+                        rounds: 3,
                     })
                     .collect(),
             })
@@ -707,10 +719,10 @@ mod tests {
     }
 
     #[test]
-    fn each_point_has_a_hover_title_with_its_spread() {
+    fn each_point_has_a_hover_title_with_its_interval() {
         let svg = plot(2, 3);
         assert_eq!(
-            svg.matches("(fastest 1.00, slowest 2.00), 3 runs</title>")
+            svg.matches("(interval 1.00 to 2.00), 3 rounds</title>")
                 .count(),
             10
         );

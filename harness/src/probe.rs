@@ -130,6 +130,78 @@ pub fn measure(read_mb: usize, chase_mb: usize) -> Probe {
     }
 }
 
+/// The same small measurement repeated before every mesh of a report, so the page can show how
+/// the machine itself moved over the run (its frequency, its neighbours, its memory): a
+/// sequential read and a dependent chase through [`DRIFT_BYTES`] (beyond the caches of most
+/// machines) and the checksum arithmetic in L1, each the median of [`DRIFT_RUNS`] runs. Nothing
+/// of a structure is in it, so its changes are the machine's.
+pub struct Drift {
+    reader: Reader,
+    cycle: Cycle,
+    terms: Terms,
+}
+
+/// The working set of the drift probe's read and chase.
+pub const DRIFT_BYTES: usize = 64 << 20;
+
+/// Runs of each of the drift probe's measurements.
+pub const DRIFT_RUNS: usize = 5;
+
+/// One reading of the drift probe.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct DriftPoint {
+    /// The mesh measured after it.
+    pub mesh: String,
+    /// Seconds since the run started.
+    pub at_s: f64,
+    /// Sequential read of [`DRIFT_BYTES`], bytes per second.
+    pub read_bytes_per_s: f64,
+    /// Dependent load through [`DRIFT_BYTES`], ns per hop.
+    pub load_ns: f64,
+    /// Checksum arithmetic in L1, ns per term.
+    pub term_ns: f64,
+}
+
+impl Drift {
+    /// The probe's arrays, made once.
+    pub fn new() -> Self {
+        Self {
+            reader: Reader::reading(DRIFT_BYTES, DRIFT_BYTES),
+            cycle: Cycle::new(DRIFT_BYTES),
+            terms: Terms::new(),
+        }
+    }
+
+    /// One reading before `mesh`, `at_s` seconds into the run.
+    pub fn read(&self, mesh: &str, at_s: f64) -> DriftPoint {
+        let median_ns = |work: &mut dyn FnMut() -> usize| {
+            let mut v: Vec<f64> = (0..DRIFT_RUNS)
+                .map(|_| {
+                    let t = Instant::now();
+                    let units = work();
+                    t.elapsed().as_nanos() as f64 / units.max(1) as f64
+                })
+                .collect();
+            v.sort_by(f64::total_cmp);
+            crate::timing::median(&v)
+        };
+        let mut chase = Chase::through(&self.cycle, Step::Load).hopping(1 << 16);
+        DriftPoint {
+            mesh: mesh.into(),
+            at_s,
+            read_bytes_per_s: 1e9 / median_ns(&mut || self.reader.run()),
+            load_ns: median_ns(&mut || chase.run()),
+            term_ns: median_ns(&mut || self.terms.run()),
+        }
+    }
+}
+
+impl Default for Drift {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// The smallest of `runs` results of `run`: on a shared machine the fastest run is the one the
 /// other processes disturbed least, so every probe is many short runs.
 fn fastest(runs: usize, mut run: impl FnMut() -> f64) -> f64 {

@@ -66,6 +66,10 @@ pub struct Results {
     pub notes: Vec<String>,
     /// How long each section of the run took, wall and CPU ([`crate::phases`]).
     pub phases: Vec<crate::phases::PhaseTime>,
+    /// The rounds of each mesh of the size sweep.
+    pub rounds: Vec<MeshRoundsRow>,
+    /// The drift probe, read before every mesh of the size sweep ([`crate::probe::Drift`]).
+    pub drift: Vec<crate::probe::DriftPoint>,
 }
 
 /// Settings of a run.
@@ -75,10 +79,10 @@ pub struct Settings {
     pub quick: bool,
     /// Triangle counts of the size sweep.
     pub sizes: Vec<usize>,
-    /// Sampled queries per kind.
+    /// Sampled queries drawn per kind and round.
     pub samples: usize,
-    /// Time budget for repeating one cell, seconds.
-    pub cell_budget_s: f64,
+    /// How the cells were measured in rounds.
+    pub rounds: RoundSettings,
     /// A cell whose single run is estimated above this is skipped, seconds.
     pub cell_max_s: f64,
     /// The command that produced the results.
@@ -86,6 +90,50 @@ pub struct Settings {
     /// The sections of the report this run measured and shows (`--sections`), by name, in
     /// page order.
     pub sections: Vec<&'static str>,
+}
+
+/// How the size sweep's cells were measured in rounds ([`crate::rounds`]).
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct RoundSettings {
+    /// Rounds every cell got.
+    pub min_rounds: usize,
+    /// Rounds no cell passed.
+    pub max_rounds: usize,
+    /// Extra rounds for wide cells could take this share of the first rounds' time.
+    pub extra: f64,
+    /// Queries of a sampled pass.
+    pub pass: usize,
+    /// Timed ns of one cell in one round, at least.
+    pub round_ns: f64,
+    /// An interval wider than this share of its value asked for extra rounds.
+    pub wide: f64,
+}
+
+impl RoundSettings {
+    /// The settings of `plan`.
+    pub fn of(plan: &crate::measure::Plan) -> Self {
+        Self {
+            min_rounds: plan.rounds.min_rounds,
+            max_rounds: plan.rounds.max_rounds,
+            extra: plan.rounds.extra,
+            pass: crate::rounds::PASS,
+            round_ns: crate::rounds::ROUND_NS,
+            wide: crate::rounds::WIDE,
+        }
+    }
+}
+
+/// The rounds one mesh of the size sweep took.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct MeshRoundsRow {
+    /// The mesh.
+    pub mesh: String,
+    /// Rounds made (the most any cell got).
+    pub rounds: usize,
+    /// Of them, extra rounds for wide or wanted cells.
+    pub extra: usize,
+    /// Wall time of all of them, seconds.
+    pub seconds: f64,
 }
 
 /// A structure and its declared costs.
@@ -236,15 +284,34 @@ pub struct Measurement {
     pub triangles: usize,
     /// Measured, skipped or refused.
     pub status: Status,
-    /// Median nanoseconds per item (query, element, or face for construction).
+    /// Nanoseconds per item (query, element, or face for construction): the median of the
+    /// rounds' values ([`crate::rounds`]).
     pub ns_per_item: Option<f64>,
-    /// Fastest run, per item.
+    /// The fastest round, per item.
     pub min_ns_per_item: Option<f64>,
-    /// Slowest run, per item.
+    /// The slowest round, per item.
     pub max_ns_per_item: Option<f64>,
-    /// Items per run.
+    /// Where the median lies, per item: the order-statistics interval of the rounds' median
+    /// ([`crate::timing::interval`]), `[low, high]`, with the probability `ci_coverage`
+    /// (at least 0.95 from six rounds on).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ns_per_item_ci: Option<[f64; 2]>,
+    /// The probability that `ns_per_item_ci` holds the median.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ci_coverage: Option<f64>,
+    /// Each round's value, ns per item, in the order of the rounds it took part in (empty, and
+    /// not written, for a cell not measured in rounds): what the median and its interval were
+    /// taken of.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub round_ns_per_item: Vec<f64>,
+    /// Rounds the cell was measured in, each on a fresh build (0, and not written, for a cell
+    /// not measured in rounds).
+    #[serde(default, skip_serializing_if = "no_rounds")]
+    pub rounds: usize,
+    /// Items per run: the elements of a sweep or workload, the faces of a construction, the
+    /// queries of a sampled cell's first round.
     pub items: usize,
-    /// Timed runs.
+    /// Timed runs over all rounds (a sampled cell's: its passes).
     pub reps: usize,
     /// The kernel's checksum (decimal u64, or the float result of a workload).
     pub checksum: Option<String>,
@@ -280,6 +347,11 @@ pub struct Measurement {
     pub limit: Option<Limit>,
 }
 
+/// Whether a cell has no rounds (serde's test for leaving the field out).
+fn no_rounds(rounds: &usize) -> bool {
+    *rounds == 0
+}
+
 impl Measurement {
     /// A measured cell with nothing timed yet: every optional field empty, zero items and runs.
     pub fn new(
@@ -301,6 +373,10 @@ impl Measurement {
             ns_per_item: None,
             min_ns_per_item: None,
             max_ns_per_item: None,
+            ns_per_item_ci: None,
+            ci_coverage: None,
+            round_ns_per_item: Vec::new(),
+            rounds: 0,
             items: 0,
             reps: 0,
             checksum: None,

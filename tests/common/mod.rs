@@ -14,7 +14,7 @@ pub use shared::{broken_soups, closed_fan_soups, report_skip};
 use glam::DVec3;
 use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
-use topolab_harness::kernels::{sample_queries, Kernel};
+use topolab_harness::kernels::Kernel;
 use topolab_harness::measure::{measure_structure, Estimator, MemoryMeter, MeshCase, Plan};
 use topolab_harness::results::Measurement;
 use topolab_structures::meshes::{self, RandomMeshParams};
@@ -186,28 +186,21 @@ pub fn smoothing_sum<M: MeshTopology>(soup: &PolygonSoup, reference: &M) -> f64 
         .sum()
 }
 
-/// A plan of few, short repetitions (the tests check what is measured, not how fast); `light`,
-/// the construction and the R00 sweep only.
+/// A plan of two rounds (the tests check what is measured, not how surely); `light`, the
+/// construction and the R00 sweep only.
 fn small_plan(light: bool) -> Plan {
-    Plan {
-        cell_budget: Duration::from_millis(1),
-        cell_max: Duration::from_secs(10),
-        min_reps: 1,
-        max_reps: 2,
-        light,
-    }
+    Plan::fixed(Duration::from_secs(10), 2, 8, light)
 }
 
 /// The construction cell of `M` on `soup` as the report measures it, its heap counted by the
 /// lab's allocator (the C++ baselines' blocks too, on this thread only, so tests measure in
 /// parallel), with a light plan: the construction and one sweep.
 pub fn construction_cell<M: MeshTopology>(soup: &PolygonSoup) -> Measurement {
-    let queries = sample_queries(soup, 8, 3);
     let case = MeshCase {
         name: "mesh",
         family: "torus",
         soup,
-        queries: &queries,
+        seed: 3,
     };
     let plan = small_plan(true);
     let (mut out, mut est) = (Vec::new(), Estimator::default());

@@ -48,9 +48,9 @@ pub(crate) fn lines(
                     Some(plot::Point {
                         x: m.triangles as f64,
                         y: m.ns_per_item?,
-                        min: m.min_ns_per_item,
-                        max: m.max_ns_per_item,
-                        reps: m.reps,
+                        low: m.ns_per_item_ci.map(|c| c[0]),
+                        high: m.ns_per_item_ci.map(|c| c[1]),
+                        rounds: m.rounds,
                     })
                 })
                 .collect(),
@@ -69,9 +69,10 @@ pub(crate) fn table_kernel(op: Operator) -> Kernel {
 }
 
 pub(crate) fn family_of(op: Operator) -> &'static str {
-    match op {
-        Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves => "grid",
-        _ => "torus",
+    if crate::rounds::boundary(op) {
+        "grid"
+    } else {
+        "torus"
     }
 }
 

@@ -6,8 +6,11 @@
 //! (`docs/report.md`). What was cut to keep it there is here, with the reasons the page's notes
 //! give.
 
+use crate::measure::Plan;
 use crate::phases::{Phase, PhaseTime};
-use std::time::Instant;
+use crate::rounds::RoundPlan;
+use crate::timing::interval::ROUNDS_FOR_LEVEL;
+use std::time::{Duration, Instant};
 
 /// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
 /// zero CPU rather than failing the report).
@@ -70,20 +73,70 @@ impl Clock {
         self.children = children;
     }
 
+    /// Seconds since the clock started.
+    pub fn since_start(&self) -> f64 {
+        self.started.elapsed().as_secs_f64()
+    }
+
     /// The sections timed so far.
     pub fn times(&self) -> &[PhaseTime] {
         &self.times
     }
 }
 
-/// The most timed runs of one cell (after its warm-up). It was 25: most cells of the size sweep
-/// are short enough to reach it, so it set most of the sweep's time alone, while the medians
-/// of 25 runs in the full report stayed within 1% of their fastest run in half the cells and
-/// within 7% in nine of ten; the median of 11 still ignores 5 runs stretched by the scheduler.
-pub const MAX_REPS: usize = 11;
+/// The plan of the size sweep ([`crate::rounds`]): every cell in at least
+/// [`ROUNDS_FOR_LEVEL`] rounds (the fewest whose interval reaches 95%), a cell whose interval is
+/// still wide in extra rounds that may take 30% of that time again, at most [`MAX_ROUNDS`]
+/// rounds ([`FULL_MAX_ROUNDS`] with `--full`); a cell whose one run is estimated above 0.15 s
+/// is skipped with its estimate (its rounds would take seconds, and the sizes below it show its
+/// growth). The pipeline adjusts it per mesh ([`plan_for`]).
+pub fn plan(quick: bool, full: bool) -> Plan {
+    Plan {
+        cell_max: Duration::from_millis(150),
+        light: false,
+        sampled: true,
+        boundary_only: false,
+        rounds: RoundPlan {
+            min_rounds: ROUNDS_FOR_LEVEL,
+            max_rounds: if full { FULL_MAX_ROUNDS } else { MAX_ROUNDS },
+            extra: if quick { 0.0 } else { 0.3 },
+            cold_rounds: 0,
+            seed: 2026,
+        },
+        samples: if quick { 1024 } else { crate::rounds::SAMPLES },
+    }
+}
 
-/// The most timed runs of one cell with `--full` (as before the 15-minute budget).
-pub const FULL_MAX_REPS: usize = 25;
+/// What the run's `plan` becomes for one mesh of `family`, by what its tables show: cold
+/// builds only on the largest torus (`shows_cold`: the construction table's); extra rounds only
+/// on the generated tori and grids (the size plots and the Targets); on a grid, construction
+/// and the boundary operators only (but everything of a structure that stores grids only); no
+/// sampled cell on the refined meshes, whose table shows sweeps; `light`: the construction and
+/// the vertex 1-ring sweep alone.
+pub fn plan_for(plan: &Plan, light: bool, family: &str, shows_cold: bool) -> Plan {
+    let generated = family == "torus" || family == "grid";
+    Plan {
+        light,
+        sampled: plan.sampled && family != crate::report::sections::real_at_scale::FAMILY,
+        boundary_only: family == "grid",
+        rounds: RoundPlan {
+            extra: if generated { plan.rounds.extra } else { 0.0 },
+            cold_rounds: if shows_cold {
+                crate::rounds::COLD_ROUNDS
+            } else {
+                0
+            },
+            ..plan.rounds
+        },
+        ..*plan
+    }
+}
+
+/// The most rounds a cell gets in the default report.
+pub const MAX_ROUNDS: usize = 12;
+
+/// The most rounds a cell gets with `--full`.
+pub const FULL_MAX_ROUNDS: usize = 21;
 
 /// The timed runs of each changing workload on a torus of `faces` faces: 3 from the 1M torus
 /// on, 3 with `--quick`, 5 otherwise and with `--full`. The 1M torus has 999,600 faces, so the
@@ -105,7 +158,7 @@ pub fn budget_notes(quick: bool, full: bool) -> Vec<String> {
         return Vec::new();
     }
     let mut notes = vec![format!(
-        "To keep the full report within 15 minutes alone on the 2-core machine, a cell is timed at most {MAX_REPS} times after its warm-up ({FULL_MAX_REPS} with `topolab report --full`): the medians of 25 runs were within 1% of the fastest run in half the cells, within 7% in nine of ten."
+        "To keep the full report within 15 minutes alone on the 2-core machine, a cell gets at most {MAX_ROUNDS} rounds ({FULL_MAX_ROUNDS} with `topolab report --full`), extra rounds beyond the first {ROUNDS_FOR_LEVEL} only on the generated tori and grids and only while they take less than 30% of the time the first took, cold builds only on the largest torus, and the refined meshes, whose table shows sweeps, no sampled cells."
     )];
     let light: Vec<String> = crate::report::refined::FULL
         .iter()
@@ -142,7 +195,7 @@ mod tests {
     #[test]
     fn the_default_says_what_it_leaves_out_and_full_leaves_out_nothing() {
         let notes = budget_notes(false, false).join(" ");
-        for said in ["at most 11 times", "100k points on the sphere", "--full"] {
+        for said in ["at most 12 rounds", "100k points on the sphere", "--full"] {
             assert!(notes.contains(said), "{said}: {notes}");
         }
         assert!(budget_notes(false, true).is_empty());

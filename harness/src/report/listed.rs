@@ -1,14 +1,12 @@
 //! The structures of a list ([`Structures`]) as the report's sections ask for them by name
 //! ([`Roster`]).
 
-use crate::measure::{MeshCase, Plan};
 use crate::report::run::Roster;
-use crate::results::Measurement;
+use crate::rounds::{SetUp, Setup};
 use crate::targets::group::{Case, First};
 use crate::targets::plan::Turns;
 use std::marker::PhantomData;
-use topolab_structures::registry::{StructureVisitor, Structures};
-use topolab_structures::{MeshTopology, Operator};
+use topolab_structures::registry::Structures;
 
 /// The structures of the list `L`, as a [`Roster`].
 pub struct Listed<L>(PhantomData<L>);
@@ -26,26 +24,9 @@ impl<L> Default for Listed<L> {
     }
 }
 
-struct Sweep<'a> {
-    case: &'a MeshCase<'a>,
-    plan: &'a Plan,
-}
-
-impl StructureVisitor for Sweep<'_> {
-    type Output = Result<Measurement, String>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        crate::measure::measure_sweep::<M>(self.case, Operator::R00, self.plan)
-    }
-}
-
 impl<L: Structures> Roster for Listed<L> {
-    fn sweep(
-        &self,
-        name: &str,
-        case: &MeshCase,
-        plan: &Plan,
-    ) -> Option<Result<Measurement, String>> {
-        L::visit(name, Sweep { case, plan }).ok()
+    fn set_up<'a>(&self, name: &str, set_up: SetUp<'a, '_>) -> Option<Result<Setup<'a>, String>> {
+        L::visit(name, set_up).ok()
     }
 
     fn targets(

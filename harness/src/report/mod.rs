@@ -3,7 +3,7 @@
 //! their one list ([`sections`]), what a run measures for the sections it shows
 //! ([`selection`]), the meshes it repairs and refines ([`repair`], [`refined`]), its clock and
 //! budgets ([`clock`]), and the page: its shell ([`page`]), the formatting its sections share
-//! ([`format`](mod@format)) and the look-ups of cells they share (`cells`).
+//! ([`format`](mod@format)) the look-ups of cells they share (`cells`) and how sure a cell is (`sure`).
 
 pub(crate) mod cells;
 pub mod clock;
@@ -17,3 +17,4 @@ pub mod run;
 pub mod section;
 pub mod sections;
 pub mod selection;
+pub(crate) mod sure;

@@ -83,11 +83,13 @@ fn machine_section(h: &mut String, r: &Results) {
     let p = &r.probe;
     let _ = write!(
         h,
-        "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>OpenMesh</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>by working set (probe)</th><td class=l>{}</td></tr><tr><th class=l>timing</th><td class=l>median of repeated runs (at least {} per cell, until {:.2} s); {} sampled queries per kind; single-threaded; construction in the measuring thread's CPU time</td></tr></table>",
+        "<h2>Machine</h2><table><tr><th class=l>CPU</th><td class=l>{}</td></tr><tr><th class=l>cores</th><td class=l>{}</td></tr><tr><th class=l>caches</th><td class=l>{}</td></tr><tr><th class=l>memory</th><td class=l>{}</td></tr><tr><th class=l>compiler</th><td class=l>{}</td></tr><tr><th class=l>OpenMesh</th><td class=l>{}</td></tr><tr><th class=l>commit, date</th><td class=l>{}, {}</td></tr><tr><th class=l>sequential read (probe)</th><td class=l>{:.1} GB/s over {}</td></tr><tr><th class=l>dependent random access (probe)</th><td class=l>{:.1} ns per hop over {}</td></tr><tr><th class=l>by working set (probe)</th><td class=l>{}</td></tr><tr><th class=l>timing</th><td class=l>in rounds: every structure of a mesh built afresh each round and run once per cell, in a random order; a round's value of a sweep or workload is the median of batches of runs after an untimed warm-up, of a sampled cell the time per query of passes of {} queries drawn afresh each round ({} per kind and round), until {:.0} ms of runs; a cell's value is the median of its rounds (at least {}, at most {}), its interval the order-statistics interval of that median (at least 95% from 6 rounds on); single-threaded, in the measuring thread's CPU time</td></tr></table>",
         esc(&m.cpu), m.cores, esc(&m.caches), esc(&m.memory), esc(&m.rustc), esc(&m.openmesh), esc(&m.commit), esc(&m.date),
         p.read_bytes_per_s / 1e9, bytes(p.read_array_bytes as f64), p.chase_ns_per_hop, bytes(p.chase_array_bytes as f64),
         p.levels.iter().map(level_text).collect::<Vec<_>>().join("; "),
-        3, r.settings.cell_budget_s, r.settings.samples
+        r.settings.rounds.pass, r.settings.samples, r.settings.rounds.round_ns / 1e6,
+        r.settings.rounds.min_rounds, r.settings.rounds.max_rounds
     );
+    crate::report::sure::machine(h, r);
     crate::phases::render(h, &r.phases);
 }

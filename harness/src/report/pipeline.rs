@@ -7,9 +7,8 @@
 //! how it writes files) comes from its [`Host`].
 
 use crate::baselines::BaselineRun;
-use crate::kernels::sample_queries;
 use crate::limit::{self, MeshCounts};
-use crate::measure::{cross_check, measure_structure, Estimator, MeshCase, Plan};
+use crate::measure::{cross_check, Estimator, MeshCase};
 use crate::phases::Phase;
 use crate::report::clock::{self, Clock};
 use crate::report::listed::Listed;
@@ -19,15 +18,14 @@ use crate::report::sections::real_at_scale::FAMILY;
 use crate::report::selection::Selection;
 use crate::report::{refined, repair};
 use crate::results::{
-    CostRow, Measurement, MeshInfo, Results, Settings, Status, StructureInfo, Teaching,
-    FORMAT_VERSION,
+    CostRow, MeshInfo, MeshRoundsRow, Results, RoundSettings, Settings, Status, StructureInfo,
+    Teaching, FORMAT_VERSION,
 };
 use crate::timing::meter::MemoryMeter;
 use crate::{fit, machine, probe, svg};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::time::Duration;
 use topolab_structures::registry::{StructureVisitor, Structures};
 use topolab_structures::repair::RepairLog;
 use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
@@ -55,21 +53,6 @@ pub trait Host {
     fn baselines(&self, used: Used) -> Vec<BaselineRun>;
     /// Writes one file of the report, whole or not at all.
     fn write(&self, path: &Path, bytes: &[u8]) -> Result<(), ReportError>;
-}
-
-struct Measure<'a> {
-    case: &'a MeshCase<'a>,
-    plan: &'a Plan,
-    meter: &'a dyn MemoryMeter,
-    est: &'a mut Estimator,
-    out: &'a mut Vec<Measurement>,
-}
-
-impl StructureVisitor for Measure<'_> {
-    type Output = Result<(), String>;
-    fn visit<M: MeshTopology>(self) -> Self::Output {
-        measure_structure::<M>(self.case, self.plan, self.meter, self.est, self.out)
-    }
 }
 
 struct Describe;
@@ -117,18 +100,7 @@ impl StructureVisitor for Describe {
 /// Runs the report `req` asks for on the structures of the list `L` (each name of
 /// `req.names` must be among them); returns a summary line.
 pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, ReportError> {
-    let plan = Plan {
-        cell_budget: Duration::from_millis(if req.quick { 30 } else { 100 }),
-        cell_max: Duration::from_millis(if req.quick { 150 } else { 300 }),
-        min_reps: 3,
-        max_reps: if req.full {
-            clock::FULL_MAX_REPS
-        } else {
-            clock::MAX_REPS
-        },
-        light: false,
-    };
-    let samples = if req.quick { 64 } else { 128 };
+    let plan = clock::plan(req.quick, req.full);
     // The same glibc policy for every structure, C++ baselines included: freed memory stays
     // with the process, so warm builds reuse it whatever the run built before.
     if !topolab_alloc::keep_freed_memory() {
@@ -153,8 +125,8 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         settings: Settings {
             quick: req.quick,
             sizes: req.sizes.clone(),
-            samples,
-            cell_budget_s: plan.cell_budget.as_secs_f64(),
+            samples: plan.samples,
+            rounds: RoundSettings::of(&plan),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command: req.command.clone(),
             sections: selection.names(),
@@ -177,6 +149,8 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         reads: Vec::new(),
         notes,
         phases: Vec::new(),
+        rounds: Vec::new(),
+        drift: Vec::new(),
     };
     topolab_baselines::registry::note_absent(&mut results.notes);
     results
@@ -191,27 +165,31 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     let (cases, mut repaired) = make_meshes(req, &selection, host, &mut results.notes)?;
     clock.lap(Phase::MESHES, None);
     let measured = cases.iter().filter(|c| selection.measures(&c.1)).count();
-    let bar = ProgressBar::new((measured * req.names.len()) as u64);
+    let bar = ProgressBar::new(measured as u64);
     bar.set_style(
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template")
             .progress_chars("=> "),
     );
     let mut est = Estimator::default();
-    // Real meshes appear in one table (construction and the 1-ring sweep): measure only those.
-    let light = Plan {
-        light: true,
-        ..plan
-    };
+    // The Targets between two structures read the size sweep's rounds on the largest torus,
+    // whose cells they need get more rounds there.
+    let target_mesh = cases
+        .iter()
+        .filter(|c| c.1 == "torus" && selection.measures(&c.1))
+        .max_by_key(|c| c.2.num_faces())
+        .map(|c| c.0.clone());
+    let wanted = crate::targets::swept::wanted(&req.names);
+    let drift = crate::probe::Drift::new();
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
         let light_here = selection.light(fam) || (!req.full && refined::light(name));
-        let plan = if light_here { &light } else { &plan };
-        let queries = sample_queries(soup, samples, 2026);
+        let targets_here = target_mesh.as_deref() == Some(name.as_str());
+        let plan = &clock::plan_for(&plan, light_here, fam, targets_here);
         let case = MeshCase {
             name,
             family: fam,
             soup,
-            queries: &queries,
+            seed: 2026,
         };
         if bar.is_hidden() {
             eprintln!(
@@ -221,18 +199,43 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
                 soup.num_faces()
             );
         }
-        for s in req.names.iter().filter(|_| selection.measures(fam)) {
-            bar.set_message(format!("{name}: {s}"));
-            let measure = Measure {
-                case: &case,
+        if selection.measures(fam) {
+            // The machine's drift over the run: the same probe before every mesh.
+            results.drift.push(drift.read(name, clock.since_start()));
+            let wanted_here = if targets_here { &wanted[..] } else { &[] };
+            let mut progress = |round: usize| bar.set_message(format!("{name}: round {round}"));
+            let done = crate::rounds::measure_mesh::<L>(
+                &req.names,
+                &case,
                 plan,
-                meter: host.meter(),
-                est: &mut est,
-                out: &mut results.measurements,
-            };
-            L::visit(s, measure)
-                .map_err(|_| ReportError::Usage(format!("no structure is called {s}")))?
-                .map_err(ReportError::Measurement)?;
+                wanted_here,
+                host.meter(),
+                &mut est,
+                &mut progress,
+            )
+            .map_err(|e| {
+                ReportError::Measurement(if e.contains("checksum mismatch") {
+                    format!("{e}\nThe report stops: two structures disagree.")
+                } else {
+                    e
+                })
+            })?;
+            if targets_here {
+                results.targets.extend(crate::targets::swept::turns(
+                    &req.names,
+                    name,
+                    soup,
+                    &done,
+                    done.run.seconds,
+                ));
+            }
+            results.rounds.push(MeshRoundsRow {
+                mesh: name.clone(),
+                rounds: done.run.rounds,
+                extra: done.run.extra,
+                seconds: done.run.seconds,
+            });
+            results.measurements.extend(done.measurements);
             bar.inc(1);
         }
         cross_check(&results.measurements, name).map_err(|e| {

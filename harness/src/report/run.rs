@@ -1,8 +1,9 @@
 //! What a report run is asked for ([`Request`]: plain data, not a command line's), how it
 //! fails ([`ReportError`]), and what a section's own measurement works with ([`Run`]).
 
-use crate::measure::{MeshCase, Plan};
-use crate::results::{Measurement, Results};
+use crate::measure::Plan;
+use crate::results::Results;
+use crate::rounds::{SetUp, Setup};
 use crate::timing::meter::MemoryMeter;
 use std::path::PathBuf;
 use topolab_structures::PolygonSoup;
@@ -123,14 +124,9 @@ pub type Case = (String, String, PolygonSoup);
 /// The structures of a run, by name, for the sections that measure some of them themselves
 /// ([`Listed`](crate::report::listed::Listed) lists those of a list of structures).
 pub trait Roster {
-    /// The vertex 1-ring sweep (R00 over every vertex) of the structure called `name` on
-    /// `case`; `None` for a name not in the list.
-    fn sweep(
-        &self,
-        name: &str,
-        case: &MeshCase,
-        plan: &Plan,
-    ) -> Option<Result<Measurement, String>>;
+    /// The structure called `name` set up on `case` for rounds ([`crate::rounds`]); `None` for
+    /// a name not in the list.
+    fn set_up<'a>(&self, name: &str, set_up: SetUp<'a, '_>) -> Option<Result<Setup<'a>, String>>;
 
     /// The turns of a target's group: the structure called `first` with the one called
     /// `second`, or with the probe (`None` or [`PROBE`](crate::targets::plan::PROBE)); `None`

@@ -329,11 +329,7 @@ fn capacity(h: &mut String, r: &ScaleResults) {
 }
 
 /// One line per structure of `y` against triangles.
-fn lines(
-    r: &ScaleResults,
-    styles: &[Style],
-    y: impl Fn(&Measure) -> Option<(f64, Option<&Timing>)>,
-) -> Vec<Line> {
+fn lines(r: &ScaleResults, styles: &[Style], y: impl Fn(&Measure) -> Option<f64>) -> Vec<Line> {
     r.structures
         .iter()
         .zip(styles)
@@ -343,13 +339,14 @@ fn lines(
             points: measured(r, &e.name)
                 .into_iter()
                 .filter_map(|(_, m)| {
-                    let (value, t) = y(m)?;
+                    let value = y(m)?;
                     Some(Point {
                         x: m.faces as f64,
                         y: value,
-                        min: t.map(|t| t.min),
-                        max: t.map(|t| t.max),
-                        reps: t.map_or(1, |t| t.reps),
+                        // A scale cell's runs share one build: their range is no interval.
+                        low: None,
+                        high: None,
+                        rounds: 0,
                     })
                 })
                 .collect(),
@@ -370,9 +367,7 @@ fn plots(h: &mut String, r: &ScaleResults) {
         })
         .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(x), b.max(x)));
     let grey = plot::styles(&[Family::CornerLists])[0];
-    let mut r00 = lines(r, &styles, |m| {
-        m.r00_sweep.as_ref().map(|t| (t.ns, Some(t)))
-    });
+    let mut r00 = lines(r, &styles, |m| m.r00_sweep.as_ref().map(|t| t.ns));
     if hi > 0.0 {
         r00.extend(r.probe.iter().map(|l| {
             Line {
@@ -386,9 +381,9 @@ fn plots(h: &mut String, r: &ScaleResults) {
                     .map(|&x| Point {
                         x,
                         y: l.load_ns,
-                        min: None,
-                        max: None,
-                        reps: 1,
+                        low: None,
+                        high: None,
+                        rounds: 0,
                     })
                     .collect(),
             }
@@ -399,7 +394,7 @@ fn plots(h: &mut String, r: &ScaleResults) {
         "triangles",
         "ns per face",
         "ns per face",
-        &lines(r, &styles, |m| Some((m.construction_ns_per_face, None))),
+        &lines(r, &styles, |m| Some(m.construction_ns_per_face)),
     ));
     h.push_str(&plot::loglog(
         "R00 sweep (warm)",
@@ -413,23 +408,21 @@ fn plots(h: &mut String, r: &ScaleResults) {
         "triangles",
         "ns per vertex",
         "ns per vertex",
-        &lines(r, &styles, |m| {
-            m.smoothing.as_ref().map(|t| (t.ns, Some(t)))
-        }),
+        &lines(r, &styles, |m| m.smoothing.as_ref().map(|t| t.ns)),
     ));
     h.push_str(&plot::loglog(
         "memory: resident",
         "triangles",
         "bytes per triangle",
         "bytes per triangle",
-        &lines(r, &styles, |m| Some((per_tri(m.resident_bytes, m), None))),
+        &lines(r, &styles, |m| Some(per_tri(m.resident_bytes, m))),
     ));
     h.push_str(&plot::loglog(
         "memory: peak while building",
         "triangles",
         "bytes per triangle",
         "bytes per triangle",
-        &lines(r, &styles, |m| Some((per_tri(m.peak_bytes, m), None))),
+        &lines(r, &styles, |m| Some(per_tri(m.peak_bytes, m))),
     ));
     h.push_str("</div>");
 }

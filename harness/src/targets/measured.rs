@@ -77,6 +77,8 @@ pub fn measured_chain(turns: &[Turns], t: &Target, limit: Option<&Limit>) -> Opt
             median: s.median / l.loads_per_item,
             min: s.min / l.loads_per_item,
             max: s.max / l.loads_per_item,
+            low: s.low / l.loads_per_item,
+            high: s.high / l.loads_per_item,
             ..s
         })
 }

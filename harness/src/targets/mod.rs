@@ -30,6 +30,7 @@ pub mod measured;
 pub mod plan;
 pub mod probe;
 pub mod rounds;
+pub mod swept;
 #[cfg(test)]
 mod tests;
 pub mod text;

@@ -3,11 +3,10 @@
 
 use topolab_structures::algorithms::changing::Changing;
 
-/// Timed rounds of every target, after one warm-up round. With 7, the median of one run
-/// moved by more than the margins it was judged on: on one binary, seven runs of the che-l2 /
-/// index-half-edge R00 target (torus-1M) read 1.16 to 1.26, their rounds 1.05 to
-/// 1.38; with 21, two runs read 1.23 and 1.23, for about 4 s more in the report.
-pub const ROUNDS: usize = 21;
+/// Timed rounds of the targets the Targets section times itself (against a limit), after one
+/// warm-up round: as many as the size sweep gives the targets it times
+/// ([`crate::targets::swept::SWEPT_ROUNDS`]), each on a fresh build.
+pub const ROUNDS: usize = crate::targets::swept::SWEPT_ROUNDS;
 
 /// Timed rounds of the changing workloads: each run is a fresh build and a whole workload
 /// (about 1.5 s a round for the collapse test on a 1M-triangle torus), so fewer, to keep the

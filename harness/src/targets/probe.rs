@@ -68,7 +68,8 @@ impl ProbeTurns {
 
 /// Times `A` on `cells` taking turns with the probe ([`ProbeTurns`]): its read, its chases and
 /// its checksum arithmetic, each timed by a [`Stopwatch`] as the sweep is: a structure held to
-/// its limit.
+/// its limit. `A` is built afresh in each of its turns and swept once untimed before its timed
+/// sweep.
 pub fn with_probe<A: MeshTopology>(
     mesh: &str,
     soup: &PolygonSoup,
@@ -76,7 +77,7 @@ pub fn with_probe<A: MeshTopology>(
     probe: ProbeTurns,
     meter: &dyn MemoryMeter,
 ) -> Result<Vec<Turns>, String> {
-    let mut a = Built::<A>::new(soup)?;
+    let mut a: Option<Built<A>> = None;
     let reader = Reader::reading(probe.read_bytes, probe.read_per_turn);
     let cycle = probe.chase.map(|c| Cycle::new(c.bytes));
     let chase = |step| {
@@ -116,7 +117,14 @@ pub fn with_probe<A: MeshTopology>(
                     timed(&mut || chase.run())
                 }
                 PROBE_CHECKSUM => timed(&mut || terms.run()),
-                _ => return a.run(cell, meter),
+                // A fresh build every round, as the size sweep's rounds: no target is one
+                // draw of where the structure's arrays landed. A warm-up run first, untimed.
+                _ => {
+                    a = None;
+                    let a = a.insert(Built::<A>::new(soup)?);
+                    a.run(cell, meter)?;
+                    return a.run(cell, meter);
+                }
             })
         })?;
         out.push(turns(cell, mesh, soup, &names, ns, start));

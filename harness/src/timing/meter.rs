@@ -32,3 +32,17 @@ pub trait MemoryMeter {
         None
     }
 }
+
+/// A meter that counts nothing and times by the wall clock: for tests and probes that run
+/// kernels without the report's counting allocator.
+pub struct Uncounted;
+
+impl MemoryMeter for Uncounted {
+    fn current(&self) -> usize {
+        0
+    }
+    fn peak(&self) -> usize {
+        0
+    }
+    fn reset_peak(&self) {}
+}

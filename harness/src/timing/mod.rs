@@ -1,6 +1,7 @@
 //! Timing: repeated runs with a warm-up, a time budget and medians ([`time`]); contenders
 //! taking turns ([`turns`]); the memory meter and the measuring thread's clock ([`meter`]).
 
+pub mod interval;
 pub mod meter;
 pub mod turns;
 

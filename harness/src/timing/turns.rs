@@ -4,6 +4,7 @@
 //! thread's CPU time when the meter knows it; the per-round values make a [`Spread`].
 
 use crate::changing::MeshChecksum;
+use crate::timing::interval::Interval;
 use crate::timing::median;
 use crate::timing::meter::MemoryMeter;
 use std::time::Instant;
@@ -80,7 +81,7 @@ pub fn take_turns(
     Ok(ns)
 }
 
-/// The median of per-round values and their spread.
+/// The median of per-round values, their spread and the interval of the median.
 #[derive(Copy, Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Spread {
     /// The median.
@@ -91,6 +92,12 @@ pub struct Spread {
     pub max: f64,
     /// How many values.
     pub rounds: usize,
+    /// The order-statistics interval of the median ([`Interval::of_median`]).
+    pub low: f64,
+    /// Its high end.
+    pub high: f64,
+    /// The probability that it holds the median.
+    pub coverage: f64,
 }
 
 impl Spread {
@@ -102,11 +109,15 @@ impl Spread {
             return None;
         }
         v.sort_by(f64::total_cmp);
+        let ci = Interval::of_median(&v)?;
         Some(Spread {
             median: median(&v),
             min: v[0],
             max: v[v.len() - 1],
             rounds: v.len(),
+            low: ci.low,
+            high: ci.high,
+            coverage: ci.coverage,
         })
     }
 
@@ -168,14 +179,10 @@ mod tests {
         let b = [5.0, 20.0, 4.0, 5.5, 10.0];
         let s = Spread::of_ratios(&a, &b).unwrap();
         assert_eq!(
-            s,
-            Spread {
-                median: 2.0,
-                min: 2.0,
-                max: 3.0,
-                rounds: 5
-            }
+            (s.median, s.min, s.max, s.rounds, s.low, s.high),
+            (2.0, 2.0, 3.0, 5, 2.0, 3.0)
         );
+        assert!((s.coverage - 0.9375).abs() < 1e-12);
         let even = Spread::of([1.0, 4.0, 2.0, 3.0]).unwrap();
         assert_eq!((even.median, even.min, even.max), (2.5, 1.0, 4.0));
         // Rounds that do not match, nothing, or a zero time make no ratio.

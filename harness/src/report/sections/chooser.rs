@@ -8,7 +8,9 @@
 //! state what the design gives; the numbers beside them say what it measured on this machine.
 
 use crate::kernels::Kernel;
+use crate::report::format::esc;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
+use crate::report::sure::{interval_title, tied};
 use crate::results::{Measurement, Results, Status, StructureInfo, Subject};
 use std::fmt::Write;
 use topolab_structures::{Family, Operator, Workload};
@@ -41,20 +43,70 @@ pub fn when_to_pick(name: &str) -> Option<&'static str> {
 }
 
 /// The smallest value (by `value`) of a measure among `of` on the largest torus each was
-/// measured on, with its structure and mesh.
+/// measured on, with its structure and mesh, and the others it cannot be told apart from
+/// (their intervals overlap its: [`tied`]), with their values, when `value` is the cell's time
+/// (a count, such as bytes, has no interval).
 fn best<'a>(
     r: &'a Results,
     of: &[&'a StructureInfo],
     value: &dyn Fn(&Measurement) -> Option<f64>,
     subject: Subject,
     kernel: Kernel,
-) -> Option<(&'a str, f64, &'a str)> {
-    of.iter()
+) -> Option<Best<'a>> {
+    let mut all: Vec<(&'a str, f64, &'a Measurement)> = of
+        .iter()
         .filter_map(|s| {
             let m = cell(r, &s.name, subject, kernel, "torus")?;
-            Some((s.name.as_str(), value(m)?, m.mesh.as_str()))
+            Some((s.name.as_str(), value(m)?, m))
         })
-        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .collect();
+    all.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let (name, x, m) = *all.first()?;
+    let timed = value(m) == m.ns_per_item;
+    let ties = all[1..]
+        .iter()
+        .filter(|o| timed && tied(m, o.2))
+        .map(|o| (o.0, o.1))
+        .collect();
+    Some(Best {
+        name,
+        value: x,
+        mesh: m.mesh.as_str(),
+        ties,
+    })
+}
+
+/// The best of a measure and the structures tied with it.
+struct Best<'a> {
+    name: &'a str,
+    value: f64,
+    mesh: &'a str,
+    ties: Vec<(&'a str, f64)>,
+}
+
+impl Best<'_> {
+    /// `name` (bold with `bold`) and its value with `digits` decimals, then the tied ones.
+    fn text(&self, bold: bool, digits: usize) -> String {
+        let name = if bold {
+            format!("<b>{}</b>", self.name)
+        } else {
+            self.name.to_string()
+        };
+        let mut t = format!("{name}, {:.digits$}", self.value);
+        if !self.ties.is_empty() {
+            let others: Vec<String> = self
+                .ties
+                .iter()
+                .map(|(s, x)| format!("{s} {x:.digits$}"))
+                .collect();
+            let _ = write!(
+                t,
+                " (tied, their intervals overlap, with {})",
+                others.join(", ")
+            );
+        }
+        t
+    }
 }
 
 /// The paragraph for Rust users under the table, from this run's numbers: per measure, the
@@ -97,7 +149,7 @@ fn rust_users(h: &mut String, r: &Results) {
     let mut lines = Vec::new();
     let bytes = |m: &Measurement| m.bytes.map(|b| b as f64 / m.triangles.max(1) as f64);
     let per_item = |m: &Measurement| m.ns_per_item;
-    if let Some((c, x, mesh)) = best(
+    if let Some(c) = best(
         r,
         &crates,
         &bytes,
@@ -105,18 +157,20 @@ fn rust_users(h: &mut String, r: &Results) {
         Kernel::Construction,
     ) {
         let lab_best = best(r, &lab, &bytes, Subject::Construction, Kernel::Construction)
-            .map(|(s, y, _)| format!(" (of the lab's structures, {s}: {y:.0})"))
+            .map(|b| format!(" (of the lab's structures, {})", b.text(false, 0)))
             .unwrap_or_default();
         lines.push(format!(
-            "takes the fewest bytes per triangle on {mesh}: <b>{c}</b>, {x:.0}{lab_best}"
+            "takes the fewest bytes per triangle on {}: {}{lab_best}",
+            c.mesh,
+            c.text(true, 0)
         ));
     }
     for (what, subject, kernel, unit) in measures {
-        if let Some((c, x, _)) = best(r, &crates, &per_item, subject, kernel) {
+        if let Some(c) = best(r, &crates, &per_item, subject, kernel) {
             let lab_best = best(r, &lab, &per_item, subject, kernel)
-                .map(|(s, y, _)| format!(" (of the lab's structures, {s}: {y:.1})"))
+                .map(|b| format!(" (of the lab's structures, {})", b.text(false, 1)))
                 .unwrap_or_default();
-            lines.push(format!("{what}: <b>{c}</b>, {x:.1} {unit}{lab_best}"));
+            lines.push(format!("{what}: {} {unit}{lab_best}", c.text(true, 1)));
         }
     }
     let names = |pick: &dyn Fn(&StructureInfo) -> bool| {
@@ -190,7 +244,7 @@ fn section(h: &mut String, r: &Results) {
     {
         return;
     }
-    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (every structure's blocks counted alike, the C++ baselines' too: see Memory per triangle); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure implements the lab's editing operations (<code>MeshEdit</code>): of the operations the lecture on polygon-mesh data structures asks for (select, insert, delete, weld, rotate and scale vertices, edges and faces; weld whole meshes), the insertion and deletion of vertices and faces and the weld of vertices and of whole meshes; the edge flip, the edge and face splits, the edge collapse and the vertex split come from pmp-library and OpenMesh (see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and the runs.</div>");
+    h.push_str("<h2>Choosing a structure</h2><div class=read><b>How to read it.</b> Measured in this run, on the largest closed torus (a structure that stores only grids: on the largest grid, marked): the heap bytes per triangle of the built structure, geometry included (every structure's blocks counted alike, the C++ baselines' too: see Memory per triangle); construction per face (warm builds); the vertex 1-ring sweep (R00 over every vertex) and one step of uniform smoothing, per vertex. <i>Editable</i>: whether the structure implements the lab's editing operations (<code>MeshEdit</code>): of the operations the lecture on polygon-mesh data structures asks for (select, insert, delete, weld, rotate and scale vertices, edges and faces; weld whole meshes), the insertion and deletion of vertices and faces and the weld of vertices and of whole meshes; the edge flip, the edge and face splits, the edge collapse and the vertex split come from pmp-library and OpenMesh (see Changing workloads). The last column says when the design fits, from the lecture on polygon-mesh data structures and the CHE thesis chapter. Hover a number for the mesh and its interval; two structures whose intervals overlap cannot be told apart in this run.</div>");
     h.push_str("<table><tr><th class=l>structure</th><th class=l>family</th><th>bytes per triangle</th><th>construction, ns/face</th><th>R00 sweep, ns/vertex</th><th>smoothing, ns/vertex</th><th class=l>stores</th><th class=l>editable</th><th class=l>pick it when</th></tr>");
     for s in &r.structures {
         let refused_torus = r.measurements.iter().any(|m| {
@@ -218,10 +272,10 @@ fn section(h: &mut String, r: &Results) {
         );
         let td = |m: Option<&Measurement>, x: Option<f64>| match m {
             Some(m) => format!(
-                "<td title=\"{} ({} triangles), {} runs\">{}{}</td>",
+                "<td title=\"{} ({} triangles): {}\">{}{}</td>",
                 m.mesh,
                 m.triangles,
-                m.reps,
+                esc(&interval_title(m)),
                 ns(x),
                 if fam == "grid" {
                     " <span class=small>(grid)</span>"

@@ -60,9 +60,9 @@ fn hull(h: &mut String, r: &Results) {
                     .map(|x| plot::Point {
                         x: x.n as f64,
                         y: x.seconds * 1e9 / x.n as f64,
-                        min: None,
-                        max: None,
-                        reps: 0,
+                        low: None,
+                        high: None,
+                        rounds: 0,
                     })
                     .collect(),
             })

@@ -1,14 +1,16 @@
 //! "Element order": the vertex 1-ring sweep of a mesh renumbered in each order.
 
-use crate::kernels::sample_queries;
-use crate::measure::{cross_check, MeshCase};
+use crate::kernels::Kernel;
+use crate::measure::{cross_check, Estimator, MeshCase};
 use crate::phases::Phase;
-use crate::report::format::ns;
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Refined, Section};
 use crate::report::sections::real_at_scale::FAMILY;
-use crate::results::{Measurement, Results, Status};
+use crate::report::sure::ns_with_interval;
+use crate::results::{Measurement, Results, Status, Subject};
+use crate::rounds::{round_sets, run_rounds, Contender, SetUp, Setup};
 use std::fmt::Write;
+use topolab_structures::{Operator, PolygonSoup};
 
 fn orderings(h: &mut String, r: &Results, names: &[&str]) {
     let all: Vec<&Measurement> = r
@@ -54,7 +56,7 @@ fn ordering_table(h: &mut String, base: &str, ms: &[&Measurement], names: &[&str
         for c in &cols {
             match ms.iter().find(|m| m.mesh == mesh && m.structure == *c) {
                 Some(m) if m.status == Status::Measured => {
-                    let _ = write!(h, "<td>{}</td>", m.ns_per_item.map(ns).unwrap_or_default());
+                    let _ = write!(h, "<td>{}</td>", ns_with_interval(m));
                 }
                 _ => h.push_str("<td class=skip>–</td>"),
             }
@@ -80,7 +82,7 @@ const ORDERING_STRUCTURES: [&str; 7] = [
 /// on each (and of every structure from outside the lab: whoever adds a structure wants to see
 /// how it takes reordering).
 fn measure(run: &mut Run) -> Result<(), ReportError> {
-    let (cases, plan, results) = (run.cases, run.plan, &mut *run.results);
+    let (cases, plan) = (run.cases, run.plan);
     let torus = cases
         .iter()
         .filter(|c| c.1 == "torus" && c.2.num_faces() <= 300_000)
@@ -96,27 +98,77 @@ fn measure(run: &mut Run) -> Result<(), ReportError> {
         .iter()
         .filter(|n| ORDERING_STRUCTURES.contains(&n.as_str()) || added.contains(n))
         .collect();
+    let plan = crate::report::clock::plan_for(plan, true, "ordering", false);
     for (base, _, soup) in torus.into_iter().chain(refined) {
-        for ordering in topolab_structures::ordering::Ordering::ALL {
-            eprintln!("topolab report: ordering {} of {base}", ordering.name());
-            let re = topolab_structures::ordering::reorder(soup, ordering).soup;
-            let name = format!("{base}/{}", ordering.name());
-            let queries = sample_queries(&re, 1, 0);
-            let case = MeshCase {
-                name: &name,
+        // Every order of the mesh beside every other, in the same rounds: each structure on
+        // each order built afresh and swept once a round, in a random order.
+        let orders: Vec<(String, PolygonSoup)> = topolab_structures::ordering::Ordering::ALL
+            .into_iter()
+            .map(|o| {
+                let re = topolab_structures::ordering::reorder(soup, o).soup;
+                (format!("{base}/{}", o.name()), re)
+            })
+            .collect();
+        let cases: Vec<MeshCase> = orders
+            .iter()
+            .map(|(name, re)| MeshCase {
+                name,
                 family: "ordering",
-                soup: &re,
-                queries: &queries,
-            };
+                soup: re,
+                seed: 0,
+            })
+            .collect();
+        eprintln!(
+            "topolab report: the orders of {base}, {} structures on each, in rounds",
+            structures.len()
+        );
+        let est = Estimator::default();
+        let mut contenders: Vec<Box<dyn Contender + '_>> = Vec::new();
+        let mut refused = Vec::new();
+        for case in &cases {
+            // The probe that skips a sweep too long to run (a scanning structure added from
+            // outside the lab).
+            let sets = round_sets(case, &plan);
             for s in &structures {
-                let m = run
+                let set_up = SetUp {
+                    case,
+                    sets: &sets,
+                    plan: &plan,
+                    meter: run.meter,
+                    est: &est,
+                    checks: false,
+                };
+                let setup = run
                     .structures
-                    .sweep(s, &case, plan)
+                    .set_up(s, set_up)
                     .ok_or_else(|| ReportError::Usage(format!("no structure is called {s}")))?
                     .map_err(ReportError::Measurement)?;
-                results.measurements.push(m);
+                match setup {
+                    Setup::Ready(c) => contenders.push(c),
+                    Setup::Refused(m) => {
+                        let mut m = *m;
+                        // The order's row shows the sweep the structure could not make.
+                        m.operator = Subject::Query(Operator::R00);
+                        m.kernel = Kernel::Sweep;
+                        refused.push(m);
+                    }
+                }
             }
-            cross_check(&results.measurements, &name).map_err(ReportError::Measurement)?;
+        }
+        run_rounds(&mut contenders, &plan.rounds, &[], run.meter, &mut |_| {})
+            .map_err(ReportError::Measurement)?;
+        let mut est = est;
+        let r00 = (Subject::Query(Operator::R00), Kernel::Sweep);
+        for c in contenders {
+            run.results.measurements.extend(
+                c.finish(&mut est)
+                    .into_iter()
+                    .filter(|m| (m.operator, m.kernel) == r00),
+            );
+        }
+        run.results.measurements.extend(refused);
+        for (name, _) in &orders {
+            cross_check(&run.results.measurements, name).map_err(ReportError::Measurement)?;
         }
     }
     Ok(())

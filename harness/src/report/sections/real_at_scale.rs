@@ -3,9 +3,10 @@
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
 use crate::kernels::Kernel;
-use crate::report::format::ns;
+use crate::report::format::{esc, ns};
 use crate::report::run::MeshFamily;
 use crate::report::section::{Needs, Page, Refined, Section};
+use crate::report::sure::interval_title;
 use crate::results::{Measurement, MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::{Operator, Workload};
@@ -90,10 +91,8 @@ fn section(h: &mut String, r: &Results, names: &[&str]) {
                             .map(|o| format!("<br><span class=small>{:.2}×</span>", t / o))
                             .unwrap_or_default();
                         format!(
-                            "<td title=\"median of {} runs; fastest {}, slowest {}\">{}{ratio}</td>",
-                            m.reps,
-                            m.min_ns_per_item.map(ns).unwrap_or_default(),
-                            m.max_ns_per_item.map(ns).unwrap_or_default(),
+                            "<td title=\"{}\">{}{ratio}</td>",
+                            esc(&interval_title(m)),
                             ns(t)
                         )
                     }

@@ -1,8 +1,9 @@
 //! "Real meshes": the fetched meshes, each structure's sweep and construction on them.
 
 use crate::kernels::Kernel;
-use crate::report::format::{esc, ns};
+use crate::report::format::esc;
 use crate::report::section::{Needs, Page, Real, Section};
+use crate::report::sure::ns_with_interval;
 use crate::results::{MeshInfo, Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::Operator;
@@ -48,8 +49,8 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
                 ),
                 (Some(c), Some(s)) if s.status == Status::Measured => format!(
                     "<td>{} /v<br><span class=small>build {} /f</span></td>",
-                    s.ns_per_item.map(ns).unwrap_or_default(),
-                    c.ns_per_item.map(ns).unwrap_or_default()
+                    ns_with_interval(s),
+                    ns_with_interval(c)
                 ),
                 (Some(_), Some(s)) if s.status == Status::Skipped => {
                     "<td class=skip>skipped</td>".to_string()

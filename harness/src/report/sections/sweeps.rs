@@ -5,6 +5,7 @@ use crate::kernels::Kernel;
 use crate::report::cells::{largest, limit_text, times_limit};
 use crate::report::format::{esc, ns};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
+use crate::report::sure::ns_with_interval;
 use crate::results::{Results, Status, Subject};
 use std::fmt::Write;
 use topolab_structures::Operator;
@@ -31,14 +32,13 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
         for s in names {
             let cell = match sweep(s, op) {
                 Some(m) if m.status == Status::Measured => {
-                    let t = m.ns_per_item.unwrap_or(f64::NAN);
+                    let t = ns_with_interval(m);
                     match (times_limit(m), &m.limit) {
                         (Some(x), Some(l)) => format!(
-                            "<td title=\"{}\">{}<br><span class=small>{x:.1}× limit</span></td>",
+                            "<td title=\"{}\">{t}<br><span class=small>{x:.1}× limit</span></td>",
                             esc(&limit_text(l)),
-                            ns(t)
                         ),
-                        _ => format!("<td>{}<br><span class=small>–</span></td>", ns(t)),
+                        _ => format!("<td>{t}<br><span class=small>–</span></td>"),
                     }
                 }
                 Some(m) if m.status == Status::Skipped => format!(

@@ -8,13 +8,14 @@ use crate::report::cells::{cells, family_of, table_kernel};
 use crate::report::format::ns;
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
+use crate::report::sure::ns_with_interval;
 use crate::results::{Results, Status, Subject};
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_structures::Operator;
 
 fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
-    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the median time per query at the largest size measured. Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (the same random queries for every structure; the C++ baselines answer them, like every kernel of theirs, in one loop in C++, the queries handed over in the library's own handles before the clock starts).</div>");
+    h.push_str("<h2>Table 4.1, measured</h2><div class=read><b>How to read it.</b> Each row is an operator, each column a structure. In every cell: the cost the structure declares (the tables of the lecture on polygon-mesh data structures and Table 4.1 of the CHE thesis chapter), then the exponent <i>e</i> fitted to the measured time per query against mesh size (<i>t ∝ n<sup>e</sup></i>: 0 means constant time, 1 means the query scans the mesh), then the time per query at the largest size measured (the median of its rounds, each on fresh builds; hover it for its interval). Green: the measurement agrees with the theory; red: it does not (look closer: caches make O(1) queries slower on big meshes); grey: skipped because it would take too long (the estimate is shown: from the smaller sizes, or, at the first size, from the time per query of a timed sample of queries). Relations R00–R22 are measured on closed tori, boundary operators on open grids, by the sampled kernel (each round asks queries drawn afresh for that round, the same for every structure, none asked twice in a round, so no query finds its records left in cache by the cell's earlier passes; the C++ baselines answer them, like every kernel of theirs, in one loop in C++, the queries handed over in the library's own handles before the clock starts).</div>");
     h.push_str("<table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
@@ -76,11 +77,9 @@ fn table_4_1(h: &mut String, r: &Results, names: &[&str]) {
                             m.triangles,
                             m.estimate_ns_per_item.map(ns).unwrap_or_default()
                         ),
-                        (_, Some(lm)) => format!(
-                            "{} at {} tri",
-                            lm.ns_per_item.map(ns).unwrap_or_default(),
-                            lm.triangles
-                        ),
+                        (_, Some(lm)) => {
+                            format!("{} at {} tri", ns_with_interval(lm), lm.triangles)
+                        }
                         _ => String::new(),
                     };
                     let class = if m.status == Status::Skipped && class.is_empty() {

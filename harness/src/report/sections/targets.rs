@@ -16,6 +16,7 @@ use crate::targets::measured::{measured, ran, shown_turns};
 use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, PROBE, ROUNDS, TARGETS};
 use crate::targets::probe::ProbeTurns;
 use crate::targets::rounds::turns;
+use crate::targets::swept::SWEPT_ROUNDS;
 use crate::targets::text::{
     chain_text, checks_text, missed_limit_text, one_after_another, sequential, sequential_subject,
     versus_text,
@@ -83,7 +84,7 @@ fn timed<M: MeshTopology>(
 /// between runs fails the report.
 fn measure(
     cases: &[Mesh],
-    names: &[String],
+    (names, swept): (&[String], &[(Cell, Vec<String>)]),
     measurements: &[Measurement],
     probe: &Probe,
     structures: &dyn Roster,
@@ -119,6 +120,17 @@ fn measure(
             .cells
             .iter()
             .partition(|c| matches!(c, Cell::Changing(_)));
+        // Two structures on a cell of the size sweep: read from its rounds on this mesh
+        // already ([`crate::targets::swept`]), as the changing workloads are from the changing
+        // section's rounds.
+        let built: Vec<Cell> = built
+            .into_iter()
+            .filter(|&c| {
+                !swept
+                    .iter()
+                    .any(|(cell, who)| *cell == c && *who == group.structures)
+            })
+            .collect();
         // What the probe measures in turns beside the group's sweep, from its limit.
         let held_to_limit = group.structures.get(1) == Some(&PROBE);
         let probe_turns = held_to_limit
@@ -150,6 +162,12 @@ fn measure(
                 .map_err(fail)?;
             out.extend(turns);
         }
+        // The changing section's rounds on this mesh, when it ran, are these turns already.
+        let changing = changing.into_iter().filter(|&c| {
+            !swept
+                .iter()
+                .any(|(cell, who)| *cell == c && *who == group.structures)
+        });
         for cell in changing {
             let Cell::Changing(w) = cell else { continue };
             let t = Instant::now();
@@ -183,7 +201,7 @@ fn render(h: &mut String, r: &Results) {
     let turns = shown_turns(r, mesh);
     let _ = write!(
         h,
-        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured with both sides taking turns: the two structures are built once, then run A, B, A, B, … for {ROUNDS} rounds after one warm-up round ({CHANGING_ROUNDS} rounds for the changing workloads, each run from a fresh build), so that a change of load on the machine slows both sides of a round alike; every run is timed in the measuring thread's CPU time, so time slices the machine gives to other processes do not count. Each round gives one ratio; <i>in turns</i> is their median, <i>spread</i> the smallest and the largest, and the target is met when the median is at most the goal. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe: its sequential read of the working set that sets the limit's bandwidth bound, its chase through the working set that sets the latency bound (plain loads, and steps doing the chain's own arithmetic), and its checksum arithmetic; each round's sweep is divided by the limit at the bandwidth, load latency and time per term of that round. <i>One after another</i> is the same ratio from the size sweep's cells, where structures are timed one after the other: it moves with the load between them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>spread</th><th>rounds</th><th>one after another</th><th>goal</th><th>met</th></tr>"
+        "<h2>Targets ({mesh}, {tri} triangles, this run)</h2><div class=read><b>How to read it.</b> Each target is a ratio of two times measured in turns: in every round both sides ran, each on a fresh build, one after the other in a random order, so that a change of load on the machine slows both sides of a round alike and no ratio is one draw of where a structure's arrays landed; every run is timed in the measuring thread's CPU time. A target between two structures on the 1-ring sweep, smoothing or construction reads the size sweep's own rounds on this mesh (at least {SWEPT_ROUNDS} of them: the same cells the chooser and the tables show); a target against a limit takes its own {ROUNDS} rounds after one warm-up round, the structure built afresh each round and swept once untimed before its timed sweep; the changing workloads take {CHANGING_ROUNDS} rounds, each run from a fresh build. Each round gives one ratio; <i>in turns</i> is their median, <i>interval</i> the order-statistics interval of that median (its coverage falls below 95% with fewer than six rounds), and the target is met when the median is at most the goal; where the interval reaches across the goal, the next run may say otherwise. Against a limit (see Sweeps and their limits), the sweep takes turns with the probe: its sequential read of the working set that sets the limit's bandwidth bound, its chase through the working set that sets the latency bound (plain loads, and steps doing the chain's own arithmetic), and its checksum arithmetic; each round's sweep is divided by the limit at the bandwidth, load latency and time per term of that round. <i>Cells' ratio</i> is the ratio of the two cells' medians as the tables show them. Every run's checksum agrees with the first, or the report stops.</div><table><tr><th class=l>target</th><th>in turns (median)</th><th>interval</th><th>rounds</th><th>cells' ratio</th><th>goal</th><th>met</th></tr>"
     );
     for t in TARGETS.iter().filter(|t| ran(t.structure)) {
         let against = match t.against {
@@ -197,7 +215,7 @@ fn render(h: &mut String, r: &Results) {
                     |s| sequential(&r.measurements, mesh, s, Cell::Construction)?.cold_ns_per_item;
                 cold(t.structure)
                     .zip(cold(b))
-                    .map(|(a, b)| format!("; cold builds, one after another: {:.2}×", a / b))
+                    .map(|(a, b)| format!("; cold builds, the cells' ratio: {:.2}×", a / b))
                     .unwrap_or_default()
             }
             _ => String::new(),
@@ -208,7 +226,7 @@ fn render(h: &mut String, r: &Results) {
         let (value, range, rounds, met) = match spread {
             Some(s) => (
                 against_goal(s.median, t.goal),
-                format!("{:.2}–{:.2}", s.min, s.max),
+                format!("{:.2}–{:.2}", s.low, s.high),
                 s.rounds.to_string(),
                 if s.median <= t.goal { "yes" } else { "no" },
             ),
@@ -266,7 +284,7 @@ fn render(h: &mut String, r: &Results) {
             None => ("not measured".into(), "–"),
         };
         let (range, rounds) = match row.spread {
-            Some(s) => (format!("{:.2}–{:.2}", s.min, s.max), s.rounds.to_string()),
+            Some(s) => (format!("{:.2}–{:.2}", s.low, s.high), s.rounds.to_string()),
             None => ("–".into(), "–".into()),
         };
         let class = class_of(met);
@@ -303,10 +321,16 @@ impl Section for Targets {
 
     fn measure(&self, run: &mut SectionRun) -> Result<(), ReportError> {
         let r = &mut *run.results;
-        // After the hull section's own turns, if it ran.
+        // After the hull section's own turns, if it ran, the size sweep's of the targets
+        // between two structures on its cells and the changing section's.
+        let swept: Vec<(Cell, Vec<String>)> = r
+            .targets
+            .iter()
+            .map(|t| (t.cell, t.structures.iter().take(2).cloned().collect()))
+            .collect();
         let turns = measure(
             run.cases,
-            &run.request.names,
+            (&run.request.names, &swept),
             &r.measurements,
             &r.probe,
             run.structures,

@@ -21,11 +21,12 @@
 
 use super::{lacks, too_long};
 use crate::changing::{
-    declared_operations, mesh_checksum, time, LocalRefinement, LocalRefinementCase,
-    LocalRefinementRow, MeshChecksum,
+    declared_operations, in_rounds, mesh_checksum, runner, LocalRefinement, LocalRefinementCase,
+    LocalRefinementRow, Runner,
 };
 use crate::report::run::{Case, ReportError};
 use crate::skips::Skip;
+use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 use topolab_baselines::registry::{self, EditVisitor};
 use topolab_structures::algorithms::adaptive::{refine_adaptive, Region, Request};
@@ -91,16 +92,15 @@ struct Timed<'a> {
     request: &'a Request,
     /// Edge splits per face of the input, from the reference run (for the estimate).
     splits_per_face: f64,
-    runs: usize,
     quick: bool,
 }
 
-/// What one structure did: its median time, result and declared costs, or the skip's reason.
-type Outcome = Result<Result<(f64, MeshChecksum, String), String>, (String, Option<String>)>;
+/// One structure's runner and declared costs, or the skip's reason.
+type Outcome<'a> = Result<(Runner<'a>, String), (String, Option<String>)>;
 
-impl EditVisitor for Timed<'_> {
-    type Output = Outcome;
-    fn visit<M: MeshEdit>(self) -> Outcome {
+impl<'a> EditVisitor for Timed<'a> {
+    type Output = Outcome<'a>;
+    fn visit<M: MeshEdit>(self) -> Outcome<'a> {
         let operations = [(EditOp::SplitEdge, self.splits_per_face)];
         // Each split first finds its edge from the two vertices.
         let queries = [(Operator::R01, self.splits_per_face)];
@@ -109,20 +109,15 @@ impl EditVisitor for Timed<'_> {
         {
             return Err(why);
         }
-        let request = self.request;
-        Ok(time(
-            self.runs,
-            || M::from_soup(self.soup),
-            |m| refine_adaptive(m, request, usize::MAX).map(|_| ()),
-            mesh_checksum,
-        )
-        .map(|(seconds, result)| {
-            (
-                seconds,
-                result,
-                declared_operations::<M>(&operations, &queries),
-            )
-        }))
+        let (soup, request) = (self.soup, self.request);
+        Ok((
+            runner(
+                move || M::from_soup(soup),
+                move |m| refine_adaptive(m, request, usize::MAX).map(|_| ()),
+                mesh_checksum,
+            ),
+            declared_operations::<M>(&operations, &queries),
+        ))
     }
 }
 
@@ -134,6 +129,7 @@ pub(super) fn measure(
     editing: &[&str],
     (quick, full): (bool, bool),
     runs: impl Fn(usize) -> usize,
+    meter: &dyn MemoryMeter,
     skips: &mut Vec<Skip>,
     notes: &mut Vec<String>,
 ) -> Result<LocalRefinement, ReportError> {
@@ -177,6 +173,8 @@ pub(super) fn measure(
             uniform_faces: (soup.num_faces() as u64).saturating_mul(4u64.saturating_pow(levels)),
         });
         let runs = runs(soup.num_faces());
+        let mut runners: Vec<(&str, Runner)> = Vec::new();
+        let mut declared_by = Vec::new();
         for &s in editing {
             if registry::NATIVE_CHANGING.contains(&s) {
                 skips.push(Skip {
@@ -188,42 +186,52 @@ pub(super) fn measure(
                 });
                 continue;
             }
-            eprintln!("topolab report: {WHAT} on {mesh}: {s}");
             let timed = Timed {
                 soup,
                 request: &request,
                 splits_per_face: report.edges_split as f64 / soup.num_faces().max(1) as f64,
-                runs,
                 quick,
             };
-            let (seconds, result, declared) = match registry::visit_editable(s, timed) {
-                Some(Ok(got)) => got.map_err(|e| {
-                    ReportError::Measurement(format!("{WHAT} on {mesh} failed on {s}: {e}"))
-                })?,
-                Some(Err((reason, detail))) => {
-                    skips.push(Skip {
-                        what: WHAT.into(),
-                        structure: s.into(),
-                        mesh: mesh.clone(),
-                        reason,
-                        detail,
-                    });
-                    continue;
+            match registry::visit_editable(s, timed) {
+                Some(Ok((run, declared))) => {
+                    runners.push((s, run));
+                    declared_by.push(declared);
                 }
-                None => continue,
-            };
-            if result != expected {
+                Some(Err((reason, detail))) => skips.push(Skip {
+                    what: WHAT.into(),
+                    structure: s.into(),
+                    mesh: mesh.clone(),
+                    reason,
+                    detail,
+                }),
+                None => {}
+            }
+        }
+        eprintln!(
+            "topolab report: {WHAT} on {mesh}: {} structures, {runs} rounds",
+            runners.len()
+        );
+        let rounds = in_rounds(&mut runners, runs, 2026, meter)
+            .map_err(|e| ReportError::Measurement(format!("{WHAT} on {mesh} failed on {e}")))?;
+        let per_split = 1e9 / report.edges_split.max(1) as f64;
+        for (((s, _), r), declared) in runners.iter().zip(&rounds).zip(declared_by) {
+            if r.result != expected {
                 return Err(ReportError::Measurement(format!(
-                    "{WHAT} on {mesh}: {s} made {result:?}, the index half-edge {expected:?}\nThe report stops: two structures refined a mesh differently."
+                    "{WHAT} on {mesh}: {s} made {:?}, the index half-edge {expected:?}\nThe report stops: two structures refined a mesh differently.",
+                    r.result
                 )));
             }
+            let seconds = r.median();
             rows.push(LocalRefinementRow {
                 mesh: mesh.clone(),
-                structure: s.into(),
+                structure: s.to_string(),
                 seconds,
-                runs,
-                ns_per_split: seconds * 1e9 / report.edges_split.max(1) as f64,
-                result,
+                runs: r.seconds.len(),
+                ns_per_split: seconds * per_split,
+                ns_per_split_ci: r
+                    .interval()
+                    .map(|i| [i.low * per_split, i.high * per_split]),
+                result: r.result,
                 declared,
             });
         }
@@ -238,7 +246,7 @@ pub(crate) fn render(h: &mut String, local: &LocalRefinement) {
     if cases.is_empty() {
         return;
     }
-    h.push_str("<h3>Local refinement: adaptive, in one region</h3><div class=read><b>How to read it.</b> The lecture on polygon-mesh data structures asks that refinement be possible locally and adaptively, and says that the structures whose topology is implicit do not allow it. Each torus is refined by longest-edge bisection (what <code>topolab refine --max-edge L --region BOX</code> runs, through each structure's edge split) in the quarter of its bounding box with x and y at least the centre's, until no edge there is longer than half the mean side of its faces. Splitting an edge splits its two triangles, so the mesh stays conforming with no closure step. The result does not depend on the structure, and every structure's is compared with the index half-edge's; a disagreement stops the report. Time per edge split, median of fresh builds (the build not timed); it includes finding the edge from its two vertices (the structure's edges-around-a-vertex query) and the heap of edges to split. The regular grid's row: it cannot refine one region, and refining everywhere to the same edge length makes far more faces. The C++ baselines are left out (see the notes).</div>");
+    h.push_str("<h3>Local refinement: adaptive, in one region</h3><div class=read><b>How to read it.</b> The lecture on polygon-mesh data structures asks that refinement be possible locally and adaptively, and says that the structures whose topology is implicit do not allow it. Each torus is refined by longest-edge bisection (what <code>topolab refine --max-edge L --region BOX</code> runs, through each structure's edge split) in the quarter of its bounding box with x and y at least the centre's, until no edge there is longer than half the mean side of its faces. Splitting an edge splits its two triangles, so the mesh stays conforming with no closure step. The result does not depend on the structure, and every structure's is compared with the index half-edge's; a disagreement stops the report. Time per edge split, median of rounds, each structure once a round on a fresh build (the build not timed) in a random order, in the measuring thread's CPU time (hover it for the interval of the median); it includes finding the edge from its two vertices (the structure's edges-around-a-vertex query) and the heap of edges to split. The regular grid's row: it cannot refine one region, and refining everywhere to the same edge length makes far more faces. The C++ baselines are left out (see the notes).</div>");
     h.push_str("<table><tr><th class=l>mesh</th><th>faces</th><th class=l>structure</th><th>ms</th><th>ns per split</th><th>× index-half-edge</th><th>splits</th><th>result V / E / F</th><th class=l>declared costs</th></tr>");
     for c in cases {
         let base = rows
@@ -249,11 +257,17 @@ pub(crate) fn render(h: &mut String, local: &LocalRefinement) {
             let ratio = base.map_or_else(|| "–".into(), |b| format!("{:.2}", r.seconds / b));
             let _ = write!(
                 h,
-                "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td>{:.0}</td><td>{ratio}</td><td>{}</td><td>{} / {} / {}</td><td class=l>{}</td></tr>",
+                "<tr><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td title=\"{}\">{:.0}</td><td>{ratio}</td><td>{}</td><td>{} / {} / {}</td><td class=l>{}</td></tr>",
                 c.mesh,
                 c.faces,
                 r.structure,
                 r.seconds * 1e3,
+                r.ns_per_split_ci
+                    .map(|[lo, hi]| format!(
+                        "interval {lo:.0} to {hi:.0} ns per split, median of {} rounds",
+                        r.runs
+                    ))
+                    .unwrap_or_default(),
                 r.ns_per_split,
                 c.splits,
                 r.result.vertices,
@@ -294,6 +308,7 @@ mod tests {
             &editing,
             (true, false),
             |_| 2,
+            &crate::timing::meter::Uncounted,
             &mut skips,
             &mut notes,
         )

@@ -18,13 +18,14 @@
 mod local_refinement;
 
 use crate::changing::{
-    cross_check, declared, declared_operations, mesh_checksum, time, ChangingRow, LocalRefinement,
-    MeshChecksum,
+    cross_check, declared, declared_operations, in_rounds, mesh_checksum, runner, ChangingRow,
+    LocalRefinement, Runner,
 };
 use crate::phases::Phase;
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
 use crate::skips::{self, Skip};
+use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 #[cfg(has_openmesh)]
 use topolab_baselines::openmesh::OpenMesh;
@@ -152,99 +153,64 @@ fn format_seconds(s: f64) -> String {
 struct Timed<'a> {
     soup: &'a PolygonSoup,
     workload: Changing,
-    runs: usize,
     quick: bool,
 }
 
-/// The outcome of [`Timed`]: the median time and the result, or the reason for the skip.
-enum Outcome {
-    Ran(Result<((f64, MeshChecksum), String), String>),
+enum Outcome<'a> {
+    Ran(Runner<'a>, String),
     Skipped((String, Option<String>)),
 }
 
-impl EditVisitor for Timed<'_> {
-    type Output = Outcome;
-    fn visit<M: MeshEdit>(self) -> Outcome {
-        match skip::<M>(self.workload, self.soup.num_faces(), self.quick) {
+impl<'a> EditVisitor for Timed<'a> {
+    type Output = Outcome<'a>;
+    fn visit<M: MeshEdit>(self) -> Outcome<'a> {
+        let (soup, w) = (self.soup, self.workload);
+        match skip::<M>(w, soup.num_faces(), self.quick) {
             Some(why) => Outcome::Skipped(why),
             None => Outcome::Ran(
-                timed::<M>(self.soup, self.workload, self.runs)
-                    .map(|t| (t, declared::<M>(self.workload))),
+                runner(move || M::from_soup(soup), move |m| w.run(m), mesh_checksum),
+                declared::<M>(w),
             ),
         }
     }
 }
 
-/// Tori larger than this (faces) are left out: the workloads triple the mesh.
+/// Above this many faces a torus is not changed.
 const MAX_FACES: usize = 4_000_000;
 
-fn timed<M: MeshEdit>(
-    soup: &PolygonSoup,
-    w: Changing,
-    runs: usize,
-) -> Result<(f64, MeshChecksum), String> {
-    time(runs, || M::from_soup(soup), |m| w.run(m), mesh_checksum)
-}
-
-#[cfg(has_openmesh)]
-fn timed_openmesh(
-    soup: &PolygonSoup,
-    w: Changing,
-    runs: usize,
-) -> Result<(f64, MeshChecksum), String> {
-    time(
-        runs,
-        || {
-            let mut m = <OpenMesh as MeshTopology>::from_soup(soup)?;
-            m.prepare_changing()?;
-            Ok(m)
-        },
-        |m| m.native_changing(w),
-        mesh_checksum,
-    )
-}
-
-/// A CGAL structure's native run (`cgal/edit_*.cpp`), built by CGAL's own construction (told
-/// the exact counts, as OpenMesh's).
-#[cfg(has_cgal)]
-fn timed_cgal<S: topolab_baselines::cgal::CgalStructure>(
-    soup: &PolygonSoup,
-    runs: usize,
-    work: impl FnMut(&mut topolab_baselines::cgal::Cgal<S>) -> topolab_structures::Result<()>,
-) -> Result<(f64, MeshChecksum), String> {
-    time(
-        runs,
-        || <topolab_baselines::cgal::Cgal<S> as MeshTopology>::from_soup(soup),
-        work,
-        mesh_checksum,
-    )
-}
-
-/// A baseline's native run of `w` (the whole workload in C++).
-fn timed_native(
-    name: &str,
-    soup: &PolygonSoup,
-    w: Changing,
-    runs: usize,
-) -> Result<(f64, MeshChecksum), String> {
+/// The runner of a C++ baseline's own loop of `w` (the whole workload in C++), for the
+/// structures of [`registry::NATIVE_CHANGING`] this build has.
+fn native<'a>(name: &str, soup: &'a PolygonSoup, w: Changing) -> Result<Runner<'a>, String> {
     match name {
         #[cfg(has_cgal)]
-        registry::CGAL_SURFACE_MESH => {
-            timed_cgal::<topolab_baselines::cgal::SurfaceMeshClass>(soup, runs, |m| {
-                m.native_changing(w)
-            })
-        }
+        registry::CGAL_SURFACE_MESH => Ok(runner(
+            move || {
+                <topolab_baselines::cgal::Cgal<topolab_baselines::cgal::SurfaceMeshClass> as MeshTopology>::from_soup(soup)
+            },
+            move |m| m.native_changing(w),
+            mesh_checksum,
+        )),
         #[cfg(has_cgal)]
-        registry::CGAL_POLYHEDRON => {
-            timed_cgal::<topolab_baselines::cgal::PolyhedronClass>(soup, runs, |m| {
-                m.native_changing(w)
-            })
-        }
+        registry::CGAL_POLYHEDRON => Ok(runner(
+            move || {
+                <topolab_baselines::cgal::Cgal<topolab_baselines::cgal::PolyhedronClass> as MeshTopology>::from_soup(soup)
+            },
+            move |m| m.native_changing(w),
+            mesh_checksum,
+        )),
         #[cfg(has_openmesh)]
-        registry::OPENMESH => timed_openmesh(soup, w, runs),
+        registry::OPENMESH => Ok(runner(
+            move || {
+                let mut m = <OpenMesh as MeshTopology>::from_soup(soup)?;
+                m.prepare_changing()?;
+                Ok(m)
+            },
+            move |m| m.native_changing(w),
+            mesh_checksum,
+        )),
         _ => {
             // Without the C++ baselines no arm above is compiled, and these go unread.
-            let _ = (soup, w, runs);
+            let _ = (soup, w);
             Err(format!(
                 "{name} has no native changing workloads in this build"
             ))
@@ -258,8 +224,8 @@ fn timed_native(
 fn measure(
     cases: &[Case],
     names: &[String],
-    quick: bool,
-    full: bool,
+    (quick, full): (bool, bool),
+    meter: &dyn MemoryMeter,
     notes: &mut Vec<String>,
 ) -> Result<(Vec<ChangingRow>, LocalRefinement), ReportError> {
     let mut rows = Vec::new();
@@ -281,21 +247,25 @@ fn measure(
         }
         let runs = crate::report::clock::changing_runs(soup.num_faces(), quick, full);
         for w in Changing::ALL {
+            // Every structure's runner, then the rounds of all of them, interleaved.
+            let mut runners: Vec<(&str, Runner)> = Vec::new();
+            let mut declared_by = Vec::new();
             for &s in &editing {
-                eprintln!("topolab report: {} on {mesh}: {s}", w.name());
-                let timed = Timed {
-                    soup,
-                    workload: w,
-                    runs,
-                    quick,
-                };
                 // The baselines run natively even where they implement MeshEdit: the
                 // protocol's whole loop in C++, not one FFI call per edit.
-                let got = if registry::NATIVE_CHANGING.contains(&s) {
-                    timed_native(s, soup, w, runs).map(|t| (t, String::new()))
+                let (run, declared) = if registry::NATIVE_CHANGING.contains(&s) {
+                    let run = native(s, soup, w).map_err(|e| {
+                        ReportError::Measurement(format!("{} on {mesh}: {e}", w.name()))
+                    })?;
+                    (run, String::new())
                 } else {
+                    let timed = Timed {
+                        soup,
+                        workload: w,
+                        quick,
+                    };
                     match registry::visit_editable(s, timed) {
-                        Some(Outcome::Ran(got)) => got,
+                        Some(Outcome::Ran(run, declared)) => (run, declared),
                         Some(Outcome::Skipped((reason, detail))) => {
                             skips.push(Skip {
                                 what: w.name().to_string(),
@@ -306,23 +276,22 @@ fn measure(
                             });
                             continue;
                         }
-                        None => Err(format!("{s} does not edit")),
+                        None => return Err(ReportError::Measurement(format!("{s} does not edit"))),
                     }
                 };
-                let ((seconds, result), declared) = got.map_err(|e| {
-                    ReportError::Measurement(format!("{} on {mesh} failed on {s}: {e}", w.name()))
-                })?;
-                rows.push(ChangingRow {
-                    workload: w,
-                    mesh: mesh.clone(),
-                    faces: soup.num_faces(),
-                    structure: s.to_string(),
-                    seconds,
-                    runs,
-                    ns_per_face: seconds * 1e9 / soup.num_faces().max(1) as f64,
-                    result,
-                    declared,
-                });
+                runners.push((s, run));
+                declared_by.push(declared);
+            }
+            eprintln!(
+                "topolab report: {} on {mesh}: {} structures, {runs} rounds",
+                w.name(),
+                runners.len()
+            );
+            let rounds = in_rounds(&mut runners, runs, 2026, meter).map_err(|e| {
+                ReportError::Measurement(format!("{} on {mesh} failed on {e}", w.name()))
+            })?;
+            for (((s, _), r), declared) in runners.iter().zip(&rounds).zip(declared_by) {
+                rows.push(ChangingRow::of(w, (mesh, soup.num_faces()), s, r, declared));
             }
         }
         cross_check(&rows).map_err(|e| {
@@ -332,7 +301,15 @@ fn measure(
         })?;
     }
     let runs = |faces| crate::report::clock::changing_runs(faces, quick, full);
-    let local = local_refinement::measure(cases, &editing, (quick, full), runs, &mut skips, notes)?;
+    let local = local_refinement::measure(
+        cases,
+        &editing,
+        (quick, full),
+        runs,
+        meter,
+        &mut skips,
+        notes,
+    )?;
     notes.extend(skips::group(&skips));
     Ok((rows, local))
 }
@@ -342,7 +319,7 @@ pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
     if rows.is_empty() {
         return;
     }
-    h.push_str("<h2>Changing meshes: √3 subdivision and the collapse test (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The two workloads of the published Surface_mesh benchmark that change the mesh, run as its protocol runs them: <i>sqrt3</i> is one step of √3 subdivision (new positions of the old interior vertices, every old face split at its centroid, every old edge flipped where a flip is allowed); <i>collapse-test</i> splits every face at a new vertex, collapses every new vertex back and garbage-collects the deleted elements. The lab's structures run them through their editing operations (<code>MeshEdit</code>: checked flips and collapses, the link condition included); OpenMesh runs the protocol's loop in C++ (its collapse unchecked, as the protocol calls it), and so do CGAL's Surface_mesh and Polyhedron_3, through CGAL's Euler operations as CGAL's own Surface_mesh benchmark does. Each time is the median of fresh builds (the build not timed), per face of the input. Every resulting mesh is compared (counts and a hash of the face list) across structures; a disagreement stops the report. <i>Declared costs</i>: what each structure declares for the operations the workload does (all of them: <code>topolab explain NAME</code>); a structure whose declared costs predict more than 20 s (2 s in a quick run) (the vertex list's and the edge list's scans on large meshes) is skipped, with the estimate in the notes.</div>");
+    h.push_str("<h2>Changing meshes: √3 subdivision and the collapse test (Sieger &amp; Botsch, IMR 2011)</h2><div class=read><b>How to read it.</b> The two workloads of the published Surface_mesh benchmark that change the mesh, run as its protocol runs them: <i>sqrt3</i> is one step of √3 subdivision (new positions of the old interior vertices, every old face split at its centroid, every old edge flipped where a flip is allowed); <i>collapse-test</i> splits every face at a new vertex, collapses every new vertex back and garbage-collects the deleted elements. The lab's structures run them through their editing operations (<code>MeshEdit</code>: checked flips and collapses, the link condition included); OpenMesh runs the protocol's loop in C++ (its collapse unchecked, as the protocol calls it), and so do CGAL's Surface_mesh and Polyhedron_3, through CGAL's Euler operations as CGAL's own Surface_mesh benchmark does. Each time is the median of rounds, in each of which every structure ran once on a fresh build (the build not timed), in a random order, in the measuring thread's CPU time, per face of the input; hover it for the interval of the median. Every resulting mesh is compared (counts and a hash of the face list) across structures; a disagreement stops the report. <i>Declared costs</i>: what each structure declares for the operations the workload does (all of them: <code>topolab explain NAME</code>); a structure whose declared costs predict more than 20 s (2 s in a quick run) (the vertex list's and the edge list's scans on large meshes) is skipped, with the estimate in the notes.</div>");
     h.push_str("<table><tr><th class=l>workload</th><th class=l>mesh</th><th>faces</th><th class=l>structure</th><th>ms</th><th>ns per face</th><th>× OpenMesh</th><th>result V / E / F</th><th class=l>declared costs</th></tr>");
     for r in rows {
         let om = rows
@@ -352,12 +329,18 @@ pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
             .unwrap_or_else(|| "–".into());
         let _ = write!(
             h,
-            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td>{:.1}</td><td>{om}</td><td>{} / {} / {}</td><td class=l>{}</td></tr>",
+            "<tr><td class=l>{}</td><td class=l>{}</td><td>{}</td><td class=l>{}</td><td>{:.1}</td><td title=\"{}\">{:.1}</td><td>{om}</td><td>{} / {} / {}</td><td class=l>{}</td></tr>",
             r.workload.name(),
             r.mesh,
             r.faces,
             r.structure,
             r.seconds * 1e3,
+            r.ns_per_face_ci
+                .map(|[lo, hi]| format!(
+                    "interval {lo:.1} to {hi:.1} ns per face, median of {} rounds",
+                    r.runs
+                ))
+                .unwrap_or_default(),
             r.ns_per_face,
             r.result.vertices,
             r.result.edges,
@@ -387,8 +370,26 @@ impl Section for ChangingMeshes {
 
     fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
         let (req, r) = (run.request, &mut *run.results);
-        (r.changing, r.local_refinement) =
-            measure(run.cases, &req.names, req.quick, req.full, &mut r.notes)?;
+        (r.changing, r.local_refinement) = measure(
+            run.cases,
+            &req.names,
+            (req.quick, req.full),
+            run.meter,
+            &mut r.notes,
+        )?;
+        // The Targets of the changing workloads read these rounds on the largest torus.
+        if let Some((mesh, _, soup)) = run
+            .cases
+            .iter()
+            .filter(|c| c.1 == "torus")
+            .max_by_key(|c| c.2.num_faces())
+        {
+            r.targets.extend(crate::targets::swept::changing_turns(
+                &r.changing,
+                mesh,
+                soup,
+            ));
+        }
         Ok(())
     }
 
