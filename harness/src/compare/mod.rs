@@ -1,8 +1,12 @@
 //! Two report runs side by side (`topolab compare OLD NEW`): every cell measured in both, the
-//! ratio of the new median to the old, flagged only when the change is larger than both runs'
-//! own spread, sorted by the size of the change. It informs and does not judge: two runs on a
-//! shared machine differ, and a flag says only that the medians moved past each other's fastest
-//! and slowest runs.
+//! ratio of the new median to the old, sorted by the size of the change, and flagged only when
+//! the cell moved against the rest of the run: its two intervals (each cell's order-statistics
+//! interval of its rounds' median; for a file written before cells had one, its fastest–slowest
+//! runs) separate once the new run is divided by the run-wide shift, the median of every
+//! cell's ratio. The machine itself moves between runs (its drift probe's checksum arithmetic
+//! ran 6% slower in the second of two consecutive runs here, and every cell with it), and
+//! no cell's interval, taken within one run, can hold that; the shift is said on its own line,
+//! with how many cells moved without it taken out. It informs and does not judge.
 //!
 //! A file is read in two passes: its header first (is it a topolab `results.json`, and of a
 //! format this build reads: [`FORMAT_VERSION`]), then its measurements, so that a file of a newer
@@ -164,12 +168,14 @@ pub fn read(bytes: &[u8]) -> Result<Run, ReadError> {
 /// A cell's median and spread, ns per item.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct Spread {
-    /// The median run.
+    /// The median.
     pub median: f64,
-    /// The fastest run.
+    /// The fastest run (round).
     pub min: f64,
-    /// The slowest run.
+    /// The slowest run (round).
     pub max: f64,
+    /// The interval of the median, when the run measured one.
+    pub interval: Option<[f64; 2]>,
 }
 
 impl Spread {
@@ -179,11 +185,31 @@ impl Spread {
             median,
             min: m.min_ns_per_item.unwrap_or(median).min(median),
             max: m.max_ns_per_item.unwrap_or(median).max(median),
+            interval: m.ns_per_item_ci,
         })
     }
 
     fn holds(&self, x: f64) -> bool {
         self.min <= x && x <= self.max
+    }
+
+    /// Whether `self` and `other` say the cell moved: their intervals separate, or without
+    /// intervals, each median lies outside the other's fastest–slowest runs.
+    fn moved(&self, other: &Spread) -> bool {
+        match (self.interval, other.interval) {
+            (Some([a0, a1]), Some([b0, b1])) => a1 < b0 || b1 < a0,
+            _ => !self.holds(other.median) && !other.holds(self.median),
+        }
+    }
+
+    /// This spread with every value divided by `d`.
+    fn scaled(&self, d: f64) -> Spread {
+        Spread {
+            median: self.median / d,
+            min: self.min / d,
+            max: self.max / d,
+            interval: self.interval.map(|[a, b]| [a / d, b / d]),
+        }
     }
 }
 
@@ -204,9 +230,12 @@ pub struct Cell {
     pub new: Spread,
     /// New median over old median.
     pub ratio: f64,
-    /// The new median is outside the old run's min–max spread and the old median outside the
-    /// new run's: a change larger than either run's own noise.
+    /// The two runs' intervals of the median separate once the new run is divided by the
+    /// run-wide shift ([`Comparison::shift`]): the cell moved against the
+    /// rest of the run.
     pub flagged: bool,
+    /// The intervals separate as measured, the shift left in.
+    pub moved: bool,
 }
 
 /// Two runs compared.
@@ -226,12 +255,28 @@ pub struct Comparison {
     pub not_measured: usize,
     /// Cells of meshes that one run measured repaired and the other as read: different meshes.
     pub repaired_in_one: usize,
+    /// The run-wide shift: the median of every cell's new/old ratio (1 with no cell).
+    pub shift: f64,
 }
 
 impl Comparison {
     /// The flagged cells.
     pub fn flagged(&self) -> usize {
         self.cells.iter().filter(|c| c.flagged).count()
+    }
+
+    /// The cells whose intervals separate with the run-wide shift left in.
+    pub fn moved(&self) -> usize {
+        self.cells.iter().filter(|c| c.moved).count()
+    }
+
+    /// The cells whose medians differ by more than `share` (0.1: 10%): the larger over the
+    /// smaller, whichever run it is.
+    pub fn differ_by_more_than(&self, share: f64) -> usize {
+        self.cells
+            .iter()
+            .filter(|c| c.ratio.max(1.0 / c.ratio) > 1.0 + share)
+            .count()
     }
 }
 
@@ -266,8 +311,21 @@ pub fn compare(mut old: Run, mut new: Run) -> Comparison {
             old: a,
             new: b,
             ratio: b.median / a.median,
-            flagged: !a.holds(b.median) && !b.holds(a.median),
+            flagged: false,
+            moved: a.moved(&b),
         });
+    }
+    let shift = {
+        let mut r: Vec<f64> = cells.iter().map(|c| c.ratio).collect();
+        r.sort_by(f64::total_cmp);
+        if r.is_empty() {
+            1.0
+        } else {
+            crate::timing::median(&r)
+        }
+    };
+    for c in &mut cells {
+        c.flagged = c.old.moved(&c.new.scaled(shift));
     }
     let only_old = old_cells.len() - seen;
     cells.sort_by(|a, b| {
@@ -294,6 +352,7 @@ pub fn compare(mut old: Run, mut new: Run) -> Comparison {
         only_new,
         not_measured,
         repaired_in_one,
+        shift,
     }
 }
 

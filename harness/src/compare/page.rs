@@ -30,12 +30,29 @@ fn or_unknown(s: &str) -> &str {
     }
 }
 
+/// The run-wide shift, in words.
+fn shift_line(c: &Comparison) -> String {
+    let pct = 100.0 * (c.shift - 1.0);
+    format!(
+        "Run-wide shift: the new run's cells are {:.1}% {} than the old's (the median of every cell's new/old ratio): the machine's own drift, or a change that moved every cell alike. Flags are taken against it.",
+        pct.abs(),
+        if pct >= 0.0 { "slower" } else { "faster" }
+    )
+}
+
 /// The counts under the two runs.
 fn counts(c: &Comparison) -> String {
+    let share = |n: usize| 100.0 * n as f64 / c.cells.len().max(1) as f64;
     let mut s = format!(
-        "{} cells measured in both, {} flagged (the new median outside the old run's min–max and the old median outside the new run's)",
+        "{} cells measured in both, {} flagged ({:.1}%: their intervals of the median separate once the run-wide shift is taken out; {} with it left in); {} ({:.1}%) differ by more than 10%, {} ({:.1}%) by more than 25%",
         c.cells.len(),
-        c.flagged()
+        c.flagged(),
+        share(c.flagged()),
+        c.moved(),
+        c.differ_by_more_than(0.10),
+        share(c.differ_by_more_than(0.10)),
+        c.differ_by_more_than(0.25),
+        share(c.differ_by_more_than(0.25)),
     );
     for (n, what) in [
         (c.only_old, "only in the old run"),
@@ -81,6 +98,7 @@ pub fn text(c: &Comparison, old_path: &str, new_path: &str) -> String {
     let mut t = String::new();
     let _ = writeln!(t, "{}", run_line("old", old_path, &c.old));
     let _ = writeln!(t, "{}", run_line("new", new_path, &c.new));
+    let _ = writeln!(t, "{}", shift_line(c));
     let _ = writeln!(t, "{}", counts(c));
     if c.cells.is_empty() {
         return t;
@@ -131,7 +149,7 @@ pub fn html(c: &Comparison, old_path: &str, new_path: &str) -> String {
             r.format_version
         );
     }
-    let _ = write!(h, "</table><p>{}.</p><p class=small>new/old: the new median time over the old; above 1 the new run is slower. Flagged (red or green): the change is larger than both runs' spread, the new median outside the old run's fastest–slowest and the old median outside the new run's. Unflagged changes are within the noise of one run or the other. Sorted by the size of the change, either way. Compare runs of one machine for speed; across machines, the ratios between structures within each run say more.</p>", esc(&counts(c)));
+    let _ = write!(h, "</table><p>{}</p><p>{}.</p><p class=small>new/old: the new median time over the old; above 1 the new run is slower. Flagged (red or green): the cell moved against the rest of the run: its two intervals of the median separate once the new run is divided by the run-wide shift (for a run written before cells had intervals: the new median outside the old run's fastest–slowest and the old median outside the new run's). Unflagged changes are within what one run or the other cannot tell apart, or move with the whole run. Sorted by the size of the change, either way. Compare runs of one machine for speed; across machines, the ratios between structures within each run say more.</p>", esc(&shift_line(c)), esc(&counts(c)));
     h.push_str("<table><tr><th>new/old</th><th class=l>structure</th><th class=l>operator</th><th class=l>kernel</th><th class=l>mesh</th><th>old median</th><th>old min–max</th><th>new median</th><th>new min–max</th><th class=l>change</th></tr>");
     for cell in &c.cells {
         let [s, o, k, m] = cell_name(cell);

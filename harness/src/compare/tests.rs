@@ -194,3 +194,86 @@ fn the_sample_reads() {
         3
     );
 }
+
+#[test]
+fn with_intervals_only_a_separation_is_flagged_and_the_changes_are_counted() {
+    let with_ci = |s: &str, median: f64, ci: [f64; 2]| {
+        let mut c = cell(s, "r00", "torus-1k", (ci[0] * 0.9, median, ci[1] * 1.1));
+        c["ns_per_item_ci"] = json!(ci);
+        c
+    };
+    let same = ["lox-half-edge", "winged-edge", "edge-list"];
+    let mut old_cells = vec![
+        with_ci("che-l2", 10.0, [9.5, 10.5]),
+        with_ci("che-l3", 10.0, [9.5, 10.5]),
+        with_ci("openmesh", 20.0, [19.0, 21.0]),
+    ];
+    let mut new_cells = vec![
+        // 12% slower, but the intervals overlap at 10.5: not flagged.
+        with_ci("che-l2", 11.2, [10.5, 12.0]),
+        // 12% slower and the intervals apart: flagged.
+        with_ci("che-l3", 11.2, [10.6, 12.0]),
+        // 30% faster, apart: flagged.
+        with_ci("openmesh", 14.0, [13.0, 15.0]),
+    ];
+    // Three cells that did not move: the run-wide shift is 1.
+    for s in same {
+        old_cells.push(with_ci(s, 5.0, [4.9, 5.1]));
+        new_cells.push(with_ci(s, 5.0, [4.9, 5.1]));
+    }
+    let c = compare(
+        read_value(&run("old", old_cells.clone())).unwrap(),
+        read_value(&run("new", new_cells)).unwrap(),
+    );
+    let flagged: Vec<(&str, bool)> = c
+        .cells
+        .iter()
+        .take(3)
+        .map(|x| (x.structure.as_str(), x.flagged))
+        .collect();
+    assert_eq!(
+        flagged,
+        [("openmesh", true), ("che-l2", false), ("che-l3", true)]
+    );
+    assert_eq!((c.shift, c.flagged(), c.moved()), (1.0, 2, 2));
+    assert_eq!(
+        (c.differ_by_more_than(0.10), c.differ_by_more_than(0.25)),
+        (3, 1)
+    );
+    let text = text(&c, "a", "b");
+    assert!(
+        text.contains("6 cells measured in both, 2 flagged (33.3%")
+            && text.contains("3 (50.0%) differ by more than 10%, 1 (16.7%) by more than 25%"),
+        "{text}"
+    );
+    // The whole run 20% slower, every interval apart as measured: a shift, not a change of any
+    // one cell.
+    let slower: Vec<Value> = old_cells
+        .iter()
+        .map(|m| {
+            let mut m = m.clone();
+            for f in ["ns_per_item", "min_ns_per_item", "max_ns_per_item"] {
+                m[f] = json!(m[f].as_f64().unwrap() * 1.2);
+            }
+            let ci: Vec<f64> = m["ns_per_item_ci"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap() * 1.2)
+                .collect();
+            m["ns_per_item_ci"] = json!(ci);
+            m
+        })
+        .collect();
+    let c = compare(
+        read_value(&run("old", old_cells)).unwrap(),
+        read_value(&run("new", slower)).unwrap(),
+    );
+    assert!((c.shift - 1.2).abs() < 1e-12);
+    assert_eq!((c.flagged(), c.moved()), (0, 6));
+    assert!(text_of(&c).contains("Run-wide shift: the new run's cells are 20.0% slower"));
+}
+
+fn text_of(c: &Comparison) -> String {
+    text(c, "a", "b")
+}
