@@ -173,18 +173,23 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     );
     let mut est = Estimator::default();
     // The Targets between two structures read the size sweep's rounds on the largest torus,
-    // whose cells they need get more rounds there.
+    // which gets the run's most rounds.
     let target_mesh = cases
         .iter()
         .filter(|c| c.1 == "torus" && selection.measures(&c.1))
         .max_by_key(|c| c.2.num_faces())
         .map(|c| c.0.clone());
-    let wanted = crate::targets::swept::wanted(&req.names);
+    let kept = crate::targets::swept::kept(&req.names);
     let drift = crate::probe::Drift::new();
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
         let light_here = selection.light(fam) || (!req.full && refined::light(name));
         let targets_here = target_mesh.as_deref() == Some(name.as_str());
-        let plan = &clock::plan_for(&plan, light_here, fam, targets_here);
+        let mut plan = clock::plan_for(&plan, light_here, fam, targets_here);
+        if targets_here {
+            // The Targets read this mesh's rounds: all of them, the run's most.
+            plan.rounds.min_rounds = plan.rounds.max_rounds;
+        }
+        let plan = &plan;
         let case = MeshCase {
             name,
             family: fam,
@@ -202,13 +207,13 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         if selection.measures(fam) {
             // The machine's drift over the run: the same probe before every mesh.
             results.drift.push(drift.read(name, clock.since_start()));
-            let wanted_here = if targets_here { &wanted[..] } else { &[] };
+            let keep = if targets_here { &kept[..] } else { &[] };
             let mut progress = |round: usize| bar.set_message(format!("{name}: round {round}"));
             let done = crate::rounds::measure_mesh::<L>(
                 &req.names,
                 &case,
                 plan,
-                wanted_here,
+                keep,
                 host.meter(),
                 &mut est,
                 &mut progress,

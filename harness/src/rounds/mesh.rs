@@ -5,9 +5,7 @@
 use crate::kernels::{draw_queries, QuerySet};
 use crate::measure::{Estimator, MeshCase, Plan};
 use crate::results::Measurement;
-use crate::rounds::{
-    run_rounds, CellKey, Contender, Entry, RoundsRun, SetUp, Setup, Wanted, CONSTRUCTION,
-};
+use crate::rounds::{run_rounds, CellKey, Contender, Entry, RoundsRun, SetUp, Setup, CONSTRUCTION};
 use crate::timing::meter::MemoryMeter;
 use std::collections::HashMap;
 use topolab_structures::registry::Structures;
@@ -36,21 +34,23 @@ pub struct MeshRounds {
     pub measurements: Vec<Measurement>,
     /// The rounds made.
     pub run: RoundsRun,
-    /// The round values of the wanted cells, by structure and cell: (round, ns per item).
-    pub wanted: HashMap<(String, CellKey), Vec<(usize, f64)>>,
-    /// The rounds of the input checks of the structures whose construction was wanted, timed
+    /// The round values of the kept cells, by structure and cell: (round, ns per item).
+    pub kept: HashMap<(String, CellKey), Vec<(usize, f64)>>,
+    /// The rounds of the input checks of the structures whose construction was kept, timed
     /// alone after each build: (round, ns per face).
     pub checks: HashMap<String, Vec<(usize, f64)>>,
 }
 
 /// Measures the structures `names` of the list `L` on `case` in rounds ([`crate::rounds`]):
-/// each set up (or refused), then the rounds of all of them together, the `wanted` cells
-/// getting at least their rounds. `progress` is told each round as it starts.
+/// each set up (or refused), then the rounds of all of them together; the round values of the
+/// `keep` cells (structure, cell) are returned beside the cells, and a kept construction also
+/// times the structure's input checks alone after each build. `progress` is told each round
+/// as it starts.
 pub fn measure_mesh<L: Structures>(
     names: &[String],
     case: &MeshCase,
     plan: &Plan,
-    wanted: &[Wanted],
+    keep: &[(String, CellKey)],
     meter: &dyn MemoryMeter,
     est: &mut Estimator,
     progress: &mut dyn FnMut(usize),
@@ -64,9 +64,7 @@ pub fn measure_mesh<L: Structures>(
             plan,
             meter,
             est,
-            checks: wanted
-                .iter()
-                .any(|w| &w.structure == name && w.cell == CONSTRUCTION),
+            checks: keep.contains(&(name.clone(), CONSTRUCTION)),
         };
         let setup =
             L::visit(name, visitor).map_err(|_| format!("no structure is called {name}"))??;
@@ -86,13 +84,13 @@ pub fn measure_mesh<L: Structures>(
             Err(m) => order.push(Err(m)),
         }
     }
-    let run = run_rounds(&mut contenders, &plan.rounds, wanted, meter, progress)?;
+    let run = run_rounds(&mut contenders, &plan.rounds, meter, progress)?;
     let (mut kept, mut checks) = (HashMap::new(), HashMap::new());
-    for w in wanted {
-        if let Some(c) = contenders.iter().find(|c| c.name() == w.structure) {
-            kept.insert((w.structure.clone(), w.cell), c.rounds(w.cell).to_vec());
+    for (structure, cell) in keep {
+        if let Some(c) = contenders.iter().find(|c| c.name() == structure) {
+            kept.insert((structure.clone(), *cell), c.rounds(*cell).to_vec());
             if !c.checks().is_empty() {
-                checks.insert(w.structure.clone(), c.checks().to_vec());
+                checks.insert(structure.clone(), c.checks().to_vec());
             }
         }
     }
@@ -110,7 +108,7 @@ pub fn measure_mesh<L: Structures>(
     Ok(MeshRounds {
         measurements,
         run,
-        wanted: kept,
+        kept,
         checks,
     })
 }
@@ -129,7 +127,7 @@ pub fn measure_structure<M: MeshTopology>(
         Setup::Refused(m) => out.push(*m),
         Setup::Ready(c) => {
             let mut contenders = vec![c];
-            run_rounds(&mut contenders, &plan.rounds, &[], meter, &mut |_| {})?;
+            run_rounds(&mut contenders, &plan.rounds, meter, &mut |_| {})?;
             let c = contenders.pop().expect("one contender");
             out.extend(c.finish(est));
         }

@@ -25,10 +25,12 @@
 //!   measuring thread's CPU clock; of a sampled cell, the time of all its passes per query.
 //! - **A cell's value** is the median of its rounds, its interval the order-statistics
 //!   interval of that median ([`crate::timing::interval`]): at least 95% from
-//!   [`ROUNDS_FOR_LEVEL`](crate::timing::interval::ROUNDS_FOR_LEVEL) rounds on. Cells whose interval is wider than [`WIDE`] of their value get
-//!   extra rounds (a fresh build of their structures, then those cells) while the plan's
-//!   budget for extra rounds lasts; cells a caller needs more rounds of (the Targets' cells)
-//!   get them whatever the budget ([`Wanted`]).
+//!   [`ROUNDS_FOR_LEVEL`](crate::timing::interval::ROUNDS_FOR_LEVEL) rounds on. While some
+//!   cell's interval is wider than [`WIDE`] of its value, the mesh gets another whole round, as
+//!   long as the plan's budget for extra rounds lasts: every cell of a mesh has the same rounds,
+//!   so two structures' medians are taken over the same moments of the machine (with extra
+//!   rounds for some cells only, one run's che-l3 sweep came out 14% above che-l2's, the same
+//!   walk).
 //!
 //! Every answer is compared: a sweep's or workload's with the first structure's on the mesh, a
 //! sampled pass's with every other structure's same pass of the same round, a build's face
@@ -40,7 +42,7 @@ mod schedule;
 
 pub use entry::{Contender, Entry, SetUp, Setup};
 pub use mesh::{measure_mesh, measure_structure, round_sets, MeshRounds};
-pub use schedule::{run_rounds, RoundPlan, RoundsRun, Wanted};
+pub use schedule::{run_rounds, RoundPlan, RoundsRun};
 
 use crate::kernels::Kernel;
 use crate::results::Subject;

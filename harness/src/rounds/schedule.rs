@@ -28,23 +28,12 @@ pub struct RoundPlan {
     pub seed: u64,
 }
 
-/// A cell that needs at least `rounds` rounds, whatever the budget (a Target's cell).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Wanted {
-    /// The structure.
-    pub structure: String,
-    /// Its cell.
-    pub cell: CellKey,
-    /// Rounds it needs.
-    pub rounds: usize,
-}
-
 /// What a run of rounds did.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct RoundsRun {
     /// Rounds made (the most any cell got).
     pub rounds: usize,
-    /// Of them, extra rounds for wide or wanted cells.
+    /// Of them, extra rounds for wide cells.
     pub extra: usize,
     /// Wall time of all of them.
     pub seconds: f64,
@@ -101,30 +90,48 @@ impl Answers {
     }
 }
 
-/// Runs the rounds of `contenders` (structures on one or several meshes) with `plan`; `wanted`
-/// cells get at least their rounds. `progress` is told each round as it starts. Fails at the
-/// first failed build or run, or answer that disagrees.
+/// Runs the rounds of `contenders` (structures on one or several meshes) with `plan`: every
+/// round is every contender with every cell it times, so all cells of a mesh share their rounds
+/// (their medians are taken over the same moments of the machine). `plan.min_rounds` rounds,
+/// then more while some cell's interval is wide ([`WIDE`]), at most `plan.max_rounds`, and
+/// only while the next round, as long as the last, fits the extra budget (`plan.extra` of the
+/// first rounds' time). `progress` is told each round as it starts. Fails at the first failed
+/// build or run, or answer that disagrees.
 pub fn run_rounds(
     contenders: &mut [Box<dyn Contender + '_>],
     plan: &RoundPlan,
-    wanted: &[Wanted],
     meter: &dyn MemoryMeter,
     progress: &mut dyn FnMut(usize),
 ) -> Result<RoundsRun, String> {
     let start = Instant::now();
     let mut rng = ChaCha8Rng::seed_from_u64(plan.seed);
     let mut answers = Answers::default();
-    // The wall time of each contender's build and of each of its cells in its last round.
-    let mut costs: HashMap<(usize, CellKey), Duration> = HashMap::new();
     let everyone: Vec<(usize, Vec<CellKey>)> = contenders
         .iter()
         .enumerate()
         .map(|(i, c)| (i, c.cells()))
         .collect();
-    let mut round = 0;
-    while round < plan.min_rounds.min(plan.max_rounds) {
+    let (mut round, mut extra) = (0, 0);
+    let mut last = Duration::ZERO;
+    let mut budget = Duration::ZERO;
+    while round < plan.max_rounds {
+        if round >= plan.min_rounds {
+            if round == plan.min_rounds {
+                budget = start.elapsed().mul_f64(plan.extra.max(0.0));
+            }
+            let wide = contenders.iter().any(|c| {
+                std::iter::once(CONSTRUCTION)
+                    .chain(c.cells())
+                    .any(|k| is_wide(c.rounds(k)))
+            });
+            if !wide || last * (extra + 1) as u32 > budget {
+                break;
+            }
+            extra += 1;
+        }
         round += 1;
         progress(round);
+        let t = Instant::now();
         one_round(
             contenders,
             &everyone,
@@ -132,68 +139,8 @@ pub fn run_rounds(
             &mut rng,
             meter,
             &mut answers,
-            &mut costs,
         )?;
-    }
-    let budget = start.elapsed().mul_f64(plan.extra.max(0.0));
-    let extra_start = Instant::now();
-    let mut extra = 0;
-    while round < plan.max_rounds {
-        let next = round + 1;
-        // Who needs this round: the cells wanted for more rounds, and while the budget lasts
-        // the cells whose interval is wide.
-        let needs = |c: &dyn Contender, cell: CellKey, wide_too: bool| {
-            let values = c.rounds(cell);
-            let wants = wanted
-                .iter()
-                .any(|w| w.structure == c.name() && w.cell == cell && values.len() < w.rounds);
-            wants || (wide_too && is_wide(values))
-        };
-        let participants = |wide_too: bool| -> Vec<(usize, Vec<CellKey>)> {
-            contenders
-                .iter()
-                .enumerate()
-                .filter_map(|(i, c)| {
-                    let cells: Vec<CellKey> = c
-                        .cells()
-                        .into_iter()
-                        .filter(|&k| needs(&**c, k, wide_too))
-                        .collect();
-                    (!cells.is_empty() || needs(&**c, CONSTRUCTION, wide_too)).then_some((i, cells))
-                })
-                .collect()
-        };
-        let all = participants(true);
-        let cost = |p: &[(usize, Vec<CellKey>)]| -> Duration {
-            p.iter()
-                .flat_map(|(i, cells)| {
-                    std::iter::once(CONSTRUCTION)
-                        .chain(cells.iter().copied())
-                        .map(move |k| (*i, k))
-                })
-                .filter_map(|k| costs.get(&k))
-                .sum()
-        };
-        let who = if extra_start.elapsed() + cost(&all) <= budget {
-            all
-        } else {
-            participants(false)
-        };
-        if who.is_empty() {
-            break;
-        }
-        round = next;
-        extra += 1;
-        progress(round);
-        one_round(
-            contenders,
-            &who,
-            (round, plan.cold_rounds),
-            &mut rng,
-            meter,
-            &mut answers,
-            &mut costs,
-        )?;
+        last = t.elapsed();
     }
     for c in contenders.iter_mut() {
         c.release();
@@ -218,8 +165,8 @@ fn is_wide(values: &[(usize, f64)]) -> bool {
     }
 }
 
-/// One round of `participants` (a contender and the cells it runs this round): every one
-/// built afresh in a random order, then each cell run by its participants in a random order.
+/// One round of `participants` (a contender and the cells it runs): every one built afresh in
+/// a random order, then each cell run by its participants in a random order.
 fn one_round(
     contenders: &mut [Box<dyn Contender + '_>],
     participants: &[(usize, Vec<CellKey>)],
@@ -227,7 +174,6 @@ fn one_round(
     rng: &mut ChaCha8Rng,
     meter: &dyn MemoryMeter,
     answers: &mut Answers,
-    costs: &mut HashMap<(usize, CellKey), Duration>,
 ) -> Result<(), String> {
     let context = |c: &dyn Contender, what: &str, e: String| {
         format!("{} {what} on {}, round {round}: {e}", c.name(), c.mesh())
@@ -239,11 +185,9 @@ fn one_round(
     let mut order: Vec<usize> = participants.iter().map(|p| p.0).collect();
     order.shuffle(rng);
     for i in order {
-        let t = Instant::now();
         let c = &mut contenders[i];
         c.build(round, round <= cold_rounds, meter)
             .map_err(|e| context(&**c, "construction", e))?;
-        costs.insert((i, CONSTRUCTION), t.elapsed());
     }
     for cell in cells(false, true) {
         let mut order: Vec<usize> = participants
@@ -253,13 +197,11 @@ fn one_round(
             .collect();
         order.shuffle(rng);
         for i in order {
-            let t = Instant::now();
             let c = &mut contenders[i];
             let what = format!("{} {}", cell.0, cell.1);
             let said = c
                 .run(cell, round, meter)
                 .map_err(|e| context(&**c, &what, e))?;
-            costs.insert((i, cell), t.elapsed());
             let (who, mesh) = (c.name(), c.mesh().to_string());
             answers.check(who, &mesh, cell, round, said)?;
         }

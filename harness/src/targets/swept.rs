@@ -2,21 +2,16 @@
 //! 1-ring sweep, smoothing, construction) are read from the size sweep's own rounds on the
 //! largest torus, so the Targets, the chooser, the tables and the plots read the same cells:
 //! in every round both structures were built afresh and ran in a random order
-//! ([`crate::rounds`]), so the ratio of a round is a ratio in turns. Those cells get at least
-//! [`SWEPT_ROUNDS`] rounds there ([`wanted`]); their rounds become the target's [`Turns`]
-//! ([`turns`]), the rounds both sides ran, side by side. The changing workloads' targets read
+//! ([`crate::rounds`]), so the ratio of a round is a ratio in turns. That mesh gets the run's
+//! most rounds (the pipeline's plan); the cells the targets read are kept ([`kept`]) and their
+//! rounds become the target's [`Turns`] ([`turns`]), side by side. The changing workloads' targets read
 //! the changing section's rounds the same way ([`changing_turns`]).
 
 use crate::changing::ChangingRow;
-use crate::rounds::{MeshRounds, Wanted};
+use crate::rounds::{CellKey, MeshRounds};
 use crate::targets::plan::{Against, Cell, Turns, CHECKS, TARGETS};
 use crate::targets::text::sequential_subject;
 use topolab_structures::PolygonSoup;
-
-/// Rounds the Targets' cells get on the largest torus. With 7 rounds on one build the median
-/// of the che-l2 / index-half-edge R00 target moved by more than its margin from run to run;
-/// 15 fresh builds keep its interval within a few percent.
-pub const SWEPT_ROUNDS: usize = 15;
 
 /// The targets of two structures on a cell of the size sweep whose structures are both among
 /// `names`: (cell, structure, against).
@@ -33,18 +28,14 @@ pub fn swept(names: &[String]) -> Vec<(Cell, &'static str, &'static str)> {
         .collect()
 }
 
-/// The cells the swept targets read, each wanted for [`SWEPT_ROUNDS`] rounds.
-pub fn wanted(names: &[String]) -> Vec<Wanted> {
-    let mut out: Vec<Wanted> = Vec::new();
+/// The cells the swept targets read, by structure: their round values are kept.
+pub fn kept(names: &[String]) -> Vec<(String, CellKey)> {
+    let mut out: Vec<(String, CellKey)> = Vec::new();
     for (cell, a, b) in swept(names) {
         let key = sequential_subject(cell).expect("a cell of the size sweep");
         for s in [a, b] {
-            if !out.iter().any(|w| w.structure == s && w.cell == key) {
-                out.push(Wanted {
-                    structure: s.into(),
-                    cell: key,
-                    rounds: SWEPT_ROUNDS,
-                });
+            if !out.contains(&(s.to_string(), key)) {
+                out.push((s.into(), key));
             }
         }
     }
@@ -65,7 +56,7 @@ pub fn turns(
     let mut out = Vec::new();
     for (cell, a, b) in swept(names) {
         let key = sequential_subject(cell).expect("a cell of the size sweep");
-        let of = |s: &str| rounds.wanted.get(&(s.to_string(), key));
+        let of = |s: &str| rounds.kept.get(&(s.to_string(), key));
         let (Some(ra), Some(rb)) = (of(a), of(b)) else {
             continue;
         };

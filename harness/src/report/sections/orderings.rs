@@ -155,7 +155,7 @@ fn measure(run: &mut Run) -> Result<(), ReportError> {
                 }
             }
         }
-        run_rounds(&mut contenders, &plan.rounds, &[], run.meter, &mut |_| {})
+        run_rounds(&mut contenders, &plan.rounds, run.meter, &mut |_| {})
             .map_err(ReportError::Measurement)?;
         let mut est = est;
         let r00 = (Subject::Query(Operator::R00), Kernel::Sweep);
