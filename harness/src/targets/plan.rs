@@ -137,7 +137,7 @@ pub const TARGETS: [Target; 18] = [
         "openmesh",
         0.7,
     ),
-    versus(Cell::Hull, "randomized", "qhull", 2.0),
+    versus(Cell::Hull, "randomized", "qhull", 1.5),
     versus(Cell::Construction, "index-half-edge", "lox-half-edge", 1.0),
     versus(Cell::R00Sweep, "index-half-edge", "lox-half-edge", 0.7),
     versus(Cell::Construction, "che-l1", "lox-directed-edge", 1.0),

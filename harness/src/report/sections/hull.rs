@@ -395,6 +395,6 @@ mod tests {
             .iter()
             .find(|t| t.cell == Cell::Hull)
             .expect("the guide's hull target");
-        assert_eq!((hull.structure, hull.goal), ("randomized", 2.0));
+        assert_eq!((hull.structure, hull.goal), ("randomized", 1.5));
     }
 }
