@@ -5,50 +5,13 @@
 //! [`MeshChecksum`]: counts plus a hash of the face list that does not depend on how faces
 //! are numbered or where each face's cycle starts. Structures that disagree stop the report.
 
-use crate::checksum::mix;
+pub use crate::checksum::{mesh_checksum, MeshChecksum};
 use crate::timing::interval::Interval;
 use crate::timing::median;
 use crate::timing::meter::MemoryMeter;
 use crate::timing::turns::Stopwatch;
 use topolab_structures::algorithms::changing::Changing;
-use topolab_structures::{FaceId, MeshTopology, Result};
-
-/// What a changed mesh is compared by.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
-pub struct MeshChecksum {
-    /// Vertices.
-    pub vertices: usize,
-    /// Edges.
-    pub edges: usize,
-    /// Faces.
-    pub faces: usize,
-    /// Σ over faces of the face's vertices folded with [`mix`], each face read from its
-    /// smallest vertex on (wrapping sum: face order does not matter, orientation does).
-    pub face_hash: u64,
-}
-
-/// The [`MeshChecksum`] of `m` (through R20).
-pub fn mesh_checksum<M: MeshTopology>(m: &M) -> MeshChecksum {
-    let mut face_hash = 0u64;
-    let mut face = Vec::new();
-    for f in 0..m.num_faces() {
-        face.clear();
-        m.face_vertices(FaceId::new(f), |v| face.push(v.0));
-        let k = face.len();
-        let first = (0..k).min_by_key(|&i| face[i]).unwrap_or(0);
-        let mut h = k as u64;
-        for i in 0..k {
-            h = mix(h, face[(first + i) % k] as u64);
-        }
-        face_hash = face_hash.wrapping_add(h);
-    }
-    MeshChecksum {
-        vertices: m.num_vertices(),
-        edges: m.num_edges(),
-        faces: m.num_faces(),
-        face_hash,
-    }
-}
+use topolab_structures::Result;
 
 /// One timed workload on one structure and mesh.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -316,7 +279,7 @@ pub fn ratio(rows: &[ChangingRow], workload: Changing, structure: &str, base: &s
 mod tests {
     use super::*;
     use topolab_structures::algorithms::changing::Changing;
-    use topolab_structures::{meshes, IndexHalfEdge, PointerHalfEdge, PolygonSoup};
+    use topolab_structures::{meshes, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup};
 
     use crate::timing::meter::Uncounted as NoMeter;
 

@@ -74,3 +74,40 @@ mod tests {
         assert_eq!(mix(3, 5), 0x4015_9a6e_5620_edf9);
     }
 }
+
+/// What a changed mesh is compared by.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct MeshChecksum {
+    /// Vertices.
+    pub vertices: usize,
+    /// Edges.
+    pub edges: usize,
+    /// Faces.
+    pub faces: usize,
+    /// Σ over faces of the face's vertices folded with [`mix`], each face read from its
+    /// smallest vertex on (wrapping sum: face order does not matter, orientation does).
+    pub face_hash: u64,
+}
+
+/// The [`MeshChecksum`] of `m` (through R20).
+pub fn mesh_checksum<M: topolab_structures::MeshTopology>(m: &M) -> MeshChecksum {
+    let mut face_hash = 0u64;
+    let mut face = Vec::new();
+    for f in 0..m.num_faces() {
+        face.clear();
+        m.face_vertices(topolab_structures::FaceId::new(f), |v| face.push(v.0));
+        let k = face.len();
+        let first = (0..k).min_by_key(|&i| face[i]).unwrap_or(0);
+        let mut h = k as u64;
+        for i in 0..k {
+            h = mix(h, face[(first + i) % k] as u64);
+        }
+        face_hash = face_hash.wrapping_add(h);
+    }
+    MeshChecksum {
+        vertices: m.num_vertices(),
+        edges: m.num_edges(),
+        faces: m.num_faces(),
+        face_hash,
+    }
+}

@@ -542,3 +542,15 @@ mod tests {
         assert_eq!(est.estimate(&key, 16000, 2.0), Some(256e6));
     }
 }
+
+/// The round settings of `plan`, as `results.json` states them.
+pub fn round_settings(plan: &Plan) -> crate::results::RoundSettings {
+    crate::results::RoundSettings {
+        min_rounds: plan.rounds.min_rounds,
+        max_rounds: plan.rounds.max_rounds,
+        extra: plan.rounds.extra,
+        pass: crate::rounds::PASS,
+        round_ns: crate::rounds::ROUND_NS,
+        wide: crate::rounds::WIDE,
+    }
+}

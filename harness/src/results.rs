@@ -109,20 +109,6 @@ pub struct RoundSettings {
     pub wide: f64,
 }
 
-impl RoundSettings {
-    /// The settings of `plan`.
-    pub fn of(plan: &crate::measure::Plan) -> Self {
-        Self {
-            min_rounds: plan.rounds.min_rounds,
-            max_rounds: plan.rounds.max_rounds,
-            extra: plan.rounds.extra,
-            pass: crate::rounds::PASS,
-            round_ns: crate::rounds::ROUND_NS,
-            wide: crate::rounds::WIDE,
-        }
-    }
-}
-
 /// The rounds one mesh of the size sweep took.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct MeshRoundsRow {

@@ -18,8 +18,8 @@ use crate::report::sections::real_at_scale::FAMILY;
 use crate::report::selection::Selection;
 use crate::report::{refined, repair};
 use crate::results::{
-    CostRow, MeshInfo, MeshRoundsRow, Results, RoundSettings, Settings, Status, StructureInfo,
-    Teaching, FORMAT_VERSION,
+    CostRow, MeshInfo, MeshRoundsRow, Results, Settings, Status, StructureInfo, Teaching,
+    FORMAT_VERSION,
 };
 use crate::timing::meter::MemoryMeter;
 use crate::{fit, machine, probe, svg};
@@ -126,7 +126,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
             quick: req.quick,
             sizes: req.sizes.clone(),
             samples: plan.samples,
-            rounds: RoundSettings::of(&plan),
+            rounds: crate::measure::round_settings(&plan),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command: req.command.clone(),
             sections: selection.names(),

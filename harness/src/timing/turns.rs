@@ -3,7 +3,7 @@
 //! with the first ([`take_turns`]). Each run is timed by a [`Stopwatch`], in the measuring
 //! thread's CPU time when the meter knows it; the per-round values make a [`Spread`].
 
-use crate::changing::MeshChecksum;
+use crate::checksum::MeshChecksum;
 use crate::timing::interval::Interval;
 use crate::timing::median;
 use crate::timing::meter::MemoryMeter;
