@@ -19,7 +19,6 @@ pub mod decimate;
 pub mod edit_explain;
 pub mod findings;
 pub mod fit;
-pub mod html;
 pub mod hull;
 pub mod kernels;
 pub mod limit;
