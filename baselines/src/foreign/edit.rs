@@ -21,7 +21,7 @@
 use super::topology::ForeignMesh;
 use super::{status, Call};
 use glam::DVec3;
-use topolab_structures::{Cost, EdgeId, EditOp, Error, FaceId, Refusal, Result, VertexId};
+use topolab_structures::{refuse, Cost, EdgeId, EditOp, Error, FaceId, Refusal, Result, VertexId};
 
 /// The shims' status of a refused edit (`TOPOLAB_OM_EDIT_REFUSED`, `TOPOLAB_CGAL_EDIT_REFUSED`).
 pub(crate) const EDIT_REFUSED: i32 = 5;
@@ -237,14 +237,6 @@ pub(crate) fn edit_cost(op: EditOp) -> Cost {
     }
 }
 
-fn refused<M: ForeignEdit>(op: EditOp, reason: Refusal) -> Error {
-    Error::EditRefused {
-        structure: M::NAME,
-        op,
-        reason,
-    }
-}
-
 /// The lab's result of an edit's status: a refusal becomes [`Error::EditRefused`] with its
 /// reason, a failure [`Error::Foreign`]; the counts are read again either way.
 fn edited<M: ForeignEdit>(
@@ -264,7 +256,7 @@ fn edited<M: ForeignEdit>(
                 call,
                 reason: "an unknown refusal code",
             })?;
-        return Err(refused::<M>(op, reason));
+        return Err(refuse::<M>(op, reason));
     }
     status(M::LIBRARY, call, code)
 }
@@ -335,7 +327,7 @@ pub(crate) fn set_position<M: ForeignEdit>(m: &mut M, v: VertexId, p: DVec3) -> 
 
 pub(crate) fn add_face<M: ForeignEdit>(m: &mut M, vertices: &[VertexId]) -> Result<FaceId> {
     let n = u32::try_from(vertices.len())
-        .map_err(|_| refused::<M>(EditOp::AddFace, Refusal::BadFace))?;
+        .map_err(|_| refuse::<M>(EditOp::AddFace, Refusal::BadFace))?;
     room(m, 0, n as u64, 1)?;
     let ids: Vec<u32> = vertices.iter().map(|v| v.0).collect();
     let (raw, api) = (m.raw(), &M::API.add_face);
@@ -476,86 +468,28 @@ macro_rules! impl_mesh_edit {
                 $crate::foreign::edit::edit_cost(op)
             }
             /// Everything but the insertion and deletion of an edge, for which the shims have
-            /// no call (the trait's default refuses them as not implemented).
-            fn supports(op: topolab_structures::EditOp) -> bool {
-                !matches!(
-                    op,
-                    topolab_structures::EditOp::InsertEdge | topolab_structures::EditOp::DeleteEdge
-                )
-            }
-            fn add_vertex(
-                &mut self,
-                p: glam::DVec3,
-            ) -> topolab_structures::Result<topolab_structures::VertexId> {
-                $crate::foreign::edit::add_vertex(self, p)
-            }
+            /// no call.
+            const OFFERS: topolab_structures::Offers<Self> = topolab_structures::Offers {
+                add_vertex: Some($crate::foreign::edit::add_vertex),
+                add_face: Some($crate::foreign::edit::add_face),
+                delete_face: Some($crate::foreign::edit::delete_face),
+                delete_vertex: Some($crate::foreign::edit::delete_vertex),
+                flip_edge: Some($crate::foreign::edit::flip_edge),
+                split_edge: Some($crate::foreign::edit::split_edge),
+                split_face: Some($crate::foreign::edit::split_face),
+                collapse_edge: Some($crate::foreign::edit::collapse_edge),
+                split_vertex: Some($crate::foreign::edit::split_vertex),
+                weld_vertices: Some($crate::foreign::edit::weld_vertices),
+                insert_edge: None,
+                delete_edge: None,
+                rebuilds: true,
+            };
             fn set_position(
                 &mut self,
                 v: topolab_structures::VertexId,
                 p: glam::DVec3,
             ) -> topolab_structures::Result<()> {
                 $crate::foreign::edit::set_position(self, v, p)
-            }
-            fn add_face(
-                &mut self,
-                vertices: &[topolab_structures::VertexId],
-            ) -> topolab_structures::Result<topolab_structures::FaceId> {
-                $crate::foreign::edit::add_face(self, vertices)
-            }
-            fn delete_face(
-                &mut self,
-                f: topolab_structures::FaceId,
-            ) -> topolab_structures::Result<()> {
-                $crate::foreign::edit::delete_face(self, f)
-            }
-            fn delete_vertex(
-                &mut self,
-                v: topolab_structures::VertexId,
-            ) -> topolab_structures::Result<()> {
-                $crate::foreign::edit::delete_vertex(self, v)
-            }
-            fn flip_edge(
-                &mut self,
-                e: topolab_structures::EdgeId,
-            ) -> topolab_structures::Result<()> {
-                $crate::foreign::edit::flip_edge(self, e)
-            }
-            fn split_edge(
-                &mut self,
-                e: topolab_structures::EdgeId,
-                p: glam::DVec3,
-            ) -> topolab_structures::Result<topolab_structures::VertexId> {
-                $crate::foreign::edit::split_edge(self, e, p)
-            }
-            fn split_face(
-                &mut self,
-                f: topolab_structures::FaceId,
-                p: glam::DVec3,
-            ) -> topolab_structures::Result<topolab_structures::VertexId> {
-                $crate::foreign::edit::split_face(self, f, p)
-            }
-            fn collapse_edge(
-                &mut self,
-                from: topolab_structures::VertexId,
-                to: topolab_structures::VertexId,
-            ) -> topolab_structures::Result<()> {
-                $crate::foreign::edit::collapse_edge(self, from, to)
-            }
-            fn split_vertex(
-                &mut self,
-                v: topolab_structures::VertexId,
-                p: glam::DVec3,
-                left: topolab_structures::VertexId,
-                right: topolab_structures::VertexId,
-            ) -> topolab_structures::Result<topolab_structures::VertexId> {
-                $crate::foreign::edit::split_vertex(self, v, p, left, right)
-            }
-            fn weld_vertices(
-                &mut self,
-                a: topolab_structures::VertexId,
-                b: topolab_structures::VertexId,
-            ) -> topolab_structures::Result<()> {
-                $crate::foreign::edit::weld_vertices(self, a, b)
             }
             fn is_deleted_vertex(&self, v: topolab_structures::VertexId) -> bool {
                 $crate::foreign::edit::is_deleted_vertex(self, v)

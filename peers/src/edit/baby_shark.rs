@@ -14,14 +14,14 @@
 //! O(n), so the splits are left out until the tables can be kept otherwise, refused as
 //! [`Refusal::NotImplemented`] with the other operations baby_shark does not offer.
 
-use super::{check_flip, not_implemented, refuse};
+use super::check_flip;
 use crate::BabySharkCornerTable;
 use baby_shark::exports::nalgebra::Vector3;
 use baby_shark::mesh::corner_table::{EdgeId as SharkEdge, FaceId as SharkFace};
 use glam::DVec3;
 use topolab_structures::{
-    Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, MeshTopology, Refusal, Result,
-    VertexId,
+    refuse, Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, MeshTopology, Offers, Refusal,
+    Result, VertexId,
 };
 
 impl BabySharkCornerTable {
@@ -91,6 +91,15 @@ impl MeshEdit for BabySharkCornerTable {
     /// keeps the lab's ids of what a collapse deleted until `garbage_collection`.
     const DELETION: Deletion = Deletion::Marked;
 
+    /// baby_shark's flip and collapse, after the lab's checks; welds of edges, faces and
+    /// meshes: the lab's rebuild from the welded face list.
+    const OFFERS: Offers<Self> = Offers {
+        flip_edge: Some(Self::flip_edge_checked),
+        collapse_edge: Some(Self::collapse_edge_checked),
+        rebuilds: true,
+        ..Offers::NOTHING
+    };
+
     fn edit_cost(op: EditOp) -> Cost {
         match op {
             // baby_shark's flip rewrites the six corners of the two triangles, O(1); the
@@ -108,27 +117,6 @@ impl MeshEdit for BabySharkCornerTable {
             // welding meshes is the lab's rebuild from the welded face list, as everywhere.
             _ => Cost::Linear,
         }
-    }
-
-    fn supports(op: EditOp) -> bool {
-        matches!(
-            op,
-            EditOp::FlipEdge
-                | EditOp::CollapseEdge
-                | EditOp::GarbageCollection
-                | EditOp::WeldEdges
-                | EditOp::WeldFaces
-                | EditOp::WeldMeshes
-                | EditOp::SetPosition
-                | EditOp::Select
-                | EditOp::RotateSelection
-                | EditOp::ScaleSelection
-                | EditOp::Smooth
-        )
-    }
-
-    fn add_vertex(&mut self, _: DVec3) -> Result<VertexId> {
-        not_implemented::<Self, _>(EditOp::AddVertex)
     }
 
     /// A vertex of a face is moved in the crate (`Vertex::set_position` through the
@@ -151,138 +139,6 @@ impl MeshEdit for BabySharkCornerTable {
         }
     }
 
-    fn add_face(&mut self, _: &[VertexId]) -> Result<FaceId> {
-        not_implemented::<Self, _>(EditOp::AddFace)
-    }
-    fn delete_face(&mut self, _: FaceId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::DeleteFace)
-    }
-    fn delete_vertex(&mut self, _: VertexId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::DeleteVertex)
-    }
-
-    /// baby_shark's `flip_edge` on the edge's corner, after the lab's checks: baby_shark
-    /// checks nothing (on a boundary edge its walker's `move_to_opposite` finds no opposite
-    /// corner, a `debug_assert!` panic in a debug build, a walk on from the wrong corner in a
-    /// release build; on two triangles with the same third corner, a pillow, it leaves two
-    /// degenerate triangles such as (1, 0, 0) and (0, 2, 0)).
-    /// The two faces keep their corners, whose vertices change, so the adapter re-reads the
-    /// lab's edge of each of the six corners: the flipped edge keeps its id, and so do the
-    /// four around it.
-    fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
-        if e.index() >= self.edges.len() || self.edge_deleted(e) {
-            return Err(refuse::<Self>(EditOp::FlipEdge, Refusal::NoSuchElement));
-        }
-        check_flip(self, e)?;
-        let h = self.edges[e.index()];
-        let (g1, Some(g2)) = self.mesh.edge_faces(h) else {
-            return Err(refuse::<Self>(EditOp::FlipEdge, Refusal::BoundaryEdge));
-        };
-        let corners: Vec<SharkEdge> = [g1, g2]
-            .into_iter()
-            .flat_map(|g| self.corners_of(g))
-            .collect();
-        let before: Vec<([u32; 2], u32)> = corners
-            .iter()
-            .map(|&c| (self.ends(c), self.corner_ids[c][0]))
-            .collect();
-        self.mesh.flip_edge(h);
-        for &c in &corners {
-            let ends = self.ends(c);
-            let id = before
-                .iter()
-                .find(|(pair, _)| *pair == ends)
-                .map_or(e.0, |&(_, id)| id);
-            self.corner_ids[c][0] = id;
-            self.edges[id as usize] = c;
-        }
-        Ok(())
-    }
-
-    fn split_edge(&mut self, _: EdgeId, _: DVec3) -> Result<VertexId> {
-        not_implemented::<Self, _>(EditOp::SplitEdge)
-    }
-    fn split_face(&mut self, _: FaceId, _: DVec3) -> Result<VertexId> {
-        not_implemented::<Self, _>(EditOp::SplitFace)
-    }
-    /// baby_shark's `collapse_edge`, after the lab's test ([`MeshEdit::check_collapse`]: the
-    /// link condition and OpenMesh's tetrahedron test; baby_shark checks nothing). baby_shark
-    /// collapses the side opposite a corner into the side's first end: the corner of the face
-    /// running `to` → `from` keeps `to`; where only `from` → `to` has a face (a boundary
-    /// edge), baby_shark keeps `from`'s record and the adapter gives it `to`'s lab id. The
-    /// kept vertex is put at `to`'s position. Of each removed triangle's two other sides,
-    /// the one at `to` keeps its id (its corner across now faces the one across the other),
-    /// the one at `from` is deleted with the edge itself and the triangle.
-    fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
-        self.check_collapse(from, to)?;
-        let (Some(x_from), Some(x_to)) = (self.vertices[from.index()], self.vertices[to.index()])
-        else {
-            return Err(refuse::<Self>(EditOp::CollapseEdge, Refusal::NoSuchElement));
-        };
-        let (h, kept) = match (self.side(to, from), self.side(from, to)) {
-            (Some(h), _) => (h, x_to),
-            (None, Some(h)) => (h, x_from),
-            (None, None) => {
-                return Err(refuse::<Self>(EditOp::CollapseEdge, Refusal::NotNeighbours))
-            }
-        };
-        // Per removed triangle: (the id that stays, its corner across), (the id deleted, its
-        // own corner and its corner across).
-        let mut sides = Vec::with_capacity(2);
-        let faces = self.mesh.edge_faces(h);
-        for g in [Some(faces.0), faces.1].into_iter().flatten() {
-            let mut keep = None;
-            let mut gone = None;
-            for k in self.corners_of(g) {
-                let ends = self.ends(k);
-                let id = self.corner_ids[k][0];
-                let across = self.mesh.opposite_edge(k);
-                if ends.contains(&from.0) && ends.contains(&to.0) {
-                    continue;
-                } else if ends.contains(&to.0) {
-                    keep = Some((id, across));
-                } else {
-                    gone = Some((id, k, across));
-                }
-            }
-            match (keep, gone) {
-                (Some(keep), Some(gone)) => sides.push((keep, gone)),
-                _ => {
-                    return Err(Error::Invariant {
-                        structure: Self::NAME,
-                        message: format!(
-                            "a face of edge {}-{} is not a triangle on it",
-                            from.0, to.0
-                        ),
-                    })
-                }
-            }
-        }
-        let p = self.position(to);
-        self.mesh.collapse_edge(h, &Vector3::new(p.x, p.y, p.z));
-        for ((keep, keep_across), (gone, gone_corner, gone_across)) in sides {
-            if let Some(c) = gone_across {
-                self.corner_ids[c][0] = keep;
-            }
-            if let Some(c) = keep_across.or(gone_across) {
-                self.edges[keep as usize] = c;
-            }
-            self.edges[gone as usize] = gone_corner;
-        }
-        self.vertices[to.index()] = Some(kept);
-        self.vertex_ids[kept] = to.0;
-        self.vertices[from.index()] = None;
-        Ok(())
-    }
-    fn split_vertex(
-        &mut self,
-        _: VertexId,
-        _: DVec3,
-        _: VertexId,
-        _: VertexId,
-    ) -> Result<VertexId> {
-        not_implemented::<Self, _>(EditOp::SplitVertex)
-    }
     fn is_deleted_vertex(&self, v: VertexId) -> bool {
         self.vertex_deleted(v)
     }
@@ -352,6 +208,116 @@ impl MeshEdit for BabySharkCornerTable {
     }
 
     fn reserve(&mut self, _: usize, _: usize, _: usize) {}
+}
+
+impl BabySharkCornerTable {
+    /// baby_shark's `flip_edge` on the edge's corner, after the lab's checks: baby_shark
+    /// checks nothing (on a boundary edge its walker's `move_to_opposite` finds no opposite
+    /// corner, a `debug_assert!` panic in a debug build, a walk on from the wrong corner in a
+    /// release build; on two triangles with the same third corner, a pillow, it leaves two
+    /// degenerate triangles such as (1, 0, 0) and (0, 2, 0)).
+    /// The two faces keep their corners, whose vertices change, so the adapter re-reads the
+    /// lab's edge of each of the six corners: the flipped edge keeps its id, and so do the
+    /// four around it.
+    fn flip_edge_checked(&mut self, e: EdgeId) -> Result<()> {
+        if e.index() >= self.edges.len() || self.edge_deleted(e) {
+            return Err(refuse::<Self>(EditOp::FlipEdge, Refusal::NoSuchElement));
+        }
+        check_flip(self, e)?;
+        let h = self.edges[e.index()];
+        let (g1, Some(g2)) = self.mesh.edge_faces(h) else {
+            return Err(refuse::<Self>(EditOp::FlipEdge, Refusal::BoundaryEdge));
+        };
+        let corners: Vec<SharkEdge> = [g1, g2]
+            .into_iter()
+            .flat_map(|g| self.corners_of(g))
+            .collect();
+        let before: Vec<([u32; 2], u32)> = corners
+            .iter()
+            .map(|&c| (self.ends(c), self.corner_ids[c][0]))
+            .collect();
+        self.mesh.flip_edge(h);
+        for &c in &corners {
+            let ends = self.ends(c);
+            let id = before
+                .iter()
+                .find(|(pair, _)| *pair == ends)
+                .map_or(e.0, |&(_, id)| id);
+            self.corner_ids[c][0] = id;
+            self.edges[id as usize] = c;
+        }
+        Ok(())
+    }
+
+    /// baby_shark's `collapse_edge`, after the lab's test ([`MeshEdit::check_collapse`]: the
+    /// link condition and OpenMesh's tetrahedron test; baby_shark checks nothing). baby_shark
+    /// collapses the side opposite a corner into the side's first end: the corner of the face
+    /// running `to` → `from` keeps `to`; where only `from` → `to` has a face (a boundary
+    /// edge), baby_shark keeps `from`'s record and the adapter gives it `to`'s lab id. The
+    /// kept vertex is put at `to`'s position. Of each removed triangle's two other sides,
+    /// the one at `to` keeps its id (its corner across now faces the one across the other),
+    /// the one at `from` is deleted with the edge itself and the triangle.
+    fn collapse_edge_checked(&mut self, from: VertexId, to: VertexId) -> Result<()> {
+        self.check_collapse(from, to)?;
+        let (Some(x_from), Some(x_to)) = (self.vertices[from.index()], self.vertices[to.index()])
+        else {
+            return Err(refuse::<Self>(EditOp::CollapseEdge, Refusal::NoSuchElement));
+        };
+        let (h, kept) = match (self.side(to, from), self.side(from, to)) {
+            (Some(h), _) => (h, x_to),
+            (None, Some(h)) => (h, x_from),
+            (None, None) => {
+                return Err(refuse::<Self>(EditOp::CollapseEdge, Refusal::NotNeighbours))
+            }
+        };
+        // Per removed triangle: (the id that stays, its corner across), (the id deleted, its
+        // own corner and its corner across).
+        let mut sides = Vec::with_capacity(2);
+        let faces = self.mesh.edge_faces(h);
+        for g in [Some(faces.0), faces.1].into_iter().flatten() {
+            let mut keep = None;
+            let mut gone = None;
+            for k in self.corners_of(g) {
+                let ends = self.ends(k);
+                let id = self.corner_ids[k][0];
+                let across = self.mesh.opposite_edge(k);
+                if ends.contains(&from.0) && ends.contains(&to.0) {
+                    continue;
+                } else if ends.contains(&to.0) {
+                    keep = Some((id, across));
+                } else {
+                    gone = Some((id, k, across));
+                }
+            }
+            match (keep, gone) {
+                (Some(keep), Some(gone)) => sides.push((keep, gone)),
+                _ => {
+                    return Err(Error::Invariant {
+                        structure: Self::NAME,
+                        message: format!(
+                            "a face of edge {}-{} is not a triangle on it",
+                            from.0, to.0
+                        ),
+                    })
+                }
+            }
+        }
+        let p = self.position(to);
+        self.mesh.collapse_edge(h, &Vector3::new(p.x, p.y, p.z));
+        for ((keep, keep_across), (gone, gone_corner, gone_across)) in sides {
+            if let Some(c) = gone_across {
+                self.corner_ids[c][0] = keep;
+            }
+            if let Some(c) = keep_across.or(gone_across) {
+                self.edges[keep as usize] = c;
+            }
+            self.edges[gone as usize] = gone_corner;
+        }
+        self.vertices[to.index()] = Some(kept);
+        self.vertex_ids[kept] = to.0;
+        self.vertices[from.index()] = None;
+        Ok(())
+    }
 }
 
 #[cfg(test)]

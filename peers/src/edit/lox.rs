@@ -11,33 +11,15 @@
 //!   renumbers the survivors in order) could only be a rebuild: deletion is refused;
 //! - lox has no collapse, vertex split or weld.
 
-use super::{check_add_face, new_sides, not_implemented, refuse};
+use super::{check_add_face, new_sides};
 use crate::{LoxDirectedEdge, LoxHalfEdge};
 use glam::DVec3;
 use lox::prelude::*;
 use lox::{FaceHandle, VertexHandle};
 use topolab_structures::{
-    Cost, Deletion, EdgeId, EditOp, FaceId, MeshEdit, MeshTopology, Refusal, Result, VertexId,
+    refuse, Cost, Deletion, EditOp, FaceId, MeshEdit, MeshTopology, Offers, Refusal, Result,
+    VertexId,
 };
-
-/// What both lox adapters offer: the operations lox does for either structure.
-fn supports(op: EditOp) -> bool {
-    matches!(
-        op,
-        EditOp::AddVertex
-            | EditOp::AddFace
-            | EditOp::SplitFace
-            | EditOp::GarbageCollection
-            | EditOp::WeldEdges
-            | EditOp::WeldFaces
-            | EditOp::WeldMeshes
-            | EditOp::SetPosition
-            | EditOp::Select
-            | EditOp::RotateSelection
-            | EditOp::ScaleSelection
-            | EditOp::Smooth
-    )
-}
 
 /// The declared costs, read from lox's source (and the lab's checks before each call).
 fn edit_cost(op: EditOp) -> Cost {
@@ -72,15 +54,19 @@ macro_rules! lox_edit_common {
             edit_cost(op)
         }
 
-        fn supports(op: EditOp) -> bool {
-            supports(op)
-        }
-
-        fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
-            let v = self.mesh.add_vertex();
-            self.positions.push(p);
-            Ok(VertexId(v.idx()))
-        }
+        /// Vertices and faces added and faces split: lox's own calls; welds of edges, faces and
+        /// meshes: the lab's rebuild from the welded face list.
+        const OFFERS: Offers<Self> = Offers {
+            add_vertex: Some(|m, p| {
+                let v = m.mesh.add_vertex();
+                m.positions.push(p);
+                Ok(VertexId(v.idx()))
+            }),
+            add_face: Some(Self::add_face_checked),
+            split_face: Some(Self::split_face_checked),
+            rebuilds: true,
+            ..Offers::NOTHING
+        };
 
         /// lox stores no positions; the adapter's are moved.
         fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
@@ -93,34 +79,6 @@ macro_rules! lox_edit_common {
             }
         }
 
-        fn delete_face(&mut self, _: FaceId) -> Result<()> {
-            not_implemented::<Self, _>(EditOp::DeleteFace)
-        }
-        fn delete_vertex(&mut self, _: VertexId) -> Result<()> {
-            not_implemented::<Self, _>(EditOp::DeleteVertex)
-        }
-        fn flip_edge(&mut self, _: EdgeId) -> Result<()> {
-            not_implemented::<Self, _>(EditOp::FlipEdge)
-        }
-        fn split_edge(&mut self, _: EdgeId, _: DVec3) -> Result<VertexId> {
-            not_implemented::<Self, _>(EditOp::SplitEdge)
-        }
-        fn collapse_edge(&mut self, _: VertexId, _: VertexId) -> Result<()> {
-            not_implemented::<Self, _>(EditOp::CollapseEdge)
-        }
-        /// lox has no collapse, so its test is refused as the collapse is.
-        fn check_collapse(&self, _: VertexId, _: VertexId) -> Result<()> {
-            not_implemented::<Self, _>(EditOp::CollapseEdge)
-        }
-        fn split_vertex(
-            &mut self,
-            _: VertexId,
-            _: DVec3,
-            _: VertexId,
-            _: VertexId,
-        ) -> Result<VertexId> {
-            not_implemented::<Self, _>(EditOp::SplitVertex)
-        }
         fn is_deleted_vertex(&self, _: VertexId) -> bool {
             false
         }
@@ -140,11 +98,13 @@ macro_rules! lox_edit_common {
 
 impl MeshEdit for LoxHalfEdge {
     lox_edit_common!();
+}
 
+impl LoxHalfEdge {
     /// lox's `add_face`, after the lab's checks: lox panics on fewer than three corners and
     /// on an edge with a third face, and builds a vertex of several fans (a "multi-blade")
     /// where the lab refuses one.
-    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
+    fn add_face_checked(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
         check_add_face(self, vertices, false)?;
         let corners: Vec<VertexHandle> = vertices.iter().map(|v| VertexHandle::new(v.0)).collect();
         Ok(FaceId(self.mesh.add_face(&corners).idx()))
@@ -152,7 +112,7 @@ impl MeshEdit for LoxHalfEdge {
 
     /// lox's `split_face`: the new vertex is appended, face `f` keeps one triangle of the
     /// fan and the others are appended.
-    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
+    fn split_face_checked(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
         if f.index() >= self.num_faces() {
             return Err(refuse::<Self>(EditOp::SplitFace, Refusal::NoSuchElement));
         }
@@ -168,10 +128,12 @@ impl MeshEdit for LoxDirectedEdge {
     /// An edge's id is its smaller half-edge (`3f + i`), and a face split gives one of the
     /// face's edges a half-edge of a new face, so edge ids are not stable.
     const STABLE_EDGE_IDS: bool = false;
+}
 
+impl LoxDirectedEdge {
     /// lox's `add_triangle`, after the lab's checks (lox's directed-edge mesh stores
     /// triangles only: a polygon is refused as [`Refusal::NotTriangles`]).
-    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
+    fn add_face_checked(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
         check_add_face(self, vertices, true)?;
         let added = new_sides(self, vertices);
         let corners = [vertices[0], vertices[1], vertices[2]].map(|v| VertexHandle::new(v.0));
@@ -182,7 +144,7 @@ impl MeshEdit for LoxDirectedEdge {
 
     /// lox's `split_face`: the new vertex is appended, face `f` keeps one triangle and two
     /// are appended; three edges join the new vertex to the corners.
-    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
+    fn split_face_checked(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
         if f.index() >= self.num_faces() {
             return Err(refuse::<Self>(EditOp::SplitFace, Refusal::NoSuchElement));
         }
@@ -196,6 +158,7 @@ impl MeshEdit for LoxDirectedEdge {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use topolab_structures::EdgeId;
     use topolab_structures::PolygonSoup;
 
     fn quad_and_triangle() -> PolygonSoup {

@@ -15,21 +15,7 @@ pub mod tri_mesh;
 
 use topolab_structures::core::rewrite::check_result;
 pub(crate) use topolab_structures::core::rewrite::{check_flip, check_split_edge};
-use topolab_structures::{EditOp, Error, MeshTopology, Refusal, Result, VertexId};
-
-/// The lab's refusal of `op` by `M`.
-pub(crate) fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
-    Error::EditRefused {
-        structure: M::NAME,
-        op,
-        reason,
-    }
-}
-
-/// `op` refused as one the crate does not offer.
-pub(crate) fn not_implemented<M: MeshTopology, T>(op: EditOp) -> Result<T> {
-    Err(refuse::<M>(op, Refusal::NotImplemented))
-}
+use topolab_structures::{refuse, EditOp, MeshTopology, Refusal, Result, VertexId};
 
 /// Is `v` a vertex of `m` (for an adapter that never deletes one)?
 pub(crate) fn in_range<M: MeshTopology>(m: &M, v: VertexId) -> bool {

@@ -11,11 +11,12 @@
 //! id instead of being appended, and the lab's vertex ids must stay until
 //! `garbage_collection`. They are refused as [`Refusal::NotImplemented`].
 
-use super::{check_add_face, check_flip, check_split_edge, not_implemented, refuse};
+use super::{check_add_face, check_flip, check_split_edge};
 use crate::TriMesh;
 use glam::DVec3;
 use topolab_structures::{
-    Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, Refusal, Result, VertexId,
+    refuse, Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, Offers, Refusal, Result,
+    VertexId,
 };
 use tri_mesh::{FaceID, HalfEdgeID, Vector3, VertexID};
 
@@ -116,6 +117,19 @@ impl MeshEdit for TriMesh {
     /// by a new one, so that edge's id (its smaller half-edge) may change.
     const STABLE_EDGE_IDS: bool = false;
 
+    /// tri-mesh's own calls, after the lab's checks; welds of edges, faces and meshes: the
+    /// lab's rebuild from the welded face list. Deletion, collapse and the vertex split are
+    /// left out (see the module docs).
+    const OFFERS: Offers<Self> = Offers {
+        add_vertex: Some(Self::add_vertex_checked),
+        add_face: Some(Self::add_face_checked),
+        flip_edge: Some(Self::flip_edge_checked),
+        split_edge: Some(Self::split_edge_checked),
+        split_face: Some(Self::split_face_checked),
+        rebuilds: true,
+        ..Offers::NOTHING
+    };
+
     fn edit_cost(op: EditOp) -> Cost {
         match op {
             // `IDMap::insert_new`.
@@ -138,31 +152,6 @@ impl MeshEdit for TriMesh {
         }
     }
 
-    fn supports(op: EditOp) -> bool {
-        matches!(
-            op,
-            EditOp::AddVertex
-                | EditOp::AddFace
-                | EditOp::FlipEdge
-                | EditOp::SplitEdge
-                | EditOp::SplitFace
-                | EditOp::GarbageCollection
-                | EditOp::WeldEdges
-                | EditOp::WeldFaces
-                | EditOp::WeldMeshes
-                | EditOp::SetPosition
-                | EditOp::Select
-                | EditOp::RotateSelection
-                | EditOp::ScaleSelection
-                | EditOp::Smooth
-        )
-    }
-
-    fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
-        let v = self.mesh.add_vertex(Vector3::new(p.x, p.y, p.z));
-        self.note_vertex(v)
-    }
-
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
         let Some(&x) = self.vertices.get(v.index()) else {
             return Err(refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement));
@@ -172,10 +161,32 @@ impl MeshEdit for TriMesh {
         Ok(())
     }
 
+    fn is_deleted_vertex(&self, _: VertexId) -> bool {
+        false
+    }
+    fn is_deleted_face(&self, _: FaceId) -> bool {
+        false
+    }
+    /// Nothing is ever removed (see the module docs).
+    fn garbage_collection(&mut self) {}
+
+    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
+        self.vertices.reserve(vertices);
+        self.faces.reserve(faces);
+        self.half_edges.reserve(2 * edges);
+    }
+}
+
+impl TriMesh {
+    fn add_vertex_checked(&mut self, p: DVec3) -> Result<VertexId> {
+        let v = self.mesh.add_vertex(Vector3::new(p.x, p.y, p.z));
+        self.note_vertex(v)
+    }
+
     /// tri-mesh's `add_face`, after the lab's checks: tri-mesh checks nothing (a face on a
     /// directed edge already taken, or making a vertex of several fans, would be linked
     /// wrongly) and stores triangles only.
-    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
+    fn add_face_checked(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
         check_add_face(self, vertices, true)?;
         let [a, b, c] = [0, 1, 2].map(|i| self.vertices[vertices[i].index()]);
         let g = self.mesh.add_face(a, b, c);
@@ -193,7 +204,7 @@ impl MeshEdit for TriMesh {
 
     /// tri-mesh's `flip_edge`, after the lab's checks (tri-mesh's own refuse a boundary edge
     /// and an existing new edge, but not two triangles with the same third corner).
-    fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
+    fn flip_edge_checked(&mut self, e: EdgeId) -> Result<()> {
         if !self.is_edge(e) {
             return Err(refuse::<Self>(EditOp::FlipEdge, Refusal::NoSuchElement));
         }
@@ -205,7 +216,7 @@ impl MeshEdit for TriMesh {
 
     /// tri-mesh's `split_edge`, after the lab's checks (tri-mesh checks nothing: on two
     /// triangles with the same third corner it would make an edge of four triangles).
-    fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
+    fn split_edge_checked(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
         if !self.is_edge(e) {
             return Err(refuse::<Self>(EditOp::SplitEdge, Refusal::NoSuchElement));
         }
@@ -219,7 +230,7 @@ impl MeshEdit for TriMesh {
     }
 
     /// tri-mesh's `split_face`: face `f` keeps one triangle, two are appended.
-    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
+    fn split_face_checked(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
         let Some(&g) = self.faces.get(f.index()) else {
             return Err(refuse::<Self>(EditOp::SplitFace, Refusal::NoSuchElement));
         };
@@ -227,42 +238,5 @@ impl MeshEdit for TriMesh {
         let id = self.note_vertex(v)?;
         self.note_faces_around(v)?;
         Ok(id)
-    }
-
-    fn delete_face(&mut self, _: FaceId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::DeleteFace)
-    }
-    fn delete_vertex(&mut self, _: VertexId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::DeleteVertex)
-    }
-    fn collapse_edge(&mut self, _: VertexId, _: VertexId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::CollapseEdge)
-    }
-    /// The collapse is left out (see the module docs), so its test is refused as it is.
-    fn check_collapse(&self, _: VertexId, _: VertexId) -> Result<()> {
-        not_implemented::<Self, _>(EditOp::CollapseEdge)
-    }
-    fn split_vertex(
-        &mut self,
-        _: VertexId,
-        _: DVec3,
-        _: VertexId,
-        _: VertexId,
-    ) -> Result<VertexId> {
-        not_implemented::<Self, _>(EditOp::SplitVertex)
-    }
-    fn is_deleted_vertex(&self, _: VertexId) -> bool {
-        false
-    }
-    fn is_deleted_face(&self, _: FaceId) -> bool {
-        false
-    }
-    /// Nothing is ever removed (see the module docs).
-    fn garbage_collection(&mut self) {}
-
-    fn reserve(&mut self, vertices: usize, edges: usize, faces: usize) {
-        self.vertices.reserve(vertices);
-        self.faces.reserve(faces);
-        self.half_edges.reserve(2 * edges);
     }
 }

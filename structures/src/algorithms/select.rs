@@ -25,7 +25,7 @@
 //! [`Refusal::NotImplemented`], nothing changed; so is a selection holding a vertex that does
 //! not exist ([`Refusal::NoSuchElement`]).
 
-use crate::core::edit::{EditOp, MeshEdit, Refusal};
+use crate::core::edit::{offered, EditOp, MeshEdit, Refusal};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use glam::{DQuat, DVec3};
@@ -158,18 +158,6 @@ pub fn laplacian_mean(points: impl IntoIterator<Item = DVec3>) -> Option<DVec3> 
     (k > 0).then(|| sum / k as f64)
 }
 
-fn not_offered<M: MeshEdit>(op: EditOp) -> Result<()> {
-    if M::supports(op) {
-        Ok(())
-    } else {
-        Err(Error::EditRefused {
-            structure: M::NAME,
-            op,
-            reason: Refusal::NotImplemented,
-        })
-    }
-}
-
 /// `set_positions`, its refusal named as `op`'s.
 fn write<M: MeshEdit>(m: &mut M, op: EditOp, moves: &[(VertexId, DVec3)]) -> Result<()> {
     m.set_positions(moves).map_err(|e| match e {
@@ -191,7 +179,7 @@ fn transform<M: MeshEdit>(
     s: &VertexSelection,
     map: impl Fn(DVec3) -> DVec3,
 ) -> Result<()> {
-    not_offered::<M>(op)?;
+    offered::<M>(op)?;
     let n = m.num_vertices();
     if s.0
         .iter()
@@ -236,7 +224,7 @@ pub fn scale_selection<M: MeshEdit>(
 /// with neighbours moves to the mean of their positions (read before anything moves), summed
 /// in increasing id order; boundary vertices stay. Returns how many vertices moved.
 pub fn smooth_step<M: MeshEdit>(m: &mut M) -> Result<usize> {
-    not_offered::<M>(EditOp::Smooth)?;
+    offered::<M>(EditOp::Smooth)?;
     let mut moves = Vec::new();
     let mut ring: Vec<VertexId> = Vec::with_capacity(8);
     for v in (0..m.num_vertices()).map(VertexId::new) {

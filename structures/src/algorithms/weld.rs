@@ -34,7 +34,7 @@
 //!   edge that would get three faces): [`Refusal::NonManifoldVertex`] or
 //!   [`Refusal::NonManifoldEdge`].
 
-use crate::core::edit::{EditOp, MeshEdit, Refusal};
+use crate::core::edit::{offered, refuse, EditOp, MeshEdit, Refusal};
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
@@ -42,25 +42,17 @@ use crate::core::topology::MeshTopology;
 use glam::DVec3;
 use std::collections::{HashMap, HashSet};
 
-fn refuse<M: MeshTopology>(reason: Refusal) -> Error {
-    refuse_op::<M>(EditOp::WeldMeshes, reason)
-}
-
-fn refuse_op<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
-    Error::EditRefused {
-        structure: M::NAME,
-        op,
-        reason,
-    }
+fn refuse_weld<M: MeshTopology>(reason: Refusal) -> Error {
+    refuse::<M>(EditOp::WeldMeshes, reason)
 }
 
 /// `M` built from the welded `soup`, or `op` refused with the reason the build gives.
 fn rebuilt<M: MeshEdit>(op: EditOp, soup: &PolygonSoup) -> Result<M> {
     M::from_soup(soup).map_err(|e| match e {
-        Error::NonManifoldEdge { .. } => refuse_op::<M>(op, Refusal::NonManifoldEdge),
-        Error::InconsistentOrientation { .. } => refuse_op::<M>(op, Refusal::Orientation),
-        Error::NonManifoldVertex { .. } => refuse_op::<M>(op, Refusal::NonManifoldVertex),
-        Error::RepeatedVertex { .. } => refuse_op::<M>(op, Refusal::BadFace),
+        Error::NonManifoldEdge { .. } => refuse::<M>(op, Refusal::NonManifoldEdge),
+        Error::InconsistentOrientation { .. } => refuse::<M>(op, Refusal::Orientation),
+        Error::NonManifoldVertex { .. } => refuse::<M>(op, Refusal::NonManifoldVertex),
+        Error::RepeatedVertex { .. } => refuse::<M>(op, Refusal::BadFace),
         other => other,
     })
 }
@@ -92,15 +84,6 @@ fn rebuilt_renamed<M: MeshEdit>(
     rebuilt(op, &PolygonSoup::from_polygons(positions, &faces))
 }
 
-/// Refuses `op` on a structure that does not offer it.
-fn offered<M: MeshEdit>(op: EditOp) -> Result<()> {
-    if M::supports(op) {
-        Ok(())
-    } else {
-        Err(refuse_op::<M>(op, Refusal::NotImplemented))
-    }
-}
-
 /// Sews boundary edge `g` of `m` onto boundary edge `e`, each named by its two ends (edge ids
 /// are each structure's own): with `e` run a → b and `g` run c → d by their faces, c becomes b
 /// and d becomes a, so that the two faces run the welded edge in opposite directions (see the
@@ -118,11 +101,11 @@ pub fn weld_edges<M: MeshEdit>(m: &M, e: [VertexId; 2], g: [VertexId; 2]) -> Res
         found
     };
     if !joined(e) || !joined(g) {
-        return Err(refuse_op::<M>(op, Refusal::NoSuchElement));
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     let unordered = |[a, b]: [VertexId; 2]| (a.0.min(b.0), a.0.max(b.0));
     if unordered(e) == unordered(g) {
-        return Err(refuse_op::<M>(op, Refusal::SameElement));
+        return Err(refuse::<M>(op, Refusal::SameElement));
     }
     let faces = faces_of(m);
     let sides = boundary_sides(&faces);
@@ -131,7 +114,7 @@ pub fn weld_edges<M: MeshEdit>(m: &M, e: [VertexId; 2], g: [VertexId; 2]) -> Res
             .iter()
             .copied()
             .find(|&(p, q)| (p.min(q), p.max(q)) == unordered(e))
-            .ok_or_else(|| refuse_op::<M>(op, Refusal::InteriorEdge))
+            .ok_or_else(|| refuse::<M>(op, Refusal::InteriorEdge))
     };
     let ((a, b), (c, d)) = (side_of(e)?, side_of(g)?);
     let rename: HashMap<u32, u32> = [(c, b), (d, a)]
@@ -150,10 +133,10 @@ pub fn weld_faces<M: MeshEdit>(m: &M, f: FaceId, g: FaceId) -> Result<M> {
     offered::<M>(op)?;
     let live = |f: FaceId| f.index() < m.num_faces() && !m.is_deleted_face(f);
     if !live(f) || !live(g) {
-        return Err(refuse_op::<M>(op, Refusal::NoSuchElement));
+        return Err(refuse::<M>(op, Refusal::NoSuchElement));
     }
     if f == g {
-        return Err(refuse_op::<M>(op, Refusal::SameElement));
+        return Err(refuse::<M>(op, Refusal::SameElement));
     }
     let corners = |f: FaceId| {
         let mut c = Vec::new();
@@ -163,7 +146,7 @@ pub fn weld_faces<M: MeshEdit>(m: &M, f: FaceId, g: FaceId) -> Result<M> {
     let (cf, cg) = (corners(f), corners(g));
     let k = cf.len();
     if cg.len() != k || cf.iter().any(|v| cg.contains(v)) {
-        return Err(refuse_op::<M>(op, Refusal::FaceMismatch));
+        return Err(refuse::<M>(op, Refusal::FaceMismatch));
     }
     let at = |v: u32| m.position(VertexId(v));
     let paired = |r: usize, i: usize| cg[(r + k - i) % k];
@@ -291,14 +274,14 @@ pub fn weld_meshes<M: MeshEdit>(a: &M, b: &M, tolerance: f64) -> Result<M> {
         }
     }
     if matched.is_empty() {
-        return Err(refuse::<M>(Refusal::NothingToWeld));
+        return Err(refuse_weld::<M>(Refusal::NothingToWeld));
     }
     // Where a boundary side of B lands on one of A, they must run against each other.
     let a_sides: HashSet<(u32, u32)> = ba.iter().copied().collect();
     for &(u, v) in &bb {
         if let (Some(&x), Some(&y)) = (matched.get(&u), matched.get(&v)) {
             if a_sides.contains(&(x, y)) {
-                return Err(refuse::<M>(Refusal::Orientation));
+                return Err(refuse_weld::<M>(Refusal::Orientation));
             }
         }
     }

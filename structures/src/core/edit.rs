@@ -39,6 +39,7 @@
 pub use crate::core::edit_op::{EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+pub use crate::core::offers::{not_offered, refuse, Offers};
 use crate::core::topology::{Cost, MeshTopology};
 use glam::DVec3;
 
@@ -69,6 +70,16 @@ pub fn smooth_cost<M: MeshTopology>() -> Cost {
     }
 }
 
+/// `Ok` when `M` offers `op`, else its refusal as not offered: the first check of an algorithm
+/// written over the trait's calls (a selection's rotation, a weld's rebuild).
+pub fn offered<M: MeshEdit>(op: EditOp) -> Result<()> {
+    if M::supports(op) {
+        Ok(())
+    } else {
+        Err(not_offered::<M>(op))
+    }
+}
+
 /// How a structure deletes.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -92,7 +103,9 @@ pub enum Deletion {
     Compacted,
 }
 
-/// The editing operations; see the module docs for what every edit promises.
+/// The editing operations; see the module docs for what every edit promises. A structure
+/// states the topological edits it offers in [`MeshEdit::OFFERS`], each as the function
+/// that does it; the calls of this trait go through that table (do not override them).
 pub trait MeshEdit: MeshTopology {
     /// How the structure deletes.
     const DELETION: Deletion;
@@ -103,38 +116,84 @@ pub trait MeshEdit: MeshTopology {
     /// faces (the vertex list names an edge by a corner).
     const STABLE_EDGE_IDS: bool = true;
 
+    /// The topological edits the structure offers, each the function that does it: the
+    /// calls below go through this table and [`MeshEdit::supports`] reads it, so the two
+    /// cannot disagree. The default offers nothing but the operations on positions.
+    const OFFERS: Offers<Self> = Offers::NOTHING;
+
     /// The cost of `op` in this structure, in the notation of the queries' costs (meaningful
     /// where [`MeshEdit::supports`] says yes).
     fn edit_cost(op: EditOp) -> Cost;
 
-    /// Does the structure implement `op`? An operation it does not refuses every call with
-    /// [`Refusal::NotImplemented`].
+    /// Does the structure offer `op`? Read from [`MeshEdit::OFFERS`]: an operation it does
+    /// not offer refuses every call with [`Refusal::NotImplemented`], nothing changed. Not to
+    /// be overridden (state the offer in `OFFERS`).
     fn supports(op: EditOp) -> bool {
-        op != EditOp::WeldVertices
+        Self::OFFERS.offers(op)
     }
 
-    /// Adds an unused vertex at `p`.
-    fn add_vertex(&mut self, p: DVec3) -> Result<VertexId>;
     /// Moves vertex `v` to `p` (no topology changes).
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()>;
+    /// Adds an unused vertex at `p`.
+    fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
+        match Self::OFFERS.add_vertex {
+            Some(f) => f(self, p),
+            None => Err(not_offered::<Self>(EditOp::AddVertex)),
+        }
+    }
     /// Adds the face with corners `vertices` (counter-clockwise), refused when the result
     /// would not be an oriented manifold.
-    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId>;
+    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
+        match Self::OFFERS.add_face {
+            Some(f) => f(self, vertices),
+            None => Err(not_offered::<Self>(EditOp::AddFace)),
+        }
+    }
     /// Deletes face `f`; its edges that border no other face go too, its vertices stay.
-    fn delete_face(&mut self, f: FaceId) -> Result<()>;
+    fn delete_face(&mut self, f: FaceId) -> Result<()> {
+        match Self::OFFERS.delete_face {
+            Some(call) => call(self, f),
+            None => Err(not_offered::<Self>(EditOp::DeleteFace)),
+        }
+    }
     /// Deletes vertex `v` and every face around it.
-    fn delete_vertex(&mut self, v: VertexId) -> Result<()>;
+    fn delete_vertex(&mut self, v: VertexId) -> Result<()> {
+        match Self::OFFERS.delete_vertex {
+            Some(f) => f(self, v),
+            None => Err(not_offered::<Self>(EditOp::DeleteVertex)),
+        }
+    }
     /// Flips edge `e` between two triangles: it then joins their two other corners.
-    fn flip_edge(&mut self, e: EdgeId) -> Result<()>;
+    fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
+        match Self::OFFERS.flip_edge {
+            Some(f) => f(self, e),
+            None => Err(not_offered::<Self>(EditOp::FlipEdge)),
+        }
+    }
     /// Splits edge `e` at a new vertex at `p`, splitting its one or two triangles in two.
-    fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId>;
+    fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
+        match Self::OFFERS.split_edge {
+            Some(f) => f(self, e, p),
+            None => Err(not_offered::<Self>(EditOp::SplitEdge)),
+        }
+    }
     /// Splits face `f` into a fan of triangles around a new vertex at `p`.
-    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId>;
+    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
+        match Self::OFFERS.split_face {
+            Some(call) => call(self, f, p),
+            None => Err(not_offered::<Self>(EditOp::SplitFace)),
+        }
+    }
     /// Collapses the edge from `from` to `to` into `to`: `from` and the one or two triangles
     /// of the edge are deleted. Refused unless the link condition holds
     /// ([`Refusal::LinkCondition`]) and OpenMesh's tetrahedron test passes
     /// ([`Refusal::TetrahedronTest`]).
-    fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()>;
+    fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
+        match Self::OFFERS.collapse_edge {
+            Some(f) => f(self, from, to),
+            None => Err(not_offered::<Self>(EditOp::CollapseEdge)),
+        }
+    }
     /// Would `collapse_edge(from, to)` be done? Its tests alone, nothing changed: `Ok(())`,
     /// or the refusal it would return. A decimater that keeps only legal candidates asks
     /// this of every neighbour it prices (OpenMesh's `DecimaterT` does, in `heap_vertex`).
@@ -142,6 +201,9 @@ pub trait MeshEdit: MeshTopology {
     /// ([`crate::core::rewrite`]); a structure whose collapse has its own test overrides it
     /// with that test.
     fn check_collapse(&self, from: VertexId, to: VertexId) -> Result<()> {
+        if !Self::supports(EditOp::CollapseEdge) {
+            return Err(not_offered::<Self>(EditOp::CollapseEdge));
+        }
         crate::core::neighbourhood::check_collapse(self, from, to, |v| self.is_deleted_vertex(v))
             .map(drop)
     }
@@ -156,7 +218,12 @@ pub trait MeshEdit: MeshTopology {
         p: DVec3,
         left: VertexId,
         right: VertexId,
-    ) -> Result<VertexId>;
+    ) -> Result<VertexId> {
+        match Self::OFFERS.split_vertex {
+            Some(f) => f(self, v, p, left, right),
+            None => Err(not_offered::<Self>(EditOp::SplitVertex)),
+        }
+    }
     /// Merges vertex `b` into vertex `a`: every face around `b` then has `a` instead, and `b`
     /// is deleted. Refused, nothing changed, when `a` and `b` are the same vertex
     /// ([`Refusal::SameVertex`]), when a face has both ([`Refusal::BadFace`]), or when the
@@ -164,12 +231,10 @@ pub trait MeshEdit: MeshTopology {
     /// several fans: the boundaries of `a` and `b` must meet along an edge, or one of them
     /// have no faces).
     fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
-        let _ = (a, b);
-        Err(crate::Error::EditRefused {
-            structure: Self::NAME,
-            op: EditOp::WeldVertices,
-            reason: Refusal::NotImplemented,
-        })
+        match Self::OFFERS.weld_vertices {
+            Some(f) => f(self, a, b),
+            None => Err(not_offered::<Self>(EditOp::WeldVertices)),
+        }
     }
     /// Moves several vertices at once: `moves` lists each vertex with its new position.
     /// Refused, nothing changed, when a vertex is out of range or deleted
@@ -181,11 +246,7 @@ pub trait MeshEdit: MeshTopology {
             .iter()
             .any(|&(v, _)| v.index() >= self.num_vertices() || self.is_deleted_vertex(v))
         {
-            return Err(crate::Error::EditRefused {
-                structure: Self::NAME,
-                op: EditOp::SetPosition,
-                reason: Refusal::NoSuchElement,
-            });
+            return Err(refuse::<Self>(EditOp::SetPosition, Refusal::NoSuchElement));
         }
         for &(v, p) in moves {
             self.set_position(v, p)?;
@@ -198,29 +259,24 @@ pub trait MeshEdit: MeshTopology {
     /// vertex does not exist ([`Refusal::NoSuchElement`]), when `a` and `b` are not two corners
     /// of `f` that are not neighbours in it ([`Refusal::NotDiagonal`]), or when `a` and `b`
     /// are already joined by an edge ([`Refusal::EdgeExists`]: the edge would have more than
-    /// two faces). The default refuses with [`Refusal::NotImplemented`].
+    /// two faces).
     fn insert_edge(&mut self, f: FaceId, a: VertexId, b: VertexId) -> Result<FaceId> {
-        let _ = (f, a, b);
-        Err(crate::Error::EditRefused {
-            structure: Self::NAME,
-            op: EditOp::InsertEdge,
-            reason: Refusal::NotImplemented,
-        })
+        match Self::OFFERS.insert_edge {
+            Some(call) => call(self, f, a, b),
+            None => Err(not_offered::<Self>(EditOp::InsertEdge)),
+        }
     }
     /// Deletes the interior edge `e`, merging its two faces into one polygon (the face running
     /// from one end to the other keeps its id as far as the structure's deletion allows; see
     /// [`Deletion`]). Refused, nothing changed, when `e` does not exist
     /// ([`Refusal::NoSuchElement`]), is a boundary edge ([`Refusal::BoundaryEdge`]), or the
     /// merged polygon would have a corner twice ([`Refusal::BadFace`]: the two faces share
-    /// another vertex than the edge's ends, as around a vertex of valence 2). The default
-    /// refuses with [`Refusal::NotImplemented`].
+    /// another vertex than the edge's ends, as around a vertex of valence 2).
     fn delete_edge(&mut self, e: EdgeId) -> Result<()> {
-        let _ = e;
-        Err(crate::Error::EditRefused {
-            structure: Self::NAME,
-            op: EditOp::DeleteEdge,
-            reason: Refusal::NotImplemented,
-        })
+        match Self::OFFERS.delete_edge {
+            Some(f) => f(self, e),
+            None => Err(not_offered::<Self>(EditOp::DeleteEdge)),
+        }
     }
     /// Is vertex `v` deleted (and not yet collected)?
     fn is_deleted_vertex(&self, v: VertexId) -> bool;

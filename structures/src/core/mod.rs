@@ -7,12 +7,14 @@
 
 pub mod access;
 pub mod attributes;
+pub mod delegate;
 pub mod edit;
 pub mod edit_op;
 pub mod error;
 pub mod family;
 pub mod ids;
 pub mod neighbourhood;
+pub mod offers;
 pub mod operator;
 pub mod reads;
 pub mod rewrite;

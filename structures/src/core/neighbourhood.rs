@@ -5,17 +5,11 @@
 //! Each helper allocates a small vector: they serve the editing operations, never a timed query.
 
 use crate::core::edit_op::{EditOp, Refusal};
-use crate::core::error::{Error, Result};
+use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::MeshTopology;
 
-pub(crate) fn refuse<M: MeshTopology>(op: EditOp, reason: Refusal) -> Error {
-    Error::EditRefused {
-        structure: M::NAME,
-        op,
-        reason,
-    }
-}
+pub(crate) use crate::core::offers::refuse;
 
 pub(crate) fn corners<M: MeshTopology>(m: &M, f: FaceId) -> Vec<VertexId> {
     let mut out = Vec::with_capacity(4);

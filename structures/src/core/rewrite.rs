@@ -540,69 +540,33 @@ pub(crate) mod packed {
     }
 }
 
-/// Implements [`MeshEdit`] for a [`FaceRewrite`] structure with the operations of this
-/// module; `$cost` is its `edit_cost`, `$supports` its `supports` and the optional last
-/// argument its `STABLE_EDGE_IDS`.
+/// Implements [`MeshEdit`] for a [`FaceRewrite`] structure with every operation of this
+/// module; `$cost` is its `edit_cost` and the optional last argument its `STABLE_EDGE_IDS`.
 macro_rules! mesh_edit_by_rewrite {
-    ($ty:ty, $cost:expr, $supports:expr $(, $stable:expr)?) => {
+    ($ty:ty, $cost:expr $(, $stable:expr)?) => {
         impl $crate::core::edit::MeshEdit for $ty {
             const DELETION: $crate::core::edit::Deletion = $crate::core::edit::Deletion::LastMoves;
             $(const STABLE_EDGE_IDS: bool = $stable;)?
+            const OFFERS: $crate::core::edit::Offers<Self> = $crate::core::edit::Offers {
+                add_vertex: Some($crate::core::rewrite::FaceRewrite::push_vertex),
+                add_face: Some($crate::core::rewrite::add_face),
+                delete_face: Some($crate::core::rewrite::delete_face),
+                delete_vertex: Some($crate::core::rewrite::delete_vertex),
+                flip_edge: Some($crate::core::rewrite::flip_edge),
+                split_edge: Some($crate::core::rewrite::split_edge),
+                split_face: Some($crate::core::rewrite::split_face),
+                collapse_edge: Some($crate::core::rewrite::collapse_edge),
+                split_vertex: Some($crate::core::rewrite::split_vertex),
+                weld_vertices: Some($crate::core::rewrite::weld_vertices),
+                insert_edge: Some($crate::core::rewrite::insert_edge),
+                delete_edge: Some($crate::core::rewrite::delete_edge),
+                rebuilds: true,
+            };
             fn edit_cost(op: $crate::core::edit::EditOp) -> $crate::core::topology::Cost {
                 ($cost)(op)
             }
-            fn supports(op: $crate::core::edit::EditOp) -> bool {
-                ($supports)(op)
-            }
-            fn add_vertex(&mut self, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
-                $crate::core::rewrite::FaceRewrite::push_vertex(self, p)
-            }
             fn set_position(&mut self, v: $crate::VertexId, p: glam::DVec3) -> $crate::Result<()> {
                 $crate::core::rewrite::set_position(self, v, p)
-            }
-            fn add_face(&mut self, vertices: &[$crate::VertexId]) -> $crate::Result<$crate::FaceId> {
-                $crate::core::rewrite::add_face(self, vertices)
-            }
-            fn delete_face(&mut self, f: $crate::FaceId) -> $crate::Result<()> {
-                $crate::core::rewrite::delete_face(self, f)
-            }
-            fn delete_vertex(&mut self, v: $crate::VertexId) -> $crate::Result<()> {
-                $crate::core::rewrite::delete_vertex(self, v)
-            }
-            fn flip_edge(&mut self, e: $crate::EdgeId) -> $crate::Result<()> {
-                $crate::core::rewrite::flip_edge(self, e)
-            }
-            fn split_edge(&mut self, e: $crate::EdgeId, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
-                $crate::core::rewrite::split_edge(self, e, p)
-            }
-            fn split_face(&mut self, f: $crate::FaceId, p: glam::DVec3) -> $crate::Result<$crate::VertexId> {
-                $crate::core::rewrite::split_face(self, f, p)
-            }
-            fn collapse_edge(&mut self, from: $crate::VertexId, to: $crate::VertexId) -> $crate::Result<()> {
-                $crate::core::rewrite::collapse_edge(self, from, to)
-            }
-            fn split_vertex(
-                &mut self,
-                v: $crate::VertexId,
-                p: glam::DVec3,
-                left: $crate::VertexId,
-                right: $crate::VertexId,
-            ) -> $crate::Result<$crate::VertexId> {
-                $crate::core::rewrite::split_vertex(self, v, p, left, right)
-            }
-            fn weld_vertices(&mut self, a: $crate::VertexId, b: $crate::VertexId) -> $crate::Result<()> {
-                $crate::core::rewrite::weld_vertices(self, a, b)
-            }
-            fn insert_edge(
-                &mut self,
-                f: $crate::FaceId,
-                a: $crate::VertexId,
-                b: $crate::VertexId,
-            ) -> $crate::Result<$crate::FaceId> {
-                $crate::core::rewrite::insert_edge(self, f, a, b)
-            }
-            fn delete_edge(&mut self, e: $crate::EdgeId) -> $crate::Result<()> {
-                $crate::core::rewrite::delete_edge(self, e)
             }
             fn is_deleted_vertex(&self, v: $crate::VertexId) -> bool {
                 $crate::core::rewrite::FaceRewrite::vertex_deleted(self, v)

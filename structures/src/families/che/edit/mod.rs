@@ -78,9 +78,9 @@ use super::build::{
     opposites_and_vertex_half_edges,
 };
 use super::{CheL0, CheL1, CheL2, CheL3};
-use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Refusal};
+use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Offers, Refusal};
 use crate::core::error::{Error, Result};
-use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use crate::core::ids::{FaceId, HalfEdgeId, VertexId};
 use crate::core::topology::{Cost, MeshTopology};
 use glam::DVec3;
 
@@ -255,50 +255,34 @@ macro_rules! che_edit {
             }
             /// Everything but the insertion and deletion of an edge, which would leave a
             /// face that is not a triangle.
-            fn supports(op: EditOp) -> bool {
-                !matches!(op, EditOp::InsertEdge | EditOp::DeleteEdge)
-            }
-            fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
-                let mut parts = self.parts();
-                parts.room(1, 0)?;
-                Ok(VertexId(parts.push_vertex(p)))
-            }
+            const OFFERS: Offers<Self> = Offers {
+                add_vertex: Some(|m, p| {
+                    let mut parts = m.parts();
+                    parts.room(1, 0)?;
+                    Ok(VertexId(parts.push_vertex(p)))
+                }),
+                add_face: Some(|m, vertices| m.edited(|p| p.add_face(vertices)).map(FaceId)),
+                delete_face: Some(|m, f| m.edited(|p| p.delete_face(f.0))),
+                delete_vertex: Some(|m, v| m.edited(|p| p.delete_vertex(v.0))),
+                flip_edge: Some(|m, e| m.edited(|p| p.flip(e.0))),
+                split_edge: Some(|m, e, p| {
+                    m.edited(|parts| parts.split_edge(e.0, p)).map(VertexId)
+                }),
+                split_face: Some(|m, f, p| {
+                    m.edited(|parts| parts.split_face(f.0, p)).map(VertexId)
+                }),
+                collapse_edge: Some(|m, from, to| m.edited(|p| p.collapse(from.0, to.0))),
+                split_vertex: Some(|m, v, p, left, right| {
+                    m.edited(|parts| parts.split_vertex(v.0, p, left.0, right.0))
+                        .map(VertexId)
+                }),
+                weld_vertices: Some(|m, a, b| m.edited(|p| p.weld(a.0, b.0))),
+                insert_edge: None,
+                delete_edge: None,
+                rebuilds: true,
+            };
             fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
                 self.parts().set_position(v.0, p)
-            }
-            fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
-                self.edited(|p| p.add_face(vertices)).map(FaceId)
-            }
-            fn delete_face(&mut self, f: FaceId) -> Result<()> {
-                self.edited(|p| p.delete_face(f.0))
-            }
-            fn delete_vertex(&mut self, v: VertexId) -> Result<()> {
-                self.edited(|p| p.delete_vertex(v.0))
-            }
-            fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
-                self.edited(|p| p.flip(e.0))
-            }
-            fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
-                self.edited(|parts| parts.split_edge(e.0, p)).map(VertexId)
-            }
-            fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
-                self.edited(|parts| parts.split_face(f.0, p)).map(VertexId)
-            }
-            fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
-                self.edited(|p| p.collapse(from.0, to.0))
-            }
-            fn split_vertex(
-                &mut self,
-                v: VertexId,
-                p: DVec3,
-                left: VertexId,
-                right: VertexId,
-            ) -> Result<VertexId> {
-                self.edited(|parts| parts.split_vertex(v.0, p, left.0, right.0))
-                    .map(VertexId)
-            }
-            fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
-                self.edited(|p| p.weld(a.0, b.0))
             }
             fn is_deleted_vertex(&self, v: VertexId) -> bool {
                 self.deleted_marks()

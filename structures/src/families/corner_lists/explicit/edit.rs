@@ -24,30 +24,25 @@
 //! | rotate, scale a selection | one pass over the corners, each looked up in a hash map from the moved vertices' old coordinates to their new ones | O(n), whatever the selection's size |
 //! | smooth | the neighbours of each vertex (a scan each, as every query here), then one pass | O(n²) |
 //! | select | a scan of the positions (faces: of the corners) | O(n) |
+//! | garbage collection | nothing: no element is ever deleted | O(1) |
 //!
 //! A move onto coordinates another vertex keeps is refused ([`Refusal::PositionTaken`]): two
 //! vertices at one position could no longer be told apart (the reason the structure refuses
 //! coincident vertices when built).
 
 use super::{bits, ExplicitStorage};
-use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Refusal};
-use crate::core::error::{Error, Result};
-use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::topology::{Cost, MeshTopology};
+use crate::core::edit::{refuse, smooth_cost, Deletion, EditOp, MeshEdit, Refusal};
+use crate::core::error::Result;
+use crate::core::ids::{FaceId, VertexId};
+use crate::core::topology::Cost;
 use glam::DVec3;
 use std::collections::HashMap;
-
-fn refuse<T>(op: EditOp, reason: Refusal) -> Result<T> {
-    Err(Error::EditRefused {
-        structure: ExplicitStorage::NAME,
-        op,
-        reason,
-    })
-}
 
 impl MeshEdit for ExplicitStorage {
     /// Nothing is ever deleted (every deletion is refused).
     const DELETION: Deletion = Deletion::Removed;
+    // No topological edit is offered (`OFFERS` keeps its default, nothing): see the module
+    // docs for why.
 
     fn edit_cost(op: EditOp) -> Cost {
         match op {
@@ -56,6 +51,8 @@ impl MeshEdit for ExplicitStorage {
             | EditOp::RotateSelection
             | EditOp::ScaleSelection => Cost::Linear,
             EditOp::Smooth => smooth_cost::<Self>(),
+            // Nothing is ever deleted, so there is nothing to collect.
+            EditOp::GarbageCollection => Cost::Constant,
             // Not offered; a face's neighbours would be found by comparing coordinates.
             EditOp::AddVertex
             | EditOp::AddFace
@@ -66,7 +63,6 @@ impl MeshEdit for ExplicitStorage {
             | EditOp::SplitFace
             | EditOp::CollapseEdge
             | EditOp::SplitVertex
-            | EditOp::GarbageCollection
             | EditOp::WeldVertices
             | EditOp::WeldEdges
             | EditOp::WeldFaces
@@ -76,20 +72,6 @@ impl MeshEdit for ExplicitStorage {
         }
     }
 
-    fn supports(op: EditOp) -> bool {
-        matches!(
-            op,
-            EditOp::SetPosition
-                | EditOp::Select
-                | EditOp::RotateSelection
-                | EditOp::ScaleSelection
-                | EditOp::Smooth
-        )
-    }
-
-    fn add_vertex(&mut self, _: DVec3) -> Result<VertexId> {
-        refuse(EditOp::AddVertex, Refusal::NotImplemented)
-    }
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
         self.set_positions(&[(v, p)])
     }
@@ -101,7 +83,7 @@ impl MeshEdit for ExplicitStorage {
         let op = EditOp::SetPosition;
         let n = self.ids.positions.len();
         if moves.iter().any(|&(v, _)| v.index() >= n) {
-            return refuse(op, Refusal::NoSuchElement);
+            return Err(refuse::<Self>(op, Refusal::NoSuchElement));
         }
         // The last move of a vertex wins.
         let mut to: HashMap<u32, DVec3> = HashMap::with_capacity(moves.len());
@@ -114,7 +96,7 @@ impl MeshEdit for ExplicitStorage {
             let other = self.ids.lookup.get(&key).copied();
             let stays = other.is_some_and(|w| w != v && !to.contains_key(&w));
             if stays || taken.insert(key, v).is_some() {
-                return refuse(op, Refusal::PositionTaken);
+                return Err(refuse::<Self>(op, Refusal::PositionTaken));
             }
         }
         let old_to_new: HashMap<[u64; 3], DVec3> = to
@@ -137,40 +119,6 @@ impl MeshEdit for ExplicitStorage {
         }
         Ok(())
     }
-    fn add_face(&mut self, _: &[VertexId]) -> Result<FaceId> {
-        refuse(EditOp::AddFace, Refusal::NotImplemented)
-    }
-    fn delete_face(&mut self, _: FaceId) -> Result<()> {
-        refuse(EditOp::DeleteFace, Refusal::NotImplemented)
-    }
-    fn delete_vertex(&mut self, _: VertexId) -> Result<()> {
-        refuse(EditOp::DeleteVertex, Refusal::NotImplemented)
-    }
-    fn flip_edge(&mut self, _: EdgeId) -> Result<()> {
-        refuse(EditOp::FlipEdge, Refusal::NotImplemented)
-    }
-    fn split_edge(&mut self, _: EdgeId, _: DVec3) -> Result<VertexId> {
-        refuse(EditOp::SplitEdge, Refusal::NotImplemented)
-    }
-    fn split_face(&mut self, _: FaceId, _: DVec3) -> Result<VertexId> {
-        refuse(EditOp::SplitFace, Refusal::NotImplemented)
-    }
-    fn collapse_edge(&mut self, _: VertexId, _: VertexId) -> Result<()> {
-        refuse(EditOp::CollapseEdge, Refusal::NotImplemented)
-    }
-    /// No collapse, so its test is refused as the collapse is.
-    fn check_collapse(&self, _: VertexId, _: VertexId) -> Result<()> {
-        refuse(EditOp::CollapseEdge, Refusal::NotImplemented)
-    }
-    fn split_vertex(
-        &mut self,
-        _: VertexId,
-        _: DVec3,
-        _: VertexId,
-        _: VertexId,
-    ) -> Result<VertexId> {
-        refuse(EditOp::SplitVertex, Refusal::NotImplemented)
-    }
     fn is_deleted_vertex(&self, _: VertexId) -> bool {
         false
     }
@@ -187,6 +135,8 @@ impl MeshEdit for ExplicitStorage {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::error::Error;
+    use crate::core::topology::MeshTopology;
     use crate::testing::meshes;
 
     #[test]

@@ -87,7 +87,7 @@ fn cost(op: EditOp) -> Cost {
     }
 }
 
-mesh_edit_by_rewrite!(VertexList, cost, |_| true, false);
+mesh_edit_by_rewrite!(VertexList, cost, false);
 
 impl FaceRewrite for VertexList {
     fn push_vertex(&mut self, p: DVec3) -> Result<VertexId> {

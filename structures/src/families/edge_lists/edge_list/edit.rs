@@ -87,7 +87,7 @@ fn cost(op: EditOp) -> Cost {
     }
 }
 
-mesh_edit_by_rewrite!(EdgeList, cost, |_| true);
+mesh_edit_by_rewrite!(EdgeList, cost);
 
 /// The key of the undirected edge {a, b}.
 fn key(a: VertexId, b: VertexId) -> (VertexId, VertexId) {

@@ -78,7 +78,7 @@ fn cost(op: EditOp) -> Cost {
     }
 }
 
-mesh_edit_by_rewrite!(WingedEdge, cost, |_| true);
+mesh_edit_by_rewrite!(WingedEdge, cost);
 
 impl WingedEdge {
     /// Closes the hull API's tombstones, so that face and edge ids are dense, and drops its

@@ -38,9 +38,9 @@
 mod euler;
 
 use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
-use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit};
+use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Offers};
 use crate::core::error::Result;
-use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::ids::{FaceId, VertexId};
 use crate::core::topology::Cost;
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
@@ -180,60 +180,35 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
     fn edit_cost(op: EditOp) -> Cost {
         edit_cost::<Self>(op, L::PREDECESSOR)
     }
-    fn supports(_op: EditOp) -> bool {
-        true
-    }
-    fn add_vertex(&mut self, p: DVec3) -> Result<VertexId> {
-        self.room(1, 0, 0)?;
-        Ok(VertexId(self.links.push_vertex(p)))
-    }
+    /// Every topological edit of the lecture.
+    const OFFERS: Offers<Self> = Offers {
+        add_vertex: Some(|m, p| {
+            m.room(1, 0, 0)?;
+            Ok(VertexId(m.links.push_vertex(p)))
+        }),
+        add_face: Some(|m, vertices| m.add_face_checked(vertices).map(FaceId)),
+        delete_face: Some(|m, f| m.delete_face_checked(f.0)),
+        delete_vertex: Some(|m, v| m.delete_vertex_checked(v.0)),
+        flip_edge: Some(|m, e| m.flip_checked(e.0)),
+        split_edge: Some(|m, e, p| m.split_edge_checked(e.0, p).map(VertexId)),
+        split_face: Some(|m, f, p| m.split_face_checked(f.0, p).map(VertexId)),
+        collapse_edge: Some(|m, from, to| m.collapse_checked(from.0, to.0)),
+        split_vertex: Some(|m, v, p, left, right| {
+            m.split_vertex_checked(v.0, p, left.0, right.0)
+                .map(VertexId)
+        }),
+        weld_vertices: Some(|m, a, b| m.weld_checked(a.0, b.0)),
+        insert_edge: Some(|m, f, a, b| m.insert_edge_checked(f.0, a.0, b.0).map(FaceId)),
+        delete_edge: Some(|m, e| m.delete_edge_checked(e.0)),
+        rebuilds: true,
+    };
     fn set_position(&mut self, v: VertexId, p: DVec3) -> Result<()> {
         self.live_vertex(v.0, EditOp::SetPosition)?;
         self.links.set_position(v.0, p);
         Ok(())
     }
-    fn add_face(&mut self, vertices: &[VertexId]) -> Result<FaceId> {
-        self.add_face_checked(vertices).map(FaceId)
-    }
-    fn delete_face(&mut self, f: FaceId) -> Result<()> {
-        self.delete_face_checked(f.0)
-    }
-    fn delete_vertex(&mut self, v: VertexId) -> Result<()> {
-        self.delete_vertex_checked(v.0)
-    }
-    fn flip_edge(&mut self, e: EdgeId) -> Result<()> {
-        self.flip_checked(e.0)
-    }
-    fn split_edge(&mut self, e: EdgeId, p: DVec3) -> Result<VertexId> {
-        self.split_edge_checked(e.0, p).map(VertexId)
-    }
-    fn split_face(&mut self, f: FaceId, p: DVec3) -> Result<VertexId> {
-        self.split_face_checked(f.0, p).map(VertexId)
-    }
-    fn collapse_edge(&mut self, from: VertexId, to: VertexId) -> Result<()> {
-        self.collapse_checked(from.0, to.0)
-    }
     fn check_collapse(&self, from: VertexId, to: VertexId) -> Result<()> {
         self.collapse_check(from.0, to.0).map(drop)
-    }
-    fn split_vertex(
-        &mut self,
-        v: VertexId,
-        p: DVec3,
-        left: VertexId,
-        right: VertexId,
-    ) -> Result<VertexId> {
-        self.split_vertex_checked(v.0, p, left.0, right.0)
-            .map(VertexId)
-    }
-    fn weld_vertices(&mut self, a: VertexId, b: VertexId) -> Result<()> {
-        self.weld_checked(a.0, b.0)
-    }
-    fn insert_edge(&mut self, f: FaceId, a: VertexId, b: VertexId) -> Result<FaceId> {
-        self.insert_edge_checked(f.0, a.0, b.0).map(FaceId)
-    }
-    fn delete_edge(&mut self, e: EdgeId) -> Result<()> {
-        self.delete_edge_checked(e.0)
     }
     fn is_deleted_vertex(&self, v: VertexId) -> bool {
         self.marks.vertex(v.0)
