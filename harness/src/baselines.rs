@@ -4,7 +4,7 @@
 //! from the build that ran (the `topolab` crate fills [`BaselineRun`]s), so the page says what
 //! was measured, not what was meant.
 
-use crate::report::format::esc;
+use crate::format::esc;
 use std::fmt::Write;
 
 /// How one outside library was run in a report.

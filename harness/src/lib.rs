@@ -19,6 +19,7 @@ pub mod decimate;
 pub mod edit_explain;
 pub mod findings;
 pub mod fit;
+pub mod format;
 pub mod hull;
 pub mod kernels;
 pub mod limit;

@@ -21,7 +21,7 @@
 //! it mixes in (an R10 of the structure: see [`checksum_keys`]). What the model leaves out
 //! (arithmetic on the chain, branches, the structure's own bookkeeping) is what "× limit"
 //! measures. One part of it is measured beside the limit, not in it: the chain when each step also
-//! does the arithmetic the model declares ([`Step`](topolab_structures::Step)), at the probe's
+//! does the arithmetic the model declares ([`Step`]), at the probe's
 //! chase of that kind ([`Limit::chain_ns_per_item`]). The CHE's `prev(h)` before each `O[]` load
 //! makes a step about twice a plain load's latency in L1, the half-edges' `h ^ 1` about 1.2
 //! times (the page's probe table gives this run's figures). Neither is a floor: both count one
@@ -34,7 +34,8 @@ use crate::kernels::Kernel;
 use crate::probe::Probe;
 pub use crate::results::{Bound, Limit, MeshCounts};
 use crate::results::{Results, Status, Subject};
-use topolab_structures::{Access, Operator, PolygonSoup, Unit};
+use std::fmt::Write;
+use topolab_structures::{Access, Operator, PolygonSoup, Step, Unit};
 
 impl MeshCounts {
     /// The counts of `soup`; `None` when its edges cannot be analysed (a soup no structure with
@@ -236,6 +237,44 @@ pub fn annotate(results: &mut Results) {
             m.limit = limit(access, model(Operator::R10), op, &counts, m.items, probe);
         }
     }
+}
+
+/// A measured cell's time as a multiple of its limit.
+pub(crate) fn times_limit(m: &crate::results::Measurement) -> Option<f64> {
+    Some(m.ns_per_item? / m.limit.as_ref()?.ns_per_item)
+}
+
+/// How a limit was set, for a cell's tooltip and a target's reason.
+pub(crate) fn limit_text(l: &crate::results::Limit) -> String {
+    let bound = match l.bound {
+        crate::results::Bound::Latency => "latency",
+        crate::results::Bound::Bandwidth => "bandwidth",
+        crate::results::Bound::Checksum => "checksum",
+    };
+    let mut t = format!(
+        "{bound} bound; latency: {:.1} dependent loads per element at the {} latency ({}); bandwidth: {:.1} bytes per element at the {} bandwidth ({}); checksum arithmetic: {}",
+        l.loads_per_item,
+        l.latency_level,
+        crate::format::ns(l.latency_ns_per_item),
+        l.bytes_per_item,
+        l.bandwidth_level,
+        crate::format::ns(l.bandwidth_ns_per_item),
+        crate::format::ns(l.checksum_ns_per_item)
+    );
+    if l.step != Step::Load && l.chain_ns_per_item > 0.0 {
+        let _ = write!(
+            t,
+            "; the chain's arithmetic, measured: a step of {} takes {:.2}× a plain load at the {} latency, so the chain alone takes {}",
+            l.step.text(),
+            l.chain_ns_per_item / l.latency_ns_per_item,
+            l.latency_level,
+            crate::format::ns(l.chain_ns_per_item)
+        );
+    }
+    if let Some(n) = &l.note {
+        let _ = write!(t, "; not in the model: {n}");
+    }
+    t
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@
 //! exception: its cells repeat until a wall-time budget, so under load they repeat less, and
 //! its CPU time falls short of its time alone.
 
-use crate::report::format::esc;
+use crate::format::esc;
 use std::fmt::Write;
 
 /// A phase of a report run, as timed: one of the run's own steps ([`Phase::PROBE`],

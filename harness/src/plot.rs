@@ -22,7 +22,7 @@
 //!   `<title>` (nor `class`), so these are added to its output by `finish`: one invisible
 //!   circle over each marker holds the point's title.
 
-use crate::report::format::esc;
+use crate::format::esc;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;

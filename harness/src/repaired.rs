@@ -13,6 +13,6 @@ pub fn mark(mesh: &MeshInfo) -> String {
     let Some(log) = &mesh.repaired else {
         return String::new();
     };
-    let title = crate::report::format::esc(&log.lines().join("; ")).replace('"', "&quot;");
+    let title = crate::format::esc(&log.lines().join("; ")).replace('"', "&quot;");
     format!(" <span class=small title=\"{title}\">(repaired)</span>")
 }

@@ -51,13 +51,13 @@ pub struct Results {
     pub edit_ops: Vec<EditOpRow>,
     /// The Targets table's rounds: the structures of each target taking turns
     /// ([`crate::targets`]).
-    pub targets: Vec<crate::targets::plan::Turns>,
+    pub targets: Vec<Turns>,
     /// Decimation by quadric error (the lab's, OpenMesh's, CGAL's) and the reconstruction.
     pub decimate: Vec<crate::decimate::DecimateRow>,
     /// What each structure stores for the open tetrahedron (teaching section).
     pub teaching: Vec<Teaching>,
     /// Edits shown record by record, with the mesh before and after (teaching section,
-    /// [`crate::edit_explain::teaching_edits`]).
+    /// `edit_explain::teaching_edits`).
     pub teaching_edits: Vec<TeachingEdit>,
     /// Reads per query of every operator on every structure against mesh size, counted
     /// ([`crate::reads::count`]).
@@ -547,15 +547,15 @@ pub struct HullRow {
     /// `gift`, `incremental`, `randomized`, or an outside hull's name (`qhull`, CGAL's
     /// `cgal-convex-hull-3`).
     pub algorithm: String,
-    /// The median of the timed runs after a warm-up run ([`warm_median`](crate::hull::bench::warm_median)), seconds.
+    /// The median of the timed runs after a warm-up run (`hull::bench::warm_median`), seconds.
     pub seconds: f64,
-    /// How many timed runs `seconds` is the median of ([`timed_runs`](crate::hull::bench::timed_runs)).
+    /// How many timed runs `seconds` is the median of (`hull::bench::timed_runs`).
     pub timed_runs: usize,
     /// Faces created during the construction (`None` for an outside hull).
     pub faces_created: Option<usize>,
     /// Vertices of the hull.
     pub hull_vertices: usize,
-    /// [`vertex_checksum`](crate::hull::bench::vertex_checksum) of the hull's vertices (`None` for CGAL's, whose shim returns
+    /// `hull::bench::vertex_checksum` of the hull's vertices (`None` for CGAL's, whose shim returns
     /// counts only).
     pub vertex_checksum: Option<u64>,
     /// `Volume6` evaluations ([`topolab_structures::hull::Work::volume6_tests`]; `None` for an outside hull).
@@ -587,7 +587,7 @@ pub struct HullFit {
     pub tests_exponent: Option<f64>,
     /// Exponent of Σ|P(e)| (randomized only).
     pub conflict_exponent: Option<f64>,
-    /// The lecture's bound ([`bound`](crate::hull::bench::bound)): `n·h`, `n²` or `n lg n`; `None` for an outside hull.
+    /// The lecture's bound (`hull::bench::bound`): `n·h`, `n²` or `n lg n`; `None` for an outside hull.
     pub bound: Option<String>,
     /// The bound's exponent at the sizes and hull sizes measured.
     pub bound_exponent: Option<f64>,
@@ -632,6 +632,52 @@ pub enum Verdict {
     NoReads,
     /// Fewer than two sizes counted.
     TooFew,
+}
+
+/// What a target times.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Cell {
+    /// The vertex 1-ring sweep (R00 over every vertex), per vertex.
+    R00Sweep,
+    /// The smoothing workload, per vertex.
+    Smoothing,
+    /// Construction from the polygon soup, warm builds (reusing the memory the build before
+    /// freed), per face.
+    Construction,
+    /// A changing workload from a fresh build (the build not timed), per face of the input.
+    Changing(topolab_structures::algorithms::changing::Changing),
+    /// The 3D convex hull of `hull::bench::HULL_POINTS` random points in a ball, per point: the lab's
+    /// randomized algorithm against an outside library's hull, taking turns in the hull
+    /// section (each side's clock as the hull table's: around the call alone).
+    Hull,
+}
+
+/// The rounds of one cell: the structures that took turns and each one's runs.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Turns {
+    /// What was timed.
+    pub cell: Cell,
+    /// On which mesh.
+    pub mesh: String,
+    /// Items per run (vertices or faces).
+    pub items: usize,
+    /// The structures, in the order of their turns.
+    pub structures: Vec<String>,
+    /// Nanoseconds per item of every timed run, by structure (as `structures`) then round.
+    pub ns_per_item: Vec<Vec<f64>>,
+    /// Untimed warm-up rounds before them.
+    pub warm_up: usize,
+    /// Wall time of all the rounds, warm-up included, seconds.
+    pub seconds: f64,
+}
+
+impl Turns {
+    /// The runs of `structure`, if it took turns.
+    pub fn runs(&self, structure: &str) -> Option<&[f64]> {
+        let i = self.structures.iter().position(|s| s == structure)?;
+        self.ns_per_item.get(i).map(Vec::as_slice)
+    }
 }
 
 #[cfg(test)]

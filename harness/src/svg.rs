@@ -6,8 +6,8 @@
 //! their own geometry (a shaded projection of a mesh, an unfolded tetrahedron), which a chart
 //! library's axes and series do not describe.
 
+use crate::format::esc;
 use crate::plot::{self, Style};
-use crate::report::format::esc;
 use crate::results::EditPicture;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};

@@ -15,8 +15,9 @@ use glam::DVec3;
 use std::time::Duration;
 use topolab_harness::checksum::{edge_key, mix};
 use topolab_harness::kernels::Kernel;
-use topolab_harness::measure::{measure_structure, Estimator, MemoryMeter, MeshCase, Plan};
+use topolab_harness::measure::{Estimator, MemoryMeter, MeshCase, Plan};
 use topolab_harness::results::Measurement;
+use topolab_harness::rounds::measure_structure;
 use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,

@@ -2,7 +2,7 @@
 //! CSS, no script, no network).
 
 use super::{Cell, Comparison, Run};
-use crate::report::format::{esc, ns};
+use crate::format::{esc, ns};
 use std::fmt::Write;
 
 /// One line on a run: its file, commit, date, machine and command.

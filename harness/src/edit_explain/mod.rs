@@ -1,4 +1,4 @@
-//! One edit explained: the records an editing operation ([`EditOp`]) writes in a structure,
+//! One edit explained: the records an editing operation ([`EditOp`](topolab_structures::EditOp)) writes in a structure,
 //! old → new, and a picture of the mesh before and after it. `topolab explain NAME --op OP`
 //! prints it; the report's teaching section draws it ([`crate::results::TeachingEdit`]).
 //! Both go through this module, so the lines the report shows are the lines the command
@@ -7,7 +7,7 @@
 //! [`edit`] is the one place that knows each operation: what it acts on ([`SubjectKind`]),
 //! what it reads of that neighbourhood, an edit done before it where it needs one (garbage
 //! collection collects what a vertex deletion marked), and the call. It is an exhaustive
-//! `match` on [`EditOp`], so an operation added to the enum is a compile error there until it
+//! `match` on [`EditOp`](topolab_structures::EditOp), so an operation added to the enum is a compile error there until it
 //! is given its arm, and one arm is all it needs: the command line, the default element
 //! ([`choose`]) and the records follow from it.
 //!

@@ -17,7 +17,7 @@ use topolab_structures::{
 /// the mesh's own positions, bit for bit; this only forgives rounding in a file's numbers.
 pub(super) const WELD_TOLERANCE: f64 = 1e-9;
 
-/// A [`Subject`] found in one structure, in its ids, with the point a new vertex goes to.
+/// A [`Subject`](super::Subject) found in one structure, in its ids, with the point a new vertex goes to.
 #[derive(Clone, Debug)]
 pub struct Target {
     /// The vertices: the edge's ends (a collapse moves the first into the second), the

@@ -10,13 +10,15 @@
 use crate::checksum::mix;
 use crate::fit::fit_exponent;
 pub use crate::results::{HullFit, HullRow};
-use crate::targets::plan::HULL_POINTS;
 use crate::timing::median;
 use crate::timing::meter::MemoryMeter;
 use glam::DVec3;
 use std::time::Instant;
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape, Work};
 use topolab_structures::Result;
+
+/// The points of the hull's target (`targets::plan::Cell::Hull`): 1M in a ball.
+pub const HULL_POINTS: usize = 1_000_000;
 
 /// The seed of the benchmark's random points: `random_points(shape, n, POINTS_SEED)`, for the
 /// lab's algorithms and for the outside hulls added afterwards alike.

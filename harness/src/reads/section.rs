@@ -4,8 +4,8 @@
 
 use super::count::{ReadsRow, Verdict};
 use super::trace::{self, counted_soup, Query, SoupEdges};
+use crate::format::esc;
 use crate::kernels::Kernel;
-use crate::report::format::esc;
 use crate::results::Results;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

@@ -4,11 +4,8 @@
 use crate::kernels::Kernel;
 use crate::plot;
 use crate::plot::Style;
-use crate::report::format::ns;
-use crate::results::{Bound, Limit};
 use crate::results::{Measurement, Results, Subject};
-use std::fmt::Write;
-use topolab_structures::{Input, Operator, Step};
+use topolab_structures::{Input, Operator};
 
 /// The measured cells of one (structure, operator, kernel, family), by size.
 pub(crate) fn cells<'a>(
@@ -82,42 +79,4 @@ pub(crate) fn largest<'a>(r: &'a Results, family: &str) -> Option<(&'a str, usiz
         .filter(|m| m.family == family)
         .max_by_key(|m| m.triangles)
         .map(|m| (m.name.as_str(), m.triangles))
-}
-
-/// A measured cell's time as a multiple of its limit.
-pub(crate) fn times_limit(m: &Measurement) -> Option<f64> {
-    Some(m.ns_per_item? / m.limit.as_ref()?.ns_per_item)
-}
-
-/// How a limit was set, for a cell's tooltip and a target's reason.
-pub(crate) fn limit_text(l: &Limit) -> String {
-    let bound = match l.bound {
-        Bound::Latency => "latency",
-        Bound::Bandwidth => "bandwidth",
-        Bound::Checksum => "checksum",
-    };
-    let mut t = format!(
-        "{bound} bound; latency: {:.1} dependent loads per element at the {} latency ({}); bandwidth: {:.1} bytes per element at the {} bandwidth ({}); checksum arithmetic: {}",
-        l.loads_per_item,
-        l.latency_level,
-        ns(l.latency_ns_per_item),
-        l.bytes_per_item,
-        l.bandwidth_level,
-        ns(l.bandwidth_ns_per_item),
-        ns(l.checksum_ns_per_item)
-    );
-    if l.step != Step::Load && l.chain_ns_per_item > 0.0 {
-        let _ = write!(
-            t,
-            "; the chain's arithmetic, measured: a step of {} takes {:.2}× a plain load at the {} latency, so the chain alone takes {}",
-            l.step.text(),
-            l.chain_ns_per_item / l.latency_ns_per_item,
-            l.latency_level,
-            ns(l.chain_ns_per_item)
-        );
-    }
-    if let Some(n) = &l.note {
-        let _ = write!(t, "; not in the model: {n}");
-    }
-    t
 }

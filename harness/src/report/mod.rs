@@ -3,11 +3,11 @@
 //! their one list ([`sections`]), what a run measures for the sections it shows
 //! ([`selection`]), the meshes it repairs and refines ([`repair`], [`refined`]), its clock and
 //! budgets ([`clock`]), and the page: its shell ([`page`]), the formatting its sections share
-//! ([`format`](mod@format)) the look-ups of cells they share (`cells`) and how sure a cell is (`sure`).
+//! ([`crate::format`], shared with every page of the crate), the look-ups of cells they share
+//! (`cells`) and how sure a cell is (`sure`).
 
 pub(crate) mod cells;
 pub mod clock;
-pub mod format;
 pub mod listed;
 pub mod page;
 pub mod pipeline;

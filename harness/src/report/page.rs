@@ -1,7 +1,7 @@
 //! The report page: its shell (head, CSS, title), the Machine block with the run's time by
 //! section, and the sections in page order, drawn from [`Results`].
 
-use crate::report::format::{bytes, esc};
+use crate::format::{bytes, esc};
 use crate::report::section::Page;
 use crate::report::sections::SECTIONS;
 use crate::results::Results;

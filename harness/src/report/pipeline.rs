@@ -126,7 +126,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
             quick: req.quick,
             sizes: req.sizes.clone(),
             samples: plan.samples,
-            rounds: crate::measure::round_settings(&plan),
+            rounds: crate::rounds::round_settings(&plan),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command: req.command.clone(),
             sections: selection.names(),

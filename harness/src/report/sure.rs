@@ -3,7 +3,7 @@
 //! ([`tied`]), and in the Machine section the rounds each mesh got and the drift probe read
 //! before every mesh ([`machine`]).
 
-use crate::report::format::{esc, ns};
+use crate::format::{esc, ns};
 use crate::results::{Measurement, Results};
 use crate::timing::interval::Interval;
 use std::fmt::Write;
@@ -97,7 +97,7 @@ pub(crate) fn machine(h: &mut String, r: &Results) {
         let _ = write!(
             h,
             "<h3>The machine over the run</h3><p>The same probe before every mesh: a sequential read and a dependent chase through {}, and the checksum arithmetic in L1, each the median of {} runs. Nothing of a structure is in it: what moves here is the machine.</p>",
-            crate::report::format::bytes(crate::probe::DRIFT_BYTES as f64),
+            crate::format::bytes(crate::probe::DRIFT_BYTES as f64),
             crate::probe::DRIFT_RUNS
         );
         h.push_str(&drift_svg(&r.drift));

@@ -40,9 +40,10 @@ mod entry;
 mod mesh;
 mod schedule;
 
+pub use crate::measure::RoundPlan;
 pub use entry::{Contender, Entry, SetUp, Setup};
 pub use mesh::{measure_mesh, measure_structure, round_sets, MeshRounds};
-pub use schedule::{run_rounds, RoundPlan, RoundsRun};
+pub use schedule::{run_rounds, RoundsRun};
 
 use crate::kernels::Kernel;
 use crate::results::Subject;
@@ -127,4 +128,16 @@ pub fn boundary(op: Operator) -> bool {
         op,
         Operator::BoundaryVertex | Operator::BoundaryEdge | Operator::BoundaryCurves
     )
+}
+
+/// The round settings of `plan`, as `results.json` states them.
+pub fn round_settings(plan: &crate::measure::Plan) -> crate::results::RoundSettings {
+    crate::results::RoundSettings {
+        min_rounds: plan.rounds.min_rounds,
+        max_rounds: plan.rounds.max_rounds,
+        extra: plan.rounds.extra,
+        pass: PASS,
+        round_ns: ROUND_NS,
+        wide: WIDE,
+    }
 }

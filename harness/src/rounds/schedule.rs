@@ -1,6 +1,7 @@
 //! The rounds themselves: who builds and runs in which order, how many rounds, and the check
 //! of every answer against the other structures'.
 
+use crate::measure::RoundPlan;
 use crate::rounds::{cells, CellKey, Contender, Said, CONSTRUCTION, WIDE};
 use crate::timing::interval::Interval;
 use crate::timing::meter::MemoryMeter;
@@ -10,23 +11,6 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
-
-/// How many rounds a run of rounds makes.
-#[derive(Copy, Clone, Debug, PartialEq)]
-pub struct RoundPlan {
-    /// Rounds every cell gets.
-    pub min_rounds: usize,
-    /// Rounds no cell passes (the sampled queries are drawn for this many).
-    pub max_rounds: usize,
-    /// Extra rounds for the cells whose interval is wide may take this share of the time the
-    /// first `min_rounds` took.
-    pub extra: f64,
-    /// The first rounds that time a cold build before the warm one
-    /// ([`crate::rounds::COLD_ROUNDS`] where cold builds are shown, else 0).
-    pub cold_rounds: usize,
-    /// The seed of the rounds' orders.
-    pub seed: u64,
-}
 
 /// What a run of rounds did.
 #[derive(Copy, Clone, Debug, PartialEq)]

@@ -4,8 +4,8 @@
 //! memory-mapped files, and the machine.
 
 use super::{Check, Measure, Outcome, ScaleCell, ScaleResults, Timing, ID_LIMIT_TRIANGLES};
+use crate::format::{bytes, esc, ns};
 use crate::plot::{self, Line, Point, Style};
-use crate::report::format::{bytes, esc, ns};
 use crate::report::page::CSS;
 use std::fmt::Write;
 use topolab_structures::Family;

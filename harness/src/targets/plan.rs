@@ -13,28 +13,11 @@ pub const ROUNDS: usize = 15;
 /// report within its time; no warm-up round, since every run starts from a fresh build.
 pub const CHANGING_ROUNDS: usize = 3;
 
-/// What a target times.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Cell {
-    /// The vertex 1-ring sweep (R00 over every vertex), per vertex.
-    R00Sweep,
-    /// The smoothing workload, per vertex.
-    Smoothing,
-    /// Construction from the polygon soup, warm builds (reusing the memory the build before
-    /// freed), per face.
-    Construction,
-    /// A changing workload from a fresh build (the build not timed), per face of the input.
-    Changing(Changing),
-    /// The 3D convex hull of [`HULL_POINTS`] random points in a ball, per point: the lab's
-    /// randomized algorithm against an outside library's hull, taking turns in the hull
-    /// section (each side's clock as the hull table's: around the call alone).
-    Hull,
-}
+pub use crate::hull::bench::HULL_POINTS;
+pub use crate::results::{Cell, Turns};
 
-/// The points of the hull's target ([`Cell::Hull`]).
-pub const HULL_POINTS: usize = 1_000_000;
-
+// `Cell` is named in `results.json` (crate::results); how many rounds each cell takes is
+// this plan's.
 impl Cell {
     /// The rounds a cell is timed: [`ROUNDS`], or [`CHANGING_ROUNDS`] for the changing
     /// workloads and the hull (each run seconds long).
@@ -183,33 +166,6 @@ pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
 /// The name of the probe's turn in the rounds of a target against its limit: a sequential read
 /// of the working set whose bandwidth sets the limit's bandwidth bound ([`Reader`](crate::probe::Reader)).
 pub const PROBE: &str = "probe";
-
-/// The rounds of one cell: the structures that took turns and each one's runs.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct Turns {
-    /// What was timed.
-    pub cell: Cell,
-    /// On which mesh.
-    pub mesh: String,
-    /// Items per run (vertices or faces).
-    pub items: usize,
-    /// The structures, in the order of their turns.
-    pub structures: Vec<String>,
-    /// Nanoseconds per item of every timed run, by structure (as `structures`) then round.
-    pub ns_per_item: Vec<Vec<f64>>,
-    /// Untimed warm-up rounds before them.
-    pub warm_up: usize,
-    /// Wall time of all the rounds, warm-up included, seconds.
-    pub seconds: f64,
-}
-
-impl Turns {
-    /// The runs of `structure`, if it took turns.
-    pub fn runs(&self, structure: &str) -> Option<&[f64]> {
-        let i = self.structures.iter().position(|s| s == structure)?;
-        self.ns_per_item.get(i).map(Vec::as_slice)
-    }
-}
 
 /// The third turn of a construction target between one of the lab's structures and an outside
 /// one (a C++ baseline, a Rust crate): the lab's structure's own checks of the soup alone

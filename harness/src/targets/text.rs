@@ -2,8 +2,8 @@
 //! structures timed one after another), and why a target is missed, measured.
 
 use crate::kernels::{Kernel, Workload};
+use crate::limit::{limit_text, times_limit};
 use crate::probe::Probe;
-use crate::report::cells::{limit_text, times_limit};
 use crate::results::{Limit, Measurement, Results, Status, Subject};
 use crate::targets::measured::measured_chain;
 use crate::targets::plan::{Against, Cell, Target, Turns, CHECKS};

@@ -7,8 +7,8 @@
 //! cost tables) and the CHE thesis chapter (what each level adds and what it makes cheap). They
 //! state what the design gives; the numbers beside them say what it measured on this machine.
 
+use crate::format::esc;
 use crate::kernels::Kernel;
-use crate::report::format::esc;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::{interval_title, tied};
 use crate::results::{Measurement, Results, Status, StructureInfo, Subject};

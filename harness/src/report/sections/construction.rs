@@ -1,10 +1,10 @@
 //! "Construction time": builds per face against mesh size, warm and cold.
 
+use crate::format::ns;
 use crate::kernels::Kernel;
 use crate::plot;
 use crate::plot::Style;
 use crate::report::cells::{largest, lines};
-use crate::report::format::ns;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status, Subject};
 use std::fmt::Write;

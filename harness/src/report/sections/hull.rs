@@ -1,11 +1,11 @@
 //! The 3D convex hulls: the lecture's three algorithms beside Qhull and CGAL, and the
 //! quantities of the lecture's analysis, counted in the same runs.
 
+use crate::format::esc;
 use crate::hull::bench::hull_target_row;
 use crate::hull::bench::vertex_checksum;
 use crate::phases::Phase;
 use crate::plot;
-use crate::report::format::esc;
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
 use crate::results::HullRow;

@@ -1,6 +1,6 @@
 //! "Meshes": a thumbnail of every mesh of the run.
 
-use crate::report::format::esc;
+use crate::format::esc;
 use crate::report::section::{Needs, Page, Real, Section};
 use crate::results::Results;
 use std::fmt::Write;

@@ -2,8 +2,8 @@
 //! `bench-data/cache/` refined by Loop subdivision, new vertices appended after the old ones)
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
+use crate::format::{esc, ns};
 use crate::kernels::Kernel;
-use crate::report::format::{esc, ns};
 use crate::report::run::MeshFamily;
 use crate::report::section::{Needs, Page, Refined, Section};
 use crate::report::sure::interval_title;

@@ -1,7 +1,7 @@
 //! "Real meshes": the fetched meshes, each structure's sweep and construction on them.
 
+use crate::format::esc;
 use crate::kernels::Kernel;
-use crate::report::format::esc;
 use crate::report::section::{Needs, Page, Real, Section};
 use crate::report::sure::ns_with_interval;
 use crate::results::{MeshInfo, Results, Status, Subject};

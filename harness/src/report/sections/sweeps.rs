@@ -1,9 +1,10 @@
 //! "Sweeps and their limits": every sweep on the largest torus against the time its
 //! structure's access model allows on this machine.
 
+use crate::format::{esc, ns};
 use crate::kernels::Kernel;
-use crate::report::cells::{largest, limit_text, times_limit};
-use crate::report::format::{esc, ns};
+use crate::limit::{limit_text, times_limit};
+use crate::report::cells::largest;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::ns_with_interval;
 use crate::results::{Results, Status, Subject};

@@ -1,11 +1,11 @@
 //! "Table 4.1, measured": per operator and structure, the declared cost, the fitted exponent
 //! and the time at the largest size, with libigl's functions beside them.
 
+use crate::format::ns;
 use crate::kernels::Kernel;
 use crate::phases::Phase;
 use crate::reads::count::{count_all, Budget, ReadsRow};
 use crate::report::cells::{cells, family_of, table_kernel};
-use crate::report::format::ns;
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::ns_with_interval;

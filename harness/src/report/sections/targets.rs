@@ -4,10 +4,10 @@
 //! section runs it), every run in the measuring thread's CPU time.
 
 use crate::changing::{mesh_checksum, MeshChecksum};
+use crate::format::{against_goal, class_of, esc};
 use crate::phases::Phase;
 use crate::probe::Probe;
 use crate::report::cells::largest;
-use crate::report::format::{against_goal, class_of, esc};
 use crate::report::run::{Case as Mesh, ReportError, Roster, Run as SectionRun};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status};

@@ -1,7 +1,7 @@
 //! "Teaching": what each structure stores for the CHE thesis chapter's Figure 4.10, and
 //! edits shown record by record with the mesh before and after (`edits`).
 
-use crate::report::format::esc;
+use crate::format::esc;
 use crate::report::section::{Page, Section};
 use crate::results::{Results, TeachingEdit};
 use crate::svg;

@@ -1,5 +1,6 @@
-//! Formatting shared by the report's pages: escaping, times and sizes with their units, ratios
-//! beside their goals. Nothing here reads the results: the sections pass the numbers in.
+//! Formatting shared by every page the crate draws (the report, compare, scale, the plots):
+//! escaping, times and sizes with their units, ratios beside their goals. Nothing here reads
+//! the results: the pages pass the numbers in.
 
 /// `s` with `&`, `<`, `>` and `"` escaped, for HTML text and quoted attribute values alike.
 pub(crate) fn esc(s: &str) -> String {
