@@ -1,18 +1,18 @@
 //! The editing suite: random sequences of [`MeshEdit`] operations on a structure, each
 //! applied as well to a naive [`Model`] (a face list edited by hand), with every refusal
 //! checked against the model (which says whether an edit must be refused, not for which
-//! [`Refusal`]) and, after every edit, `validate()`, the live faces
+//! [`Refusal`](crate::Refusal)) and, after every edit, `validate()`, the live faces
 //! compared with the model's, and, when nothing is marked deleted, every relation compared
 //! with the [`Oracle`](crate::testing::oracle::Oracle) rebuilt from the structure's face list
-//! ([`compare`]). An operation the structure does not implement ([`MeshEdit::supports`])
-//! must be refused with [`Refusal::NotImplemented`], nothing
+//! ([`compare`](crate::testing::conformance::compare)). An operation the structure does not implement ([`MeshEdit::supports`])
+//! must be refused with [`Refusal::NotImplemented`](crate::Refusal::NotImplemented), nothing
 //! changed. The [`edit_conformance!`](macro@crate::edit_conformance) macro enrols a
 //! structure in one line, one that implements a subset of the operations too.
 //!
 //! The operations on positions ([`crate::algorithms::select`]) are drawn too: a box
 //! selection (compared with the model's vertices and faces in the box), its rotation or
 //! scaling, and a smoothing step, each applied to the model's positions by hand. The point
-//! transforms themselves ([`rotate_point`], [`scale_point`], [`laplacian_mean`]) are shared
+//! transforms themselves ([`rotate_point`](crate::algorithms::select::rotate_point), [`scale_point`](crate::algorithms::select::scale_point), [`laplacian_mean`](crate::algorithms::select::laplacian_mean)) are shared
 //! with the model so that positions compare bit for bit, and tested on their own in that
 //! module. A structure that tells vertices apart by their coordinates
 //! (`capabilities().distinct_positions`, explicit storage) must refuse a move that would put
@@ -34,11 +34,11 @@ use std::collections::BTreeMap;
 
 /// Runs `steps` random edits of `seed` on `M`; `Err` describes the first disagreement.
 /// Returns how many of the drawn edits succeeded and how many were refused (an operation `M`
-/// does not implement, refused as [`Refusal::NotImplemented`], among them).
+/// does not implement, refused as [`Refusal::NotImplemented`](crate::Refusal::NotImplemented), among them).
 ///
 /// An edit of an operation `M` implements ([`MeshEdit::supports`], see [`Edit::op`]) must be
 /// done exactly when the model allows it; one of an operation it does not implement must be
-/// refused with [`Refusal::NotImplemented`] whatever the model says, and change nothing. A
+/// refused with [`Refusal::NotImplemented`](crate::Refusal::NotImplemented) whatever the model says, and change nothing. A
 /// structure of triangles only (`M::capabilities().triangles_only`) is also asked to add
 /// faces of four corners, which it must refuse. Beside the drawn edits, from a stream of
 /// their own, vertices are moved (`set_position`, refused where there is no such vertex)
@@ -48,7 +48,7 @@ pub fn run<M: MeshEdit>(seed: u64, steps: usize) -> Result<(usize, usize), Strin
 }
 
 /// [`run`], except that on a start mesh with polygons an edit the model allows may be refused
-/// with [`Refusal::NotImplemented`] (and must then change nothing): for a library whose
+/// with [`Refusal::NotImplemented`](crate::Refusal::NotImplemented) (and must then change nothing): for a library whose
 /// polygon kernel lacks the triangle operations (OpenMesh's PolyMesh has no flip, 2-to-4
 /// split or vertex split).
 pub fn run_with<M: MeshEdit>(
