@@ -436,7 +436,7 @@ impl MeshTopology for BabySharkCornerTable {
         writeln!(
             w,
             "baby_shark {} CornerTable<f64>: {} vertices (corner, position), {} corners (opposite corner, vertex); corner c's edge is the side opposite it",
-            crate::BABY_SHARK_VERSION,
+            crate::versions::BABY_SHARK_VERSION,
             self.vertices.len() - self.isolated.len(),
             3 * self.faces.len()
         )?;

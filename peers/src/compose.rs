@@ -11,7 +11,6 @@ use topolab_structures::{
 /// [`edge_predecessor`], and `validate` by [`validate_answers`]. Used inside an
 /// `impl MeshTopology` block (its file imports `compose`, `BoundaryCurves`, `EdgeId`, `FaceId`
 /// and `Result`).
-#[macro_export]
 macro_rules! composed_queries {
     () => {
         #[inline]
@@ -32,13 +31,13 @@ macro_rules! composed_queries {
         }
     };
 }
+pub(crate) use composed_queries;
 
 /// The `MeshTopology` methods both lox adapters forward to lox alike: the counts of vertices
 /// and faces, the positions kept beside the mesh, and R00, R02 and R20 by lox's circulators
 /// (`vertices_around_vertex`, `faces_around_vertex`, `vertices_around_face`). Used inside an
 /// `impl MeshTopology` block of a struct with fields `mesh` (a lox mesh) and `positions` (its
 /// file imports lox's prelude, `VertexHandle`, `FaceHandle`, `DVec3`, `VertexId` and `FaceId`).
-#[macro_export]
 macro_rules! lox_forwarded_queries {
     () => {
         #[inline]
@@ -73,6 +72,7 @@ macro_rules! lox_forwarded_queries {
         }
     };
 }
+pub(crate) use lox_forwarded_queries;
 
 /// Refuses what the crates mis-handle, before the crate sees it: indices out of range and
 /// repeated corners ([`PolygonSoup::check`]), an edge with more than two faces or two faces

@@ -229,8 +229,8 @@ impl MeshTopology for LoxDirectedEdge {
     }
     // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
     // checks of the answers as `validate`.
-    crate::composed_queries!();
-    crate::lox_forwarded_queries!();
+    compose::composed_queries!();
+    compose::lox_forwarded_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per half-edge its twin and target (8), plus the positions
@@ -245,7 +245,7 @@ impl MeshTopology for LoxDirectedEdge {
         writeln!(
             w,
             "lox {} DirectedEdgeMesh: {} vertices (outgoing half-edge), {} faces of three half-edges (twin, target)",
-            crate::LOX_VERSION,
+            crate::versions::LOX_VERSION,
             self.num_vertices(),
             self.num_faces()
         )?;

@@ -178,8 +178,8 @@ impl MeshTopology for LoxHalfEdge {
     }
     // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
     // checks of the answers as `validate`.
-    crate::composed_queries!();
-    crate::lox_forwarded_queries!();
+    compose::composed_queries!();
+    compose::lox_forwarded_queries!();
 
     /// From lox's record layout (its arrays' capacities are private): per vertex its
     /// outgoing half-edge (4 bytes), per face one half-edge (4), per half-edge face, target,
@@ -196,7 +196,7 @@ impl MeshTopology for LoxHalfEdge {
         writeln!(
             w,
             "lox {} HalfEdgeMesh<PolyConfig>: {} vertices (outgoing half-edge), {} faces (one half-edge), {} half-edges (face, target, next, prev; twin = h ^ 1)",
-            crate::LOX_VERSION,
+            crate::versions::LOX_VERSION,
             self.num_vertices(),
             self.num_faces(),
             2 * self.num_edges()

@@ -4,11 +4,14 @@
 //! [`MeshEdit`](topolab_structures::MeshEdit) ([`EDITABLE`], [`visit_editable`]), chained
 //! after the lab's editable structures the same way.
 
-use crate::{BabySharkCornerTable, LoxDirectedEdge, LoxHalfEdge, TriMesh};
+use crate::baby_shark_corner_table::BabySharkCornerTable;
+use crate::lox_directed_edge::LoxDirectedEdge;
+use crate::lox_half_edge::LoxHalfEdge;
+use crate::tri_mesh::TriMesh;
 use topolab_structures::registry::{EditVisitor, StructureVisitor, Structures};
 use topolab_structures::MeshTopology;
 
-/// Every peer, in registry order ([`crate::NAMES`]).
+/// Every peer, in registry order ([`crate::crates::NAMES`]).
 pub type Peers = (LoxHalfEdge, LoxDirectedEdge, BabySharkCornerTable, TriMesh);
 
 /// Runs `visitor` with the peer called `name`, or hands it back when no peer has that name
@@ -53,7 +56,7 @@ mod tests {
     #[test]
     fn the_list_is_the_names() {
         let listed = names::<Peers>();
-        assert_eq!(listed, crate::NAMES);
+        assert_eq!(listed, crate::crates::NAMES);
         assert_eq!(duplicate_name(&listed), None);
         for name in listed {
             assert!(
@@ -72,7 +75,7 @@ mod tests {
                 (M::NAME, M::FAMILY)
             }
         }
-        for name in crate::NAMES {
+        for name in crate::crates::NAMES {
             let (visited, family) = visit(name, FamilyOf).ok().expect("a peer visits");
             assert_eq!((visited, family), (name, Family::RustCrate));
         }
@@ -90,11 +93,11 @@ mod tests {
                 M::NAME
             }
         }
-        for name in crate::NAMES {
+        for name in crate::crates::NAMES {
             let got = visit_editable(name, EditName).ok();
             assert_eq!(got, EDITABLE.contains(&name).then_some(name), "{name}");
         }
         assert!(visit_editable("index-half-edge", EditName).is_err());
-        assert!(EDITABLE.iter().all(|n| crate::NAMES.contains(n)));
+        assert!(EDITABLE.iter().all(|n| crate::crates::NAMES.contains(n)));
     }
 }

@@ -257,7 +257,7 @@ impl MeshTopology for TriMesh {
     }
     // Boundary curves, successor and predecessor composed (see `compose`), and the lab's
     // checks of the answers as `validate`.
-    crate::composed_queries!();
+    compose::composed_queries!();
 
     /// From tri-mesh's record layout (its arrays are private): per vertex an
     /// `Option<HalfEdgeID>` and an f64 position (8 + 24 bytes), per half-edge four
@@ -272,7 +272,7 @@ impl MeshTopology for TriMesh {
         writeln!(
             w,
             "tri-mesh {} Mesh: {} vertices (position, half-edge), {} faces (half-edge), {} half-edges (vertex, twin, next, face; boundary half-edges have no face and no next)",
-            crate::TRI_MESH_VERSION,
+            crate::versions::TRI_MESH_VERSION,
             self.num_vertices(),
             self.num_faces(),
             self.mesh.no_halfedges()

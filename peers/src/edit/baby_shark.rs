@@ -15,7 +15,7 @@
 //! [`Refusal::NotImplemented`] with the other operations baby_shark does not offer.
 
 use super::check_flip;
-use crate::BabySharkCornerTable;
+use crate::baby_shark_corner_table::BabySharkCornerTable;
 use baby_shark::exports::nalgebra::Vector3;
 use baby_shark::mesh::corner_table::{EdgeId as SharkEdge, FaceId as SharkFace};
 use glam::DVec3;

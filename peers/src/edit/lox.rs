@@ -12,7 +12,8 @@
 //! - lox has no collapse, vertex split or weld.
 
 use super::{check_add_face, new_sides};
-use crate::{LoxDirectedEdge, LoxHalfEdge};
+use crate::lox_directed_edge::LoxDirectedEdge;
+use crate::lox_half_edge::LoxHalfEdge;
 use glam::DVec3;
 use lox::prelude::*;
 use lox::{FaceHandle, VertexHandle};

@@ -12,7 +12,7 @@
 //! `garbage_collection`. They are refused as [`Refusal::NotImplemented`].
 
 use super::{check_add_face, check_flip, check_split_edge};
-use crate::TriMesh;
+use crate::tri_mesh::TriMesh;
 use glam::DVec3;
 use topolab_structures::{
     refuse, Cost, Deletion, EdgeId, EditOp, Error, FaceId, MeshEdit, Offers, Refusal, Result,
