@@ -139,7 +139,7 @@ fn libigl(version: &str) -> BaselineRun {
         library: format!("libigl {version} (Python bindings)"),
         build: "PyPI's libigl wheel, in the repository's .venv".into(),
         used_as: "its adjacency functions (adjacency_list, vertex_triangle_adjacency, edges, triangle_triangle_adjacency, boundary_loop_all, per_vertex_normals) on the tori, one thread (IGL_NUM_THREADS=1)".into(),
-        timed: "each function call alone, in the Python process (reference/libigl_reference.py); its answers are checked against the lab's sweeps".into(),
+        timed: "each function call alone, in the Python process (python/libigl_reference.py); its answers are checked against the lab's sweeps".into(),
         counted: "not counted".into(),
         differences: vec![
             "libigl answers whole-mesh questions (every vertex's neighbours at once, into arrays), not one query at a time, and runs behind Python: its times are a reference beside the lab's sweeps, not a structure in the tables.".into(),

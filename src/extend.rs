@@ -13,7 +13,7 @@
 //!
 //! `cargo run --release --bin report -- --quick` then writes `reports/latest/index.html` and
 //! `results.json` with `MyStructure` in every table. The type parameter is a
-//! [`Structures`] list: one structure, or a tuple of several. `templates/sorted-edge-table/` is
+//! [`Structures`] list: one structure, or a tuple of several. `extend/sorted-edge-table/` is
 //! the worked example, and `docs/extend.md` ("Benchmark your own structure") the guide.
 
 use crate::commands::report::{report_with, ReportArgs};

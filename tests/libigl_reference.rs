@@ -1,4 +1,4 @@
-//! `reference/libigl_reference.py` (libigl's own adjacency functions) gives the lab's
+//! `python/libigl_reference.py` (libigl's own adjacency functions) gives the lab's
 //! checksums. Skipped, with a message, when `.venv/bin/python` or libigl is missing
 //! (`bash .ci/install-deps` makes them).
 
@@ -29,7 +29,7 @@ fn run_reference(python: &Path, name: &str, soup: &PolygonSoup) -> serde_json::V
         dir.join(format!("{name}.json")),
     );
     topolab_structures::io::write(&mesh, soup).unwrap();
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/libigl_reference.py");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("python/libigl_reference.py");
     let run = Command::new(python)
         .arg(&script)
         .arg(&mesh)

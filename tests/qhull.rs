@@ -1,5 +1,5 @@
 //! Qhull in-process (`topolab::qhull`, through `qhull/shim.c`) against SciPy's `ConvexHull`
-//! (the correctness reference, `reference/qhull_reference.py` in a subprocess: skipped with a
+//! (the correctness reference, `python/qhull_reference.py` in a subprocess: skipped with a
 //! message without the workspace's `.venv`), against the lab's three hull algorithms, with its
 //! errors typed, and from parallel threads. Seeded point sets: a ball, a sphere, and a cube
 //! with coplanar points (a grid on its faces and inside, and random points on its faces).

@@ -1,5 +1,5 @@
 //! The three hull algorithms against Qhull (SciPy's `ConvexHull`, run by
-//! `reference/qhull_reference.py`): same hull vertex positions, same volume. Prints a SKIPPED
+//! `python/qhull_reference.py`): same hull vertex positions, same volume. Prints a SKIPPED
 //! line when the workspace has no `.venv` with SciPy.
 
 use glam::DVec3;

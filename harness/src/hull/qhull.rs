@@ -1,4 +1,4 @@
-//! Running the Qhull reference (`reference/qhull_reference.py`, SciPy's `ConvexHull`) on a
+//! Running the Qhull reference (`python/qhull_reference.py`, SciPy's `ConvexHull`) on a
 //! point set, for the tests: the correctness reference of the lab's hulls and of the
 //! in-process Qhull (the report's times come from the latter). Needs the workspace's `.venv`
 //! with SciPy (`.ci/install-deps`, or `python3 -m venv .venv && .venv/bin/pip install scipy
@@ -58,7 +58,7 @@ pub fn run(
     write_obj(&mut file, &soup).map_err(|e| e.to_string())?;
     drop(file);
     let status = Command::new(python)
-        .arg(root.join("reference/qhull_reference.py"))
+        .arg(root.join("python/qhull_reference.py"))
         .arg(&input)
         .arg("--out")
         .arg(&output)

@@ -369,7 +369,7 @@ pub fn check_enrolment(tested: &[&str], registered: &[&str]) -> Result<(), Strin
 /// [`registry::NAMES`](crate::registry::NAMES).
 ///
 /// The one-structure form is how a structure outside the lab gets the whole suite as its own
-/// tests (the template `templates/sorted-edge-table/tests/conformance.rs` does): the macro
+/// tests (the template `extend/sorted-edge-table/tests/conformance.rs` does): the macro
 /// reaches proptest through this crate, so the calling crate needs no dependency but
 /// `topolab-structures`.
 ///

@@ -34,7 +34,7 @@ fn measure(
     notes: &mut Vec<String>,
 ) -> (Vec<LibiglRow>, Option<String>) {
     let python = Path::new(".venv/bin/python");
-    let script = Path::new("reference/libigl_reference.py");
+    let script = Path::new("python/libigl_reference.py");
     let ready = python.exists()
         && std::process::Command::new(python)
             .args(["-c", "import igl"])

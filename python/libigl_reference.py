@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """libigl as the lab's outside reference.
 
-    .venv/bin/python reference/libigl_reference.py MESH --out JSON
+    .venv/bin/python python/libigl_reference.py MESH --out JSON
 
 Loads a triangle mesh with libigl, computes the relations the lab computes with libigl's own
 functions, and writes for each one the checksum of harness/src/checksum.rs (same `mix` and
