@@ -109,6 +109,7 @@ fn main() {
     println!("cargo::rerun-if-changed=cpp/openmesh");
     println!("cargo::rerun-if-changed=cpp/cgal");
     println!("cargo::rerun-if-changed=cpp/heap");
+    println!("cargo::rerun-if-changed=cpp/common");
     println!("cargo::rerun-if-changed=c/qhull");
     println!("cargo::rerun-if-env-changed={OPENMESH_SOURCE_VARIABLE}");
     // The libraries in the order their sources are compiled (CGAL's first: the slowest) and

@@ -542,59 +542,7 @@ int topolab_cgal_ph_edit_set_position(topolab_cgal_mesh *mesh, uint32_t v, const
   });
 }
 
-int topolab_cgal_ph_edit_add_face(topolab_cgal_mesh *mesh, const uint32_t *vertices, uint32_t n,
-                                  int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return add_face(a, vertices, n, out); });
-}
-
-int topolab_cgal_ph_edit_delete_face(topolab_cgal_mesh *mesh, uint32_t f, int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return delete_face(a, f); });
-}
-
-int topolab_cgal_ph_edit_delete_vertex(topolab_cgal_mesh *mesh, uint32_t v,
-                                       int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return delete_vertex(a, v); });
-}
-
-int topolab_cgal_ph_edit_flip(topolab_cgal_mesh *mesh, uint32_t e, int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return flip(a, e); });
-}
-
-int topolab_cgal_ph_edit_split_edge(topolab_cgal_mesh *mesh, uint32_t e, const double *p,
-                                    int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return split_edge(a, e, point(p), out); });
-}
-
-int topolab_cgal_ph_edit_split_face(topolab_cgal_mesh *mesh, uint32_t f, const double *p,
-                                    int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return split_face(a, f, point(p), out); });
-}
-
-int topolab_cgal_ph_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32_t to,
-                                  int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &a) { return collapse(a, from, to); });
-}
-
-int topolab_cgal_ph_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
-                                      uint32_t left, uint32_t right, int *refusal,
-                                      uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal,
-              [&](Adapter &a) { return split_vertex(a, v, point(p), left, right, out); });
-}
-
-int topolab_cgal_ph_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
-                              int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](Adapter &ad) { return weld(ad, a, b); });
-}
+TOPOLAB_CGAL_EDIT_CALLS(ph, Adapter)
 
 int topolab_cgal_ph_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) noexcept {

@@ -143,4 +143,60 @@ template <class Graph, class Ids> int weld_vertices(Graph &g, Ids &ids, uint32_t
 }  // namespace edit_rules
 }  // namespace topolab_cgal
 
+// The extern "C" calls of the edits whose work is one function of the unit's unnamed namespace
+// (add_face, delete_face, ..., weld), written once for both units: PREFIX names the class
+// (`ph`, `sm`), TARGET is what `edit` hands each call (the polyhedron's Adapter, the
+// SurfaceMesh). The unit's `edit` guards every exception and turns the code into the refusal.
+#define TOPOLAB_CGAL_EDIT_CALLS(PREFIX, TARGET)                                                 \
+  int topolab_cgal_##PREFIX##_edit_add_face(topolab_cgal_mesh *mesh, const uint32_t *vertices, \
+                                            uint32_t n, int *refusal, uint32_t *out) noexcept { \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return add_face(t, vertices, n, out); });      \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_delete_face(topolab_cgal_mesh *mesh, uint32_t f,            \
+                                               int *refusal) noexcept {                        \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return delete_face(t, f); });                  \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_delete_vertex(topolab_cgal_mesh *mesh, uint32_t v,          \
+                                                 int *refusal) noexcept {                      \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return delete_vertex(t, v); });                \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_flip(topolab_cgal_mesh *mesh, uint32_t e,                   \
+                                        int *refusal) noexcept {                               \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return flip(t, e); });                         \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_split_edge(topolab_cgal_mesh *mesh, uint32_t e,             \
+                                              const double *p, int *refusal,                   \
+                                              uint32_t *out) noexcept {                        \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return split_edge(t, e, point(p), out); });    \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_split_face(topolab_cgal_mesh *mesh, uint32_t f,             \
+                                              const double *p, int *refusal,                   \
+                                              uint32_t *out) noexcept {                        \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return split_face(t, f, point(p), out); });    \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from,            \
+                                            uint32_t to, int *refusal) noexcept {              \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return collapse(t, from, to); });              \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v,           \
+                                                const double *p, uint32_t left,                \
+                                                uint32_t right, int *refusal,                  \
+                                                uint32_t *out) noexcept {                      \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal,                                                                 \
+                [&](TARGET &t) { return split_vertex(t, v, point(p), left, right, out); });    \
+  }                                                                                            \
+  int topolab_cgal_##PREFIX##_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,       \
+                                        int *refusal) noexcept {                               \
+    using namespace topolab_cgal;                                                              \
+    return edit(mesh, refusal, [&](TARGET &t) { return weld(t, a, b); });                      \
+  }
+
 #endif

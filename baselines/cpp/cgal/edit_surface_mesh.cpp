@@ -524,59 +524,7 @@ int topolab_cgal_sm_edit_set_position(topolab_cgal_mesh *mesh, uint32_t v, const
   });
 }
 
-int topolab_cgal_sm_edit_add_face(topolab_cgal_mesh *mesh, const uint32_t *vertices, uint32_t n,
-                                  int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return add_face(m, vertices, n, out); });
-}
-
-int topolab_cgal_sm_edit_delete_face(topolab_cgal_mesh *mesh, uint32_t f, int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return delete_face(m, f); });
-}
-
-int topolab_cgal_sm_edit_delete_vertex(topolab_cgal_mesh *mesh, uint32_t v,
-                                       int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return delete_vertex(m, v); });
-}
-
-int topolab_cgal_sm_edit_flip(topolab_cgal_mesh *mesh, uint32_t e, int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return flip(m, e); });
-}
-
-int topolab_cgal_sm_edit_split_edge(topolab_cgal_mesh *mesh, uint32_t e, const double *p,
-                                    int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return split_edge(m, e, point(p), out); });
-}
-
-int topolab_cgal_sm_edit_split_face(topolab_cgal_mesh *mesh, uint32_t f, const double *p,
-                                    int *refusal, uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return split_face(m, f, point(p), out); });
-}
-
-int topolab_cgal_sm_edit_collapse(topolab_cgal_mesh *mesh, uint32_t from, uint32_t to,
-                                  int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return collapse(m, from, to); });
-}
-
-int topolab_cgal_sm_edit_split_vertex(topolab_cgal_mesh *mesh, uint32_t v, const double *p,
-                                      uint32_t left, uint32_t right, int *refusal,
-                                      uint32_t *out) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal,
-              [&](SurfaceMesh &m) { return split_vertex(m, v, point(p), left, right, out); });
-}
-
-int topolab_cgal_sm_edit_weld(topolab_cgal_mesh *mesh, uint32_t a, uint32_t b,
-                              int *refusal) noexcept {
-  using namespace topolab_cgal;
-  return edit(mesh, refusal, [&](SurfaceMesh &m) { return weld(m, a, b); });
-}
+TOPOLAB_CGAL_EDIT_CALLS(sm, SurfaceMesh)
 
 int topolab_cgal_sm_edit_is_deleted(const topolab_cgal_mesh *mesh, int kind, uint32_t id,
                                     int *out) noexcept {

@@ -418,27 +418,6 @@ template <class Adapter> class CgalMesh final : public Mesh {
     }
   }
 
-  // Runs f(std::integral_constant<int, op>) so each operator gets its own compiled loop.
-  template <class F> static uint64_t dispatch(int op, F &&f) {
-    switch (op) {
-      case R00: return f(std::integral_constant<int, R00>{});
-      case R01: return f(std::integral_constant<int, R01>{});
-      case R02: return f(std::integral_constant<int, R02>{});
-      case R10: return f(std::integral_constant<int, R10>{});
-      case R11: return f(std::integral_constant<int, R11>{});
-      case R12: return f(std::integral_constant<int, R12>{});
-      case R20: return f(std::integral_constant<int, R20>{});
-      case R21: return f(std::integral_constant<int, R21>{});
-      case R22: return f(std::integral_constant<int, R22>{});
-      case BOUNDARY_VERTEX: return f(std::integral_constant<int, BOUNDARY_VERTEX>{});
-      case BOUNDARY_EDGE: return f(std::integral_constant<int, BOUNDARY_EDGE>{});
-      case BOUNDARY_CURVES: return f(std::integral_constant<int, BOUNDARY_CURVES>{});
-      case EDGE_SUCCESSOR: return f(std::integral_constant<int, EDGE_SUCCESSOR>{});
-      case EDGE_PREDECESSOR: return f(std::integral_constant<int, EDGE_PREDECESSOR>{});
-      default: return 0;
-    }
-  }
-
   Vector vector_of(VD v) const { return a_.point(v) - CGAL::ORIGIN; }
 
   // glam's normalize_or_zero, as the lab's kernel normalises.

@@ -6,6 +6,7 @@
 #define TOPOLAB_CGAL_MESH_H
 
 #include "shim.h"
+#include "../common/operators.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,19 +15,9 @@
 
 namespace topolab_cgal {
 
-// Operator codes: topolab's Operator::ALL order (shim.h).
-enum Op {
-  R00, R01, R02, R10, R11, R12, R20, R21, R22,
-  BOUNDARY_VERTEX, BOUNDARY_EDGE, BOUNDARY_CURVES, EDGE_SUCCESSOR, EDGE_PREDECESSOR, OP_COUNT
-};
-enum Workload { CIRCULATORS, BARYCENTER, NORMALS, SMOOTHING, WORKLOAD_COUNT };
-
-// harness/src/checksum.rs, bit for bit.
-constexpr uint64_t mix(uint64_t a, uint64_t b) {
-  const uint64_t h = (a * 0x9E3779B97F4A7C15ULL + b) * 0xBF58476D1CE4E5B9ULL;
-  return h ^ (h >> 31);
-}
-static_assert(mix(3, 5) == 0x40159a6e5620edf9ULL, "mix differs from harness/src/checksum.rs");
+// The operator and workload codes, the checksum mix and the dispatch, as OpenMesh's shim has
+// them (../common/operators.h).
+using namespace topolab_shim;
 
 constexpr uint64_t edge_key(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;

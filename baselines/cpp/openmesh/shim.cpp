@@ -3,6 +3,7 @@
 // so that a sweep measures OpenMesh, not the FFI.
 
 #include "mesh.h"
+#include "../common/operators.h"
 
 #include <cmath>
 #include <ios>
@@ -16,19 +17,9 @@ namespace {
 // The mesh types, the set-up and the guard (mesh.h).
 using namespace topolab_om;
 
-// Operator codes: topolab's Operator::ALL order (shim.h).
-enum Op {
-  R00, R01, R02, R10, R11, R12, R20, R21, R22,
-  BOUNDARY_VERTEX, BOUNDARY_EDGE, BOUNDARY_CURVES, EDGE_SUCCESSOR, EDGE_PREDECESSOR, OP_COUNT
-};
-enum Workload { CIRCULATORS, BARYCENTER, NORMALS, SMOOTHING };
-
-// harness/src/checksum.rs, bit for bit.
-constexpr uint64_t mix(uint64_t a, uint64_t b) {
-  const uint64_t h = (a * 0x9E3779B97F4A7C15ULL + b) * 0xBF58476D1CE4E5B9ULL;
-  return h ^ (h >> 31);
-}
-static_assert(mix(3, 5) == 0x40159a6e5620edf9ULL, "mix differs from harness/src/checksum.rs");
+// The operator and workload codes, the checksum mix and the dispatch, as CGAL's shim has them
+// (../common/operators.h).
+using namespace topolab_shim;
 
 constexpr uint64_t edge_key(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
@@ -230,26 +221,6 @@ template <int Op, class M> uint64_t sampled(const M &m, const uint32_t *ids, siz
   return sum;
 }
 
-// Runs f(std::integral_constant<int, op>) so each operator gets its own compiled loop.
-template <class F> uint64_t dispatch(int op, F &&f) {
-  switch (op) {
-    case R00: return f(std::integral_constant<int, R00>{});
-    case R01: return f(std::integral_constant<int, R01>{});
-    case R02: return f(std::integral_constant<int, R02>{});
-    case R10: return f(std::integral_constant<int, R10>{});
-    case R11: return f(std::integral_constant<int, R11>{});
-    case R12: return f(std::integral_constant<int, R12>{});
-    case R20: return f(std::integral_constant<int, R20>{});
-    case R21: return f(std::integral_constant<int, R21>{});
-    case R22: return f(std::integral_constant<int, R22>{});
-    case BOUNDARY_VERTEX: return f(std::integral_constant<int, BOUNDARY_VERTEX>{});
-    case BOUNDARY_EDGE: return f(std::integral_constant<int, BOUNDARY_EDGE>{});
-    case BOUNDARY_CURVES: return f(std::integral_constant<int, BOUNDARY_CURVES>{});
-    case EDGE_SUCCESSOR: return f(std::integral_constant<int, EDGE_SUCCESSOR>{});
-    case EDGE_PREDECESSOR: return f(std::integral_constant<int, EDGE_PREDECESSOR>{});
-    default: return 0;
-  }
-}
 
 // Surface_mesh benchmark: count vertex-face incidences from both sides. Returns the count, or
 // NaN when the two sides disagree (the benchmark's assertion).
