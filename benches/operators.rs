@@ -5,4 +5,4 @@
 //! Sizes: `TOPOLAB_BENCH_SIZES=1000,16000` (default). Structures: `TOPOLAB_BENCH_STRUCTURES`
 //! (default all). Run one group with `cargo bench --bench operators -- r00`.
 
-topolab_harness::bench_main!(topolab_baselines::Lab);
+topolab_harness::bench_main!(topolab_registry::Lab);

@@ -28,9 +28,10 @@ pub use topolab_baselines::openmesh;
 #[cfg(has_qhull)]
 pub use topolab_baselines::qhull;
 pub use topolab_baselines::{
-    native_decimate, registry, CGAL_MISSING, HAS_CGAL, HAS_OPENMESH, HAS_QHULL, OPENMESH_BUILD,
+    native_decimate, CGAL_MISSING, HAS_CGAL, HAS_OPENMESH, HAS_QHULL, OPENMESH_BUILD,
     OPENMESH_MISSING, QHULL_MISSING,
 };
+pub use topolab_registry as registry;
 
 /// The process's allocator: glibc's, counting a thread's bytes, Rust's and the C++ baselines',
 /// only while the report measures a structure's heap (see [`alloc`]).

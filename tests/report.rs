@@ -245,7 +245,7 @@ fn local_refinement_has_every_editable_structure(json: &serde_json::Value, html:
         .collect();
     for s in topolab::registry::NAMES
         .iter()
-        .filter(|s| topolab_baselines::registry::is_editable(s))
+        .filter(|s| topolab_registry::is_editable(s))
     {
         let timed = rows
             .iter()

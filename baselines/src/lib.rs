@@ -1,9 +1,9 @@
 //! # topolab-baselines
 //!
-//! The lab's outside baselines, each behind a safe wrapper of its C or C++ API, and the
-//! registry of every structure of the lab: the ones of `topolab-structures` plus the C++
-//! baselines OpenMesh ([`openmesh`]) and CGAL ([`cgal`]) when compiled in, and Qhull
-//! ([`qhull`]), in-process, for the hull section. `build.rs` compiles them (their sources are
+//! The lab's outside baselines, each behind a safe wrapper of its C or C++ API: OpenMesh
+//! ([`openmesh`]) and CGAL ([`cgal`]) when compiled in, named and visited by name in
+//! [`compiled`] (the registry of every structure, `topolab-registry`, chains them after the
+//! lab's own), and Qhull ([`qhull`]), in-process, for the hull section. `build.rs` compiles them (their sources are
 //! under `cpp/` and `c/`) and sets one cfg per baseline; the consts below tell the crates
 //! above what this build has, so that they need no cfg to ask.
 //!
@@ -16,13 +16,13 @@
 #[cfg(has_cgal)]
 #[allow(unsafe_code)]
 pub mod cgal;
+pub mod compiled;
 #[cfg(any(has_openmesh, has_cgal))]
 #[allow(unsafe_code)]
 mod foreign;
 #[allow(unsafe_code)]
 pub mod heap;
 pub mod hulls;
-pub mod lab;
 #[allow(unsafe_code)]
 pub mod native_decimate;
 #[cfg(has_openmesh)]
@@ -31,9 +31,6 @@ pub mod openmesh;
 #[cfg(has_qhull)]
 #[allow(unsafe_code)]
 pub mod qhull;
-pub mod registry;
-
-pub use lab::Lab;
 
 /// What to do when the OpenMesh baseline is not compiled in (OpenMesh's source was missing at
 /// build time, or `TOPOLAB_NO_OPENMESH=1` was set).

@@ -79,8 +79,8 @@ impl NativeDecimater {
     /// The structure's name in the report (the registry's).
     pub const fn name(self) -> &'static str {
         match self {
-            NativeDecimater::OpenMesh => crate::registry::OPENMESH,
-            NativeDecimater::CgalSurfaceMesh => crate::registry::CGAL_SURFACE_MESH,
+            NativeDecimater::OpenMesh => crate::compiled::OPENMESH,
+            NativeDecimater::CgalSurfaceMesh => crate::compiled::CGAL_SURFACE_MESH,
         }
     }
 

@@ -12,8 +12,8 @@ mod common;
 #[test]
 fn skipped_cgal_not_compiled_in() {
     common::report_skip("cgal threads", topolab_baselines::CGAL_MISSING);
-    assert!(!topolab_baselines::registry::NAMES
-        .contains(&topolab_baselines::registry::CGAL_SURFACE_MESH));
+    assert!(!topolab_baselines::compiled::COMPILED
+        .contains(&topolab_baselines::compiled::CGAL_SURFACE_MESH));
 }
 
 #[cfg(has_cgal)]

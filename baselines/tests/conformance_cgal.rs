@@ -15,11 +15,11 @@ fn skipped_cgal_not_compiled_in() {
     common::report_skip("cgal conformance", topolab_baselines::CGAL_MISSING);
     // Without CGAL the registry must not offer its structures.
     for name in [
-        topolab_baselines::registry::CGAL_SURFACE_MESH,
-        topolab_baselines::registry::CGAL_POLYHEDRON,
+        topolab_baselines::compiled::CGAL_SURFACE_MESH,
+        topolab_baselines::compiled::CGAL_POLYHEDRON,
     ] {
         assert!(
-            !topolab_baselines::registry::NAMES.contains(&name),
+            !topolab_baselines::compiled::COMPILED.contains(&name),
             "{name}"
         );
     }

@@ -12,5 +12,5 @@ mod common;
 fn skipped_openmesh_not_compiled_in() {
     common::report_skip("openmesh conformance", topolab_baselines::OPENMESH_MISSING);
     // Without OpenMesh the registry must not offer it.
-    assert!(!topolab_baselines::registry::NAMES.contains(&topolab_baselines::registry::OPENMESH));
+    assert!(!topolab_baselines::compiled::COMPILED.contains(&topolab_baselines::compiled::OPENMESH));
 }

@@ -12,7 +12,7 @@ mod common;
 #[test]
 fn skipped_openmesh_not_compiled_in() {
     common::report_skip("openmesh threads", topolab_baselines::OPENMESH_MISSING);
-    assert!(!topolab_baselines::registry::NAMES.contains(&topolab_baselines::registry::OPENMESH));
+    assert!(!topolab_baselines::compiled::COMPILED.contains(&topolab_baselines::compiled::OPENMESH));
 }
 
 #[cfg(has_openmesh)]

@@ -24,7 +24,7 @@
 //! implemented ([`edit`]).
 //!
 //! [`registry::Peers`] lists the four as one `Structures` list, which the lab's registry
-//! (`topolab_baselines::registry`, behind its feature `peers`) chains after the C++
+//! (`topolab_registry`, behind its feature `peers`) chains after the C++
 //! baselines; [`CRATES`] names each crate's exact version for `topolab list` and the report.
 //! This crate depends on `topolab-structures` only.
 

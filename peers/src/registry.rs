@@ -1,5 +1,5 @@
 //! The peers as one [`Structures`] list, which the lab's registry
-//! (`topolab_baselines::registry`, behind its feature `peers`) chains after its own, as
+//! (`topolab_registry`, behind its feature `peers`) chains after its own, as
 //! a crate outside the lab joins a run; and those that implement
 //! [`MeshEdit`](topolab_structures::MeshEdit) ([`EDITABLE`], [`visit_editable`]), chained
 //! after the lab's editable structures the same way.

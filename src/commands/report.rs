@@ -7,12 +7,12 @@
 use crate::input::Failure;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
-use topolab_baselines::Lab;
 use topolab_harness::baselines::BaselineRun;
 use topolab_harness::measure::MemoryMeter;
 use topolab_harness::report::pipeline::{self, Host, Used};
 use topolab_harness::report::run::{MeshFamily, ReportError, Request};
 use topolab_harness::report::sections::libigl::LIBIGL;
+use topolab_registry::Lab;
 use topolab_structures::registry::{duplicate_name, names, Structures};
 
 /// Options of `topolab report`.

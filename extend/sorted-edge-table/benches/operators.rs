@@ -2,4 +2,4 @@
 //!
 //! `TOPOLAB_BENCH_STRUCTURES=sorted-edge-table,index-half-edge cargo bench -p sorted-edge-table --bench operators -- r00`
 
-topolab_harness::bench_main!(sorted_edge_table::SortedEdgeTable, topolab_baselines::Lab);
+topolab_harness::bench_main!(sorted_edge_table::SortedEdgeTable, topolab_registry::Lab);

@@ -63,7 +63,7 @@ impl StructureVisitor for Describe {
         let info = StructureInfo {
             name: M::NAME.into(),
             family: M::FAMILY,
-            editable: topolab_baselines::registry::is_editable(M::NAME),
+            editable: topolab_registry::is_editable(M::NAME),
             capabilities: M::capabilities(),
             costs: Operator::ALL
                 .iter()
@@ -152,7 +152,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         rounds: Vec::new(),
         drift: Vec::new(),
     };
-    topolab_baselines::registry::note_absent(&mut results.notes);
+    topolab_registry::note_absent(&mut results.notes);
     results
         .notes
         .extend(clock::budget_notes(req.quick, req.full));

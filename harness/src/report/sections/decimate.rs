@@ -48,7 +48,7 @@ const EDITABLE: [&str; 2] = ["index-half-edge", "pointer-half-edge"];
 
 /// The decimaters of the Targets row, which take turns on the run's largest torus: the index
 /// half-edge with the eager strategy (OpenMesh's algorithm, [`PAIR_STRATEGY`]) and OpenMesh.
-const PAIR: [&str; 2] = ["index-half-edge", topolab_baselines::registry::OPENMESH];
+const PAIR: [&str; 2] = ["index-half-edge", topolab_registry::OPENMESH];
 
 /// The strategy of the Targets row's lab decimater: the one that runs OpenMesh's algorithm.
 const PAIR_STRATEGY: Strategy = Strategy::Eager;

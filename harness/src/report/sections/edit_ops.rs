@@ -32,7 +32,7 @@ use crate::skips::{self, Skip};
 use crate::timing::median;
 use std::fmt::Write;
 use std::time::Instant;
-use topolab_baselines::registry::{self, EditVisitor};
+use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::select::{
     rotate_selection, scale_selection, select_vertices_in, smooth_step, Aabb,
 };

@@ -324,7 +324,7 @@ impl Section for Hull {
         let (req, r) = (run.request, &mut *run.results);
         r.hull = measure(HullSizes::of(req.quick, req.full), run.meter, &mut r.notes)?;
         r.hull_fits = crate::hull::bench::fits(&r.hull);
-        r.qhull = topolab_baselines::registry::qhull_description();
+        r.qhull = topolab_registry::qhull_description();
         r.targets.extend(in_turns(&r.hull)?);
         Ok(())
     }

@@ -104,7 +104,7 @@ fn measure(
     let can = |s: &str, cell: Cell| {
         names.iter().any(|n| n == s)
             && match cell {
-                Cell::Changing(_) => topolab_baselines::registry::is_editable(s),
+                Cell::Changing(_) => topolab_registry::is_editable(s),
                 _ if s == PROBE => true,
                 _ => sequential(measurements, mesh, s, cell).is_some(),
             }

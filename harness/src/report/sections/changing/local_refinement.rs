@@ -28,7 +28,7 @@ use crate::report::run::{Case, ReportError};
 use crate::skips::Skip;
 use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
-use topolab_baselines::registry::{self, EditVisitor};
+use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::adaptive::{refine_adaptive, Region, Request};
 use topolab_structures::families::regular_grid::NO_LOCAL_REFINEMENT;
 use topolab_structures::glam::DVec3;

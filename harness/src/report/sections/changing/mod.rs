@@ -29,7 +29,7 @@ use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 #[cfg(has_openmesh)]
 use topolab_baselines::openmesh::OpenMesh;
-use topolab_baselines::registry::{self, EditVisitor};
+use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::changing::Changing;
 #[cfg(any(has_openmesh, has_cgal))]
 use topolab_structures::MeshTopology;

@@ -1,11 +1,11 @@
-//! One answer per question: every structure of the registry (the lab's, and the C++
-//! baselines compiled into this build) either refuses a random soup with a typed error or
+//! One answer per question: every structure of the registry (the lab's, the C++
+//! baselines compiled into this build and, with the feature `peers`, the Rust crates) either refuses a random soup with a typed error or
 //! answers `topolab info`'s every field as the naive oracle does
 //! (`topolab_structures::testing::differential`). Enrolled from the registry: a new structure
 //! is covered without a line here.
 
 use proptest::prelude::*;
-use topolab_baselines::registry::{self, StructureVisitor};
+use topolab_registry::{self as registry, StructureVisitor};
 use topolab_structures::testing::differential::{agrees_with_the_oracle, info_soups, two_fan_soup};
 use topolab_structures::{summary::Summary, MeshTopology, PolygonSoup};
 
