@@ -277,10 +277,36 @@ pub(crate) fn admit(soup: &PolygonSoup) -> Result<BuildFacts<'_>> {
 /// closed fan plus another one at the same vertex (two cones tip to tip, one closed) is
 /// refused by their `add_face` ("complex vertex"). Refusing it here, before the library,
 /// makes the answer independent of the face order.
+///
+/// Linking the fans costs the library a walk of the cycle for each face it adds at such a
+/// vertex: time quadratic in the fans (50,000 triangles around one vertex, each a fan of its
+/// own, took OpenMesh minutes). A mesh whose vertices' fans, squared and summed, pass 16 per
+/// corner plus a constant (the budget past which the lab's own constructions give up their
+/// buckets for a method that does not care about valences) is refused with
+/// [`Error::FanCycleTooLong`], in time linear in the mesh.
 pub(crate) fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
     let fans = connectivity.vertex_fans(soup);
     if fans.iter().all(|&n| n <= 1) {
         return Ok(());
+    }
+    let steps: u64 = fans
+        .iter()
+        .filter(|&&n| n > 1)
+        .map(|&n| u64::from(n) * u64::from(n))
+        .sum();
+    let budget = 16 * soup.num_corners() as u64 + 4096;
+    if steps > budget {
+        let (vertex, &most) = fans
+            .iter()
+            .enumerate()
+            .max_by_key(|&(_, n)| *n)
+            .expect("a vertex with several fans");
+        return Err(Error::FanCycleTooLong {
+            vertex: vertex as u32,
+            fans: most as usize,
+            steps,
+            budget,
+        });
     }
     // Each open fan has two boundary edges at its vertex (one in, one out).
     let mut boundary_sides = vec![0u32; soup.num_vertices()];

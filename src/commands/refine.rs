@@ -147,7 +147,7 @@ pub fn refine(
         ))
     })?;
     // Refuse an unwritable output before the (long) refinement, not after.
-    check_mesh_out(out)?;
+    check_mesh_out(out, spec)?;
     // A built-in mesh's size is known before it is generated: too many levels of a large one
     // are refused without generating it.
     if let Some(size) = built_in_size(spec) {

@@ -48,6 +48,38 @@ impl std::fmt::Display for Location {
     }
 }
 
+/// How the ids in an error are numbered: from 0 as the lab numbers elements, or from 1 as an
+/// OBJ file numbers its vertices (and, by the order of its `f` statements, its faces), so that
+/// a message about a file names its elements as the file does.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub enum Numbering {
+    /// From 0: the lab's ids (and OFF's, PLY's, STL's).
+    #[default]
+    FromZero,
+    /// From 1: OBJ's.
+    FromOne,
+}
+
+impl Numbering {
+    /// The first id: 0 or 1.
+    pub fn first(self) -> u32 {
+        match self {
+            Numbering::FromZero => 0,
+            Numbering::FromOne => 1,
+        }
+    }
+}
+
+impl std::fmt::Display for Numbering {
+    /// Nothing for the lab's numbering; a note for a file's own.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Numbering::FromZero => Ok(()),
+            Numbering::FromOne => f.write_str(" (numbered from 1, as in the file)"),
+        }
+    }
+}
+
 /// Everything that can go wrong in `topolab-structures`.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -108,22 +140,26 @@ pub enum Error {
         count: u64,
     },
     /// A face refers to a vertex that does not exist (or a negative / overflowing index).
-    #[error("face {face} refers to vertex {index}, but there are {vertices} vertices")]
+    #[error("face {face} refers to vertex {index}, but there are {vertices} vertices{numbering}")]
     IndexOutOfRange {
-        /// The face (0-based, input order).
+        /// The face (input order, numbered as `numbering` says).
         face: usize,
-        /// The index as written (after converting the format's base and relative indices).
+        /// The index as written (relative indices resolved), numbered as `numbering` says.
         index: i64,
         /// How many vertices exist.
         vertices: usize,
+        /// How `face` and `index` are numbered.
+        numbering: Numbering,
     },
     /// A coordinate is NaN or infinite.
-    #[error("vertex {vertex} has a non-finite coordinate {value}")]
+    #[error("vertex {vertex} has a non-finite coordinate {value}{numbering}")]
     NonFiniteCoordinate {
         /// The vertex.
         vertex: usize,
         /// The offending value.
         value: f64,
+        /// How `vertex` is numbered.
+        numbering: Numbering,
     },
     /// A coordinate outside the range in which the convex hull's exact predicates stay exact:
     /// their products of three coordinate differences would overflow (or underflow) a double.
@@ -139,20 +175,24 @@ pub enum Error {
         max: f64,
     },
     /// A face with fewer than three corners.
-    #[error("face {face} has {corners} corners; a face needs at least 3")]
+    #[error("face {face} has {corners} corners; a face needs at least 3{numbering}")]
     TooFewCorners {
         /// The face.
         face: usize,
         /// How many corners it has.
         corners: usize,
+        /// How `face` is numbered.
+        numbering: Numbering,
     },
     /// A face that uses one vertex twice.
-    #[error("face {face} uses vertex {vertex} more than once")]
+    #[error("face {face} uses vertex {vertex} more than once{numbering}")]
     RepeatedVertex {
         /// The face.
         face: usize,
         /// The repeated vertex.
         vertex: u32,
+        /// How `face` and `vertex` are numbered.
+        numbering: Numbering,
     },
     /// An edge with more than two incident faces.
     #[error("edge ({a}, {b}) is shared by {} faces {faces:?}; a manifold edge has one or two", faces.len())]
@@ -287,6 +327,30 @@ pub enum Error {
         /// What is wrong with it.
         problem: crate::io::che_file::format::CheFileProblem,
     },
+    /// A vertex whose faces form so many fans that a halfedge library (OpenMesh, CGAL), which
+    /// links a vertex's fans into one cycle and walks that cycle for each face it adds at the
+    /// vertex, would take time quadratic in the fans: refused before the library sees it.
+    #[error("vertex {vertex} has {fans} fans; a halfedge library links them into one cycle and walks it for each face added there, about {steps} steps for this mesh, more than the {budget} (16 per corner) the lab lets it take")]
+    FanCycleTooLong {
+        /// The vertex with the most fans.
+        vertex: u32,
+        /// Its fans.
+        fans: usize,
+        /// The walk's steps over every vertex of several fans (the sum of their fans squared).
+        steps: u64,
+        /// The most steps allowed.
+        budget: u64,
+    },
+    /// A mesh a format cannot hold as it is: written, the file would not read back as this
+    /// mesh (an empty mesh, a coordinate STL's `float` cannot hold, corners STL's welding would
+    /// join into one vertex). Nothing was written.
+    #[error("cannot write it as {format}: {reason}")]
+    NotWritable {
+        /// The format asked for.
+        format: Format,
+        /// Why the file would not read back.
+        reason: String,
+    },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.
     #[error("{library} failed in {call}: {reason}")]
@@ -329,6 +393,8 @@ impl Error {
             Error::ElementOutOfRange { .. } => "element-out-of-range",
             Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
+            Error::NotWritable { .. } => "not-writable",
+            Error::FanCycleTooLong { .. } => "fan-cycle-too-long",
             Error::CheFile { .. } => "che-file",
         }
     }
@@ -341,6 +407,53 @@ impl Error {
                 | Error::InconsistentOrientation { .. }
                 | Error::NonManifoldVertex { .. }
         )
+    }
+
+    /// The error with its element ids in `numbering` (they are in the lab's, from 0): what a
+    /// reader of a file that numbers from 1 reports. Other errors are returned as they are.
+    pub fn numbered(self, numbering: Numbering) -> Self {
+        let shift = numbering.first();
+        match self {
+            Error::IndexOutOfRange {
+                face,
+                index,
+                vertices,
+                numbering: Numbering::FromZero,
+            } => Error::IndexOutOfRange {
+                face: face + shift as usize,
+                index: index.saturating_add(shift.into()),
+                vertices,
+                numbering,
+            },
+            Error::NonFiniteCoordinate {
+                vertex,
+                value,
+                numbering: Numbering::FromZero,
+            } => Error::NonFiniteCoordinate {
+                vertex: vertex + shift as usize,
+                value,
+                numbering,
+            },
+            Error::TooFewCorners {
+                face,
+                corners,
+                numbering: Numbering::FromZero,
+            } => Error::TooFewCorners {
+                face: face + shift as usize,
+                corners,
+                numbering,
+            },
+            Error::RepeatedVertex {
+                face,
+                vertex,
+                numbering: Numbering::FromZero,
+            } => Error::RepeatedVertex {
+                face: face + shift as usize,
+                vertex: vertex + shift,
+                numbering,
+            },
+            other => other,
+        }
     }
 
     /// Shorthand for an [`Error::Invariant`].
