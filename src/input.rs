@@ -4,6 +4,7 @@
 pub use crate::failure::Failure;
 use crate::{limits, registry};
 use std::path::Path;
+use topolab_structures::io::echo;
 use topolab_structures::meshes::{self, MeshSize, SpecError};
 use topolab_structures::{Error, PolygonSoup};
 
@@ -93,7 +94,8 @@ fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
         SpecError::Unknown => {
             let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
             Failure::usage(format!(
-                "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
+                "no file {}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
+                echo::quoted(spec.as_bytes()),
                 names.join(", ")
             ))
         }
@@ -221,7 +223,8 @@ pub fn unknown_structure(name: &str) -> Failure {
         return Failure::usage(format!("{name}: {why}"));
     }
     Failure::usage(format!(
-        "unknown structure {name:?}; known: {}",
+        "unknown structure {}; known: {}",
+        echo::quoted(name.as_bytes()),
         registry::NAMES.join(", ")
     ))
 }

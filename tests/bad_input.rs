@@ -285,7 +285,7 @@ const CAPABILITY_REFUSALS: &[&str] = &[
     "coincident-vertices",
     "not-a-grid",
     "non-manifold-vertex",
-    "fan-cycle-too-long",
+    "star-too-large",
 ];
 
 fn corpus(file: &str) -> PathBuf {

@@ -16,17 +16,24 @@ use topolab_structures::io::che_file::Container;
 use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{CheL2, MeshTopology, PolygonSoup};
 
-/// The summary of a verified file of level `L` (2 or 3) through its mapped containers.
-fn mapped_summary<const L: u8>(file: CheFile) -> Result<Summary, Failure>
+/// The refusal of a file whose check failed (`e`).
+fn unsound(spec: &str, e: topolab_structures::Error) -> Failure {
+    Failure {
+        message: format!(
+            "{e} (`topolab check {spec}` reports it; `info` describes sound files only)"
+        ),
+        code: 1,
+    }
+}
+
+/// The summary of a file of level `L` (2 or 3) through its mapped containers, once verified
+/// ([`MappedChe::verify`], which is [`CheFile::check`]).
+fn mapped_summary<const L: u8>(file: CheFile, spec: &str) -> Result<Summary, Failure>
 where
     MappedChe<L>: MeshTopology,
 {
     let mut m = MappedChe::<L>::from_file(file).map_err(|e| Failure::usage(e.to_string()))?;
-    // Verified already (`CheFile::check`); this sets the flag for the unchecked walk.
-    m.verify().map_err(|e| Failure {
-        message: e.to_string(),
-        code: 1,
-    })?;
+    m.verify().map_err(|e| unsound(spec, e))?;
     Ok(summarize(&m))
 }
 
@@ -70,12 +77,6 @@ pub(super) fn che_info(spec: &str, structure: Option<&str>, json: bool) -> Resul
         ));
     }
     let verifying = Instant::now();
-    file.check().map_err(|e| Failure {
-        message: format!(
-            "{e} (`topolab check {spec}` reports it; `info` describes sound files only)"
-        ),
-        code: 1,
-    })?;
     let bytes = file.file_bytes();
     let stored: Vec<Container> = Container::ALL
         .into_iter()
@@ -86,9 +87,12 @@ pub(super) fn che_info(spec: &str, structure: Option<&str>, json: bool) -> Resul
         .map(|&c| (c.name(), h.count(c), c.element_bytes()))
         .collect();
     let summary = match h.level {
-        0 | 1 => rebuilt_summary(&file)?,
-        2 => mapped_summary::<2>(file)?,
-        _ => mapped_summary::<3>(file)?,
+        0 | 1 => {
+            file.check().map_err(|e| unsound(spec, e))?;
+            rebuilt_summary(&file)?
+        }
+        2 => mapped_summary::<2>(file, spec)?,
+        _ => mapped_summary::<3>(file, spec)?,
     };
     let verified_ms = verifying.elapsed().as_secs_f64() * 1e3;
     if json {

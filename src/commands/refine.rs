@@ -135,14 +135,16 @@ pub fn refine(
     let scheme = Scheme::from_name(scheme).ok_or_else(|| {
         let names: Vec<&str> = Scheme::ALL.iter().map(|s| s.name()).collect();
         Failure::usage(format!(
-            "unknown scheme {scheme:?}; known: {}",
+            "unknown scheme {}; known: {}",
+            topolab_structures::io::echo::quoted(scheme.as_bytes()),
             names.join(", ")
         ))
     })?;
     let ordering = Ordering::from_name(order).ok_or_else(|| {
         let names: Vec<String> = Ordering::ALL.iter().map(|o| o.name()).collect();
         Failure::usage(format!(
-            "unknown order {order:?}; known: {}, random:SEED",
+            "unknown order {}; known: {}, random:SEED",
+            topolab_structures::io::echo::quoted(order.as_bytes()),
             names.join(", ")
         ))
     })?;

@@ -88,7 +88,8 @@ pub fn subdivide(spec: &str, scheme: &str, levels: usize, out: &Path) -> Result<
         .ok_or_else(|| {
             let names: Vec<&str> = Scheme::ALL.iter().map(|s| s.name()).collect();
             Failure::usage(format!(
-                "unknown scheme {scheme:?}; known: {}",
+                "unknown scheme {}; known: {}",
+                topolab_structures::io::echo::quoted(scheme.as_bytes()),
                 names.join(", ")
             ))
         })?;

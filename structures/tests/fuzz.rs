@@ -99,10 +99,10 @@ fn round_trip(soup: &PolygonSoup) -> Result<(), TestCaseError> {
     for (format, ply) in WRITTEN {
         if let Err(e) = io::writable(soup, format) {
             prop_assert_eq!(e.kind(), "not-writable", "{}", e);
-            prop_assert_eq!(
-                format,
-                Format::Stl,
-                "only STL refuses a checked soup: {}",
+            let empty = soup.num_vertices() == 0 && soup.num_faces() == 0;
+            prop_assert!(
+                format == Format::Stl || empty,
+                "only STL refuses a checked soup that is not empty: {}",
                 e
             );
             continue;
@@ -163,10 +163,14 @@ fn seeds() -> Vec<(Vec<u8>, Format)> {
         io::write_off(&mut off, &soup).unwrap();
         out.push((obj, Format::Obj));
         out.push((off, Format::Off));
-        out.push((support::ascii_ply(&soup).into_bytes(), Format::Ply));
-        out.push((support::binary_ply(&soup, false), Format::Ply));
-        out.push((support::binary_ply(&soup, true), Format::Ply));
-        if soup.is_triangle_mesh() && io::writable(&soup, Format::Stl).is_ok() {
+        // The other tools' encodings store floats: only for the soups a float holds.
+        let floats = io::writable(&soup, Format::Stl).is_ok();
+        if floats {
+            out.push((support::ascii_ply(&soup).into_bytes(), Format::Ply));
+            out.push((support::binary_ply(&soup, false), Format::Ply));
+            out.push((support::binary_ply(&soup, true), Format::Ply));
+        }
+        if soup.is_triangle_mesh() && floats {
             let mut stl = Vec::new();
             io::write_stl(&mut stl, &soup).unwrap();
             out.push((stl, Format::Stl));

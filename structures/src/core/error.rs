@@ -327,16 +327,20 @@ pub enum Error {
         /// What is wrong with it.
         problem: crate::io::che_file::format::CheFileProblem,
     },
-    /// A vertex whose faces form so many fans that a halfedge library (OpenMesh, CGAL), which
-    /// links a vertex's fans into one cycle and walks that cycle for each face it adds at the
-    /// vertex, would take time quadratic in the fans: refused before the library sees it.
-    #[error("vertex {vertex} has {fans} fans; a halfedge library links them into one cycle and walks it for each face added there, about {steps} steps for this mesh, more than the {budget} (16 per corner) the lab lets it take")]
-    FanCycleTooLong {
-        /// The vertex with the most fans.
+    /// A vertex of so many faces that a halfedge library (OpenMesh, CGAL) would take time
+    /// quadratic in them to build the mesh: each face it adds at a vertex searches the
+    /// vertex's halfedges (CGAL always, OpenMesh when the faces come in an order that leaves
+    /// several fans open, and always for a vertex of several fans, whose fans it links into
+    /// one cycle). Refused before the library sees the mesh.
+    #[error("vertex {vertex} has {faces} faces in {fans} fans; a halfedge library searches a vertex's halfedges for each face it adds there, about {steps} steps for this mesh (its vertices' face counts squared), more than the {budget} the lab lets it take (16 a corner and 2^24)")]
+    StarTooLarge {
+        /// The vertex with the most faces.
         vertex: u32,
-        /// Its fans.
+        /// Its faces (corners).
+        faces: usize,
+        /// The fans they form.
         fans: usize,
-        /// The walk's steps over every vertex of several fans (the sum of their fans squared).
+        /// The vertices' face counts, squared and summed.
         steps: u64,
         /// The most steps allowed.
         budget: u64,
@@ -394,7 +398,7 @@ impl Error {
             Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
             Error::NotWritable { .. } => "not-writable",
-            Error::FanCycleTooLong { .. } => "fan-cycle-too-long",
+            Error::StarTooLarge { .. } => "star-too-large",
             Error::CheFile { .. } => "che-file",
         }
     }
