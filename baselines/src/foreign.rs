@@ -278,37 +278,11 @@ pub(crate) fn admit(soup: &PolygonSoup) -> Result<BuildFacts<'_>> {
 /// refused by their `add_face` ("complex vertex"). Refusing it here, before the library,
 /// makes the answer independent of the face order.
 ///
-/// Before that, what would take these libraries time quadratic in a vertex's faces: each face
-/// they add at a vertex searches the vertex's halfedges (CGAL's Surface_mesh even in order;
-/// OpenMesh when the faces come in an order that leaves several fans open, or for a vertex of
-/// several fans, which it links into one cycle). 50,000 triangles around one vertex took
-/// OpenMesh minutes as separate fans and 14 s as one fan in shuffled order, Surface_mesh 7 s
-/// as one fan in order. A mesh whose vertices' face counts, squared and summed, pass 16 a
-/// corner (a regular mesh takes about 6) plus 2^24 (a fraction of a second of such steps, so
-/// that a mesh with a few vertices of a few thousand faces, the caps of a finely divided
-/// cylinder, still builds) is refused with [`Error::StarTooLarge`], in time linear in the mesh.
+/// Before that, a vertex of so many faces that these libraries would take time quadratic in
+/// them is refused ([`Connectivity::check_star_sizes`], [`Error::StarTooLarge`]).
 pub(crate) fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
-    let mut faces = vec![0u32; soup.num_vertices()];
-    for &v in soup.indices() {
-        faces[v as usize] += 1;
-    }
-    let steps: u64 = faces.iter().map(|&n| u64::from(n) * u64::from(n)).sum();
-    let budget = 16 * soup.num_corners() as u64 + (1 << 24);
+    connectivity.check_star_sizes(soup)?;
     let fans = connectivity.vertex_fans(soup);
-    if steps > budget {
-        let (vertex, &most) = faces
-            .iter()
-            .enumerate()
-            .max_by_key(|&(_, n)| *n)
-            .expect("a vertex with faces");
-        return Err(Error::StarTooLarge {
-            vertex: vertex as u32,
-            faces: most as usize,
-            fans: fans[vertex] as usize,
-            steps,
-            budget,
-        });
-    }
     if fans.iter().all(|&n| n <= 1) {
         return Ok(());
     }

@@ -9,8 +9,10 @@
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use std::collections::HashSet;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use topolab_structures::che::CheFile;
 use topolab_structures::checks::{check, Options};
-use topolab_structures::io::{self, read_bytes_raw, PlyEncoding};
+use topolab_structures::io::{self, che_file, read_bytes_raw, PlyEncoding};
 use topolab_structures::{meshes, registry, Format, PolygonSoup};
 
 mod support;
@@ -95,7 +97,8 @@ fn written(soup: &PolygonSoup, format: Format, ply: PlyEncoding) -> Vec<u8> {
 /// file would not read back) or writes a file its reader reads back with the same counts:
 /// the same soup for OBJ, OFF and PLY, which write coordinates exactly; for STL, a triangle
 /// per fan triangle and a vertex per distinct float position of the used vertices (STL welds).
-fn round_trip(soup: &PolygonSoup) -> Result<(), TestCaseError> {
+/// And so does every CHE level ([`che_round_trip`], whose count of levels written it returns).
+fn round_trip(soup: &PolygonSoup) -> Result<usize, TestCaseError> {
     for (format, ply) in WRITTEN {
         if let Err(e) = io::writable(soup, format) {
             prop_assert_eq!(e.kind(), "not-writable", "{}", e);
@@ -133,7 +136,44 @@ fn round_trip(soup: &PolygonSoup) -> Result<(), TestCaseError> {
             (triangles, places.len())
         );
     }
-    Ok(())
+    che_round_trip(soup)
+}
+
+/// Every CHE level either refuses `soup` (as its construction refuses it: a typed error, and
+/// no file) or writes a `.che` file that opens, passes `check` and holds the soup's vertices
+/// and triangles as they were: what `convert --to che` writes (the same bytes, through
+/// `che_file::write_mesh_owned`) reads back. The empty soup is left out: `convert` refuses it
+/// before writing. Returns the levels written.
+fn che_round_trip(soup: &PolygonSoup) -> Result<usize, TestCaseError> {
+    if soup.num_vertices() == 0 && soup.num_faces() == 0 {
+        return Ok(0);
+    }
+    // Properties run on several threads of one process: a file each.
+    static FILES: AtomicUsize = AtomicUsize::new(0);
+    let path = std::env::temp_dir().join(format!(
+        "topolab-fuzz-{}-{}.che",
+        std::process::id(),
+        FILES.fetch_add(1, Ordering::Relaxed)
+    ));
+    let mut written = 0;
+    for level in 0..=3u8 {
+        if let Err(e) = che_file::write_mesh(soup, level, &path) {
+            prop_assert_ne!(e.kind(), "io", "level {}: {}", level, e);
+            prop_assert!(!path.exists(), "level {} refused, yet wrote a file", level);
+            continue;
+        }
+        let file = CheFile::open(&path);
+        prop_assert!(file.is_ok(), "level {}: {:?}", level, file.err());
+        let file = file.unwrap();
+        let checked = file.check();
+        prop_assert!(checked.is_ok(), "level {}: {:?}", level, checked.err());
+        prop_assert_eq!(file.geometry(), &soup.positions[..], "level {}", level);
+        prop_assert_eq!(file.start_vertices(), soup.indices(), "level {}", level);
+        drop(file);
+        std::fs::remove_file(&path).unwrap();
+        written += 1;
+    }
+    Ok(written)
 }
 
 /// Valid files of every format and encoding to mutate: as the lab writes them and as other
@@ -151,6 +191,8 @@ fn seeds() -> Vec<(Vec<u8>, Format)> {
         meshes::mixed_polygons(),
         meshes::quad_cube(),
         meshes::bowtie(),
+        // A closed triangle mesh: every CHE level writes it (`che_round_trip`).
+        meshes::torus(4, 3),
         huge,
         tiny,
     ] {
@@ -291,10 +333,13 @@ proptest! {
 
 #[test]
 fn the_seeds_are_valid_files_that_read_back_as_written() {
+    let mut che_levels_written = 0;
     for (bytes, format) in seeds() {
         let soup = io::read_bytes(&bytes, format).unwrap();
-        round_trip(&soup).unwrap();
+        che_levels_written += round_trip(&soup).unwrap();
     }
+    // Some seeds are written at every CHE level: the CHE part of the property is not vacuous.
+    assert!(che_levels_written >= 4, "{che_levels_written}");
     // STL refuses the seeds it cannot hold: the property above is not vacuous.
     let refused = seeds()
         .iter()

@@ -1,51 +1,20 @@
 //! The hostile inputs of issue 52, each grown 4×: reading and checking them takes time that
-//! grows at most about 5× (linear), where each of them once grew 16× (quadratic) and ran past
+//! grows about 4× (linear; at most 8× is asserted), where each of them once grew 16× (quadratic) and ran past
 //! 20 s on files of a few MB.
 //!
 //! Time is measured inside the test, as the ratio of two sizes that take well under a second,
-//! each the fastest of a few runs; the ratio must stay below [`MAX_RATIO`], between linear
-//! growth (4×, a little more for hashing and allocation) and quadratic (16×), so that a loaded
+//! each the fastest of a few runs taken in turns ([`grows_linearly`]); the ratio must stay
+//! below [`MAX_RATIO`](topolab_structures::testing::growth::MAX_RATIO), between linear growth
+//! (4×, a little more for hashing and allocation) and quadratic (16×), so that a loaded
 //! machine does not make it fail and a quadratic step does. Where the work can be counted
 //! (the duplicate-vertex search's lookups and comparisons) the unit tests count it instead.
 
 use glam::DVec3;
-use std::time::{Duration, Instant};
 use topolab_structures::checks::{check, Options};
 use topolab_structures::io::{self, read_bytes_raw};
 use topolab_structures::summary::summarize;
+use topolab_structures::testing::growth::grows_linearly;
 use topolab_structures::{CheL2, Format, MeshTopology, PolygonSoup};
-
-/// The most the time may grow when the input grows 4×: linear is 4, quadratic 16.
-const MAX_RATIO: f64 = 8.0;
-
-/// The fastest of five runs of `work`.
-fn fastest(work: &dyn Fn()) -> Duration {
-    (0..5)
-        .map(|_| {
-            let started = Instant::now();
-            work();
-            started.elapsed()
-        })
-        .min()
-        .expect("five runs")
-}
-
-/// `work(n)` and `work(4n)`: the time of the larger is at most [`MAX_RATIO`] times the
-/// smaller's (the smaller counted as at least 5 ms: below, a machine's noise is of its size).
-fn grows_linearly(name: &str, n: usize, work: impl Fn(usize)) {
-    let small = fastest(&|| work(n));
-    let large = fastest(&|| work(4 * n));
-    let ratio = large.as_secs_f64() / small.as_secs_f64().max(5e-3);
-    println!(
-        "{name}: {small:?} at {n}, {large:?} at {}: {ratio:.1}x",
-        4 * n
-    );
-    assert!(
-        ratio <= MAX_RATIO,
-        "{name}: {small:?} at {n}, {large:?} at {} ({ratio:.1}x, more than {MAX_RATIO})",
-        4 * n
-    );
-}
 
 /// An OBJ file of `n` vertices at `position(i)`, each three in a triangle.
 fn obj(n: usize, position: impl Fn(usize) -> DVec3) -> Vec<u8> {

@@ -327,12 +327,11 @@ pub enum Error {
         /// What is wrong with it.
         problem: crate::io::che_file::format::CheFileProblem,
     },
-    /// A vertex of so many faces that a halfedge library (OpenMesh, CGAL) would take time
-    /// quadratic in them to build the mesh: each face it adds at a vertex searches the
-    /// vertex's halfedges (CGAL always, OpenMesh when the faces come in an order that leaves
-    /// several fans open, and always for a vertex of several fans, whose fans it links into
-    /// one cycle). Refused before the library sees the mesh.
-    #[error("vertex {vertex} has {faces} faces in {fans} fans; a halfedge library searches a vertex's halfedges for each face it adds there, about {steps} steps for this mesh (its vertices' face counts squared), more than the {budget} the lab lets it take (16 a corner and 2^24)")]
+    /// A vertex of so many faces that a library whose construction searches a vertex's
+    /// half-edges for each face it adds there (OpenMesh, CGAL, lox) would take time quadratic
+    /// in them to build the mesh ([`Connectivity::check_star_sizes`](crate::Connectivity::check_star_sizes)).
+    /// Refused before the library sees the mesh.
+    #[error("vertex {vertex} has {faces} faces in {fans} fans; the library searches a vertex's half-edges for each face it adds there, about {steps} steps for this mesh (its vertices' face counts squared), more than the {budget} the lab lets it take (16 a corner and 2^24)")]
     StarTooLarge {
         /// The vertex with the most faces.
         vertex: u32,
