@@ -41,9 +41,10 @@ pub enum Command {
         mesh: String,
         /// The structure that answers the queries (`index-half-edge` by default: it answers
         /// every query in O(k); the scanning structures such as `vertex-list` take O(n²) on
-        /// the boundary curves, minutes on a 100k-face mesh).
-        #[arg(long, default_value = "index-half-edge")]
-        structure: String,
+        /// the boundary curves, minutes on a 100k-face mesh). A .che file is answered by the
+        /// level it holds, whatever this says.
+        #[arg(long)]
+        structure: Option<String>,
         /// Print JSON.
         #[arg(long)]
         json: bool,
@@ -139,18 +140,24 @@ pub enum Command {
         out: PathBuf,
     },
     /// Convert a mesh between the formats the lab reads (.obj, .off, .ply, .stl) and writes
-    /// (.obj, .off, binary .stl), or to the CHE's containers as a memory-mappable .che file.
+    /// (.obj, .off, .ply, binary .stl), or to the CHE's containers as a memory-mappable .che
+    /// file. A mesh the written file would not hold as it is (an empty mesh; in STL, coordinates
+    /// beyond float or corners float cannot tell apart) is refused with exit code 1.
     Convert {
         /// A mesh file or a built-in mesh (see `topolab info --help`).
         mesh: String,
         /// The output file; its extension gives the format unless `--to` names it.
         out: PathBuf,
-        /// The output format: `obj`, `off`, `stl` (binary) or `che` (docs/che-format.md).
+        /// The output format: `obj`, `off`, `ply` (binary little-endian unless `--ascii`),
+        /// `stl` (binary) or `che` (docs/che-format.md).
         #[arg(long)]
         to: Option<String>,
         /// With `--to che`: the CHE level whose containers the file holds, 0 to 3 (default 2).
         #[arg(long)]
         level: Option<u8>,
+        /// Write PLY as ASCII instead of binary little-endian.
+        #[arg(long)]
+        ascii: bool,
     },
     /// Decimate a triangle mesh by quadric error (as OpenMesh's Decimater with ModQuadric) to
     /// `--faces N` or `--ratio R` of its faces and write it; or through `--levels 50%,10%`,
@@ -195,7 +202,7 @@ pub fn run(cli: Cli) -> u8 {
             mesh,
             structure,
             json,
-        } => commands::info::info(&mesh, &structure, json),
+        } => commands::info::info_through(&mesh, structure.as_deref(), json),
         Command::Explain {
             name,
             mesh,
@@ -259,7 +266,8 @@ pub fn run(cli: Cli) -> u8 {
             out,
             to,
             level,
-        } => commands::convert::convert(&mesh, &out, to.as_deref(), level),
+            ascii,
+        } => commands::convert::convert(&mesh, &out, to.as_deref(), level, ascii),
         Command::Decimate(args) => commands::decimate::run(&args),
         Command::Reconstruct(args) => commands::reconstruct::run(&args),
         Command::Scale(args) => {
@@ -278,12 +286,12 @@ pub fn run(cli: Cli) -> u8 {
         Ok(text) => match crate::output::print(&text) {
             Ok(()) => 0,
             Err(e) => {
-                eprintln!("topolab: {}", e.message);
+                crate::output::say(&e.message);
                 e.code
             }
         },
         Err(e) => {
-            eprintln!("topolab: {}", e.message);
+            crate::output::say(&e.message);
             e.code
         }
     }
@@ -296,7 +304,7 @@ pub fn usage_error(e: clap::Error) -> ExitCode {
     if !e.use_stderr() || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         e.exit()
     }
-    eprintln!("topolab: {}", one_line(&e.to_string()));
+    crate::output::say(&one_line(&e.to_string()));
     ExitCode::from(2)
 }
 

@@ -4,6 +4,7 @@
 pub use crate::failure::Failure;
 use crate::{limits, registry};
 use std::path::Path;
+use topolab_structures::io::echo;
 use topolab_structures::meshes::{self, MeshSize, SpecError};
 use topolab_structures::{Error, PolygonSoup};
 
@@ -30,12 +31,15 @@ pub fn input_file(path: &Path) -> Result<u64, Failure> {
 }
 
 /// Reads a mesh file for a command, refusing before reading one whose reading would exceed the
-/// available memory ([`limits::read_bytes`]). What the reader skipped (it does not change the
+/// available memory ([`limits::read_mesh_bytes`]). What the reader skipped (it does not change the
 /// mesh: an unknown OBJ statement, bytes after a binary PLY's last element) is one warning line
 /// on stderr per kind; the STL corners it welded into shared vertices, one note line.
 fn read_file(spec: &str, path: &Path) -> Result<PolygonSoup, Failure> {
     let bytes = input_file(path)?;
-    limits::admit(&format!("reading {spec}"), limits::read_bytes(bytes))?;
+    limits::admit(
+        &format!("reading {spec}"),
+        limits::read_mesh_bytes(path, bytes),
+    )?;
     let (soup, notes) = topolab_structures::io::read_with_notes(path).map_err(|e| {
         let mut failure = Failure::unreadable(spec, &e);
         failure.message += &invalid_mesh_hint(spec, &e);
@@ -43,20 +47,22 @@ fn read_file(spec: &str, path: &Path) -> Result<PolygonSoup, Failure> {
     })?;
     warn_skipped(spec, &notes.skipped);
     if notes.welded_corners > 0 {
-        eprintln!(
-            "topolab: note: {spec}: {} of {} STL corners welded to an earlier corner at exactly the same position ({} vertices)",
+        crate::output::say(&format!(
+            "note: {spec}: {} of {} STL corners welded to an earlier corner at exactly the same position ({} vertices)",
             notes.welded_corners,
             soup.num_corners(),
             soup.num_vertices()
-        );
+        ));
     }
     Ok(soup)
 }
 
-/// One warning line on stderr per kind of thing the reader skipped in `spec`.
+/// One warning line on stderr per kind of thing the reader skipped in `spec`: a few lines at
+/// most, since the readers list a bounded number of kinds (an OBJ's unknown statements past
+/// [`topolab_structures::io::LISTED_UNKNOWN_KINDS`] kinds counted together on one line).
 pub fn warn_skipped(spec: &str, skipped: &[topolab_structures::io::Skipped]) {
     for s in skipped {
-        eprintln!("topolab: warning: {spec}: {s}");
+        crate::output::say(&format!("warning: {spec}: {s}"));
     }
 }
 
@@ -88,7 +94,8 @@ fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
         SpecError::Unknown => {
             let names: Vec<&str> = meshes::canonical().iter().map(|m| m.name).collect();
             Failure::usage(format!(
-                "no file {spec:?}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
+                "no file {}, and it is not a built-in mesh ({}, or torus:N, sphere:N, grid:N, quad-grid:N, mixed:N, genus:G:N, holes:K:N, surface:G:K:N)",
+                echo::quoted(spec.as_bytes()),
                 names.join(", ")
             ))
         }
@@ -116,7 +123,11 @@ fn load_for(
     let path = Path::new(spec);
     if path.exists() {
         let soup = read_file(spec, path)?;
-        admit_work(spec, &MeshSize::of(&soup), 0, work)?;
+        // The mesh read stays alive during the work: counted with it, unless the work holds
+        // it (and its measured peak counts it).
+        let size = MeshSize::of(&soup);
+        let base = if count_soup { size.soup_bytes() } else { 0 };
+        admit_work(spec, &size, base, work)?;
         return Ok(soup);
     }
     let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
@@ -147,8 +158,8 @@ pub fn built_in_size(spec: &str) -> Option<MeshSize> {
 }
 
 /// Refuses a mesh of `size` when `base` bytes (its soup, if not yet built) and `work` on it,
-/// measured on [`limits::sample_mesh`] and scaled by corners, exceed the available memory.
-/// Meshes no larger than the sample pass unmeasured.
+/// measured on [`limits::sample_mesh`] and scaled by elements ([`limits::elements`]), exceed
+/// the available memory. Meshes no larger than the sample pass unmeasured.
 fn admit_work(
     spec: &str,
     size: &MeshSize,
@@ -156,12 +167,13 @@ fn admit_work(
     work: impl Fn(&PolygonSoup) -> u64,
 ) -> Result<(), Failure> {
     let sample = limits::sample_mesh();
-    let sample_corners = sample.num_corners() as u64;
-    if size.corners <= sample_corners {
+    let sample_elements = limits::elements(&MeshSize::of(&sample));
+    let elements = limits::elements(size);
+    if elements <= sample_elements {
         return Ok(());
     }
     let (extra, peak) = limits::peak_of(|| work(&sample));
-    let work = limits::scale(peak + extra, sample_corners, size.corners);
+    let work = limits::scale(peak + extra, sample_elements, elements);
     limits::admit(spec, base.saturating_add(work))
 }
 
@@ -211,7 +223,8 @@ pub fn unknown_structure(name: &str) -> Failure {
         return Failure::usage(format!("{name}: {why}"));
     }
     Failure::usage(format!(
-        "unknown structure {name:?}; known: {}",
+        "unknown structure {}; known: {}",
+        echo::quoted(name.as_bytes()),
         registry::NAMES.join(", ")
     ))
 }

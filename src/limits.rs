@@ -231,6 +231,15 @@ pub fn growing_text(text: &str) -> u64 {
     2 * text.len() as u64
 }
 
+/// What a command's measured work is scaled by: the mesh's vertices, faces and corners
+/// together. Per corner alone, a file of millions of faces without corners would count as
+/// nothing, yet every check keeps something per face.
+pub fn elements(size: &MeshSize) -> u64 {
+    size.vertices
+        .saturating_add(size.faces)
+        .saturating_add(size.corners)
+}
+
 /// `bytes × elements / sample`, rounded up, saturating.
 pub fn scale(bytes: u64, sample: u64, elements: u64) -> u64 {
     let scaled = (bytes as u128 * elements as u128).div_ceil(sample.max(1) as u128);
@@ -300,13 +309,24 @@ pub fn admit_report(
     )
 }
 
-/// The estimated peak of reading a mesh file of `file_bytes` bytes: the file's bytes, which the
-/// readers hold whole, plus a soup up to three times as large. A soup takes 24 bytes per vertex
-/// and 16 per triangle; a text file spends at least 8 bytes on each (`v 0 0 0`, `f 1 2 3`),
-/// a binary PLY 12 and 13: up to 3 and 2 times the file, and files as tools write them
-/// (several digits per coordinate) stay near 1.
+/// The estimated peak of reading a file of `file_bytes` bytes that is not a mesh (a collapse
+/// record): the file's bytes and what is parsed from them, up to three times as large.
 pub fn read_bytes(file_bytes: u64) -> u64 {
     file_bytes.saturating_mul(4)
+}
+
+/// The peak of reading the mesh file `path` of `file_bytes` bytes, bounded from its format and
+/// its first 64 KiB (its header): [`topolab_structures::io::read_peak_bound`], at most 5 times
+/// the file (9 for a binary PLY of one-byte coordinates). A file whose format is not known by
+/// its name counts as the largest.
+pub fn read_mesh_bytes(path: &std::path::Path, file_bytes: u64) -> u64 {
+    use std::io::Read;
+    let mut head = Vec::new();
+    let _ = std::fs::File::open(path).and_then(|f| f.take(64 << 10).read_to_end(&mut head));
+    match topolab_structures::io::format_of(path) {
+        Ok(format) => topolab_structures::io::read_peak_bound(format, &head, file_bytes),
+        Err(_) => file_bytes.saturating_mul(9),
+    }
 }
 
 #[cfg(test)]

@@ -8,11 +8,12 @@ use crate::input::Failure;
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
-use topolab_structures::io::{temporary_path, write_atomically};
+use topolab_structures::io::PlyEncoding;
+use topolab_structures::io::{create_temporary, echo, write_atomically};
 use topolab_structures::{Error, Format, PolygonSoup};
 
 fn cannot(path: &Path, why: impl std::fmt::Display) -> Failure {
-    Failure::usage(format!("cannot write {}: {why}", path.display()))
+    Failure::usage(format!("cannot write {}: {why}", echo::path(path)))
 }
 
 /// The folder a file goes in (`.` for a bare file name).
@@ -36,11 +37,13 @@ fn refuse_non_file(path: &Path) -> Result<(), Failure> {
     }
 }
 
-/// Creates and removes the temporary file a write of `path` would fill: the one sure test of
-/// "creatable and writable" (permission bits do not tell, for root or on read-only mounts).
+/// Creates and removes a temporary file such as a write of `path` would fill
+/// ([`create_temporary`]: a new random name, never an existing file or link): the one sure test
+/// of "creatable and writable" (permission bits do not tell, for root or on read-only mounts).
+/// Nothing that was there before is opened, so nothing is truncated.
 fn probe(path: &Path) -> Result<(), Failure> {
-    let tmp = temporary_path(path);
-    File::create(&tmp).map_err(|e| cannot(path, e))?;
+    let (file, tmp) = create_temporary(path).map_err(|e| cannot(path, e))?;
+    drop(file);
     let _ = std::fs::remove_file(&tmp);
     Ok(())
 }
@@ -101,38 +104,60 @@ pub fn check_folder(dir: &Path, files: &[&str]) -> Result<(), Failure> {
     })
 }
 
-/// Checks, before the work, an output mesh file: a format the lab writes (.obj, .off or .stl),
-/// then [`check_file`].
-pub fn check_mesh_out(path: &Path) -> Result<(), Failure> {
+/// Refuses (exit code 2) an output that is the input `input` (a file named on the command
+/// line, or a built-in mesh's name, which is no file): the command would replace its own
+/// source. The same file under another name (a hard or symbolic link) counts as the same.
+/// No command of the lab works in place.
+pub fn check_not_input(input: &str, out: &Path) -> Result<(), Failure> {
+    use std::os::unix::fs::MetadataExt;
+    let (Ok(a), Ok(b)) = (std::fs::metadata(input), std::fs::metadata(out)) else {
+        return Ok(());
+    };
+    if a.dev() == b.dev() && a.ino() == b.ino() {
+        return Err(Failure::usage(format!(
+            "cannot write {}: it is the input {}; write to another file (no command works in place)",
+            echo::path(out),
+            echo::path(Path::new(input))
+        )));
+    }
+    Ok(())
+}
+
+/// Checks, before the work, an output mesh file: a format the lab writes (.obj, .off, .ply or
+/// .stl), not the input `input` ([`check_not_input`]), then [`check_file`].
+pub fn check_mesh_out(path: &Path, input: &str) -> Result<(), Failure> {
     match topolab_structures::io::format_of(path) {
-        Ok(format) => check_writable(format, path)?,
+        Ok(_) => {}
         Err(e) => return Err(Failure::usage(format!("cannot write: {e}"))),
     }
+    check_not_input(input, path)?;
     check_file(path)
 }
 
-/// Refuses a format the lab does not write (PLY), naming `path`.
-pub fn check_writable(format: Format, path: &Path) -> Result<(), Failure> {
-    match format {
-        Format::Obj | Format::Off | Format::Stl => Ok(()),
-        Format::Ply => Err(Failure::usage(format!(
-            "cannot write {format} ({}); use .obj, .off or .stl",
-            path.display()
-        ))),
-    }
-}
-
 /// Writes a mesh file (by extension, atomically: [`topolab_structures::io::write`]); a failure
-/// names the file (exit code 2).
+/// names the file (exit code 2; 1 for a mesh the format cannot hold, see [`write_mesh_as`]).
 pub fn write_mesh(path: &Path, soup: &PolygonSoup) -> Result<(), Failure> {
     let format = topolab_structures::io::format_of(path).map_err(|e| cannot(path, e))?;
-    write_mesh_as(path, soup, format)
+    write_mesh_as(path, soup, format, PlyEncoding::Binary)
 }
 
-/// Writes a mesh file in `format`, whatever its extension ([`topolab_structures::io::write_as`]).
-pub fn write_mesh_as(path: &Path, soup: &PolygonSoup, format: Format) -> Result<(), Failure> {
-    topolab_structures::io::write_as(path, soup, format).map_err(|e| match e {
+/// Writes a mesh file in `format` (PLY in `ply`), whatever its extension
+/// ([`topolab_structures::io::write_encoded`]). A mesh the file would not hold as it is (empty,
+/// or, in STL, beyond `float` or with corners `float` cannot tell apart:
+/// [`topolab_structures::io::writable`]) is refused with exit code 1 and nothing is written;
+/// a file that cannot be written, exit code 2.
+pub fn write_mesh_as(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: Format,
+    ply: PlyEncoding,
+) -> Result<(), Failure> {
+    topolab_structures::io::write_encoded(path, soup, format, ply).map_err(|e| match e {
         Error::Io { source, .. } => cannot(path, source),
+        Error::NotWritable { .. } => Failure {
+            message: format!("{} not written: {e}", echo::path(path)),
+            code: 1,
+        },
         e => cannot(path, e),
     })
 }
@@ -149,7 +174,8 @@ pub fn write_file(
 pub type Fill<'a> = Box<dyn FnOnce(&mut BufWriter<File>) -> std::io::Result<()> + 'a>;
 
 /// Writes the files `files` (name, filler) into the folder `dir` (created if missing) so that
-/// either all of them are there or none: each is filled as its [`temporary_path`] first, and
+/// either all of them are there or none: each is filled as a temporary file first
+/// ([`create_temporary`]), and
 /// only when every one is complete are they renamed over their names. When a fill fails (a
 /// full disk), the temporary files are removed, and so is the folder if this call created it.
 /// A rename within one folder needs no space and does not fail on a folder it could create
@@ -175,12 +201,15 @@ pub fn write_files_together(dir: &Path, files: Vec<(String, Fill<'_>)>) -> Resul
     };
     for (name, fill) in files {
         let path = dir.join(&name);
-        let tmp = temporary_path(&path);
-        let written = File::create(&tmp).and_then(|file| {
-            let mut w = BufWriter::new(file);
-            fill(&mut w)?;
-            std::io::Write::flush(&mut w)
-        });
+        let (file, tmp) = match create_temporary(&path) {
+            Ok(created) => created,
+            Err(e) => {
+                undo(&filled);
+                return Err(cannot(&path, e));
+            }
+        };
+        let mut w = BufWriter::new(file);
+        let written = fill(&mut w).and_then(|()| std::io::Write::flush(&mut w));
         filled.push((tmp, path.clone()));
         if let Err(e) = written {
             undo(&filled);
@@ -196,13 +225,22 @@ pub fn write_files_together(dir: &Path, files: Vec<(String, Fill<'_>)>) -> Resul
     Ok(())
 }
 
-/// Writes a command's text to standard output. A reader that stops reading (`topolab ... |
+/// Writes one line to standard error, `topolab: ` first, with control characters escaped
+/// ([`echo::escape_controls`]): a message may hold a file name or a token of a file, and
+/// neither may reach the terminal raw.
+pub fn say(message: &str) {
+    eprintln!("topolab: {}", echo::escape_controls(message));
+}
+
+/// Writes a command's text to standard output, control characters but newlines and tabs
+/// escaped ([`echo::escape_controls`]). A reader that stops reading (`topolab ... |
 /// head`) closes the pipe: that ends the output without an error, as for the other Unix
 /// tools, instead of the panic of `print!`. Any other failure to write is reported on stderr
 /// and turns the exit code into 2.
 pub fn print(text: &str) -> Result<(), Failure> {
     use std::io::Write as _;
     let mut out = std::io::stdout().lock();
+    let text = echo::escape_controls(text);
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Failure {
             message: format!("cannot write to standard output: {e}"),

@@ -239,7 +239,11 @@ fn curated() -> Vec<Vec<&'static str>> {
             "@DIR/x.off",
         ],
         vec!["convert", "torus:1073741824", "@DIR/x.stl"],
-        vec!["convert", "@DIR/far.obj", "@DIR/x.ply"],
+        // A point cloud has nothing STL can hold; coordinates of 1e300 none a float can.
+        vec!["convert", "@DIR/far.obj", "@DIR/x.stl"],
+        // The input as the output (issue 52: `convert x.off x.off --to che` replaced its source).
+        vec!["convert", "@DIR/far.obj", "@DIR/far.obj"],
+        vec!["convert", "@DIR/tet.off", "@DIR/tet.off", "--to", "che"],
         // Past u32 after two levels; the input alone (17 GB) might fit: refused ungenerated.
         vec![
             "refine",
@@ -369,7 +373,7 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["repair", "@FILE", "--out", "/proc/nope.obj"],
         vec!["repair", "@FILE", "--out", "/dev/full"],
         vec!["repair", "@FILE", "--out", "@DIR/taken.obj"],
-        vec!["repair", "@FILE", "--out", "@DIR/x.ply"],
+        vec!["repair", "@FILE", "--out", "@DIR/x.dxf"],
         // A point cloud: no face to repair (dropping its unused vertices would leave nothing).
         vec!["repair", "@DIR/far.obj", "--out", "@DIR/x.obj"],
         vec!["repair", "torus:1073741824", "--out", "@DIR/x.obj"],
@@ -471,7 +475,7 @@ fn curated() -> Vec<Vec<&'static str>> {
         vec!["reconstruct", "@DIR/lod", "--out", "/dev/full"],
         vec!["reconstruct", "@DIR/lod", "--out", "/proc/nope.obj"],
         vec!["reconstruct", "@DIR/lod", "--out", "@DIR/taken.obj"],
-        vec!["reconstruct", "@DIR/lod", "--out", "@DIR/x.ply"],
+        vec!["reconstruct", "@DIR/lod", "--out", "@DIR/x.dxf"],
         vec![
             "reconstruct",
             "@DIR/lod",

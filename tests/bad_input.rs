@@ -117,6 +117,45 @@ const CORPUS: &[(&str, &str, Check)] = &[
     ("non-planar-face.obj", "ok", Finds("non-planar-face")),
     ("non-convex-face.obj", "ok", Finds("non-convex-face")),
     ("non-simple-face.obj", "ok", Finds("non-simple-face")),
+    // Issue 52's hostile cases, small.
+    ("obj-far-coordinates.obj", "ok", Clean),
+    ("obj-ulps-apart.obj", "ok", Finds("duplicate-vertices")),
+    (
+        "obj-underflows-a-float.obj",
+        "ok",
+        Finds("duplicate-vertices"),
+    ),
+    (
+        "obj-many-fans.obj",
+        "non-manifold-vertex",
+        Finds("non-manifold-vertex"),
+    ),
+    (
+        "obj-unknown-kinds.obj",
+        "ok",
+        Warns(
+            "skipped 12 times unknown OBJ statements of kinds beyond the first 8, first at line 13",
+            "",
+        ),
+    ),
+    (
+        "obj-index-one-based.obj",
+        "index-out-of-range",
+        Finds("missing-vertex"),
+    ),
+    (
+        "obj-holds-off.obj",
+        "ok",
+        Warns(
+            "skipped unknown OBJ statement \"OFF\" at line 1",
+            "empty-mesh",
+        ),
+    ),
+    (
+        "obj-zeros.obj",
+        "ok",
+        Warns("skipped unknown OBJ statement \"\\0\\0", "empty-mesh"),
+    ),
     // OFF
     ("empty.off", "truncated", Unreadable),
     ("off-no-elements.off", "ok", Finds("empty-mesh")),
@@ -145,6 +184,7 @@ const CORPUS: &[(&str, &str, Check)] = &[
         "non-finite-coordinate",
         Finds("non-finite-coordinate"),
     ),
+    ("off-nul-bytes.off", "syntax", Unreadable),
     (
         "off-two-vertex-face.off",
         "too-few-corners",
@@ -200,6 +240,12 @@ const CORPUS: &[(&str, &str, Check)] = &[
         Finds("missing-vertex"),
     ),
     ("ply-binary-negative-list-count.ply", "syntax", Unreadable),
+    ("ply-count-u64-max.ply", "implausible-header", Unreadable),
+    (
+        "ply-binary-faces-without-corners.ply",
+        "too-few-corners",
+        Finds("too-few-vertices"),
+    ),
     (
         "ply-binary-one-vertex-face.ply",
         "too-few-corners",
@@ -228,8 +274,10 @@ enum Check {
     /// It reads the file with this warning on stderr, then finds this (exit code 1), or
     /// nothing when it is empty (exit code 0).
     Warns(&'static str, &'static str),
+    /// It finds nothing: exit code 0.
+    Clean,
 }
-use Check::{Finds, Unreadable, Warns};
+use Check::{Clean, Finds, Unreadable, Warns};
 
 /// Refusals that depend on what a structure can store, not on the file being broken.
 const CAPABILITY_REFUSALS: &[&str] = &[
@@ -237,6 +285,7 @@ const CAPABILITY_REFUSALS: &[&str] = &[
     "coincident-vertices",
     "not-a-grid",
     "non-manifold-vertex",
+    "star-too-large",
 ];
 
 fn corpus(file: &str) -> PathBuf {
@@ -320,6 +369,7 @@ fn check_reports_each_problem_with_its_exit_code() {
         match expected {
             Warns(..) => unreachable!("handled above"),
             Unreadable => assert_eq!(code, 2, "{file}"),
+            Clean => assert_eq!(code, 0, "{file}: {}", String::from_utf8_lossy(&out.stderr)),
             Finds(kind) => {
                 assert_eq!(code, 1, "{file}");
                 let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
@@ -333,6 +383,32 @@ fn check_reports_each_problem_with_its_exit_code() {
                 assert_eq!(report["clean"], false);
             }
         }
+    }
+}
+
+/// The messages of issue 52's corpus files: a long token echoed short with its length, an
+/// OBJ index as the file numbers it, a count of u64::MAX as written.
+#[test]
+fn messages_are_short_and_in_the_files_numbering() {
+    for (file, expected) in [
+        ("off-nul-bytes.off", "…\" (4096 bytes)"),
+        (
+            "obj-index-one-based.obj",
+            "face 1 refers to vertex 2, but there are 1 vertices (numbered from 1",
+        ),
+        (
+            "ply-count-u64-max.ply",
+            "announces 18446744073709551615 vertices",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+            .arg("info")
+            .arg(corpus(file))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(expected), "{file}: {stderr}");
+        assert!(stderr.len() < 300, "{file}: {stderr}");
     }
 }
 

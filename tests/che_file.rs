@@ -97,9 +97,14 @@ fn convert_info_and_check_a_che_file() {
     bytes[last] ^= 0x40;
     let flipped = dir.join("flipped.che");
     std::fs::write(&flipped, &bytes).unwrap();
-    assert!(topolab(&["info", flipped.to_str().unwrap()])
-        .status
-        .success());
+    // `info` verifies before it answers: it refuses the file, naming the problem.
+    let o = topolab(&["info", flipped.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o.stderr).contains("checksum mismatch"),
+        "{}",
+        text(&o.stderr)
+    );
     let o = topolab(&["check", flipped.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
     assert!(
@@ -131,6 +136,101 @@ fn convert_info_and_check_a_che_file() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `info` on a `.che` file answers every field `info` gives for the mesh it was converted
+/// from, with the same values, at every level; and says so when `--structure` names another.
+#[test]
+fn info_on_a_che_file_answers_as_info_on_its_mesh() {
+    let dir = scratch("che-info");
+    // A torus with two holes, and separate pieces: genus, curves and components all count.
+    for mesh in ["surface:1:2:400", "holes:3:300", "torus:200"] {
+        let o = topolab(&["info", mesh, "--json"]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let expected: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        for level in ["0", "1", "2", "3"] {
+            let file = dir.join(format!("l{level}.che"));
+            let o = topolab(&["convert", mesh, file.to_str().unwrap(), "--level", level]);
+            assert!(o.status.success(), "{}", text(&o.stderr));
+            let o = topolab(&["info", file.to_str().unwrap(), "--json"]);
+            assert!(o.status.success(), "{}", text(&o.stderr));
+            let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+            for field in [
+                "vertices",
+                "unused_vertices",
+                "edges",
+                "faces",
+                "boundary_edges",
+                "boundary_curves",
+                "components",
+                "euler_characteristic",
+                "genus",
+                "non_manifold_vertices",
+                "triangles_only",
+            ] {
+                assert!(!v[field].is_null(), "{mesh} level {level}: no {field}");
+                assert_eq!(v[field], expected[field], "{mesh} level {level}: {field}");
+            }
+            assert_eq!(v["structure"], format!("che-l{level}"));
+            assert_eq!(v["verified"], true);
+        }
+    }
+    // `--structure` is the file's level whatever it says, and a note says so.
+    let file = dir.join("l2.che");
+    let o = topolab(&["info", file.to_str().unwrap(), "--structure", "openmesh"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stderr).contains("--structure openmesh ignored"),
+        "{}",
+        text(&o.stderr)
+    );
+    let o = topolab(&["info", file.to_str().unwrap(), "--structure", "che-l2"]);
+    assert!(o.stderr.is_empty(), "{}", text(&o.stderr));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A level-0 file whose triangles are all (0, 0, 0), or one repeated, fails `check` as a
+/// level-1 file of the same triangles does (issue 52: it passed, "no problems found").
+#[test]
+fn check_refuses_corrupt_triangles_at_level_0_as_at_level_1() {
+    let dir = scratch("che-level-0");
+    for level in ["0", "1"] {
+        let file = dir.join(format!("l{level}.che"));
+        let o = topolab(&[
+            "convert",
+            "torus:100",
+            file.to_str().unwrap(),
+            "--level",
+            level,
+        ]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let good = std::fs::read(&file).unwrap();
+        let header = topolab_structures::io::che_file::Header::parse(&good).unwrap();
+        let layout = topolab_structures::io::che_file::Layout::of(header).unwrap();
+        let v = layout
+            .section(topolab_structures::io::che_file::Container::V)
+            .unwrap();
+        let (start, end) = (v.offset as usize, (v.offset + 4 * v.len) as usize);
+        let mut zeros = good.clone();
+        zeros[start..end].fill(0);
+        let mut repeated = good.clone();
+        repeated.copy_within(start..start + 12, start + 12);
+        for (name, mut bytes) in [("zeros", zeros), ("repeated", repeated)] {
+            let sum = topolab_structures::io::che_file::checksum(&bytes);
+            bytes[56..64].copy_from_slice(&sum.to_le_bytes());
+            let bad = dir.join(format!("{name}-l{level}.che"));
+            std::fs::write(&bad, &bytes).unwrap();
+            let o = topolab(&["check", bad.to_str().unwrap()]);
+            assert_eq!(
+                o.status.code(),
+                Some(1),
+                "level {level}, {name}: {}",
+                text(&o.stdout)
+            );
+            assert!(!text(&o.stdout).contains("no problems found"));
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn bad_che_requests_are_refused_in_one_line_with_nothing_written() {
     let dir = scratch("che-refusals");
@@ -151,7 +251,7 @@ fn bad_che_requests_are_refused_in_one_line_with_nothing_written() {
             2,
             "--level 1",
         ),
-        (&["convert", "torus", "--to", "ply"], 2, "PLY"),
+        (&["convert", "torus", "--ascii"], 2, "--ascii"),
     ];
     for (args, code, says) in cases {
         let mut args = args.to_vec();

@@ -201,12 +201,32 @@ fn convert_round_trips_through_stl_obj_and_off() {
     ]);
     assert_eq!(code, 0, "{stdout}");
     assert!(std::fs::read_to_string(&txt).unwrap().starts_with("OFF"));
-    let ply = dir.join("torus.ply");
+    // PLY, binary and ASCII, reads back as the mesh it was written from.
+    for more in [&[][..], &["--ascii"]] {
+        let ply = dir.join("torus.ply");
+        let (code, stdout) =
+            topolab(&[&["convert", "torus:200", ply.to_str().unwrap()][..], more].concat());
+        assert_eq!(code, 0, "{stdout}");
+        let back = topolab_structures::io::read(&ply).unwrap();
+        assert_eq!(
+            back,
+            topolab_structures::meshes::from_spec("torus:200").unwrap()
+        );
+        std::fs::remove_file(&ply).unwrap();
+    }
+    // A point cloud written as STL would read back empty: refused, nothing written.
+    let stl_cloud = dir.join("cloud.stl");
+    std::fs::write(dir.join("cloud.obj"), "v 0 0 0\nv 1 0 0\n").unwrap();
     assert_eq!(
-        topolab(&["convert", "torus:200", ply.to_str().unwrap()]).0,
-        2
+        topolab(&[
+            "convert",
+            dir.join("cloud.obj").to_str().unwrap(),
+            stl_cloud.to_str().unwrap()
+        ])
+        .0,
+        1
     );
-    assert!(!ply.exists(), "a refused write leaves no file");
+    assert!(!stl_cloud.exists(), "a refused write leaves no file");
     assert_eq!(
         topolab(&["convert", "torus:200", txt.to_str().unwrap(), "--to", "dxf"]).0,
         2

@@ -42,6 +42,10 @@ const DELIBERATE: &[(&str, &str)] = &[
         "obj-index-overflows-i64.obj",
         "the lab's raw reader keeps the index for `check` to report; tobj refuses the file",
     ),
+    (
+        "obj-index-one-based.obj",
+        "the lab's raw reader keeps the index for `check` to report; tobj refuses the file",
+    ),
 ];
 
 /// The OBJ files of `dir`, sorted (none when it does not exist).

@@ -26,7 +26,8 @@ fn refine_writes_four_to_the_level_times_the_faces() {
 #[test]
 fn bad_schemes_polygons_orders_and_formats_are_refused() {
     let out = std::env::temp_dir().join("never-written.obj");
-    let ply = std::env::temp_dir().join("never-written.ply");
+    // A format the lab does not write (PLY it does).
+    let ply = std::env::temp_dir().join("never-written.dxf");
     for stale in [&out, &ply] {
         let _ = std::fs::remove_file(stale);
     }

@@ -277,7 +277,11 @@ pub(crate) fn admit(soup: &PolygonSoup) -> Result<BuildFacts<'_>> {
 /// closed fan plus another one at the same vertex (two cones tip to tip, one closed) is
 /// refused by their `add_face` ("complex vertex"). Refusing it here, before the library,
 /// makes the answer independent of the face order.
+///
+/// Before that, a vertex of so many faces that these libraries would take time quadratic in
+/// them is refused ([`Connectivity::check_star_sizes`], [`Error::StarTooLarge`]).
 pub(crate) fn check_open_fans(soup: &PolygonSoup, connectivity: &Connectivity) -> Result<()> {
+    connectivity.check_star_sizes(soup)?;
     let fans = connectivity.vertex_fans(soup);
     if fans.iter().all(|&n| n <= 1) {
         return Ok(());

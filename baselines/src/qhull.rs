@@ -200,7 +200,12 @@ pub fn convex_hull(points: &[DVec3]) -> Result<QhullHull, QhullError> {
     }
     for (vertex, p) in points.iter().enumerate() {
         if let Some(&value) = p.to_array().iter().find(|c| !c.is_finite()) {
-            return Err(topolab_structures::Error::NonFiniteCoordinate { vertex, value }.into());
+            return Err(topolab_structures::Error::NonFiniteCoordinate {
+                vertex,
+                value,
+                numbering: topolab_structures::Numbering::FromZero,
+            }
+            .into());
         }
     }
     let mut vertices = vec![0u32; points.len()];

@@ -3,7 +3,8 @@
 //! (each adapter's `cost()` declares which it uses).
 
 use topolab_structures::{
-    BoundaryCurves, BuildFacts, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, Result,
+    BoundaryCurves, BuildFacts, Connectivity, EdgeId, Error, FaceId, MeshTopology, PolygonSoup,
+    Result,
 };
 
 /// The `MeshTopology` methods an adapter answers by composition alike: `boundary_curves`,
@@ -91,6 +92,30 @@ pub fn admit<'a>(
     structure: &'static str,
     triangles_only: bool,
 ) -> Result<BuildFacts<'a>> {
+    let connectivity = admitted(soup, structure, triangles_only)?;
+    BuildFacts::new(soup, connectivity.num_edges())
+}
+
+/// [`admit`], and then a refusal of a vertex of so many faces that a construction searching
+/// the vertex's half-edges for each face it adds there takes time quadratic in them
+/// ([`Connectivity::check_star_sizes`], [`Error::StarTooLarge`]): lox's `add_face` does, for
+/// a vertex whose faces come in an order that leaves several pieces of its fan open.
+pub fn admit_small_stars<'a>(
+    soup: &'a PolygonSoup,
+    structure: &'static str,
+    triangles_only: bool,
+) -> Result<BuildFacts<'a>> {
+    let connectivity = admitted(soup, structure, triangles_only)?;
+    connectivity.check_star_sizes(soup)?;
+    BuildFacts::new(soup, connectivity.num_edges())
+}
+
+/// The checks of [`admit`]; the soup's connectivity once they pass.
+fn admitted(
+    soup: &PolygonSoup,
+    structure: &'static str,
+    triangles_only: bool,
+) -> Result<Connectivity> {
     soup.check()?;
     if triangles_only {
         if let Some((face, corners)) = soup.first_non_triangle() {
@@ -101,8 +126,7 @@ pub fn admit<'a>(
             });
         }
     }
-    let connectivity = soup.manifold_connectivity()?;
-    BuildFacts::new(soup, connectivity.num_edges())
+    soup.manifold_connectivity()
 }
 
 /// Runs a crate's construction, `build`, so that a panic inside the crate is an error, never a

@@ -63,7 +63,7 @@ struct Build;
 
 impl SeparateConstruction<LoxDirectedEdge> for Build {
     fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
-        compose::admit(soup, NAME, true)
+        compose::admit_small_stars(soup, NAME, true)
     }
 
     /// As lox's documentation builds a mesh: reserve, `add_vertex` per vertex,

@@ -58,7 +58,7 @@ struct Build;
 
 impl SeparateConstruction<LoxHalfEdge> for Build {
     fn admit<'a>(&self, soup: &'a PolygonSoup) -> Result<BuildFacts<'a>> {
-        compose::admit(soup, NAME, false)
+        compose::admit_small_stars(soup, NAME, false)
     }
 
     /// As lox's documentation builds a mesh: reserve, `add_vertex` per vertex, `add_face`

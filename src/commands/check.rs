@@ -8,11 +8,14 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use topolab_structures::che::CheFile;
 use topolab_structures::checks::{self, Options, Report};
+use topolab_structures::io::echo;
 use topolab_structures::io::RawSoup;
+use topolab_structures::meshes::MeshSize;
 use topolab_structures::summary::shown;
+use topolab_structures::PolygonSoup;
 
-/// Findings of one kind printed in the text report before "... and N more".
-const SHOWN_PER_KIND: usize = 10;
+/// Components listed one by one in the text report (JSON lists them all).
+const LISTED_COMPONENTS: usize = 10;
 
 /// Arguments of `topolab check`.
 #[derive(clap::Args, Debug)]
@@ -44,34 +47,74 @@ fn tolerance(text: &str) -> Result<f64, String> {
 }
 
 /// Reads the file as written, refusing first what is not a regular file, or what would not fit
-/// in memory: reading it ([`limits::read_bytes`]) and the checks, measured on
-/// [`limits::sample_mesh`] and scaled by corners.
+/// in memory: reading it ([`limits::read_mesh_bytes`]), then the mesh and the checks on it,
+/// measured on two samples and scaled by elements ([`limits::elements`]): the sample mesh of
+/// [`limits::sample_mesh`] (one component, each vertex shared) and as many separate triangles
+/// (a component, three vertices and a grid cell of their own each), whose bytes per element
+/// are the larger of the two.
 fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
     let name = args.file.display().to_string();
     let bytes = input_file(&args.file)?;
-    limits::admit(&format!("reading {name}"), limits::read_bytes(bytes))?;
+    limits::admit(
+        &format!("reading {name}"),
+        limits::read_mesh_bytes(&args.file, bytes),
+    )?;
     let raw = topolab_structures::io::read_raw(&args.file).map_err(|e| Failure {
         message: format!("cannot read {name}: {e}"),
         code: 2,
     })?;
     crate::input::warn_skipped(&name, &raw.skipped);
-    let sample = limits::sample_mesh();
-    let corners = raw.soup.num_corners() as u64;
-    let sample_corners = sample.num_corners() as u64;
-    if corners > sample_corners {
-        let sample = RawSoup {
-            soup: sample,
-            ..RawSoup::default()
-        };
-        let ((), peak) = limits::peak_of(|| {
-            checks::check(&sample, options);
-        });
-        limits::admit(
-            &format!("checking {name}"),
-            limits::scale(peak, sample_corners, corners),
-        )?;
+    let elements = limits::elements(&MeshSize::of(&raw.soup));
+    let samples = [limits::sample_mesh(), separate_triangles(4050)];
+    let sample_elements = |s: &PolygonSoup| limits::elements(&MeshSize::of(s));
+    if elements > samples.iter().map(sample_elements).min().unwrap_or(0) {
+        let work = samples
+            .into_iter()
+            .map(|soup| {
+                let n = sample_elements(&soup);
+                let sample = RawSoup {
+                    soup,
+                    ..RawSoup::default()
+                };
+                let ((), peak) = limits::peak_of(|| {
+                    checks::check(&sample, options);
+                });
+                limits::scale(peak, n, elements)
+            })
+            .max()
+            .unwrap_or(0);
+        // The mesh stays alive during the checks: counted with them.
+        let soup = MeshSize::of(&raw.soup).soup_bytes();
+        limits::admit(&format!("checking {name}"), soup.saturating_add(work))?;
     }
     Ok(raw)
+}
+
+/// `n` separate triangles, a unit apart: the sample of the checks' costs per component.
+fn separate_triangles(n: u32) -> PolygonSoup {
+    let positions = (0..3 * n)
+        .map(|i| {
+            glam::DVec3::new(
+                (i / 3) as f64,
+                (i % 3 == 1) as u8 as f64,
+                (i % 3 == 2) as u8 as f64,
+            )
+        })
+        .collect();
+    let faces: Vec<[u32; 3]> = (0..n).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
+/// The report on `args.file` (a mesh file, not a `.che` file), read and checked after the
+/// refusals of what is not a file or would not fit in memory: what `topolab check` prints.
+pub fn report(args: &CheckArgs) -> Result<Report, Failure> {
+    let options = Options {
+        tolerance: args.tolerance,
+        planarity_tolerance: args.planarity_tolerance,
+        ..Options::default()
+    };
+    let raw = read(args, &options)?;
+    Ok(checks::check(&raw, &options))
 }
 
 /// Runs the check, prints the report; returns the exit code.
@@ -79,18 +122,13 @@ pub fn run(args: CheckArgs) -> u8 {
     if is_che_file(&args.file) {
         return run_che(&args);
     }
-    let options = Options {
-        tolerance: args.tolerance,
-        planarity_tolerance: args.planarity_tolerance,
-    };
-    let raw = match read(&args, &options) {
-        Ok(raw) => raw,
+    let report = match report(&args) {
+        Ok(report) => report,
         Err(e) => {
-            eprintln!("topolab: {}", e.message);
+            crate::output::say(&e.message);
             return e.code;
         }
     };
-    let report = checks::check(&raw, &options);
     let name = args.file.display().to_string();
     let printed = if args.json {
         let mut v = serde_json::to_value(&report).expect("serialisable");
@@ -102,14 +140,18 @@ pub fn run(args: CheckArgs) -> u8 {
         crate::output::print(&text(&name, &report))
     };
     if let Err(e) = printed {
-        eprintln!("topolab: {}", e.message);
+        crate::output::say(&e.message);
         return e.code;
     }
     if report.is_clean() {
         0
     } else {
         // The findings are on stdout; the reason for exit code 1 goes with the other refusals.
-        eprintln!("topolab: {name}: {} problems found", report.findings.len());
+        crate::output::say(&format!(
+            "{}: {} problems found",
+            echo::path(&args.file),
+            report.total()
+        ));
         1
     }
 }
@@ -122,17 +164,29 @@ fn text(name: &str, report: &Report) -> String {
         let _ = writeln!(out, "no problems found");
     }
     for kind in checks::FindingKind::ALL {
-        let of_kind: Vec<_> = report.findings.iter().filter(|f| f.kind == kind).collect();
-        if of_kind.is_empty() {
+        let count = report.count(kind);
+        if count == 0 {
             continue;
         }
-        let _ = writeln!(out, "{} ({}):", kind.name(), of_kind.len());
-        for f in of_kind.iter().take(SHOWN_PER_KIND) {
+        let _ = writeln!(out, "{} ({count}):", kind.name());
+        let kept = report.findings.iter().filter(|f| f.kind == kind);
+        let mut listed = 0;
+        for f in kept {
             let _ = writeln!(out, "  {}", f.message);
+            listed += 1;
         }
-        if of_kind.len() > SHOWN_PER_KIND {
-            let _ = writeln!(out, "  ... and {} more", of_kind.len() - SHOWN_PER_KIND);
+        if count > listed {
+            let _ = writeln!(out, "  ... and {} more", count - listed);
         }
+    }
+    let cut = report.summary.near_duplicates_not_exhaustive;
+    if cut > 0 {
+        let _ = writeln!(
+            out,
+            "note: {cut} vertices lie among more than {} distinct positions within twice the tolerance of each other; each was compared with {} of them, so near duplicates among them may be missed",
+            checks::NEAR_DUPLICATES_COMPARED,
+            checks::NEAR_DUPLICATES_COMPARED
+        );
     }
     let s = &report.summary;
     let _ = writeln!(out, "summary:");
@@ -152,7 +206,7 @@ fn text(name: &str, report: &Report) -> String {
         s.euler_characteristic,
         s.components.len()
     );
-    for (i, c) in s.components.iter().enumerate() {
+    for (i, c) in s.components.iter().enumerate().take(LISTED_COMPONENTS) {
         let genus = c.genus.map_or("undefined".to_string(), |g| g.to_string());
         let _ = writeln!(
             out,
@@ -165,6 +219,13 @@ fn text(name: &str, report: &Report) -> String {
             c.euler_characteristic,
             if c.manifold { "manifold" } else { "non-manifold" },
             if c.orientable { "orientable" } else { "non-orientable" },
+        );
+    }
+    if s.components.len() > LISTED_COMPONENTS {
+        let _ = writeln!(
+            out,
+            "  ... and {} more components (`--json` lists them all)",
+            s.components.len() - LISTED_COMPONENTS
         );
     }
     out
@@ -181,7 +242,7 @@ fn run_che(args: &CheckArgs) -> u8 {
         Ok(file) => file,
         Err(e) => {
             // The error names the file.
-            eprintln!("topolab: {e}");
+            crate::output::say(&e.to_string());
             return 2;
         }
     };
@@ -231,13 +292,13 @@ fn run_che(args: &CheckArgs) -> u8 {
         crate::output::print(&out)
     };
     if let Err(e) = printed {
-        eprintln!("topolab: {}", e.message);
+        crate::output::say(&e.message);
         return e.code;
     }
     match checked {
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("topolab: {e}");
+            crate::output::say(&e.to_string());
             1
         }
     }

@@ -1,16 +1,19 @@
-//! `topolab convert IN OUT [--to FORMAT] [--level N]`: a mesh from any format the lab reads
-//! (OBJ, OFF, PLY, STL, or a built-in mesh) to one it writes (OBJ, OFF, binary STL), the
-//! format taken from OUT's extension unless `--to` names it; or, with `--to che` (or a `.che`
-//! OUT), the containers of the CHE of level N (default 2) as a memory-mappable file
-//! (docs/che-format.md). Vertex i and face j stay vertex i and face j
-//! (STL, which stores triangles only, receives a face of more than three corners as a fan of
-//! triangles; reading STL welds corners at exactly the same position).
+//! `topolab convert IN OUT [--to FORMAT] [--level N] [--ascii]`: a mesh from any format the lab
+//! reads (OBJ, OFF, PLY, STL, or a built-in mesh) to one it writes (OBJ, OFF, PLY, binary STL),
+//! the format taken from OUT's extension unless `--to` names it (PLY binary little-endian,
+//! ASCII with `--ascii`); or, with `--to che` (or a `.che` OUT), the containers of the CHE of
+//! level N (default 2) as a memory-mappable file (docs/che-format.md). Vertex i and face j stay
+//! vertex i and face j (STL, which stores triangles only, receives a face of more than three
+//! corners as a fan of triangles; reading STL welds corners at exactly the same position).
+//! What the lab's readers would not read back as the mesh (an empty mesh; in STL, coordinates
+//! beyond `float` or corners `float` cannot tell apart) is refused with exit code 1, and
+//! nothing is written; so is an output that is the input.
 
 use crate::input::{invalid_mesh_hint, load_mesh, load_mesh_consumed, refuse_empty, Failure};
-use crate::output::{check_file, check_writable, write_mesh_as};
+use crate::output::{check_file, check_not_input, write_mesh_as};
 use std::path::Path;
 use std::time::Instant;
-use topolab_structures::io::che_file;
+use topolab_structures::io::{che_file, PlyEncoding};
 use topolab_structures::{Error, Format};
 
 /// The formats `--to` names, by their extension.
@@ -48,7 +51,8 @@ fn target(out: &Path, to: Option<&str>) -> Result<Target, Failure> {
             .map(|&(_, f)| Target::Mesh(f))
             .ok_or_else(|| {
                 Failure::usage(format!(
-                    "--to {name:?}: not a format; the lab writes obj, off, stl and che"
+                    "--to {}: not a format; the lab writes obj, off, ply, stl and che",
+                    topolab_structures::io::echo::quoted(name.as_bytes())
                 ))
             });
     }
@@ -61,14 +65,21 @@ fn target(out: &Path, to: Option<&str>) -> Result<Target, Failure> {
 }
 
 /// Converts `spec` to `out` (in `to`, a format name, or by `out`'s extension); `level` is the
-/// CHE level of a `.che` output.
+/// CHE level of a `.che` output; `ascii` asks for ASCII PLY (binary by default).
 pub fn convert(
     spec: &str,
     out: &Path,
     to: Option<&str>,
     level: Option<u8>,
+    ascii: bool,
 ) -> Result<String, Failure> {
-    let format = match target(out, to)? {
+    let target = target(out, to)?;
+    if ascii && target != Target::Mesh(Format::Ply) {
+        return Err(Failure::usage(
+            "--ascii: only a PLY output has an ASCII encoding the lab writes".into(),
+        ));
+    }
+    let format = match target {
         Target::Che => return convert_to_che(spec, out, level.unwrap_or(DEFAULT_LEVEL)),
         Target::Mesh(format) => format,
     };
@@ -77,11 +88,17 @@ pub fn convert(
             "--level {level}: a CHE level applies to a .che output (--to che) only"
         )));
     }
-    check_writable(format, out)?;
+    check_not_input(spec, out)?;
     check_file(out)?;
     let started = Instant::now();
     let soup = load_mesh(spec, |_| 0)?;
-    write_mesh_as(out, &soup, format)?;
+    refuse_empty(spec, &soup)?;
+    let encoding = if ascii {
+        PlyEncoding::Ascii
+    } else {
+        PlyEncoding::Binary
+    };
+    write_mesh_as(out, &soup, format, encoding)?;
     Ok(format!(
         "{spec}: {} vertices, {} faces, written to {} as {format} ({:.2} s)\n",
         soup.num_vertices(),
@@ -100,6 +117,7 @@ fn convert_to_che(spec: &str, out: &Path, level: u8) -> Result<String, Failure> 
             "--level {level}: the CHE levels are 0, 1, 2 and 3"
         )));
     }
+    check_not_input(spec, out)?;
     check_file(out)?;
     let started = Instant::now();
     // The memory of the work: the level built from the mesh it consumes (the file is

@@ -193,7 +193,7 @@ pub fn run(args: &DecimateArgs) -> Result<String, Failure> {
             let names: Vec<&str> = names.iter().map(String::as_str).collect();
             check_folder(&args.out, &names)?;
         }
-        None => check_mesh_out(&args.out)?,
+        None => check_mesh_out(&args.out, &args.mesh)?,
     }
     let spec = args.mesh.as_str();
     // The work measured on the sample mesh (and scaled by corners): the structure, its

@@ -85,7 +85,7 @@ pub fn hull(args: &HullArgs) -> Result<String, Failure> {
     let algorithm =
         Algorithm::from_name(&args.algo, args.seed).map_err(|e| Failure::usage(e.to_string()))?;
     if let Some(out) = &args.out {
-        check_mesh_out(out)?;
+        check_mesh_out(out, args.file.as_deref().unwrap_or(""))?;
     }
     let (points, source) = match (&args.file, args.random) {
         (_, Some(n)) => {

@@ -13,6 +13,7 @@ pub mod explain_edit;
 pub mod explain_trace;
 pub mod hull;
 pub mod info;
+mod info_che;
 pub mod list;
 pub mod reconstruct;
 pub mod refine;

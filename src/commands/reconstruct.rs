@@ -71,7 +71,9 @@ fn read_record(dir: &Path) -> Result<Record, Failure> {
 /// Runs `topolab reconstruct`.
 pub fn run(args: &ReconstructArgs) -> Result<String, Failure> {
     check_structure(&args.structure)?;
-    check_mesh_out(&args.out)?;
+    // The folder's coarse mesh is an input too.
+    let coarse = args.dir.join(files::COARSE);
+    check_mesh_out(&args.out, &coarse.to_string_lossy())?;
     match std::fs::metadata(&args.dir) {
         Err(e) => return Err(unreadable(&args.dir, e)),
         Ok(m) if !m.is_dir() => {

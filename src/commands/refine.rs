@@ -135,19 +135,21 @@ pub fn refine(
     let scheme = Scheme::from_name(scheme).ok_or_else(|| {
         let names: Vec<&str> = Scheme::ALL.iter().map(|s| s.name()).collect();
         Failure::usage(format!(
-            "unknown scheme {scheme:?}; known: {}",
+            "unknown scheme {}; known: {}",
+            topolab_structures::io::echo::quoted(scheme.as_bytes()),
             names.join(", ")
         ))
     })?;
     let ordering = Ordering::from_name(order).ok_or_else(|| {
         let names: Vec<String> = Ordering::ALL.iter().map(|o| o.name()).collect();
         Failure::usage(format!(
-            "unknown order {order:?}; known: {}, random:SEED",
+            "unknown order {}; known: {}, random:SEED",
+            topolab_structures::io::echo::quoted(order.as_bytes()),
             names.join(", ")
         ))
     })?;
     // Refuse an unwritable output before the (long) refinement, not after.
-    check_mesh_out(out)?;
+    check_mesh_out(out, spec)?;
     // A built-in mesh's size is known before it is generated: too many levels of a large one
     // are refused without generating it.
     if let Some(size) = built_in_size(spec) {

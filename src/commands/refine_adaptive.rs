@@ -103,7 +103,7 @@ pub fn adaptive(
             editable.join(", ")
         )));
     }
-    check_mesh_out(out)?;
+    check_mesh_out(out, spec)?;
     registry::visit_editable(structure, Adaptive { spec, request, out })
         .expect("checked above: an editable structure")
 }

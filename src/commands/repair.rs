@@ -68,20 +68,20 @@ pub fn run(args: RepairArgs) -> u8 {
     match repair_file(&args) {
         Ok((text, remaining)) => {
             if let Err(e) = crate::output::print(&text) {
-                eprintln!("topolab: {}", e.message);
+                crate::output::say(&e.message);
                 return e.code;
             }
             if remaining == 0 {
                 return 0;
             }
-            eprintln!(
-                "topolab: {}: {remaining} problems remain (see above)",
+            crate::output::say(&format!(
+                "{}: {remaining} problems remain (see above)",
                 args.out.display()
-            );
+            ));
             1
         }
         Err(e) => {
-            eprintln!("topolab: {}", e.message);
+            crate::output::say(&e.message);
             e.code
         }
     }
@@ -95,7 +95,7 @@ pub fn repair_file(args: &RepairArgs) -> Result<(String, usize), Failure> {
         .filter(|s| !args.skip.contains(s))
         .collect();
     // An output that cannot be written is refused before the input is read.
-    check_mesh_out(&args.out)?;
+    check_mesh_out(&args.out, &args.file)?;
     let soup = load_mesh(&args.file, |s| work(s, &steps))?;
     refuse_empty(&args.file, &soup)?;
     if soup.num_faces() == 0 {
@@ -140,7 +140,7 @@ pub fn repair_file(args: &RepairArgs) -> Result<(String, usize), Failure> {
         );
     }
     let report = check_output(&out);
-    let count = |k: FindingKind| report.findings.iter().filter(|f| f.kind == k).count();
+    let count = |k: FindingKind| report.count(k);
     let remaining: Vec<String> = TOPOLOGICAL
         .iter()
         .map(|&k| (k, count(k)))
@@ -159,11 +159,11 @@ pub fn repair_file(args: &RepairArgs) -> Result<(String, usize), Failure> {
             remaining.join(", ")
         );
     }
-    let other = report
-        .findings
-        .iter()
-        .filter(|f| !TOPOLOGICAL.contains(&f.kind) && f.kind != FindingKind::DuplicateVertices)
-        .count();
+    let other: usize = FindingKind::ALL
+        .into_iter()
+        .filter(|k| !TOPOLOGICAL.contains(k) && *k != FindingKind::DuplicateVertices)
+        .map(count)
+        .sum();
     if other > 0 {
         let _ = writeln!(
             text,

@@ -88,14 +88,15 @@ pub fn subdivide(spec: &str, scheme: &str, levels: usize, out: &Path) -> Result<
         .ok_or_else(|| {
             let names: Vec<&str> = Scheme::ALL.iter().map(|s| s.name()).collect();
             Failure::usage(format!(
-                "unknown scheme {scheme:?}; known: {}",
+                "unknown scheme {}; known: {}",
+                topolab_structures::io::echo::quoted(scheme.as_bytes()),
                 names.join(", ")
             ))
         })?;
     if scheme != Scheme::Sqrt3 {
         return super::refine::refine(spec, levels, scheme.name(), "input", out);
     }
-    check_mesh_out(out)?;
+    check_mesh_out(out, spec)?;
     let what = |faces: u64| format!("--levels {levels} of √3 of {spec} ({faces} faces)");
     if let Some(size) = built_in_size(spec) {
         admit_sqrt3(&what(size.faces), sqrt3_counts(size.faces, levels))?;

@@ -72,7 +72,7 @@ pub use glam;
 pub use self::core::access::{Access, Container, Read, Step, Unit};
 pub use self::core::attributes::{MeshAttributes, Plane};
 pub use self::core::edit::{not_offered, refuse, Deletion, EditOp, MeshEdit, Offers, Refusal};
-pub use self::core::error::{Error, Format, Location, Result};
+pub use self::core::error::{Error, Format, Location, Numbering, Result};
 pub use self::core::family::Family;
 pub use self::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use self::core::soup::{Connectivity, PolygonSoup};

@@ -316,6 +316,59 @@ fn check_refuses_a_checksum_mismatch_and_ids_out_of_range() {
     );
 }
 
+/// `V[]` corrupted the ways issue 52 found a level-0 file passing the check: every triangle
+/// (0, 0, 0), and one triangle repeating another. At every level the check refuses them, as
+/// building the level from those triangles refuses them, and a level-0 file (no `O[]` to
+/// contradict `V[]`) as a level-1 file.
+#[test]
+fn corrupt_triangles_fail_the_check_at_every_level() {
+    let soup = meshes::torus(6, 4);
+    let levels = [
+        Containers::level0(&topolab_structures::CheL0::from_soup(&soup).unwrap()).to_bytes(),
+        Containers::level1(&topolab_structures::CheL1::from_soup(&soup).unwrap()).to_bytes(),
+        Containers::level2(&CheL2::from_soup(&soup).unwrap()).to_bytes(),
+        Containers::level3(&topolab_structures::CheL3::from_soup(&soup).unwrap()).to_bytes(),
+    ];
+    for (level, good) in levels.into_iter().enumerate() {
+        let good = good.unwrap();
+        let header = Header::parse(&good).unwrap();
+        let layout = topolab_structures::io::che_file::Layout::of(header).unwrap();
+        let v = layout.section(Container::V).unwrap();
+        let v_bytes = v.offset as usize..(v.offset + 4 * v.len) as usize;
+        let path = scratch(&format!("corrupt-{level}.che"));
+        std::fs::write(&path, &good).unwrap();
+        CheFile::open(&path).unwrap().check().unwrap();
+        // Every triangle (0, 0, 0).
+        let mut zeros = good.clone();
+        zeros[v_bytes.clone()].fill(0);
+        // Triangle 1 a copy of triangle 0.
+        let mut repeated = good.clone();
+        let t0 = v_bytes.start..v_bytes.start + 12;
+        repeated.copy_within(t0, v_bytes.start + 12);
+        for (name, mut bytes, kinds) in [
+            ("zeros", zeros, &["repeated-vertex"][..]),
+            (
+                "repeated",
+                repeated,
+                &[
+                    "inconsistent-orientation",
+                    "non-manifold-edge",
+                    "repeated-vertex",
+                ][..],
+            ),
+        ] {
+            reseal(&mut bytes);
+            std::fs::write(&path, &bytes).unwrap();
+            let e = CheFile::open(&path).unwrap().check().unwrap_err();
+            assert!(
+                kinds.contains(&e.kind()),
+                "level {level}, {name}: {} ({e})",
+                e.kind()
+            );
+        }
+    }
+}
+
 /// Opens `bytes` and, if it opens, checks it; anything that passes must be a valid mesh whose
 /// every relation answers. Never a panic.
 fn open_check_and_query(path: &Path, bytes: &[u8]) -> bool {

@@ -169,3 +169,40 @@ write("stl-ascii-truncated.stl", stl_ascii([STL_TRIANGLE])[:-30])
 write("stl-ascii-four-vertices.stl",
       stl_ascii([STL_TRIANGLE]).replace("endloop", "vertex 1 1 0\nendloop", 1))
 write("stl-degenerate-facet.stl", stl_binary([STL_TRIANGLE, [(0, 0, 0), (1, 0, 0), (0, 0, 0)]]))
+
+# Issue 52's hostile cases, small: each once made a reader or a check slow, large or wrong.
+# Separate triangles with coordinates of 1e10 and more (the duplicate search's cells saturated).
+write("obj-far-coordinates.obj",
+      obj([(1e10 + 1e5 * t + 1000 * (k == 1), 2e10 + 1000 * (k == 2), 3e10)
+           for t in range(10) for k in range(3)],
+          [(i, i + 1, i + 2) for i in range(0, 30, 3)]))
+# Distinct vertices a few ulps apart: near duplicates, all within the tolerance.
+ULPS = [1.0]
+for _ in range(11):
+    ULPS.append(math.nextafter(ULPS[-1], 2.0))
+write("obj-ulps-apart.obj",
+      obj([(x, (i % 3) * 1.0, (i % 2) * 1.0) for i, x in enumerate(ULPS)],
+          [(i, i + 1, i + 2) for i in range(0, 12, 3)]))
+# A grid 1e-50 across: distinct doubles, one float (STL cannot hold it).
+write("obj-underflows-a-float.obj",
+      obj([(i * 1e-50, j * 1e-50, 0) for i in range(3) for j in range(3)],
+          [(0, 1, 3), (1, 4, 3), (1, 2, 4), (2, 5, 4), (3, 4, 6), (4, 7, 6), (4, 5, 7), (5, 8, 7)]))
+# 200 triangles around vertex 1, each a fan of its own.
+write("obj-many-fans.obj",
+      obj([(0, 0, 0)] + [(1 + i, k, 0) for i in range(200) for k in (1, 2)],
+          [(0, 2 * i + 1, 2 * i + 2) for i in range(200)]))
+# Distinct unknown statement kinds: listed up to 8, the others counted.
+write("obj-unknown-kinds.obj", TRIANGLE + "f 1 2 3\n" + "".join(f"kind{i} 1\n" for i in range(20)))
+# An index past the vertices, to be reported as the file numbers it (from 1).
+write("obj-index-one-based.obj", "v 0 0 0\nf 1 2 1\n")
+# Not OBJ at all: an OFF file and a file of zeros, named .obj (an empty mesh).
+write("obj-holds-off.obj", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+write("obj-zeros.obj", bytes(4096))
+# One long token: echoed 60 characters and its length.
+write("off-nul-bytes.off", bytes(4096))
+# A count of u64::MAX, reported as written.
+write("ply-count-u64-max.ply",
+      PLY_ASCII_HEAD.replace("element vertex 3", "element vertex 18446744073709551615")
+      + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+# Faces without corners: each a finding, counted, a few kept.
+write("ply-binary-faces-without-corners.ply", ply_binary("<", [], [()] * 1000))

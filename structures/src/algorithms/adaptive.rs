@@ -46,7 +46,7 @@
 //! to split.
 
 use crate::core::edit::MeshEdit;
-use crate::core::error::{Error, Result};
+use crate::core::error::{Error, Numbering, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
@@ -254,7 +254,11 @@ fn admit<M: MeshTopology + MeshEdit>(m: &M) -> Result<()> {
         }
         let p = m.position(vertex);
         if let Some(&value) = p.to_array().iter().find(|c| !c.is_finite()) {
-            return Err(Error::NonFiniteCoordinate { vertex: v, value });
+            return Err(Error::NonFiniteCoordinate {
+                vertex: v,
+                value,
+                numbering: Numbering::FromZero,
+            });
         }
     }
     Ok(())

@@ -253,37 +253,26 @@ impl Summary {
     }
 }
 
-/// Computes the [`Summary`] through `m`'s relations (R02, R20, R22 and the boundary curves).
+/// Computes the [`Summary`] through `m`'s relations (R02, R20 and the boundary curves).
+/// Components are the faces joined through shared vertices, found with one pass of R02 over
+/// the vertices (each vertex's faces joined to its first), so that a vertex of valence k costs
+/// O(k) once: a flood fill that read the faces of every vertex of every face cost O(k²) at a
+/// vertex of valence k (seconds for a fan of 50,000 triangles around one vertex).
 pub fn summarize<M: MeshTopology>(m: &M) -> Summary {
     let (nv, nf) = (m.num_vertices(), m.num_faces());
     let mut unused = 0;
+    let mut joined = UnionFind::new(nf);
     for v in 0..nv {
-        let mut any = false;
-        m.vertex_faces(VertexId::new(v), |_| any = true);
-        unused += !any as usize;
+        let mut first = None;
+        m.vertex_faces(VertexId::new(v), |f| match first {
+            None => first = Some(f.0),
+            Some(g) => {
+                joined.union(f.0, g, false);
+            }
+        });
+        unused += first.is_none() as usize;
     }
-    // Components: flood fill over faces through R22, then merge those joined only at a vertex (R02).
-    let mut comp = vec![u32::MAX; nf];
-    let mut components = 0u32;
-    let mut stack = Vec::new();
-    for start in 0..nf {
-        if comp[start] != u32::MAX {
-            continue;
-        }
-        comp[start] = components;
-        stack.push(start);
-        while let Some(f) = stack.pop() {
-            let mut push = |g: FaceId| {
-                if comp[g.index()] == u32::MAX {
-                    comp[g.index()] = components;
-                    stack.push(g.index());
-                }
-            };
-            m.face_faces(FaceId::new(f), &mut push);
-            m.face_vertices(FaceId::new(f), |v| m.vertex_faces(v, &mut push));
-        }
-        components += 1;
-    }
+    let components = (0..nf as u32).filter(|&f| joined.find(f).0 == f).count();
     let mut curves = BoundaryCurves::default();
     m.boundary_curves(&mut curves);
     let mut triangles_only = nf > 0;
@@ -301,7 +290,7 @@ pub fn summarize<M: MeshTopology>(m: &M) -> Summary {
             nf,
             m.num_boundary_edges(),
             curves.len(),
-            components as usize,
+            components,
         ],
         triangles_only,
         &manifold_facts(m),

@@ -48,6 +48,38 @@ impl std::fmt::Display for Location {
     }
 }
 
+/// How the ids in an error are numbered: from 0 as the lab numbers elements, or from 1 as an
+/// OBJ file numbers its vertices (and, by the order of its `f` statements, its faces), so that
+/// a message about a file names its elements as the file does.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub enum Numbering {
+    /// From 0: the lab's ids (and OFF's, PLY's, STL's).
+    #[default]
+    FromZero,
+    /// From 1: OBJ's.
+    FromOne,
+}
+
+impl Numbering {
+    /// The first id: 0 or 1.
+    pub fn first(self) -> u32 {
+        match self {
+            Numbering::FromZero => 0,
+            Numbering::FromOne => 1,
+        }
+    }
+}
+
+impl std::fmt::Display for Numbering {
+    /// Nothing for the lab's numbering; a note for a file's own.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Numbering::FromZero => Ok(()),
+            Numbering::FromOne => f.write_str(" (numbered from 1, as in the file)"),
+        }
+    }
+}
+
 /// Everything that can go wrong in `topolab-structures`.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -108,22 +140,26 @@ pub enum Error {
         count: u64,
     },
     /// A face refers to a vertex that does not exist (or a negative / overflowing index).
-    #[error("face {face} refers to vertex {index}, but there are {vertices} vertices")]
+    #[error("face {face} refers to vertex {index}, but there are {vertices} vertices{numbering}")]
     IndexOutOfRange {
-        /// The face (0-based, input order).
+        /// The face (input order, numbered as `numbering` says).
         face: usize,
-        /// The index as written (after converting the format's base and relative indices).
+        /// The index as written (relative indices resolved), numbered as `numbering` says.
         index: i64,
         /// How many vertices exist.
         vertices: usize,
+        /// How `face` and `index` are numbered.
+        numbering: Numbering,
     },
     /// A coordinate is NaN or infinite.
-    #[error("vertex {vertex} has a non-finite coordinate {value}")]
+    #[error("vertex {vertex} has a non-finite coordinate {value}{numbering}")]
     NonFiniteCoordinate {
         /// The vertex.
         vertex: usize,
         /// The offending value.
         value: f64,
+        /// How `vertex` is numbered.
+        numbering: Numbering,
     },
     /// A coordinate outside the range in which the convex hull's exact predicates stay exact:
     /// their products of three coordinate differences would overflow (or underflow) a double.
@@ -139,20 +175,24 @@ pub enum Error {
         max: f64,
     },
     /// A face with fewer than three corners.
-    #[error("face {face} has {corners} corners; a face needs at least 3")]
+    #[error("face {face} has {corners} corners; a face needs at least 3{numbering}")]
     TooFewCorners {
         /// The face.
         face: usize,
         /// How many corners it has.
         corners: usize,
+        /// How `face` is numbered.
+        numbering: Numbering,
     },
     /// A face that uses one vertex twice.
-    #[error("face {face} uses vertex {vertex} more than once")]
+    #[error("face {face} uses vertex {vertex} more than once{numbering}")]
     RepeatedVertex {
         /// The face.
         face: usize,
         /// The repeated vertex.
         vertex: u32,
+        /// How `face` and `vertex` are numbered.
+        numbering: Numbering,
     },
     /// An edge with more than two incident faces.
     #[error("edge ({a}, {b}) is shared by {} faces {faces:?}; a manifold edge has one or two", faces.len())]
@@ -287,6 +327,33 @@ pub enum Error {
         /// What is wrong with it.
         problem: crate::io::che_file::format::CheFileProblem,
     },
+    /// A vertex of so many faces that a library whose construction searches a vertex's
+    /// half-edges for each face it adds there (OpenMesh, CGAL, lox) would take time quadratic
+    /// in them to build the mesh ([`Connectivity::check_star_sizes`](crate::Connectivity::check_star_sizes)).
+    /// Refused before the library sees the mesh.
+    #[error("vertex {vertex} has {faces} faces in {fans} fans; the library searches a vertex's half-edges for each face it adds there, about {steps} steps for this mesh (its vertices' face counts squared), more than the {budget} the lab lets it take (16 a corner and 2^24)")]
+    StarTooLarge {
+        /// The vertex with the most faces.
+        vertex: u32,
+        /// Its faces (corners).
+        faces: usize,
+        /// The fans they form.
+        fans: usize,
+        /// The vertices' face counts, squared and summed.
+        steps: u64,
+        /// The most steps allowed.
+        budget: u64,
+    },
+    /// A mesh a format cannot hold as it is: written, the file would not read back as this
+    /// mesh (an empty mesh, a coordinate STL's `float` cannot hold, corners STL's welding would
+    /// join into one vertex). Nothing was written.
+    #[error("cannot write it as {format}: {reason}")]
+    NotWritable {
+        /// The format asked for.
+        format: Format,
+        /// Why the file would not read back.
+        reason: String,
+    },
     /// A library behind FFI (a C++ baseline) failed inside one of its calls: its exception was
     /// caught at the boundary and reported as a status code.
     #[error("{library} failed in {call}: {reason}")]
@@ -329,6 +396,8 @@ impl Error {
             Error::ElementOutOfRange { .. } => "element-out-of-range",
             Error::EditRefused { .. } => "edit-refused",
             Error::Foreign { .. } => "foreign",
+            Error::NotWritable { .. } => "not-writable",
+            Error::StarTooLarge { .. } => "star-too-large",
             Error::CheFile { .. } => "che-file",
         }
     }
@@ -341,6 +410,53 @@ impl Error {
                 | Error::InconsistentOrientation { .. }
                 | Error::NonManifoldVertex { .. }
         )
+    }
+
+    /// The error with its element ids in `numbering` (they are in the lab's, from 0): what a
+    /// reader of a file that numbers from 1 reports. Other errors are returned as they are.
+    pub fn numbered(self, numbering: Numbering) -> Self {
+        let shift = numbering.first();
+        match self {
+            Error::IndexOutOfRange {
+                face,
+                index,
+                vertices,
+                numbering: Numbering::FromZero,
+            } => Error::IndexOutOfRange {
+                face: face + shift as usize,
+                index: index.saturating_add(shift.into()),
+                vertices,
+                numbering,
+            },
+            Error::NonFiniteCoordinate {
+                vertex,
+                value,
+                numbering: Numbering::FromZero,
+            } => Error::NonFiniteCoordinate {
+                vertex: vertex + shift as usize,
+                value,
+                numbering,
+            },
+            Error::TooFewCorners {
+                face,
+                corners,
+                numbering: Numbering::FromZero,
+            } => Error::TooFewCorners {
+                face: face + shift as usize,
+                corners,
+                numbering,
+            },
+            Error::RepeatedVertex {
+                face,
+                vertex,
+                numbering: Numbering::FromZero,
+            } => Error::RepeatedVertex {
+                face: face + shift as usize,
+                vertex: vertex + shift,
+                numbering,
+            },
+            other => other,
+        }
     }
 
     /// Shorthand for an [`Error::Invariant`].

@@ -1,7 +1,7 @@
 //! [`PolygonSoup`]: the face list every structure is built from, and the shared analysis of
 //! its edges ([`Connectivity`]) that constructions use to find twins and reject non-manifold input.
 
-use crate::core::error::{Error, Result};
+use crate::core::error::{Error, Numbering, Result};
 use crate::core::ids::{FaceId, VertexId};
 use glam::DVec3;
 
@@ -207,7 +207,11 @@ impl PolygonSoup {
         for (i, p) in self.positions.iter().enumerate() {
             for value in p.to_array() {
                 if !value.is_finite() {
-                    return Err(Error::NonFiniteCoordinate { vertex: i, value });
+                    return Err(Error::NonFiniteCoordinate {
+                        vertex: i,
+                        value,
+                        numbering: Numbering::FromZero,
+                    });
                 }
             }
         }
@@ -217,6 +221,7 @@ impl PolygonSoup {
                 return Err(Error::TooFewCorners {
                     face: j,
                     corners: face.len(),
+                    numbering: Numbering::FromZero,
                 });
             }
             for (k, &v) in face.iter().enumerate() {
@@ -225,10 +230,15 @@ impl PolygonSoup {
                         face: j,
                         index: v as i64,
                         vertices: n,
+                        numbering: Numbering::FromZero,
                     });
                 }
                 if face[..k].contains(&v) {
-                    return Err(Error::RepeatedVertex { face: j, vertex: v });
+                    return Err(Error::RepeatedVertex {
+                        face: j,
+                        vertex: v,
+                        numbering: Numbering::FromZero,
+                    });
                 }
             }
         }
@@ -255,8 +265,13 @@ impl PolygonSoup {
 
     /// The soup with its faces restricted to the given subset (vertex list unchanged).
     pub fn with_faces(&self, keep: impl Fn(usize) -> bool) -> Self {
-        let mut out =
-            Self::with_capacity(self.num_vertices(), self.num_faces(), self.num_corners());
+        // Counted first, so that keeping few of many faces reserves room for few.
+        let (faces, corners) = self
+            .faces()
+            .enumerate()
+            .filter(|&(j, _)| keep(j))
+            .fold((0, 0), |(n, c), (_, f)| (n + 1, c + f.len()));
+        let mut out = Self::with_capacity(0, faces, corners);
         out.positions = self.positions.clone();
         for (j, f) in self.faces().enumerate() {
             if keep(j) {

@@ -1,5 +1,6 @@
-//! Reading and writing meshes: OBJ, OFF, PLY and STL (ASCII and binary) in; OBJ, OFF and
-//! binary STL out.
+//! Reading and writing meshes: OBJ, OFF, PLY and STL (ASCII and binary) in; OBJ, OFF, PLY
+//! (binary or ASCII) and binary STL out. A mesh is written only when the lab's readers will
+//! read the file back as that mesh ([`writable`]).
 //!
 //! Readers return a [`PolygonSoup`] in file order (vertex i of the file is vertex i of the
 //! soup), already checked with [`PolygonSoup::check`]. Bad files give a typed [`Error`] with
@@ -16,7 +17,7 @@
 //! would change the mesh (a short body, an index out of range, a malformed number) stays an
 //! error with its line or byte.
 
-use crate::core::error::{Error, Format, Location, Result};
+use crate::core::error::{Error, Format, Location, Numbering, Result};
 use crate::core::soup::PolygonSoup;
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -40,11 +41,19 @@ pub fn format_of(path: &Path) -> Result<Format> {
 }
 
 pub mod che_file;
+pub mod echo;
 mod obj;
 mod off;
 mod ply;
+mod ply_write;
 mod stl;
 mod text;
+mod writable;
+
+pub use ply_write::{write_ply, PlyEncoding};
+pub use writable::writable;
+
+pub use obj::LISTED_UNKNOWN_KINDS;
 
 /// Reads a mesh file, choosing the reader by extension, and checks it
 /// ([`RawSoup::into_checked`]).
@@ -88,6 +97,38 @@ pub fn read_raw(path: &Path) -> Result<RawSoup> {
     read_bytes_raw(&bytes, format)
 }
 
+/// An upper bound on the heap bytes reading a file of `file_bytes` bytes allocates at its
+/// peak, given its first bytes `head` (64 KiB are enough for any header the lab writes or
+/// meets): the file's bytes, which the readers hold whole, and the soup, 24 bytes a vertex, 4
+/// a corner and 4 a face. How large the soup can be follows from the fewest bytes each element
+/// takes in the file, and from what is reserved before the elements are read:
+///
+/// - OBJ: its `v` and `f` lines are counted first, so vertices (at least 8 bytes, `v 0 0 0`
+///   and a newline, for 24) and faces (2, `f` and a newline, for 4) are reserved exactly;
+///   corners (2 bytes, ` 1`, for 4) are reserved three a face and may double: the soup at
+///   most 4 times the file;
+/// - OFF: the counts of its header; a vertex at least 6 bytes (`0 0 0` and a newline): at
+///   most 4 times;
+/// - PLY: the counts its header announces, the corners bounded by the bytes left (a binary
+///   vertex of three one-byte coordinates takes 3 bytes for 24: up to 8 times the file, which
+///   only such files reach);
+/// - STL: a triangle at least 50 bytes (binary; ASCII takes more) for 16 bytes of corners and
+///   offset, up to three new vertices of 24 bytes (their array doubling as it grows) and the
+///   welding table's slots (4 bytes each, at most half full): at most 4 times.
+///
+/// So reading takes at most 5 times the file's size, 9 times for a binary PLY of one-byte
+/// coordinates. What a command does with the mesh comes on top (measured on a sample and
+/// scaled by elements: `topolab`'s limits).
+pub fn read_peak_bound(format: Format, head: &[u8], file_bytes: u64) -> u64 {
+    let soup = match format {
+        Format::Obj | Format::Off | Format::Stl => file_bytes.saturating_mul(4),
+        Format::Ply => ply::soup_bound(head, file_bytes)
+            .unwrap_or(u64::MAX)
+            .min(file_bytes.saturating_mul(8)),
+    };
+    file_bytes.saturating_add(soup).saturating_add(4096)
+}
+
 /// Reads a mesh from memory as written, without [`PolygonSoup::check`]. Fails only on what
 /// makes the file unreadable (syntax, truncation, an implausible header).
 pub fn read_bytes_raw(bytes: &[u8], format: Format) -> Result<RawSoup> {
@@ -129,6 +170,9 @@ pub struct RawSoup {
     /// Corners that named a vertex already read at the same position: STL stores positions
     /// per corner, and its reader welds equal ones (0 for the other formats).
     pub welded_corners: usize,
+    /// How the file numbers its vertices and faces (OBJ from 1), for messages in its own
+    /// numbering; the soup's ids are the lab's, from 0, whatever the file.
+    pub numbering: Numbering,
 }
 
 /// Something of a file a reader skipped because it does not change the mesh (see the module
@@ -158,16 +202,20 @@ impl std::fmt::Display for Skipped {
 
 impl RawSoup {
     /// The soup, once [`PolygonSoup::check`] accepts it; an unrepresentable index is reported
-    /// first, as [`Error::IndexOutOfRange`] with the index as written.
+    /// first, as [`Error::IndexOutOfRange`] with the index as written. The ids of the error are
+    /// in the file's numbering ([`RawSoup::numbering`]).
     pub fn into_checked(self) -> Result<PolygonSoup> {
+        let numbering = self.numbering;
         if let Some(bad) = self.unrepresentable.first() {
             return Err(Error::IndexOutOfRange {
                 face: bad.face,
                 index: bad.index,
                 vertices: self.soup.num_vertices(),
-            });
+                numbering: Numbering::FromZero,
+            }
+            .numbered(numbering));
         }
-        self.soup.check()?;
+        self.soup.check().map_err(|e| e.numbered(numbering))?;
         Ok(self.soup)
     }
 }
@@ -181,10 +229,12 @@ struct SoupBuilder {
 }
 
 impl SoupBuilder {
-    fn with_capacity(vertices: usize, faces: usize) -> Self {
+    /// Room for `vertices`, `faces` and `corners`: what the header announces, which the
+    /// readers bound by what the file's bytes can hold before they ask.
+    fn with_capacity(vertices: usize, faces: usize, corners: usize) -> Self {
         Self {
             raw: RawSoup {
-                soup: PolygonSoup::with_capacity(vertices, faces, faces.saturating_mul(3)),
+                soup: PolygonSoup::with_capacity(vertices, faces, corners),
                 ..RawSoup::default()
             },
             face: Vec::new(),
@@ -255,55 +305,92 @@ pub fn write_stl(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> 
     stl::write_binary(w, soup)
 }
 
-/// Writes `soup` to `path` as OBJ, OFF or binary STL (faces of more than three corners as
-/// fans of triangles), by extension, through [`write_atomically`].
+/// Writes `soup` to `path` as OBJ, OFF, binary PLY or binary STL (faces of more than three
+/// corners as fans of triangles), by extension, through [`write_atomically`].
 pub fn write(path: &Path, soup: &PolygonSoup) -> Result<()> {
     write_as(path, soup, format_of(path)?)
 }
 
-/// [`write()`] in `format`, whatever the extension of `path`.
+/// [`write()`] in `format`, whatever the extension of `path` (PLY binary).
 pub fn write_as(path: &Path, soup: &PolygonSoup, format: Format) -> Result<()> {
-    // Refuse before creating anything, so a refused write leaves no empty file behind.
-    let write_as: fn(&mut BufWriter<File>, &PolygonSoup) -> std::io::Result<()> = match format {
-        Format::Obj => |w, s| write_obj(w, s),
-        Format::Off => |w, s| write_off(w, s),
-        Format::Stl => |w, s| write_stl(w, s),
-        Format::Ply => {
-            return Err(Error::Unsupported(
-                "writing PLY is not supported; use .obj, .off or .stl".into(),
-            ))
-        }
-    };
-    write_atomically(path, |w| write_as(w, soup)).map_err(|source| Error::Io {
+    write_encoded(path, soup, format, PlyEncoding::Binary)
+}
+
+/// [`write_as`] with PLY in `ply` (binary or ASCII). Refuses, before creating anything, a mesh
+/// the file would not hold as it is ([`writable`]), so a refused write leaves nothing behind.
+pub fn write_encoded(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: Format,
+    ply: PlyEncoding,
+) -> Result<()> {
+    writable(soup, format)?;
+    write_atomically(path, |w| match format {
+        Format::Obj => write_obj(w, soup),
+        Format::Off => write_off(w, soup),
+        Format::Stl => write_stl(w, soup),
+        Format::Ply => write_ply(w, soup, ply),
+    })
+    .map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
     })
 }
 
-/// The temporary file [`write_atomically`] fills before renaming it to `path`: a hidden name
-/// with the process id, in the same folder (a rename replaces a file at once only within one
-/// file system).
-pub fn temporary_path(path: &Path) -> PathBuf {
-    let name = path.file_name().unwrap_or_default().to_string_lossy();
-    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+/// Creates the temporary file [`write_atomically`] fills before renaming it to `path`: a
+/// hidden name with 64 random bits, in the same folder (a rename replaces a file at once only
+/// within one file system), opened with create-new semantics (`O_CREAT | O_EXCL`): it fails
+/// rather than open anything already there, a symbolic link included, so that nothing
+/// planted at a name, predictable or not, is followed or truncated. A name taken is retried
+/// with other random bits. Returns the file and its path.
+pub fn create_temporary(path: &Path) -> std::io::Result<(File, PathBuf)> {
+    use std::hash::{BuildHasher, Hasher};
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    // The start of the target's name, so that a leftover file says whose it was, short enough
+    // that the temporary name stays within the 255 bytes a file name may have.
+    let name: String = path
+        .file_name()
+        .unwrap_or_default()
+        .to_string_lossy()
+        .chars()
+        .take(64)
+        .collect();
+    let mut last = None;
+    for _ in 0..16 {
+        // The standard library's hasher keys are random per process (from the OS).
+        let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+        h.write_u64(COUNTER.fetch_add(1, Ordering::Relaxed));
+        h.write_u32(std::process::id());
+        let tmp = path.with_file_name(format!(".{name}.{:016x}.tmp", h.finish()));
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&tmp)
+        {
+            Ok(file) => return Ok((file, tmp)),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => last = Some(e),
+            Err(e) => return Err(e),
+        }
+    }
+    Err(last.unwrap_or_else(|| std::io::Error::other("no free temporary name")))
 }
 
-/// Writes `path` by filling its [`temporary_path`] with `fill` and renaming it over `path` once
-/// complete, so that `path` is never half-written: it is either what it was before or the
-/// whole new file. When `fill` or the rename fails, the temporary file is removed. A process
+/// Writes `path` by filling a new temporary file next to it ([`create_temporary`]) with
+/// `fill` and renaming it over `path` once complete, so that `path` is never half-written: it
+/// is either what it was before or the whole new file. A symbolic link at `path` is replaced,
+/// not followed. When `fill` or the rename fails, the temporary file is removed. A process
 /// killed while filling leaves the temporary file behind (never a partial `path`); the file
 /// is not synced to disk, so this guards against failed and interrupted runs, not power cuts.
 pub fn write_atomically(
     path: &Path,
     fill: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>,
 ) -> std::io::Result<()> {
-    let tmp = temporary_path(path);
-    let written = File::create(&tmp).and_then(|file| {
-        let mut w = BufWriter::new(file);
-        fill(&mut w)?;
-        w.flush()?;
-        std::fs::rename(&tmp, path)
-    });
+    let (file, tmp) = create_temporary(path)?;
+    let mut w = BufWriter::new(file);
+    let written = fill(&mut w)
+        .and_then(|()| w.flush())
+        .and_then(|()| std::fs::rename(&tmp, path));
     if written.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }

@@ -10,9 +10,10 @@
 //! that a file that is not OBJ at all does not pass unnoticed. Line continuations (`\`) are
 //! not supported.
 
+use super::echo::quoted;
 use super::text::{lines, parse_int, parse_or_syntax, position, strip_comment, tokens};
 use super::{RawSoup, Skipped, SoupBuilder};
-use crate::core::error::{Format, Location, Result};
+use crate::core::error::{Format, Location, Numbering, Result};
 
 /// OBJ statements that carry nothing a polygon soup stores.
 const SKIPPED: &[&[u8]] = &[
@@ -57,7 +58,10 @@ const SKIPPED: &[&[u8]] = &[
 
 pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
     const OBJ: Format = Format::Obj;
-    let mut out = SoupBuilder::with_capacity(0, 0);
+    let [vertices, faces] = statements(bytes);
+    let mut out = SoupBuilder::with_capacity(vertices, faces, faces.saturating_mul(3));
+    out.raw.numbering = Numbering::FromOne;
+    let mut unknown = Unknown::default();
     for line in lines(bytes, 1) {
         let mut words = tokens(strip_comment(line.content));
         let Some(keyword) = words.next() else {
@@ -90,18 +94,78 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
                 out.end_face();
             }
             other if SKIPPED.contains(&other) => {}
-            other => {
-                let what = format!("unknown OBJ statement {:?}", String::from_utf8_lossy(other));
-                match out.raw.skipped.iter_mut().find(|s| s.what == what) {
-                    Some(seen) => seen.count += 1,
-                    None => out.raw.skipped.push(Skipped {
-                        what,
-                        count: 1,
-                        first: Location::Line(line.number),
-                    }),
-                }
-            }
+            other => unknown.note(other, line.number, &mut out.raw.skipped),
         }
     }
+    unknown.finish(&mut out.raw.skipped);
     Ok(out.finish())
+}
+
+/// How many `v` and `f` statements `bytes` holds (lines whose first word is `v` or `f`): the
+/// soup's arrays are reserved once, exactly, instead of growing to up to twice their size.
+/// One pass over the bytes, a few operations a line.
+fn statements(bytes: &[u8]) -> [usize; 2] {
+    let mut counts = [0, 0];
+    for line in bytes.split(|&b| b == b'\n') {
+        let start = line.iter().position(|b| !b.is_ascii_whitespace());
+        let Some(rest) = start.map(|i| &line[i..]) else {
+            continue;
+        };
+        let second_is_space = rest.get(1).is_none_or(|b| b.is_ascii_whitespace());
+        match rest[0] {
+            b'v' if second_is_space => counts[0] += 1,
+            b'f' if second_is_space => counts[1] += 1,
+            _ => {}
+        }
+    }
+    counts
+}
+
+/// The unknown statement kinds listed one by one in [`RawSoup::skipped`]; the statements of
+/// further kinds are counted together in one more entry. A file cannot make the reader keep
+/// (or the user read) a list as long as itself, and finding a kind among those listed costs
+/// at most this many comparisons.
+pub const LISTED_UNKNOWN_KINDS: usize = 8;
+
+/// The unknown statements met so far: the first [`LISTED_UNKNOWN_KINDS`] kinds (their raw
+/// keyword, to compare with the next ones) and the others counted.
+#[derive(Default)]
+struct Unknown {
+    /// The keyword of each listed kind, in the order of `skipped`.
+    keywords: Vec<Vec<u8>>,
+    /// Statements of the kinds not listed: how many, and the first one's line.
+    others: Option<(usize, usize)>,
+}
+
+impl Unknown {
+    /// Counts the statement `keyword` at `line` in `skipped`.
+    fn note(&mut self, keyword: &[u8], line: usize, skipped: &mut Vec<Skipped>) {
+        if let Some(i) = self.keywords.iter().position(|k| k == keyword) {
+            skipped[i].count += 1;
+        } else if self.keywords.len() < LISTED_UNKNOWN_KINDS {
+            self.keywords.push(keyword.to_vec());
+            skipped.push(Skipped {
+                what: format!("unknown OBJ statement {}", quoted(keyword)),
+                count: 1,
+                first: Location::Line(line),
+            });
+        } else {
+            let (count, _) = self.others.get_or_insert((0, line));
+            *count += 1;
+        }
+    }
+
+    /// Adds the statements of the kinds not listed to `skipped`, as one entry.
+    fn finish(self, skipped: &mut Vec<Skipped>) {
+        if let Some((count, line)) = self.others {
+            skipped.push(Skipped {
+                what: format!(
+                    "unknown OBJ statement{} of kinds beyond the first {LISTED_UNKNOWN_KINDS}",
+                    if count == 1 { "" } else { "s" }
+                ),
+                count,
+                first: Location::Line(line),
+            });
+        }
+    }
 }

@@ -3,6 +3,7 @@
 //! next, then one vertex per line (`x y z ...`) and one face per line (`k i1 .. ik`, trailing
 //! colour values allowed), 0-based. `#` starts a comment; blank lines are skipped.
 
+use super::echo::quoted;
 use super::text::{
     lines, parse_count, parse_int, parse_or_syntax, plausible, position, short_line, strip_comment,
     syntax, tokens, truncated, Line,
@@ -46,9 +47,11 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
     let (num_vertices, num_faces) = (count(counts[0])?, count(counts[1])?);
     let remaining = (bytes.len() - counts_line.end) as u64 + 1;
     let remaining = plausible(OFF, "vertices", num_vertices, MIN_VERTEX_BYTES, remaining)?;
-    plausible(OFF, "faces", num_faces, MIN_FACE_BYTES, remaining)?;
-
-    let mut out = SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize);
+    let slack = plausible(OFF, "faces", num_faces, MIN_FACE_BYTES, remaining)?;
+    // Each corner takes at least two bytes (` 7`) beyond its face's shortest line.
+    let corners = num_faces.saturating_mul(3).min(slack / 2);
+    let mut out =
+        SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize, corners as usize);
     let mut last_line = counts_line.number;
     let mut next_line = |what: &str, read: u64, total: u64| {
         content
@@ -82,10 +85,7 @@ fn check_keyword(keyword: &[u8], line: usize) -> Result<()> {
         return Err(syntax(
             OFF,
             line,
-            format!(
-                "expected the OFF header, found {:?}",
-                String::from_utf8_lossy(keyword)
-            ),
+            format!("expected the OFF header, found {}", quoted(keyword)),
         ));
     };
     let prefix = prefix.strip_prefix(b"ST").unwrap_or(prefix);
@@ -93,8 +93,8 @@ fn check_keyword(keyword: &[u8], line: usize) -> Result<()> {
     let prefix = prefix.strip_prefix(b"N").unwrap_or(prefix);
     if !prefix.is_empty() {
         return Err(Error::Unsupported(format!(
-            "OFF line {line}: the {:?} variant is not supported",
-            String::from_utf8_lossy(keyword)
+            "OFF line {line}: the {} variant is not supported",
+            quoted(keyword)
         )));
     }
     Ok(())

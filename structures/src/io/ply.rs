@@ -4,6 +4,7 @@
 //! the `face` element gives the faces (its list property `vertex_indices` or `vertex_index`,
 //! of any count and index type). Every other property and element is skipped by its type.
 
+use super::echo::quoted;
 use super::text::{
     lines, parse_count, parse_f64, parse_int, parse_or_syntax, plausible, syntax, tokens, truncated,
 };
@@ -101,21 +102,10 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
     let header = read_header(bytes)?;
     let body = &bytes[header.body..];
     // Refuse counts the body cannot hold before allocating anything.
-    let mut remaining = body.len() as u64 + (header.encoding == Encoding::Ascii) as u64;
-    let (mut num_vertices, mut num_faces) = (0, 0);
-    for e in &header.elements {
-        let what = if e.is_vertex {
-            num_vertices = e.count;
-            "vertices"
-        } else if e.properties.iter().any(|p| p.1 == Role::Corners) {
-            num_faces = e.count;
-            "faces"
-        } else {
-            "elements"
-        };
-        remaining = plausible(PLY, what, e.count, min_bytes(e, header.encoding), remaining)?;
-    }
-    let mut out = SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize);
+    let [num_vertices, num_faces, corners] = announced(&header, body.len() as u64)?;
+    let corners = num_faces.saturating_mul(3).min(corners);
+    let mut out =
+        SoupBuilder::with_capacity(num_vertices as usize, num_faces as usize, corners as usize);
     let skipped = match header.encoding {
         Encoding::Ascii => read_body(
             &mut AsciiValues {
@@ -138,6 +128,46 @@ pub(super) fn read(bytes: &[u8]) -> Result<RawSoup> {
     };
     out.raw.skipped.extend(skipped);
     Ok(out.finish())
+}
+
+/// The vertices and faces the header announces, refused ([`Error::ImplausibleHeader`]) when
+/// the body's `body_bytes` cannot hold them, and the most corners those bytes can hold: the
+/// bytes no element needs for its shortest instance, over a corner's fewest bytes.
+fn announced(header: &Header, body_bytes: u64) -> Result<[u64; 3]> {
+    let mut remaining = body_bytes + (header.encoding == Encoding::Ascii) as u64;
+    let (mut num_vertices, mut num_faces, mut corner_bytes) = (0, 0, 1);
+    for e in &header.elements {
+        let corners = e.properties.iter().find_map(|p| match p {
+            (Property::List { item, .. }, Role::Corners) => Some(*item),
+            _ => None,
+        });
+        let what = if e.is_vertex {
+            num_vertices = e.count;
+            "vertices"
+        } else if let Some(item) = corners {
+            num_faces = e.count;
+            corner_bytes = match header.encoding {
+                Encoding::Ascii => 2,
+                _ => item.size(),
+            };
+            "faces"
+        } else {
+            "elements"
+        };
+        remaining = plausible(PLY, what, e.count, min_bytes(e, header.encoding), remaining)?;
+    }
+    Ok([num_vertices, num_faces, remaining / corner_bytes])
+}
+
+/// The most heap bytes the soup of a PLY file of `file_bytes` bytes whose start is `head`
+/// takes: the vertices and faces its header announces and the most corners the rest can hold
+/// ([`super::read_peak_bound`]). `None` when `head` holds no whole, plausible header.
+pub(super) fn soup_bound(head: &[u8], file_bytes: u64) -> Option<u64> {
+    let header = read_header(head).ok()?;
+    let body = file_bytes.checked_sub(header.body as u64)?;
+    let [v, f, c] = announced(&header, body).ok()?;
+    // Corners reserved three a face may grow, by doubling, to twice the most the bytes hold.
+    Some(24 * v + 4 * (f + 1) + 8 * c)
 }
 
 /// The fewest bytes one instance of `e` takes: in binary, its scalars and list counts (lists
@@ -200,13 +230,8 @@ fn read_header(bytes: &[u8]) -> Result<Header> {
                     .last_mut()
                     .ok_or_else(|| syntax(PLY, n, "property before any element"))?;
                 let scalar = |name: &[u8]| {
-                    Scalar::from_name(name).ok_or_else(|| {
-                        syntax(
-                            PLY,
-                            n,
-                            format!("unknown type {:?}", String::from_utf8_lossy(name)),
-                        )
-                    })
+                    Scalar::from_name(name)
+                        .ok_or_else(|| syntax(PLY, n, format!("unknown type {}", quoted(name))))
                 };
                 let (property, name) = match words.as_slice() {
                     [_, b"list", count, item, name] => (
@@ -256,10 +281,7 @@ fn read_header(bytes: &[u8]) -> Result<Header> {
                 return Err(syntax(
                     PLY,
                     n,
-                    format!(
-                        "unexpected header line {:?}",
-                        String::from_utf8_lossy(line.content)
-                    ),
+                    format!("unexpected header line {}", quoted(line.content)),
                 ))
             }
         }
@@ -289,6 +311,10 @@ fn read_body(
     out: &mut SoupBuilder,
 ) -> Result<Option<Skipped>> {
     for e in elements {
+        if e.properties.is_empty() {
+            // Nothing to read, however many (a header may announce billions of them).
+            continue;
+        }
         for _ in 0..e.count {
             let mut xyz = [0.0; 3];
             for (property, role) in &e.properties {
@@ -383,8 +409,8 @@ impl Values for AsciiValues<'_> {
                 PLY,
                 self.line,
                 format!(
-                    "{:?} after the last element the header announces",
-                    String::from_utf8_lossy(word)
+                    "{} after the last element the header announces",
+                    quoted(word)
                 ),
             )),
             Err(_) => Ok(None),

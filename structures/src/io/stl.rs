@@ -16,11 +16,11 @@
 //! (the structures compute what they need from positions); the attribute bytes of binary
 //! facets are skipped.
 
+use super::echo::quoted;
 use super::text::{lines, position, short_line, strip_comment, syntax, tokens};
 use super::{RawSoup, SoupBuilder};
 use crate::core::error::{Error, Format, Location, Result};
 use glam::DVec3;
-use std::collections::HashMap;
 
 const STL: Format = Format::Stl;
 
@@ -81,34 +81,76 @@ fn binary_count(bytes: &[u8]) -> Option<u32> {
 /// Corners welded into vertices by exact position, as the soup is built.
 struct Welder {
     out: SoupBuilder,
-    /// Bits of a position's coordinates → its vertex.
-    vertices: HashMap<[u64; 3], u32>,
+    /// The vertices by position: an open-addressing table of vertex ids (the positions are
+    /// the soup's), 4 bytes a slot, at most half full: 8 to 16 bytes a vertex where a map of
+    /// positions to ids took 33 to 75, the largest part of reading an STL file.
+    slots: Vec<u32>,
+    /// Keyed at random per process: no file makes positions collide.
+    hasher: std::collections::hash_map::RandomState,
     corners: usize,
 }
+
+/// An empty slot of [`Welder::slots`].
+const EMPTY: u32 = u32::MAX;
 
 impl Welder {
     fn with_capacity(triangles: usize) -> Self {
         // About half as many vertices as triangles on a closed mesh.
         Self {
-            out: SoupBuilder::with_capacity(triangles / 2, triangles),
-            vertices: HashMap::with_capacity(triangles / 2),
+            out: SoupBuilder::with_capacity(triangles / 2, triangles, triangles * 3),
+            slots: vec![EMPTY; (triangles + 16).next_power_of_two()],
+            hasher: std::collections::hash_map::RandomState::new(),
             corners: 0,
         }
     }
 
-    fn corner(&mut self, p: DVec3) {
-        let key = p.to_array().map(|x| (x + 0.0).to_bits()); // -0.0 and 0.0 are one place
-        let next = self.vertices.len() as u32;
-        let v = *self.vertices.entry(key).or_insert(next);
-        if v == next {
-            self.out.raw.soup.push_vertex(p);
+    /// The bits a position is welded by: -0.0 and 0.0 are one place.
+    fn key(p: DVec3) -> [u64; 3] {
+        p.to_array().map(|x| (x + 0.0).to_bits())
+    }
+
+    /// The slot of position `key`: the one holding its vertex, or the empty one where it goes.
+    fn slot(&self, key: [u64; 3]) -> usize {
+        use std::hash::BuildHasher;
+        let mask = self.slots.len() - 1;
+        let mut i = self.hasher.hash_one(key) as usize & mask;
+        loop {
+            let v = self.slots[i];
+            if v == EMPTY || Self::key(self.out.raw.soup.positions[v as usize]) == key {
+                return i;
+            }
+            i = (i + 1) & mask;
         }
+    }
+
+    fn corner(&mut self, p: DVec3) {
+        let i = self.slot(Self::key(p));
+        let v = match self.slots[i] {
+            EMPTY => {
+                let v = self.out.raw.soup.push_vertex(p).0;
+                self.slots[i] = v;
+                if 2 * (v as usize + 1) > self.slots.len() {
+                    self.grow();
+                }
+                v
+            }
+            v => v,
+        };
         self.out.corner(v as i64);
         self.corners += 1;
     }
 
+    /// Doubles the table, placing every vertex again.
+    fn grow(&mut self) {
+        self.slots = vec![EMPTY; 2 * self.slots.len()];
+        for v in 0..self.out.raw.soup.num_vertices() {
+            let i = self.slot(Self::key(self.out.raw.soup.positions[v]));
+            self.slots[i] = v as u32;
+        }
+    }
+
     fn finish(mut self) -> RawSoup {
-        self.out.raw.welded_corners = self.corners - self.vertices.len();
+        self.out.raw.welded_corners = self.corners - self.out.raw.soup.num_vertices();
         self.out.finish()
     }
 }
@@ -191,14 +233,14 @@ fn read_ascii(bytes: &[u8]) -> Result<RawSoup> {
                 return Err(short_line(
                     STL,
                     &line,
-                    format!("the file ends in {:?}", String::from_utf8_lossy(other)),
+                    format!("the file ends in {}", quoted(other)),
                 ))
             }
             other => {
                 return Err(syntax(
                     STL,
                     line.number,
-                    format!("unexpected {:?}", String::from_utf8_lossy(other)),
+                    format!("unexpected {}", quoted(other)),
                 ))
             }
         }

@@ -1,6 +1,7 @@
 //! What the text readers share: lines with their numbers and byte offsets, whitespace tokens,
 //! comment stripping, number parsing, and the errors that point at a line.
 
+use super::echo::quoted;
 use crate::core::error::{Error, Format, Location};
 use glam::DVec3;
 
@@ -82,9 +83,16 @@ pub(super) fn parse_int(token: &[u8]) -> Option<i64> {
     Some(if negative { -magnitude } else { magnitude })
 }
 
-/// A non-negative count (header counts, face sizes), saturated at `u64::MAX`.
+/// A non-negative count (header counts, face sizes), saturated at `u64::MAX` (so that
+/// `18446744073709551615` is reported as written, not as the `i64` range's end).
 pub(super) fn parse_count(token: &[u8]) -> Option<u64> {
-    parse_int(token).and_then(|n| u64::try_from(n).ok())
+    let digits = token.strip_prefix(b"+").unwrap_or(token);
+    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(digits.iter().fold(0u64, |acc, &d| {
+        acc.saturating_mul(10).saturating_add(u64::from(d - b'0'))
+    }))
 }
 
 /// An [`Error::Syntax`] at a line.
@@ -146,13 +154,7 @@ pub(super) fn parse_or_syntax<T>(
     parse: fn(&[u8]) -> Option<T>,
     what: &str,
 ) -> Result<T, Error> {
-    parse(word).ok_or_else(|| {
-        syntax(
-            format,
-            line,
-            format!("not {what}: {:?}", String::from_utf8_lossy(word)),
-        )
-    })
+    parse(word).ok_or_else(|| syntax(format, line, format!("not {what}: {}", quoted(word))))
 }
 
 /// The next three words as a position (what follows them is the caller's business).

@@ -2,12 +2,14 @@
 //! face list, the shared [`conformance`](mod@conformance) suite that compares every operator
 //! with it, the [`editing`] suite of random edit sequences against a naive model with its
 //! [`weld`] tests, the [`differential`] test of `topolab info`, the [`decimating`] suite (decimation, then reconstruction by vertex
-//! splits), and the canonical and generated [`meshes`].
+//! splits), the canonical and generated [`meshes`], and the [`growth`] of a test's time with
+//! its input's size.
 
 pub mod conformance;
 pub mod decimating;
 pub mod differential;
 pub mod editing;
+pub mod growth;
 pub mod meshes;
 pub mod oracle;
 pub mod weld;

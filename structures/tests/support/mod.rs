@@ -1,5 +1,6 @@
-//! Test helpers shared by the reader tests: PLY files of a soup (the lab writes no PLY), and
-//! ASCII STL (the lab writes binary STL).
+//! Test helpers shared by the reader tests: PLY files of a soup as other tools write them
+//! (other scalar types and extra properties than the lab's writer uses), and ASCII STL (the lab
+//! writes binary STL).
 
 use topolab_structures::PolygonSoup;
 

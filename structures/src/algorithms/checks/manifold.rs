@@ -1,7 +1,7 @@
 //! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
 //! orientability, and per component its Euler characteristic, boundary and genus.
 
-use super::{CheckSummary, Component, FindingKind, Push, UnionFind};
+use super::{CheckSummary, Component, FindingKind, Findings, UnionFind};
 use crate::core::error::Error;
 use crate::core::soup::{Connectivity, PolygonSoup};
 use crate::summary::Undefined;
@@ -13,8 +13,9 @@ pub(super) fn topology(
     clean: &PolygonSoup,
     kept: &[u32],
     soup: &PolygonSoup,
-    push: &mut Push<'_>,
+    found: &mut Findings,
 ) -> CheckSummary {
+    let ids = found.numbering();
     let (conn, problems) = Connectivity::analyse(clean, false);
     let original = |f: u32| kept[f as usize];
     let nf = clean.num_faces();
@@ -46,25 +47,36 @@ pub(super) fn topology(
                 let root = joined.find(a).0;
                 component(&mut components, root).manifold = false;
                 with_non_manifold_edge.insert(root);
-                let faces: Vec<u32> = faces.into_iter().map(original).collect();
-                push(
-                    FindingKind::NonManifoldEdge,
-                    vec![a, b],
-                    faces.clone(),
-                    format!(
-                        "edge ({a}, {b}) is shared by {} faces {faces:?}",
-                        faces.len()
-                    ),
-                );
+                found.add(FindingKind::NonManifoldEdge, || {
+                    let faces: Vec<u32> = faces.into_iter().map(original).collect();
+                    (
+                        vec![a, b],
+                        faces.clone(),
+                        format!(
+                            "edge ({}, {}) is shared by {} faces {}",
+                            ids.id(a),
+                            ids.id(b),
+                            faces.len(),
+                            ids.list(&faces)
+                        ),
+                    )
+                });
             }
             Error::InconsistentOrientation { a, b, f, g } => {
                 let (f, g) = (original(f), original(g));
-                push(
-                    FindingKind::InconsistentOrientation,
-                    vec![a, b],
-                    vec![f, g],
-                    format!("faces {f} and {g} both traverse edge ({a} -> {b})"),
-                );
+                found.add(FindingKind::InconsistentOrientation, || {
+                    (
+                        vec![a, b],
+                        vec![f, g],
+                        format!(
+                            "faces {} and {} both traverse edge ({} -> {})",
+                            ids.id(f),
+                            ids.id(g),
+                            ids.id(a),
+                            ids.id(b)
+                        ),
+                    )
+                });
             }
             _ => {}
         }
@@ -72,12 +84,16 @@ pub(super) fn topology(
     for (v, &fans) in conn.vertex_fans(clean).iter().enumerate() {
         if fans > 1 {
             component(&mut components, joined.find(v as u32).0).manifold = false;
-            push(
-                FindingKind::NonManifoldVertex,
-                vec![v as u32],
-                vec![],
-                format!("vertex {v}: its faces form {fans} separate fans"),
-            );
+            found.add(FindingKind::NonManifoldVertex, || {
+                (
+                    vec![v as u32],
+                    vec![],
+                    format!(
+                        "vertex {}: its faces form {fans} separate fans",
+                        ids.id(v as u64)
+                    ),
+                )
+            });
         }
     }
     // Corners per edge: 1 on the boundary, 2 for an interior edge (or an inconsistent pair),
@@ -132,12 +148,16 @@ pub(super) fn topology(
     }
     for (root, face) in first_face_of_non_orientable {
         component(&mut components, root).orientable = false;
-        push(
-            FindingKind::NonOrientable,
-            vec![],
-            vec![face],
-            format!("the component of face {face} cannot be oriented consistently (like a Möbius strip)"),
-        );
+        found.add(FindingKind::NonOrientable, || {
+            (
+                vec![],
+                vec![face],
+                format!(
+                    "the component of face {} cannot be oriented consistently (like a Möbius strip)",
+                    ids.id(face)
+                ),
+            )
+        });
     }
     let components: Vec<Component> = components
         .into_iter()
@@ -167,6 +187,7 @@ pub(super) fn topology(
         euler_characteristic: components.iter().map(|c| c.euler_characteristic).sum(),
         components,
         counts: BTreeMap::new(),
+        near_duplicates_not_exhaustive: 0,
     }
 }
 

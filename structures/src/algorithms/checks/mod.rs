@@ -24,9 +24,11 @@
 //! or an edge") are not tested.
 
 mod duplicates;
+mod faces;
 mod manifold;
 mod polygon;
 
+pub use duplicates::NEAR_DUPLICATES_COMPARED;
 pub use polygon::MAX_SIMPLICITY_CORNERS;
 
 use crate::io::RawSoup;
@@ -34,7 +36,7 @@ use crate::summary::Undefined;
 use duplicates::{duplicate_faces, duplicate_vertices};
 use manifold::topology;
 use polygon::polygon_checks;
-use std::collections::{BTreeMap, HashSet};
+use std::collections::BTreeMap;
 
 /// What a finding is about.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
@@ -149,6 +151,10 @@ pub struct Options {
     /// Largest distance of a corner from its face's plane, relative to the face's size (the
     /// diagonal of its bounding box), for the face to count as planar.
     pub planarity_tolerance: f64,
+    /// Findings of one kind kept in [`Report::findings`] (the first ones, in the order the
+    /// checks meet them); the others are only counted ([`CheckSummary::counts`]), so that a
+    /// file with millions of problems does not make a report millions of findings long.
+    pub kept_per_kind: usize,
 }
 
 impl Default for Options {
@@ -156,6 +162,7 @@ impl Default for Options {
         Self {
             tolerance: 1e-9,
             planarity_tolerance: 1e-6,
+            kept_per_kind: 10,
         }
     }
 }
@@ -204,14 +211,21 @@ pub struct CheckSummary {
     pub euler_characteristic: i64,
     /// Each connected component.
     pub components: Vec<Component>,
-    /// Findings per kind (only kinds that occur).
+    /// Findings per kind (only kinds that occur), all of them: [`Report::findings`] keeps the
+    /// first [`Options::kept_per_kind`] of each.
     pub counts: BTreeMap<&'static str, usize>,
+    /// Vertices compared with only some of the vertices filed near them in the search for
+    /// near duplicates: those in a crowded cube (more than [`NEAR_DUPLICATES_COMPARED`]
+    /// distinct positions within a cube of side twice the tolerance). 0 when the search was
+    /// exhaustive.
+    pub near_duplicates_not_exhaustive: usize,
 }
 
 /// What [`check`] found.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Report {
-    /// Every problem, grouped by kind in [`FindingKind::ALL`] order.
+    /// The first [`Options::kept_per_kind`] problems of each kind, grouped by kind in
+    /// [`FindingKind::ALL`] order; how many there are of each is in [`CheckSummary::counts`].
     pub findings: Vec<Finding>,
     /// Counts and topology.
     pub summary: CheckSummary,
@@ -220,9 +234,109 @@ pub struct Report {
 impl Report {
     /// `true` when nothing was found.
     pub fn is_clean(&self) -> bool {
-        self.findings.is_empty()
+        self.summary.counts.is_empty()
+    }
+
+    /// How many problems of `kind` were found (kept or not).
+    pub fn count(&self, kind: FindingKind) -> usize {
+        self.summary.counts.get(kind.name()).copied().unwrap_or(0)
+    }
+
+    /// How many problems were found, of every kind.
+    pub fn total(&self) -> usize {
+        self.summary.counts.values().sum()
     }
 }
+
+/// The findings as the checks meet them: every one counted, the first
+/// [`Options::kept_per_kind`] of each kind kept. A finding's ids and message are built only
+/// when it is kept. Messages number vertices and faces as the file does ([`Findings::id`]).
+pub(super) struct Findings {
+    kept: Vec<Finding>,
+    counts: BTreeMap<FindingKind, usize>,
+    keep: usize,
+    /// The first id of the file's numbering (1 for OBJ).
+    first: u64,
+}
+
+impl Findings {
+    fn new(options: &Options, numbering: crate::core::error::Numbering) -> Self {
+        Self {
+            kept: Vec::new(),
+            counts: BTreeMap::new(),
+            keep: options.kept_per_kind,
+            first: numbering.first().into(),
+        }
+    }
+
+    /// Counts a finding of `kind`; keeps it, built by `build` (vertices, faces, message), while
+    /// fewer than [`Options::kept_per_kind`] of its kind are kept.
+    pub(super) fn add(
+        &mut self,
+        kind: FindingKind,
+        build: impl FnOnce() -> (Vec<u32>, Vec<u32>, String),
+    ) {
+        let count = self.counts.entry(kind).or_default();
+        *count += 1;
+        if *count <= self.keep {
+            let (vertices, faces, message) = build();
+            self.kept.push(Finding {
+                kind,
+                vertices,
+                faces,
+                message,
+            });
+        }
+    }
+
+    /// How many more findings of `kind` will be kept.
+    pub(super) fn room(&self, kind: FindingKind) -> usize {
+        self.keep
+            .saturating_sub(self.counts.get(&kind).copied().unwrap_or(0))
+    }
+
+    /// Counts `n` findings of `kind` that the caller knows are not kept (no [`Findings::room`]
+    /// left for them).
+    pub(super) fn count(&mut self, kind: FindingKind, n: usize) {
+        if n > 0 {
+            *self.counts.entry(kind).or_default() += n;
+        }
+    }
+
+    /// How the file numbers its elements, for messages.
+    pub(super) fn numbering(&self) -> Ids {
+        Ids { first: self.first }
+    }
+}
+
+/// Ids of the soup (from 0) written as the file numbers them (from 1 for OBJ), for messages.
+#[derive(Copy, Clone)]
+pub(super) struct Ids {
+    first: u64,
+}
+
+impl Ids {
+    /// One id.
+    pub(super) fn id(self, id: impl Into<u64>) -> u64 {
+        id.into() + self.first
+    }
+
+    /// The first [`LISTED_IDS`] of `ids`, then how many there are.
+    pub(super) fn list(self, ids: &[u32]) -> String {
+        let shown: Vec<String> = ids
+            .iter()
+            .take(LISTED_IDS)
+            .map(|&v| self.id(v).to_string())
+            .collect();
+        match ids.len() {
+            n if n <= LISTED_IDS => format!("[{}]", shown.join(", ")),
+            n => format!("[{}, ... ({n} in all)]", shown.join(", ")),
+        }
+    }
+}
+
+/// The most ids a finding's message lists (its `vertices` and `faces` hold them all).
+pub const LISTED_IDS: usize = 8;
 
 /// Union-find over `0..n` (shared by the duplicate and manifold checks, and by the repair's
 /// orientation) that also keeps, per element, the parity of its path to the root: plain unions
@@ -272,147 +386,73 @@ impl UnionFind {
     }
 }
 
-/// Runs every check on `raw`.
+/// Runs every check on `raw`. Time and memory are O(n) in the file's elements (hashing
+/// expected O(1) per lookup), but for the polygon checks' O(k²) self-intersection test of a
+/// face of k ≤ [`MAX_SIMPLICITY_CORNERS`] corners.
 pub fn check(raw: &RawSoup, options: &Options) -> Report {
     let soup = &raw.soup;
-    let mut findings = Vec::new();
-    let mut push = |kind, vertices: Vec<u32>, faces: Vec<u32>, message: String| {
-        findings.push(Finding {
-            kind,
-            vertices,
-            faces,
-            message,
-        })
-    };
+    let mut found = Findings::new(options, raw.numbering);
     let n = soup.num_vertices();
     if n == 0 && soup.num_faces() == 0 {
-        push(
-            FindingKind::EmptyMesh,
-            vec![],
-            vec![],
-            "the file has no vertices and no faces".into(),
-        );
+        found.add(FindingKind::EmptyMesh, || {
+            (
+                vec![],
+                vec![],
+                "the file has no vertices and no faces".into(),
+            )
+        });
     }
     let finite: Vec<bool> = soup.positions.iter().map(|p| p.is_finite()).collect();
+    let ids = found.numbering();
     for (v, _) in finite.iter().enumerate().filter(|(_, ok)| !**ok) {
         let p = soup.positions[v];
-        push(
-            FindingKind::NonFiniteCoordinate,
-            vec![v as u32],
-            vec![],
-            format!("vertex {v} is at ({}, {}, {})", p.x, p.y, p.z),
-        );
-    }
-
-    // Missing elements, and which faces are usable for everything else.
-    let mut usable = vec![false; soup.num_faces()];
-    let mut repeats = vec![false; soup.num_faces()];
-    let mut used = vec![false; n];
-    let mut edges_without_end = HashSet::new();
-    let mut sorted = Vec::new();
-    for (j, face) in soup.faces().enumerate() {
-        let written = |k: usize| written_index(raw, j, k);
-        let missing: Vec<usize> = (0..face.len()).filter(|&k| face[k] as usize >= n).collect();
-        for &v in face.iter().filter(|&&v| (v as usize) < n) {
-            used[v as usize] = true;
-        }
-        if !missing.is_empty() {
-            let indices: Vec<i64> = missing.iter().map(|&k| written(k)).collect();
-            push(
-                FindingKind::MissingVertex,
+        found.add(FindingKind::NonFiniteCoordinate, || {
+            (
+                vec![v as u32],
                 vec![],
-                vec![j as u32],
-                format!("face {j} refers to vertices {indices:?}, but there are {n} vertices"),
-            );
-            for &k in &missing {
-                let len = face.len();
-                for (a, b) in [((k + len - 1) % len, k), (k, (k + 1) % len)] {
-                    let (wa, wb) = (written(a), written(b));
-                    if a != b && edges_without_end.insert((wa.min(wb), wa.max(wb))) {
-                        push(
-                            FindingKind::EdgeWithoutEndPoint,
-                            vec![],
-                            vec![j as u32],
-                            format!("edge ({wa}, {wb}) of face {j} has an end point that does not exist"),
-                        );
-                    }
-                }
-            }
-            continue;
-        }
-        sorted.clear();
-        sorted.extend_from_slice(face);
-        sorted.sort_unstable();
-        let mut repeated: Vec<u32> = sorted
-            .windows(2)
-            .filter(|w| w[0] == w[1])
-            .map(|w| w[0])
-            .collect();
-        repeated.dedup();
-        sorted.dedup();
-        if sorted.len() < 3 {
-            push(
-                FindingKind::TooFewVertices,
-                sorted.clone(),
-                vec![j as u32],
                 format!(
-                    "face {j} has {} corners on {} distinct vertices; a face needs three",
-                    face.len(),
-                    sorted.len()
+                    "vertex {} is at ({}, {}, {})",
+                    ids.id(v as u64),
+                    p.x,
+                    p.y,
+                    p.z
                 ),
-            );
-            continue;
-        }
-        if !repeated.is_empty() {
-            push(
-                FindingKind::RepeatedVertex,
-                repeated.clone(),
-                vec![j as u32],
-                format!(
-                    "face {j} visits vertices {repeated:?} more than once: not a simple polygon"
-                ),
-            );
-            repeats[j] = true;
-        }
-        usable[j] = true;
+            )
+        });
     }
-    for v in (0..n).filter(|&v| !used[v]) {
-        push(
-            FindingKind::UnusedVertex,
-            vec![v as u32],
-            vec![],
-            format!("vertex {v} is used by no face"),
-        );
-    }
-
-    let same_place = duplicate_vertices(soup, &finite, options.tolerance, &mut push);
-    let duplicate = duplicate_faces(soup, &usable, &same_place, &mut push);
-    for j in (0..soup.num_faces()).filter(|&j| usable[j]) {
+    let faces = faces::usable_faces(raw, &mut found);
+    let same_place = duplicate_vertices(soup, &finite, options.tolerance, &mut found);
+    let duplicate = duplicate_faces(soup, &faces.usable, &same_place.representative, &mut found);
+    for j in (0..soup.num_faces()).filter(|&j| faces.usable[j]) {
         let face = soup.face(j);
         if face.iter().all(|&v| finite[v as usize]) {
-            polygon_checks(soup, j, options, &mut push);
+            polygon_checks(soup, j, options, &mut found);
         }
     }
 
     // The edge analysis on the usable faces that visit each vertex once and are not a
     // duplicate of an earlier face (already reported); face ids mapped back.
-    let analysed = |j: usize| usable[j] && !duplicate[j] && !repeats[j];
+    let analysed = |j: usize| faces.usable[j] && !duplicate[j] && !faces.repeats[j];
     let kept: Vec<u32> = (0..soup.num_faces() as u32)
         .filter(|&j| analysed(j as usize))
         .collect();
     let clean = soup.with_faces(analysed);
-    let summary = topology(&clean, &kept, soup, &mut push);
+    let mut summary = topology(&clean, &kept, soup, &mut found);
+    summary.near_duplicates_not_exhaustive = same_place.not_exhaustive;
 
-    findings.sort_by_key(|f| f.kind);
-    let mut summary = summary;
-    for f in &findings {
-        *summary.counts.entry(f.kind.name()).or_default() += 1;
+    let Findings {
+        mut kept, counts, ..
+    } = found;
+    kept.sort_by_key(|f| f.kind);
+    summary.counts = counts.into_iter().map(|(k, n)| (k.name(), n)).collect();
+    Report {
+        findings: kept,
+        summary,
     }
-    Report { findings, summary }
 }
 
 /// The index the file wrote at corner `k` of face `j` (0-based), also when it does not fit `u32`.
-fn written_index(raw: &RawSoup, j: usize, k: usize) -> i64 {
+pub(super) fn written_index(raw: &RawSoup, j: usize, k: usize) -> i64 {
     let v = raw.soup.face(j)[k];
     if v != crate::io::UNREPRESENTABLE {
         return v as i64;
@@ -422,5 +462,3 @@ fn written_index(raw: &RawSoup, j: usize, k: usize) -> i64 {
         .binary_search_by_key(&(j, k), |u| (u.face, u.corner))
         .map_or(v as i64, |i| raw.unrepresentable[i].index)
 }
-
-type Push<'a> = dyn FnMut(FindingKind, Vec<u32>, Vec<u32>, String) + 'a;

@@ -1,14 +1,20 @@
 //! The checks of each face as a polygon: degenerate, simple, planar, convex.
 
-use super::{FindingKind, Options, Push};
+use super::{FindingKind, Findings, Options};
 use crate::core::attributes::NewellSum;
 use crate::core::soup::PolygonSoup;
 use glam::{DVec2, DVec3};
 
 /// Degenerate, non-simple, non-planar and non-convex faces (triangles are planar, simple and
 /// convex unless degenerate).
-pub(super) fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, push: &mut Push<'_>) {
+pub(super) fn polygon_checks(
+    soup: &PolygonSoup,
+    j: usize,
+    options: &Options,
+    found: &mut Findings,
+) {
     let face = soup.face(j);
+    let fid = found.numbering().id(j as u64);
     let points = || face.iter().map(|&v| soup.positions[v as usize]);
     let mut newell = NewellSum::default();
     let (mut lo, mut hi, mut sum) = (DVec3::INFINITY, DVec3::NEG_INFINITY, DVec3::ZERO);
@@ -23,12 +29,13 @@ pub(super) fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, pu
     let k = face.len();
     // Twice the area over the size: how far the face extends across its longest direction.
     if size == 0.0 || area_vector.length() / size <= options.tolerance {
-        push(
-            FindingKind::DegenerateFace,
-            face.to_vec(),
-            vec![j as u32],
-            format!("face {j} has (nearly) zero area"),
-        );
+        found.add(FindingKind::DegenerateFace, || {
+            (
+                face.to_vec(),
+                vec![j as u32],
+                format!("face {fid} has (nearly) zero area"),
+            )
+        });
         return;
     }
     if k == 3 {
@@ -40,15 +47,16 @@ pub(super) fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, pu
         .map(|p| normal.dot(p - centroid).abs())
         .fold(0.0, f64::max);
     if off_plane > options.planarity_tolerance * size {
-        push(
-            FindingKind::NonPlanarFace,
-            face.to_vec(),
-            vec![j as u32],
-            format!(
-                "face {j}: a corner lies {off_plane:.3e} from its plane, more than {} of its size {size:.3e}",
-                options.planarity_tolerance
-            ),
-        );
+        found.add(FindingKind::NonPlanarFace, || {
+            (
+                face.to_vec(),
+                vec![j as u32],
+                format!(
+                    "face {fid}: a corner lies {off_plane:.3e} from its plane, more than {} of its size {size:.3e}",
+                    options.planarity_tolerance
+                ),
+            )
+        });
     }
     // Project onto the coordinate plane most nearly parallel to the face.
     let drop = normal.abs().max_position();
@@ -61,12 +69,13 @@ pub(super) fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, pu
         .then(|| self_intersection(k, &corner))
         .flatten();
     if let Some((a, b)) = simplicity {
-        push(
-            FindingKind::NonSimpleFace,
-            face.to_vec(),
-            vec![j as u32],
-            format!("face {j}: its edges {a} and {b} intersect"),
-        );
+        found.add(FindingKind::NonSimpleFace, || {
+            (
+                face.to_vec(),
+                vec![j as u32],
+                format!("face {fid}: its edges {a} and {b} intersect"),
+            )
+        });
         return;
     }
     // The lecture's test: the turn at every corner has the same sign (collinear corners,
@@ -77,12 +86,13 @@ pub(super) fn polygon_checks(soup: &PolygonSoup, j: usize, options: &Options, pu
         (l || t > flat_turn, r || t < -flat_turn)
     });
     if left && right {
-        push(
-            FindingKind::NonConvexFace,
-            face.to_vec(),
-            vec![j as u32],
-            format!("face {j} turns both left and right: not convex"),
-        );
+        found.add(FindingKind::NonConvexFace, || {
+            (
+                face.to_vec(),
+                vec![j as u32],
+                format!("face {fid} turns both left and right: not convex"),
+            )
+        });
     }
 }
 

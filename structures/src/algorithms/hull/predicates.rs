@@ -19,7 +19,7 @@
 //!   2^-906, and so is every sum and rounded result: a non-zero value stays ≥ 2^-906, and even
 //!   its error bound (about 2^-50 times it) stays a normal double (≥ 2^-1022).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Numbering, Result};
 use glam::DVec3;
 use robust::{Coord, Coord3D};
 
@@ -90,7 +90,11 @@ pub fn prepare(points: &[DVec3]) -> Result<Prepared> {
     }
     for (vertex, p) in points.iter().enumerate() {
         if let Some(&value) = p.to_array().iter().find(|c| !c.is_finite()) {
-            return Err(Error::NonFiniteCoordinate { vertex, value });
+            return Err(Error::NonFiniteCoordinate {
+                vertex,
+                value,
+                numbering: Numbering::FromZero,
+            });
         }
         if let Some(&value) = p
             .to_array()

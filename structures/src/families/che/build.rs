@@ -110,7 +110,7 @@ fn check_level0(soup: &PolygonSoup, structure: &'static str) -> Result<()> {
 
 /// The exact error for a soup in which the fast construction found a non-manifold edge, an
 /// orientation clash or a vertex of several fans: the shared edge analysis names the culprit.
-fn refusal(soup: &PolygonSoup, structure: &'static str) -> Error {
+pub(crate) fn refusal(soup: &PolygonSoup, structure: &'static str) -> Error {
     match soup.connectivity().and_then(|c| c.check_vertex_fans(soup)) {
         Err(e) => e,
         Ok(()) => Error::invariant(

@@ -33,7 +33,9 @@
 
 mod map;
 
-use super::build::edge_map_by_scan;
+use super::build::{
+    edge_map_by_scan, every_vertex_one_fan, opposites_and_vertex_half_edges, refusal,
+};
 use super::fan::Fan;
 use super::level0::check_start_vertices;
 use super::level1::{check_opposites, level1_cost, vertex_star_algorithm_6};
@@ -158,8 +160,57 @@ impl CheFile {
             }));
         }
         self.check_ids().map_err(problem)?;
+        let structure = OWNED_NAMES[self.level() as usize];
+        self.check_corners(structure)?;
         self.check_edge_count().map_err(problem)?;
-        self.check_structure(OWNED_NAMES[self.level() as usize])
+        self.check_structure(structure)
+    }
+
+    /// What building any level from `G[]` and `V[]` refuses, whatever the level stores: a
+    /// coordinate that is not finite, a triangle that repeats a vertex, an edge of more than
+    /// two triangles or two that traverse it the same way, a vertex of several fans (the
+    /// shared edge analysis names it, as for a mesh file); and from level 1 on, an `O[]` other
+    /// than the pairing `V[]` makes (boundary half-edges negative). So a level-0 file, which
+    /// stores no `O[]` to contradict a corrupt `V[]`, is refused for what a level-1 file of the
+    /// same triangles would be. O(n), the construction's own passes; a refusal copies `G[]` and
+    /// `V[]` for the analysis.
+    fn check_corners(&self, structure: &'static str) -> Result<()> {
+        let (g, v) = (self.geometry(), self.start_vertices());
+        let refuse = || {
+            refusal(
+                &PolygonSoup::from_triangles(g.to_vec(), v.to_vec()),
+                structure,
+            )
+        };
+        if !g.iter().all(|p| p.is_finite()) {
+            return Err(refuse());
+        }
+        let paired = opposites_and_vertex_half_edges(v, g.len());
+        let Some((o, _)) = paired.filter(|(o, vh)| every_vertex_one_fan(o, vh)) else {
+            return Err(refuse());
+        };
+        if self.level() == 0 {
+            return Ok(());
+        }
+        let stored = self.opposite();
+        let differs = (0..o.len()).find(|&he| match o[he] {
+            twin if twin >= 0 => stored[he] != twin,
+            _ => stored[he] >= 0,
+        });
+        match differs {
+            Some(he) => Err(Error::invariant(
+                structure,
+                format!(
+                    "O[{he}] = {}, but V[] makes half-edge {he} {}",
+                    stored[he],
+                    match o[he] {
+                        twin if twin >= 0 => format!("the opposite of half-edge {twin}"),
+                        _ => "a boundary half-edge".to_string(),
+                    }
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 
     /// Every id of every container in the range its level allows.

@@ -3,7 +3,7 @@
 
 use super::records::{build_index, ends_key, EdgeRecord};
 use super::WingedEdge;
-use crate::core::error::{Error, Result};
+use crate::core::error::{Error, Numbering, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
@@ -68,6 +68,7 @@ impl WingedEdge {
             return Err(Error::TooFewCorners {
                 face: face.index(),
                 corners: k,
+                numbering: Numbering::FromZero,
             });
         }
         let n0 = self.positions.len();
@@ -77,12 +78,14 @@ impl WingedEdge {
                     face: face.index(),
                     index: v.0 as i64,
                     vertices: n0,
+                    numbering: Numbering::FromZero,
                 });
             }
             if vertices[..i].contains(&v) {
                 return Err(Error::RepeatedVertex {
                     face: face.index(),
                     vertex: v.0,
+                    numbering: Numbering::FromZero,
                 });
             }
         }
