@@ -4,7 +4,7 @@
 //! file in the same folder, renamed over the target once complete, so a failed or interrupted
 //! run never leaves a half-written file under the target's name.
 
-use crate::input::Failure;
+use crate::failure::Failure;
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};

@@ -1,13 +1,14 @@
 //! `topolab info`: counts, boundary curves, Euler characteristic and genus of a mesh, computed
 //! through a structure.
 
+use super::info_text::summary_lines;
 use crate::input::{
     invalid_mesh_hint, is_che_file, load_mesh, refuse_empty, unknown_structure, Failure,
 };
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
 use std::path::Path;
-use topolab_structures::summary::{shown, summarize, Summary};
+use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
 struct InfoVisit<'a>(&'a PolygonSoup);
@@ -68,50 +69,4 @@ pub fn info_through(spec: &str, structure: Option<&str>, json: bool) -> Result<S
     let _ = writeln!(out, "structure:            {}", summary.structure);
     summary_lines(&mut out, &summary);
     Ok(out)
-}
-
-/// The lines of `info`'s text after the mesh and the structure: counts, boundary, components,
-/// Euler characteristic, genus, manifoldness.
-pub(super) fn summary_lines(out: &mut String, s: &Summary) {
-    let _ = writeln!(
-        out,
-        "vertices:             {} ({} unused)",
-        s.vertices, s.unused_vertices
-    );
-    let _ = writeln!(out, "edges:                {}", s.edges);
-    let _ = writeln!(
-        out,
-        "faces:                {} ({})",
-        s.faces,
-        if s.triangles_only {
-            "triangles"
-        } else {
-            "polygons"
-        }
-    );
-    let _ = writeln!(out, "boundary edges:       {}", s.boundary_edges);
-    let _ = writeln!(
-        out,
-        "boundary curves:      {}",
-        shown(s.boundary_curves, s.boundary_curves_undefined)
-    );
-    let _ = writeln!(out, "components:           {}", s.components);
-    let _ = writeln!(out, "euler characteristic: {}", s.euler_characteristic);
-    let _ = writeln!(
-        out,
-        "genus:                {}",
-        shown(s.genus, s.genus_undefined)
-    );
-    let _ = writeln!(
-        out,
-        "manifold:             {}",
-        if s.non_manifold_vertices == 0 {
-            "yes (oriented, every vertex one fan)".to_string()
-        } else {
-            format!(
-                "edges yes, {} non-manifold vertices",
-                s.non_manifold_vertices
-            )
-        }
-    );
 }

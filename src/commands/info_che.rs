@@ -5,7 +5,7 @@
 //! levels 2 and 3 through the mapped containers themselves, levels 0 and 1 (whose vertex star
 //! scans `V[]`, O(n) a vertex) through level 2 built from the file's `G[]` and `V[]`.
 
-use super::info::summary_lines;
+use super::info_text::summary_lines;
 use crate::input::Failure;
 use crate::limits;
 use std::fmt::Write as _;

@@ -14,6 +14,7 @@ pub mod explain_trace;
 pub mod hull;
 pub mod info;
 mod info_che;
+mod info_text;
 pub mod list;
 pub mod reconstruct;
 pub mod refine;
