@@ -43,7 +43,8 @@
 //! | [`families`] | the structures by family, each family's shared engine beside them |
 //! | [`io`] | OBJ, OFF and PLY readers and writers |
 //! | [`algorithms`] | the 3D convex hull, consistency checks and summary, refinement, orderings |
-//! | [`testing`] | the oracle, the conformance suite, canonical and generated meshes |
+//! | [`meshes`] | canonical tiny meshes, generated grids, tori, spheres and random meshes, and their names on the command line |
+//! | [`testing`] | the oracle, the conformance suite and the editing suite |
 #![deny(missing_docs)]
 // Unsafe code lives only where `allow(unsafe_code)` marks it: the pointer half-edge's links
 // (real pointers are that structure's point), the CHE's unchecked walk (`families::che::fan`,
@@ -55,13 +56,14 @@ pub mod algorithms;
 pub mod core;
 pub mod families;
 pub mod io;
+pub mod meshes;
 pub mod registry;
 pub mod testing;
 
 // The module paths the other crates use (`topolab_structures::hull::convex_hull`, ...).
 pub use algorithms::{checks, hull, ordering, refine, repair, summary};
 pub use families::che;
-pub use testing::{conformance, meshes};
+pub use testing::conformance;
 // The error types' short path inside the crate (`crate::error::Error`).
 use self::core::error;
 

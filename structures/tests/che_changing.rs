@@ -3,8 +3,8 @@
 //! module), so the meshes are compared as sets of faces.
 
 use topolab_structures::algorithms::changing::{collapse_test, sqrt3_step, to_soup};
+use topolab_structures::meshes;
 use topolab_structures::testing::editing::canonical_face;
-use topolab_structures::testing::meshes;
 use topolab_structures::{CheL0, CheL1, CheL2, CheL3, IndexHalfEdge, MeshEdit, PolygonSoup};
 
 fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {

@@ -380,7 +380,7 @@ pub fn refine_adaptive<M: MeshEdit>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::IndexHalfEdge;
 
     #[test]

@@ -178,8 +178,8 @@ pub fn collapse_test<M: MeshEdit>(m: &mut M) -> Result<()> {
 mod tests {
     use super::*;
     use crate::core::ids::EdgeId;
+    use crate::meshes;
     use crate::testing::editing::canonical_face;
-    use crate::testing::meshes;
     use crate::{EdgeList, IndexHalfEdge, PointerHalfEdge, VertexList, WingedEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {

@@ -260,7 +260,7 @@ fn breadth_first(soup: &PolygonSoup) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::testing::oracle::{pair, Oracle};
 
     fn is_permutation(p: &[u32]) -> bool {

@@ -186,7 +186,7 @@ fn loop_positions(soup: &PolygonSoup, conn: &Connectivity) -> Vec<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::testing::oracle::Oracle;
 
     fn euler(s: &PolygonSoup) -> i64 {

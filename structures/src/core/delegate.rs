@@ -19,17 +19,20 @@
 #[macro_export]
 macro_rules! delegate_topology {
     ($outer:ident($inner:ty), $name:literal) => {
-        impl $crate::MeshTopology for $outer {
+        impl $crate::core::topology::MeshTopology for $outer {
             const NAME: &'static str = $name;
-            const FAMILY: $crate::Family = <$inner as $crate::MeshTopology>::FAMILY;
-            fn capabilities() -> $crate::Capabilities {
-                <$inner as $crate::MeshTopology>::capabilities()
+            const FAMILY: $crate::core::family::Family =
+                <$inner as $crate::core::topology::MeshTopology>::FAMILY;
+            fn capabilities() -> $crate::core::topology::Capabilities {
+                <$inner as $crate::core::topology::MeshTopology>::capabilities()
             }
-            fn cost(op: $crate::Operator) -> $crate::Cost {
-                <$inner as $crate::MeshTopology>::cost(op)
+            fn cost(op: $crate::core::topology::Operator) -> $crate::core::topology::Cost {
+                <$inner as $crate::core::topology::MeshTopology>::cost(op)
             }
-            fn from_soup(soup: &$crate::PolygonSoup) -> $crate::Result<Self> {
-                <$inner as $crate::MeshTopology>::from_soup(soup).map($outer)
+            fn from_soup(
+                soup: &$crate::core::soup::PolygonSoup,
+            ) -> $crate::core::error::Result<Self> {
+                <$inner as $crate::core::topology::MeshTopology>::from_soup(soup).map($outer)
             }
             #[inline]
             fn num_vertices(&self) -> usize {
@@ -47,77 +50,112 @@ macro_rules! delegate_topology {
             fn num_boundary_edges(&self) -> usize {
                 self.0.num_boundary_edges()
             }
-            fn for_each_edge(&self, f: impl FnMut($crate::EdgeId)) {
+            fn for_each_edge(&self, f: impl FnMut($crate::core::ids::EdgeId)) {
                 self.0.for_each_edge(f)
             }
             #[inline]
-            fn position(&self, v: $crate::VertexId) -> $crate::glam::DVec3 {
+            fn position(&self, v: $crate::core::ids::VertexId) -> $crate::glam::DVec3 {
                 self.0.position(v)
             }
             #[inline]
-            fn vertex_vertices(&self, v: $crate::VertexId, f: impl FnMut($crate::VertexId)) {
+            fn vertex_vertices(
+                &self,
+                v: $crate::core::ids::VertexId,
+                f: impl FnMut($crate::core::ids::VertexId),
+            ) {
                 self.0.vertex_vertices(v, f)
             }
             #[inline]
-            fn vertex_edges(&self, v: $crate::VertexId, f: impl FnMut($crate::EdgeId)) {
+            fn vertex_edges(
+                &self,
+                v: $crate::core::ids::VertexId,
+                f: impl FnMut($crate::core::ids::EdgeId),
+            ) {
                 self.0.vertex_edges(v, f)
             }
             #[inline]
-            fn vertex_faces(&self, v: $crate::VertexId, f: impl FnMut($crate::FaceId)) {
+            fn vertex_faces(
+                &self,
+                v: $crate::core::ids::VertexId,
+                f: impl FnMut($crate::core::ids::FaceId),
+            ) {
                 self.0.vertex_faces(v, f)
             }
             #[inline]
-            fn edge_vertices(&self, e: $crate::EdgeId) -> [$crate::VertexId; 2] {
+            fn edge_vertices(
+                &self,
+                e: $crate::core::ids::EdgeId,
+            ) -> [$crate::core::ids::VertexId; 2] {
                 self.0.edge_vertices(e)
             }
             #[inline]
-            fn edge_edges(&self, e: $crate::EdgeId, f: impl FnMut($crate::EdgeId)) {
+            fn edge_edges(
+                &self,
+                e: $crate::core::ids::EdgeId,
+                f: impl FnMut($crate::core::ids::EdgeId),
+            ) {
                 self.0.edge_edges(e, f)
             }
             #[inline]
-            fn edge_faces(&self, e: $crate::EdgeId, f: impl FnMut($crate::FaceId)) {
+            fn edge_faces(
+                &self,
+                e: $crate::core::ids::EdgeId,
+                f: impl FnMut($crate::core::ids::FaceId),
+            ) {
                 self.0.edge_faces(e, f)
             }
             #[inline]
-            fn face_vertices(&self, face: $crate::FaceId, f: impl FnMut($crate::VertexId)) {
+            fn face_vertices(
+                &self,
+                face: $crate::core::ids::FaceId,
+                f: impl FnMut($crate::core::ids::VertexId),
+            ) {
                 self.0.face_vertices(face, f)
             }
             #[inline]
-            fn face_edges(&self, face: $crate::FaceId, f: impl FnMut($crate::EdgeId)) {
+            fn face_edges(
+                &self,
+                face: $crate::core::ids::FaceId,
+                f: impl FnMut($crate::core::ids::EdgeId),
+            ) {
                 self.0.face_edges(face, f)
             }
             #[inline]
-            fn face_faces(&self, face: $crate::FaceId, f: impl FnMut($crate::FaceId)) {
+            fn face_faces(
+                &self,
+                face: $crate::core::ids::FaceId,
+                f: impl FnMut($crate::core::ids::FaceId),
+            ) {
                 self.0.face_faces(face, f)
             }
             #[inline]
-            fn is_boundary_vertex(&self, v: $crate::VertexId) -> bool {
+            fn is_boundary_vertex(&self, v: $crate::core::ids::VertexId) -> bool {
                 self.0.is_boundary_vertex(v)
             }
             #[inline]
-            fn is_boundary_edge(&self, e: $crate::EdgeId) -> bool {
+            fn is_boundary_edge(&self, e: $crate::core::ids::EdgeId) -> bool {
                 self.0.is_boundary_edge(e)
             }
-            fn boundary_curves(&self, out: &mut $crate::BoundaryCurves) {
+            fn boundary_curves(&self, out: &mut $crate::core::topology::BoundaryCurves) {
                 self.0.boundary_curves(out)
             }
             #[inline]
             fn edge_successor(
                 &self,
-                e: $crate::EdgeId,
-                face: $crate::FaceId,
-            ) -> Option<$crate::EdgeId> {
+                e: $crate::core::ids::EdgeId,
+                face: $crate::core::ids::FaceId,
+            ) -> Option<$crate::core::ids::EdgeId> {
                 self.0.edge_successor(e, face)
             }
             #[inline]
             fn edge_predecessor(
                 &self,
-                e: $crate::EdgeId,
-                face: $crate::FaceId,
-            ) -> Option<$crate::EdgeId> {
+                e: $crate::core::ids::EdgeId,
+                face: $crate::core::ids::FaceId,
+            ) -> Option<$crate::core::ids::EdgeId> {
                 self.0.edge_predecessor(e, face)
             }
-            fn validate(&self) -> $crate::Result<()> {
+            fn validate(&self) -> $crate::core::error::Result<()> {
                 self.0.validate()
             }
             fn heap_bytes(&self) -> usize {
@@ -126,11 +164,13 @@ macro_rules! delegate_topology {
             fn explain(&self, w: &mut dyn std::fmt::Write) -> std::fmt::Result {
                 self.0.explain(w)
             }
-            fn input_checks() -> Option<$crate::InputChecks> {
-                <$inner as $crate::MeshTopology>::input_checks()
+            fn input_checks() -> Option<$crate::core::topology::InputChecks> {
+                <$inner as $crate::core::topology::MeshTopology>::input_checks()
             }
-            fn access(op: $crate::Operator) -> Option<$crate::Access> {
-                <$inner as $crate::MeshTopology>::access(op)
+            fn access(
+                op: $crate::core::topology::Operator,
+            ) -> Option<$crate::core::access::Access> {
+                <$inner as $crate::core::topology::MeshTopology>::access(op)
             }
         }
     };

@@ -565,13 +565,13 @@ macro_rules! mesh_edit_by_rewrite {
             fn edit_cost(op: $crate::core::edit::EditOp) -> $crate::core::topology::Cost {
                 ($cost)(op)
             }
-            fn set_position(&mut self, v: $crate::VertexId, p: glam::DVec3) -> $crate::Result<()> {
+            fn set_position(&mut self, v: $crate::core::ids::VertexId, p: glam::DVec3) -> $crate::core::error::Result<()> {
                 $crate::core::rewrite::set_position(self, v, p)
             }
-            fn is_deleted_vertex(&self, v: $crate::VertexId) -> bool {
+            fn is_deleted_vertex(&self, v: $crate::core::ids::VertexId) -> bool {
                 $crate::core::rewrite::FaceRewrite::vertex_deleted(self, v)
             }
-            fn is_deleted_face(&self, _f: $crate::FaceId) -> bool {
+            fn is_deleted_face(&self, _f: $crate::core::ids::FaceId) -> bool {
                 false
             }
             fn garbage_collection(&mut self) {

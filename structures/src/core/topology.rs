@@ -20,7 +20,7 @@ pub struct Capabilities {
     /// Vertices whose faces form several fans are stored and answered correctly (otherwise
     /// refused with [`crate::Error::NonManifoldVertex`]).
     pub non_manifold_vertices: bool,
-    /// Only the regular grids of [`crate::testing::meshes::grid`] (others refused with
+    /// Only the regular grids of [`crate::meshes::grid`] (others refused with
     /// [`crate::Error::NotAGrid`]).
     pub grids_only: bool,
     /// Vertices are identified by position, so two vertices may not coincide (explicit
@@ -128,7 +128,7 @@ pub trait MeshTopology: Sized + 'static {
 
     /// The family it belongs to (what it stores for adjacency); the default, for structures
     /// the lab did not write, is [`crate::Family::Outside`].
-    const FAMILY: crate::Family = crate::Family::Outside;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::Outside;
 
     /// What kinds of meshes it stores.
     fn capabilities() -> Capabilities;
@@ -290,7 +290,7 @@ impl Sample<'_> {
 
 /// A structure's checks of its input as a step of their own ([`MeshTopology::input_checks`]):
 /// the soup's edge analysis, or its refusal.
-pub type InputChecks = fn(&PolygonSoup) -> Result<crate::Connectivity>;
+pub type InputChecks = fn(&PolygonSoup) -> Result<crate::core::soup::Connectivity>;
 
 /// The construction of a structure built by another project's code (a C++ baseline behind
 /// the FFI, a Rust crate of `topolab-peers`), in three steps, so that the harness's clock

@@ -16,7 +16,7 @@
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, Capabilities, MeshTopology};
-use crate::testing::meshes::{self, RandomMeshParams};
+use crate::meshes::{self, RandomMeshParams};
 use crate::testing::oracle::{pair, Oracle, Pair};
 use std::collections::BTreeSet;
 

@@ -22,8 +22,8 @@ use crate::algorithms::decimate::{
 use crate::core::edit::MeshEdit;
 use crate::core::ids::FaceId;
 use crate::core::soup::PolygonSoup;
+use crate::meshes::{self, RandomMeshParams};
 use crate::testing::editing::Model;
-use crate::testing::meshes::{self, RandomMeshParams};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

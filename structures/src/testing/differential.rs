@@ -10,8 +10,8 @@
 
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::MeshTopology;
+use crate::meshes::{self, RandomMeshParams};
 use crate::summary::{summarize, Summary};
-use crate::testing::meshes::{self, RandomMeshParams};
 use crate::testing::oracle::Oracle;
 use glam::DVec3;
 use proptest::prelude::*;

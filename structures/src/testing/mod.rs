@@ -1,16 +1,15 @@
 //! What the structures are checked against and tested on: the naive [`oracle`] built from the
 //! face list, the shared [`conformance`](mod@conformance) suite that compares every operator
 //! with it, the [`editing`] suite of random edit sequences against a naive model with its
-//! [`weld`] tests, the [`differential`] test of `topolab info`, the [`decimating`] suite (decimation, then reconstruction by vertex
-//! splits), the canonical and generated [`meshes`], and the [`growth`] of a test's time with
-//! its input's size.
+//! [`weld`] tests, the [`differential`] test of `topolab info`, the [`decimating`] suite
+//! (decimation, then reconstruction by vertex splits), and the [`growth`] of a test's time
+//! with its input's size. The meshes they run on are [`crate::meshes`].
 
 pub mod conformance;
 pub mod decimating;
 pub mod differential;
 pub mod editing;
 pub mod growth;
-pub mod meshes;
 pub mod oracle;
 pub mod weld;
 

@@ -10,8 +10,8 @@ use crate::algorithms::weld::weld_meshes;
 use crate::core::edit::{MeshEdit, Refusal};
 use crate::core::error::Error;
 use crate::core::soup::PolygonSoup;
+use crate::meshes;
 use crate::testing::conformance::compare;
-use crate::testing::meshes;
 use crate::testing::oracle::canonical_face;
 use glam::DVec3;
 

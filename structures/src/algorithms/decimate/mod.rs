@@ -622,7 +622,7 @@ pub fn minimum_faces<M: MeshTopology>(m: &M) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::IndexHalfEdge;
 
     #[test]

@@ -488,7 +488,7 @@ mod tests {
     use crate::algorithms::decimate::{
         canonical_input, decimate_levels, live_soup, reconstruct_from, Strategy,
     };
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::{IndexHalfEdge, MeshTopology};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;

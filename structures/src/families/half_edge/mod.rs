@@ -238,7 +238,7 @@ impl<L: HalfEdgeLinks> HalfEdge<L> {
 mod tests {
     use crate::core::soup::PolygonSoup;
     use crate::core::topology::{BoundaryCurves, MeshTopology};
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::{IndexHalfEdge, PointerHalfEdge};
     use glam::DVec3;
 

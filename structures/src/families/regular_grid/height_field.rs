@@ -3,7 +3,7 @@
 //! The *gemischte Struktur* (mixed structure) of the lecture on polygon-mesh data structures: the
 //! regular grid's implicit topology (every operator is the same arithmetic, shared through
 //! [`Grid`]) with explicit geometry, one stored position per vertex, "e.g. the simulation of a
-//! flag". It accepts the grids of [`crate::testing::meshes::grid`] with any positions: heights,
+//! flag". It accepts the grids of [`crate::meshes::grid`] with any positions: heights,
 //! perturbations, a waving flag.
 //!
 //! | stores | bytes |

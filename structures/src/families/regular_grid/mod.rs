@@ -4,7 +4,7 @@
 //! uniform grid whose topology is given by the number of points in x and y, and whose geometry by
 //! the origin and the cell lengths. Nothing is stored per element: every operator is arithmetic on
 //! the vertex number `v = j·(nx+1) + i`. It represents exactly the grids of
-//! [`crate::testing::meshes::grid`] (quads, or each cell split into the triangles `(a, b, c)`, `(a,
+//! [`crate::meshes::grid`] (quads, or each cell split into the triangles `(a, b, c)`, `(a,
 //! c, d)`); anything else is refused with [`crate::Error::NotAGrid`] naming the reason. Positions
 //! are answered by the formula `origin + (i·dx, j·dy, 0)`; an input is accepted when each vertex
 //! lies there up to rounding (1e-9 of the grid's extent), so a generator's `origin + i·dx` need not

@@ -256,7 +256,7 @@ impl GridShape {
         i == 0 || j == 0 || i == self.nx || j == self.ny
     }
 
-    /// The shape of `soup` if it is one of [`crate::testing::meshes::grid`]'s grids, else why not.
+    /// The shape of `soup` if it is one of [`crate::meshes::grid`]'s grids, else why not.
     /// Linear: every face is compared with the grid's face of the same number.
     pub(super) fn of_soup(soup: &PolygonSoup) -> std::result::Result<Self, String> {
         if soup.num_faces() == 0 {

@@ -4,8 +4,8 @@ use super::*;
 use crate::core::ids::VertexId;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::MeshTopology;
+use crate::meshes;
 use crate::testing::conformance::compare;
-use crate::testing::meshes;
 
 /// The example of the lecture on polygon-mesh data structures: origin (-1, 1), cells
 /// 0.2 x 0.2, 10 points in x and 20 in y (points, not cells: 9 x 19 cells).

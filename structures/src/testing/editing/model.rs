@@ -3,7 +3,7 @@
 
 use crate::algorithms::select::Aabb;
 use crate::core::soup::PolygonSoup;
-use crate::testing::meshes::{self, RandomMeshParams};
+use crate::meshes::{self, RandomMeshParams};
 use crate::testing::oracle::canonical_face;
 use glam::DVec3;
 

@@ -137,7 +137,7 @@ mod tests {
     use super::*;
     use crate::core::error::Error;
     use crate::core::topology::MeshTopology;
-    use crate::testing::meshes;
+    use crate::meshes;
 
     #[test]
     fn a_move_rewrites_every_copy_of_the_position_and_nothing_else() {

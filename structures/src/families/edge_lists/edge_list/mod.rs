@@ -448,7 +448,7 @@ impl MeshTopology for EdgeList {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::meshes;
+    use crate::meshes;
 
     /// The lecture's example (two triangles P1 = (E5, E4, E1), P2 = (E2, E4, E3) over V1..V4),
     /// 0-based: P1 runs V1 → V4 → V2, P2 runs V3 → V2 → V4.

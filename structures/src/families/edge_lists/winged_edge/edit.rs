@@ -380,7 +380,7 @@ impl FaceRewrite for WingedEdge {
 #[cfg(test)]
 mod tests {
     use crate::core::edit::MeshEdit;
-    use crate::testing::meshes;
+    use crate::meshes;
     use crate::{EdgeId, FaceId, MeshTopology, VertexId, WingedEdge};
 
     #[test]

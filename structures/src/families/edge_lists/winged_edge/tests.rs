@@ -5,8 +5,8 @@ use super::*;
 use crate::core::error::Error;
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::MeshTopology;
+use crate::meshes;
 use crate::testing::conformance::compare;
-use crate::testing::meshes;
 
 fn ids(vs: &[u32]) -> Vec<VertexId> {
     vs.iter().map(|&v| VertexId(v)).collect()

@@ -273,7 +273,7 @@ impl HalfEdgeLinksMut for IndexLinks {
 mod tests {
     use super::*;
     use crate::core::topology::MeshTopology;
-    use crate::testing::meshes;
+    use crate::meshes;
 
     fn tetrahedron() -> IndexHalfEdge {
         IndexHalfEdge::from_soup(&meshes::open_tetrahedron()).expect("manifold")

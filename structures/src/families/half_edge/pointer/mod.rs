@@ -221,7 +221,7 @@ mod tests {
     use super::links::LIVE_RECORDS;
     use super::*;
     use crate::core::topology::MeshTopology;
-    use crate::testing::meshes::{self, RandomMeshParams};
+    use crate::meshes::{self, RandomMeshParams};
     use crate::IndexHalfEdge;
 
     fn live() -> isize {

@@ -302,7 +302,7 @@ pub fn from_spec(spec: &str) -> Result<PolygonSoup, SpecError> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::euler_and_curves;
+    use super::super::tests::euler_and_curves;
     use super::*;
 
     #[test]
