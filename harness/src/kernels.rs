@@ -80,26 +80,14 @@ pub struct QuerySet {
 
 /// The seeded sample of `count` queries of each kind for `soup` (fewer on tiny meshes).
 pub fn sample_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let nv = soup.num_vertices();
-    let nf = soup.num_faces();
-    let nc = soup.num_corners();
-    let pick = |rng: &mut ChaCha8Rng, n: usize| -> Vec<u32> {
+    query_set(soup, seed, |rng, n| {
         let mut v: Vec<u32> = sample(rng, n, count.min(n))
             .into_iter()
             .map(|i| i as u32)
             .collect();
         v.sort_unstable();
         v
-    };
-    let vertices = pick(&mut rng, nv);
-    let faces = pick(&mut rng, nf);
-    let edges = corner_edges(soup, pick(&mut rng, nc));
-    QuerySet {
-        vertices,
-        faces,
-        edges,
-    }
+    })
 }
 
 /// A fresh draw of `count` queries of each kind for `soup`, in random order (not sorted by id:
@@ -109,9 +97,7 @@ pub fn sample_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
 pub fn draw_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
     use rand::seq::SliceRandom;
     use rand::Rng;
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let (nv, nf, nc) = (soup.num_vertices(), soup.num_faces(), soup.num_corners());
-    let pick = |rng: &mut ChaCha8Rng, n: usize| -> Vec<u32> {
+    query_set(soup, seed, |rng, n| {
         if n == 0 {
             return Vec::new();
         }
@@ -125,10 +111,20 @@ pub fn draw_queries(soup: &PolygonSoup, count: usize, seed: u64) -> QuerySet {
         };
         v.shuffle(rng);
         v
-    };
-    let vertices = pick(&mut rng, nv);
-    let faces = pick(&mut rng, nf);
-    let edges = corner_edges(soup, pick(&mut rng, nc));
+    })
+}
+
+/// The queries `pick` draws from `0..n` for the vertices, the faces and the corners (their
+/// edges), in that order from one generator seeded with `seed`.
+fn query_set(
+    soup: &PolygonSoup,
+    seed: u64,
+    pick: impl Fn(&mut ChaCha8Rng, usize) -> Vec<u32>,
+) -> QuerySet {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let vertices = pick(&mut rng, soup.num_vertices());
+    let faces = pick(&mut rng, soup.num_faces());
+    let edges = corner_edges(soup, pick(&mut rng, soup.num_corners()));
     QuerySet {
         vertices,
         faces,

@@ -286,6 +286,12 @@ pub fn write_obj(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> 
 /// Writes `soup` as OFF.
 pub fn write_off(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> {
     writeln!(w, "OFF\n{} {} 0", soup.num_vertices(), soup.num_faces())?;
+    write_counted_lists(w, soup)
+}
+
+/// The body OFF and ASCII PLY share: one position a line, then each face as its corner count
+/// and its vertex ids.
+pub(crate) fn write_counted_lists(w: &mut impl Write, soup: &PolygonSoup) -> std::io::Result<()> {
     for p in &soup.positions {
         writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
     }

@@ -36,18 +36,7 @@ pub fn write_ply(
         soup.num_faces()
     )?;
     match encoding {
-        PlyEncoding::Ascii => {
-            for p in &soup.positions {
-                writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-            }
-            for f in soup.faces() {
-                write!(w, "{}", f.len())?;
-                for &v in f {
-                    write!(w, " {v}")?;
-                }
-                writeln!(w)?;
-            }
-        }
+        PlyEncoding::Ascii => super::write_counted_lists(w, soup)?,
         PlyEncoding::Binary => {
             for p in &soup.positions {
                 for x in p.to_array() {

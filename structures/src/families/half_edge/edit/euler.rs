@@ -132,11 +132,7 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
     // --- checks ------------------------------------------------------------------------------
 
     fn refuse(op: EditOp, reason: Refusal) -> Error {
-        Error::EditRefused {
-            structure: L::NAME,
-            op,
-            reason,
-        }
+        crate::core::offers::refuse::<Self>(op, reason)
     }
     pub(super) fn live_vertex(&self, v: u32, op: EditOp) -> Result<()> {
         if (v as usize) < self.links.num_vertices() && !self.marks.vertex(v) {
