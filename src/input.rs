@@ -249,5 +249,5 @@ pub fn is_che_file(path: &Path) -> bool {
     let mut start = [0u8; 8];
     std::fs::File::open(path)
         .and_then(|mut f| f.read_exact(&mut start))
-        .is_ok_and(|()| start == topolab_structures::io::che_file::MAGIC)
+        .is_ok_and(|()| start == topolab_structures::che::file::MAGIC)
 }

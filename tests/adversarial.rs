@@ -626,7 +626,7 @@ fn scratch(name: &str) -> PathBuf {
 /// The bad `.che` files of the curated cases: a valid file cut short, one with another magic,
 /// one whose header says level 9.
 fn che_files(dir: &Path) {
-    use topolab_structures::io::che_file::Containers;
+    use topolab_structures::che::file::Containers;
     let tet = topolab_structures::meshes::open_tetrahedron();
     let che = topolab_structures::CheL2::from_soup(&tet).unwrap();
     let good = Containers::level2(&che).to_bytes().unwrap();

@@ -7,8 +7,8 @@ mod common;
 
 use common::run::{scratch, text, topolab};
 use std::path::Path;
+use topolab_structures::che::file::write_mesh;
 use topolab_structures::che::MappedChe;
-use topolab_structures::io::che_file::write_mesh;
 use topolab_structures::meshes;
 use topolab_structures::{CheL1, CheL2, CheL3, MeshTopology, Operator, PolygonSoup};
 
@@ -203,10 +203,10 @@ fn check_refuses_corrupt_triangles_at_level_0_as_at_level_1() {
         ]);
         assert!(o.status.success(), "{}", text(&o.stderr));
         let good = std::fs::read(&file).unwrap();
-        let header = topolab_structures::io::che_file::Header::parse(&good).unwrap();
-        let layout = topolab_structures::io::che_file::Layout::of(header).unwrap();
+        let header = topolab_structures::che::file::Header::parse(&good).unwrap();
+        let layout = topolab_structures::che::file::Layout::of(header).unwrap();
         let v = layout
-            .section(topolab_structures::io::che_file::Container::V)
+            .section(topolab_structures::che::file::Container::V)
             .unwrap();
         let (start, end) = (v.offset as usize, (v.offset + 4 * v.len) as usize);
         let mut zeros = good.clone();
@@ -214,7 +214,7 @@ fn check_refuses_corrupt_triangles_at_level_0_as_at_level_1() {
         let mut repeated = good.clone();
         repeated.copy_within(start..start + 12, start + 12);
         for (name, mut bytes) in [("zeros", zeros), ("repeated", repeated)] {
-            let sum = topolab_structures::io::che_file::checksum(&bytes);
+            let sum = topolab_structures::che::file::checksum(&bytes);
             bytes[56..64].copy_from_slice(&sum.to_le_bytes());
             let bad = dir.join(format!("{name}-l{level}.che"));
             std::fs::write(&bad, &bytes).unwrap();

@@ -13,7 +13,8 @@ use crate::input::{invalid_mesh_hint, load_mesh, load_mesh_consumed, refuse_empt
 use crate::output::{check_file, check_not_input, write_mesh_as};
 use std::path::Path;
 use std::time::Instant;
-use topolab_structures::io::{che_file, PlyEncoding};
+use topolab_structures::che::file as che_file;
+use topolab_structures::io::PlyEncoding;
 use topolab_structures::{Error, Format};
 
 /// The formats `--to` names, by their extension.

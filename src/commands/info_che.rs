@@ -11,8 +11,8 @@ use crate::limits;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::Instant;
+use topolab_structures::che::file::Container;
 use topolab_structures::che::{CheFile, MappedChe};
-use topolab_structures::io::che_file::Container;
 use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{CheL2, MeshTopology, PolygonSoup};
 
@@ -110,7 +110,7 @@ pub(super) fn che_info(spec: &str, structure: Option<&str>, json: bool) -> Resul
         v["computed_through"] = summary.structure.into();
         v["structure"] = level_name.into();
         v["format"] = "che".into();
-        v["format_version"] = topolab_structures::io::che_file::VERSION.into();
+        v["format_version"] = topolab_structures::che::file::VERSION.into();
         v["level"] = h.level.into();
         v["bytes"] = bytes.into();
         v["containers"] = containers.into();
@@ -126,7 +126,7 @@ pub(super) fn che_info(spec: &str, structure: Option<&str>, json: bool) -> Resul
     let _ = writeln!(
         out,
         "format:               .che version {} (the CHE's containers, little-endian)",
-        topolab_structures::io::che_file::VERSION
+        topolab_structures::che::file::VERSION
     );
     let _ = writeln!(
         out,

@@ -26,7 +26,7 @@
 //! | [`CheL3`] | `che-l3` | CHE level 3: + boundary curves `CH[]` | no | no |
 //!
 //! The CHE's containers are also written as a memory-mappable `.che` file
-//! ([`io::che_file`]) and queried in place through [`che::MappedChe`] (levels 1–3, not in the
+//! ([`che::file`]) and queried in place through [`che::MappedChe`] (levels 1–3, not in the
 //! registry: a structure over a file, enrolled in the conformance suite in
 //! `structures/tests/che_file.rs`).
 //!
@@ -63,9 +63,6 @@ pub mod testing;
 // The module paths the other crates use (`topolab_structures::hull::convex_hull`, ...).
 pub use algorithms::{checks, hull, ordering, refine, repair, summary};
 pub use families::che;
-pub use testing::conformance;
-// The error types' short path inside the crate (`crate::error::Error`).
-use self::core::error;
 
 /// The vector crate of the trait's positions ([`MeshTopology::position`] returns a
 /// `glam::DVec3`), re-exported so that a structure outside the lab uses the same version.

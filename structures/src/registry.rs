@@ -245,9 +245,9 @@ tuple_lists! {
 }
 
 /// Builds `M` from the soup and validates it.
-struct BuildAndValidate<'a>(&'a crate::PolygonSoup);
+struct BuildAndValidate<'a>(&'a crate::core::soup::PolygonSoup);
 impl StructureVisitor for BuildAndValidate<'_> {
-    type Output = crate::Result<()>;
+    type Output = crate::core::error::Result<()>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
         M::from_soup(self.0)?.validate()
     }
@@ -255,7 +255,9 @@ impl StructureVisitor for BuildAndValidate<'_> {
 
 /// Builds every structure from `soup` and runs its `validate()`: per structure, in [`NAMES`]
 /// order, its name and the outcome (a typed refusal for input it cannot store).
-pub fn build_each(soup: &crate::PolygonSoup) -> Vec<(&'static str, crate::Result<()>)> {
+pub fn build_each(
+    soup: &crate::core::soup::PolygonSoup,
+) -> Vec<(&'static str, crate::core::error::Result<()>)> {
     NAMES
         .iter()
         .map(|&name| {
@@ -282,7 +284,8 @@ mod tests {
 
     #[test]
     fn a_list_names_and_visits_each_of_its_structures_in_order() {
-        use crate::{CheL2, VertexList};
+        use crate::families::che::CheL2;
+        use crate::families::corner_lists::vertex_list::VertexList;
         type List = ((CheL2, ()), Registered, (VertexList,));
         let names = names::<List>();
         assert_eq!(names[0], "che-l2");
@@ -301,8 +304,8 @@ mod tests {
     /// The family a visit reached.
     struct FamilyOf;
     impl StructureVisitor for FamilyOf {
-        type Output = crate::Family;
-        fn visit<M: MeshTopology>(self) -> crate::Family {
+        type Output = crate::core::family::Family;
+        fn visit<M: MeshTopology>(self) -> crate::core::family::Family {
             M::FAMILY
         }
     }
@@ -313,9 +316,9 @@ mod tests {
         // declares its own, and the CHE levels are one family.
         for &name in NAMES {
             let family = visit(name, FamilyOf).unwrap();
-            assert_ne!(family, crate::Family::Outside, "{name}");
+            assert_ne!(family, crate::core::family::Family::Outside, "{name}");
             assert_eq!(
-                family == crate::Family::Che,
+                family == crate::core::family::Family::Che,
                 name.starts_with("che-"),
                 "{name}"
             );

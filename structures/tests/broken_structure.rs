@@ -1,7 +1,7 @@
 //! The conformance suite must catch a structure that answers one relation wrong: a test double
 //! that wraps the vertex list and forgets the last face of every R22 answer.
 
-use topolab_structures::conformance::check;
+use topolab_structures::testing::conformance::{self, check};
 use topolab_structures::*;
 
 struct ForgetfulR22(VertexList);

@@ -4,10 +4,10 @@
 
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
-use topolab_structures::che::{CheFile, MappedChe, MappedCheL1, MappedCheL2, MappedCheL3};
-use topolab_structures::io::che_file::{
+use topolab_structures::che::file::{
     checksum, write_mesh, CheFileProblem, Container, Containers, Header, HEADER_BYTES,
 };
+use topolab_structures::che::{CheFile, MappedChe, MappedCheL1, MappedCheL2, MappedCheL3};
 use topolab_structures::meshes;
 use topolab_structures::{
     BoundaryCurves, CheL2, EdgeId, Error, FaceId, MeshTopology, PolygonSoup, VertexId,
@@ -262,7 +262,7 @@ fn check_refuses_a_checksum_mismatch_and_ids_out_of_range() {
     let soup = meshes::torus(6, 4);
     let good = level2_bytes(&soup);
     let header = Header::parse(&good).unwrap();
-    let layout = topolab_structures::io::che_file::Layout::of(header).unwrap();
+    let layout = topolab_structures::che::file::Layout::of(header).unwrap();
     let o_at = layout.section(Container::O).unwrap().offset as usize;
     // A flipped bit of O[0]: opens (O(1)), refused by the checksum.
     let mut flipped = good.clone();
@@ -332,7 +332,7 @@ fn corrupt_triangles_fail_the_check_at_every_level() {
     for (level, good) in levels.into_iter().enumerate() {
         let good = good.unwrap();
         let header = Header::parse(&good).unwrap();
-        let layout = topolab_structures::io::che_file::Layout::of(header).unwrap();
+        let layout = topolab_structures::che::file::Layout::of(header).unwrap();
         let v = layout.section(Container::V).unwrap();
         let v_bytes = v.offset as usize..(v.offset + 4 * v.len) as usize;
         let path = scratch(&format!("corrupt-{level}.che"));

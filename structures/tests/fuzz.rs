@@ -10,9 +10,10 @@ use proptest::prelude::*;
 use proptest::test_runner::Config;
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use topolab_structures::che::file as che_file;
 use topolab_structures::che::CheFile;
 use topolab_structures::checks::{check, Options};
-use topolab_structures::io::{self, che_file, read_bytes_raw, PlyEncoding};
+use topolab_structures::io::{self, read_bytes_raw, PlyEncoding};
 use topolab_structures::{meshes, registry, Format, PolygonSoup};
 
 mod support;

@@ -6,9 +6,9 @@
 
 use glam::DVec3;
 use proptest::prelude::*;
-use topolab_structures::conformance::compare;
 use topolab_structures::hull::predicates::{collinear, volume6};
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Hull, Shape};
+use topolab_structures::testing::conformance::compare;
 use topolab_structures::MeshTopology;
 
 /// Every property of a correct hull of `points` that does not need another algorithm.

@@ -380,8 +380,8 @@ pub fn refine_adaptive<M: MeshEdit>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::families::half_edge::index::IndexHalfEdge;
     use crate::meshes;
-    use crate::IndexHalfEdge;
 
     #[test]
     fn bad_requests_are_typed_errors() {
@@ -399,7 +399,7 @@ mod tests {
     #[test]
     fn polygons_are_refused_before_any_change() {
         let soup = meshes::quad_cube();
-        let mut m = crate::WingedEdge::from_soup(&soup).unwrap();
+        let mut m = crate::families::edge_lists::winged_edge::WingedEdge::from_soup(&soup).unwrap();
         let request = Request::new(0.1, None).unwrap();
         let e = refine_adaptive(&mut m, &request, usize::MAX).unwrap_err();
         assert_eq!(e.kind(), "not-triangles", "{e}");
@@ -410,7 +410,7 @@ mod tests {
     fn one_long_edge_is_halved_and_its_fewest_faces_are_exact() {
         // One triangle with a long base: the base is halved three times (8 pieces), the
         // medians are short enough to stay.
-        let mut soup = crate::PolygonSoup::new();
+        let mut soup = crate::core::soup::PolygonSoup::new();
         for p in [[0.0, 0.0, 0.0], [8.0, 0.0, 0.0], [4.0, 0.5, 0.0]] {
             soup.push_vertex(DVec3::from_array(p));
         }

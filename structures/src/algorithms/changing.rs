@@ -178,9 +178,13 @@ pub fn collapse_test<M: MeshEdit>(m: &mut M) -> Result<()> {
 mod tests {
     use super::*;
     use crate::core::ids::EdgeId;
+    use crate::families::corner_lists::vertex_list::VertexList;
+    use crate::families::edge_lists::edge_list::EdgeList;
+    use crate::families::edge_lists::winged_edge::WingedEdge;
+    use crate::families::half_edge::index::IndexHalfEdge;
+    use crate::families::half_edge::pointer::PointerHalfEdge;
     use crate::meshes;
     use crate::testing::editing::canonical_face;
-    use crate::{EdgeList, IndexHalfEdge, PointerHalfEdge, VertexList, WingedEdge};
 
     fn faces(m: &impl MeshEdit) -> Vec<Vec<u32>> {
         let soup = to_soup(m);

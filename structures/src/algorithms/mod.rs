@@ -5,7 +5,7 @@
 //! ([`adaptive`]), the changing workloads of the Surface_mesh benchmark on any editable
 //! structure ([`changing`]), the selection, rotation, scaling and smoothing of vertices
 //! ([`select`]), decimation by quadric error and its reconstruction
-//! ([`decimate`]), and element renumbering ([`ordering`]).
+//! ([`decimate`]), element renumbering ([`ordering`]), and the union-find they share ([`union_find`]).
 
 pub mod adaptive;
 pub mod changing;
@@ -17,4 +17,5 @@ pub mod refine;
 pub mod repair;
 pub mod select;
 pub mod summary;
+pub(crate) mod union_find;
 pub mod weld;

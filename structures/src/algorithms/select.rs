@@ -249,7 +249,9 @@ pub fn smooth_step<M: MeshEdit>(m: &mut M) -> Result<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{IndexHalfEdge, MeshTopology, PolygonSoup};
+    use crate::core::soup::PolygonSoup;
+    use crate::core::topology::MeshTopology;
+    use crate::families::half_edge::index::IndexHalfEdge;
 
     fn quad_grid() -> PolygonSoup {
         // 3 x 3 vertices, 4 quads, one interior vertex (4) at (1, 1).

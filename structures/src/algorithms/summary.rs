@@ -24,11 +24,11 @@
 //! and its counts from the structure's operators; the manifold and orientation analysis that
 //! decides whether the genus is defined reads the faces through R20 (`face_vertices`).
 
-use crate::algorithms::checks::UnionFind;
+use crate::algorithms::union_find::UnionFind;
+use crate::core::error::Error;
 use crate::core::ids::{FaceId, VertexId};
 use crate::core::soup::{Connectivity, PolygonSoup};
 use crate::core::topology::{BoundaryCurves, MeshTopology};
-use crate::Error;
 
 /// Why an invariant of [`Summary`] is not defined for a mesh (see the module docs). The same
 /// words for every structure: `info` prints them, and its JSON holds them as strings.

@@ -147,7 +147,7 @@ impl Step {
         match self {
             Step::Load => h,
             Step::Twin => h ^ 1,
-            Step::Corner => crate::che::prev(crate::core::ids::HalfEdgeId(h)).0,
+            Step::Corner => crate::core::corners::prev(crate::core::ids::HalfEdgeId(h)).0,
         }
     }
 

@@ -318,14 +318,14 @@ pub enum Error {
         /// Why.
         reason: crate::core::edit_op::Refusal,
     },
-    /// A `.che` file (the CHE's containers, [`crate::io::che_file`]) that cannot be mapped or
+    /// A `.che` file (the CHE's containers, [`crate::che::file`]) that cannot be mapped or
     /// whose check failed.
     #[error("{path}: {problem}")]
     CheFile {
         /// The file.
         path: PathBuf,
         /// What is wrong with it.
-        problem: crate::io::che_file::format::CheFileProblem,
+        problem: crate::core::che_format::CheFileProblem,
     },
     /// A vertex of so many faces that a library whose construction searches a vertex's
     /// half-edges for each face it adds there (OpenMesh, CGAL, lox) would take time quadratic

@@ -3,10 +3,14 @@
 //! declared costs ([`topology`], its vocabulary of operators and costs in [`operator`]), the application workloads named across the lab ([`workload`]),
 //! the editing operations beside it ([`edit`], named in [`edit_op`], with what they share about a vertex's surroundings in [`neighbourhood`]), the typed errors ([`error`]) and the geometric attributes
 //! computed through the trait ([`attributes`]), the access model a structure may declare for
-//! each operator ([`access`]), and the family a structure belongs to ([`family`]).
+//! each operator ([`access`]), the family a structure belongs to ([`family`]), the corner
+//! arithmetic of triangles stored face by face ([`corners`]) and what a `.che` file is made of
+//! and why one is refused ([`che_format`]).
 
 pub mod access;
 pub mod attributes;
+pub mod che_format;
+pub mod corners;
 pub mod delegate;
 pub mod edit;
 pub mod edit_op;

@@ -40,7 +40,6 @@ pub fn format_of(path: &Path) -> Result<Format> {
     }
 }
 
-pub mod che_file;
 pub mod echo;
 mod obj;
 mod off;

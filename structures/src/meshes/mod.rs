@@ -9,6 +9,3 @@ mod spec;
 pub use canonical::*;
 pub use generators::*;
 pub use spec::{from_spec, parse_spec, MeshSize, MeshSpec, SpecError, MAX_FACES, MAX_SLOTS};
-
-#[cfg(test)]
-mod tests;

@@ -302,33 +302,7 @@ pub fn from_spec(spec: &str) -> Result<PolygonSoup, SpecError> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::tests::euler_and_curves;
     use super::*;
-
-    #[test]
-    fn specs_name_the_generators() {
-        let g = from_spec("genus:2:1_000").unwrap();
-        assert_eq!(euler_and_curves(&g), (-2, 0));
-        let h = from_spec("holes:4:1000").unwrap();
-        assert_eq!(euler_and_curves(&h), (-2, 4));
-        let m = from_spec("surface:1:2:1000").unwrap();
-        assert_eq!(euler_and_curves(&m), (-2, 2));
-        assert_eq!(from_spec("mixed:500").unwrap(), mixed_grid(500));
-        for unknown in [
-            "genus:2",
-            "holes:x:10",
-            "torus:100:3",
-            "torus:-5",
-            "torus:",
-            "cube:10",
-        ] {
-            assert_eq!(
-                from_spec(unknown).unwrap_err(),
-                SpecError::Unknown,
-                "{unknown}"
-            );
-        }
-    }
 
     #[test]
     fn sizes_past_u32_ids_are_too_large_not_unknown() {

@@ -8,10 +8,10 @@
 //! [`info_soups`]: `topolab-baselines` does it for every name of its registry (the lab's
 //! structures and the C++ baselines), `topolab-peers` for each peer.
 
+use crate::algorithms::summary::{summarize, Summary};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::MeshTopology;
 use crate::meshes::{self, RandomMeshParams};
-use crate::summary::{summarize, Summary};
 use crate::testing::oracle::Oracle;
 use glam::DVec3;
 use proptest::prelude::*;

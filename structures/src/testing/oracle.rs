@@ -2,8 +2,8 @@
 //! in the "vertex language" (edges as sorted end-vertex pairs) so that any structure's answers
 //! can be compared with it. Slow and obviously right, on purpose.
 
+use crate::algorithms::summary::{ManifoldFacts, Summary, Undefined};
 use crate::core::soup::PolygonSoup;
-use crate::summary::{ManifoldFacts, Summary, Undefined};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// An undirected edge by its end vertices, smaller first.

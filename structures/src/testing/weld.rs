@@ -97,7 +97,7 @@ fn moved(soup: &PolygonSoup) -> PolygonSoup {
     PolygonSoup::from_polygons(positions, &faces)
 }
 
-fn refusal(got: crate::Result<impl Sized>) -> Option<Refusal> {
+fn refusal(got: crate::core::error::Result<impl Sized>) -> Option<Refusal> {
     match got {
         Err(Error::EditRefused { reason, .. }) => Some(reason),
         _ => None,
@@ -271,7 +271,7 @@ fn soup_faces(soup: &PolygonSoup) -> Vec<Vec<u32>> {
 /// The live faces of `m`, canonical and sorted.
 fn live_faces<M: MeshEdit>(m: &M) -> Vec<Vec<u32>> {
     let faces: Vec<Vec<u32>> = (0..m.num_faces())
-        .map(crate::FaceId::new)
+        .map(crate::core::ids::FaceId::new)
         .filter(|&f| !m.is_deleted_face(f))
         .map(|f| {
             let mut face = Vec::new();
@@ -295,11 +295,11 @@ fn welds_done_as_expected<M: MeshEdit>(
     let mut m = M::from_soup(soup).map_err(|e| format!("{name}: {e}"))?;
     let mut faces = soup_faces(soup);
     for &(a, b) in welds {
-        m.weld_vertices(crate::VertexId(a), crate::VertexId(b))
+        m.weld_vertices(crate::core::ids::VertexId(a), crate::core::ids::VertexId(b))
             .map_err(|e| format!("{name}: weld v{a} v{b} refused: {e}"))?;
         m.validate()
             .map_err(|e| format!("{name}: after weld v{a} v{b}: {e}"))?;
-        if !m.is_deleted_vertex(crate::VertexId(b)) {
+        if !m.is_deleted_vertex(crate::core::ids::VertexId(b)) {
             return Err(format!("{name}: v{b} is not deleted after its weld"));
         }
         m.garbage_collection();
@@ -325,13 +325,15 @@ fn weld_refused<M: MeshEdit>(
     reasons: &[Refusal],
 ) -> Result<(), String> {
     let mut m = M::from_soup(soup).map_err(|e| format!("{name}: {e}"))?;
-    let got = refusal(m.weld_vertices(crate::VertexId(a), crate::VertexId(b)));
+    let got =
+        refusal(m.weld_vertices(crate::core::ids::VertexId(a), crate::core::ids::VertexId(b)));
     if !got.is_some_and(|r| reasons.contains(&r)) {
         return Err(format!(
             "{name}: weld v{a} v{b} gave {got:?}, not one of {reasons:?}"
         ));
     }
-    let deleted = (0..m.num_vertices()).any(|v| m.is_deleted_vertex(crate::VertexId::new(v)));
+    let deleted =
+        (0..m.num_vertices()).any(|v| m.is_deleted_vertex(crate::core::ids::VertexId::new(v)));
     if deleted || m.num_vertices() != soup.num_vertices() {
         return Err(format!(
             "{name}: the refused weld v{a} v{b} deleted a vertex"
@@ -435,7 +437,9 @@ fn ring(w: u32) -> PolygonSoup {
 }
 
 /// Each case's result must be its refusal; returns how many were.
-fn refused_as<M>(cases: [(&str, crate::Result<M>, Refusal); 3]) -> Result<usize, String> {
+fn refused_as<M>(
+    cases: [(&str, crate::core::error::Result<M>, Refusal); 3],
+) -> Result<usize, String> {
     for (what, got, want) in cases.iter().map(|(w, g, r)| (w, g.as_ref().err(), r)) {
         let got = match got {
             Some(Error::EditRefused { reason, .. }) => Some(*reason),
@@ -469,7 +473,7 @@ pub fn weld_edge_and_face_cases<M: MeshEdit>() -> Result<usize, String> {
     compare(&welded, &ring(w)).map_err(|e| format!("the band's ends welded: {e}"))?;
     checked += 1;
     let diagonal = edge(0, w + 2);
-    let cases: [(&str, crate::Result<M>, Refusal); 3] = [
+    let cases: [(&str, crate::core::error::Result<M>, Refusal); 3] = [
         (
             "an edge welded to itself",
             weld_edges(&m, first, first),
@@ -545,7 +549,7 @@ pub fn weld_edge_and_face_cases<M: MeshEdit>() -> Result<usize, String> {
         }
     }
     let neighbour = neighbour.expect("a face touching face 0") as u32;
-    let cases: [(&str, crate::Result<M>, Refusal); 3] = [
+    let cases: [(&str, crate::core::error::Result<M>, Refusal); 3] = [
         (
             "a face welded to itself",
             weld_faces(&m, FaceId(0), FaceId(0)),

@@ -23,7 +23,8 @@
 //! a pair of near duplicates among them may be missed. Every group reported is right: its
 //! vertices are joined by a chain of positions each within `t` of the next.
 
-use super::{FindingKind, Findings, UnionFind};
+use super::{FindingKind, Findings};
+use crate::algorithms::union_find::UnionFind;
 use crate::core::soup::PolygonSoup;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -262,7 +263,7 @@ pub(super) fn duplicate_faces(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::checks::Options;
+    use crate::algorithms::checks::Options;
     use crate::core::error::Numbering;
 
     /// The search on `n` vertices at `position(i)`: its work, and the groups it reported.

@@ -1,10 +1,11 @@
 //! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
 //! orientability, and per component its Euler characteristic, boundary and genus.
 
-use super::{CheckSummary, Component, FindingKind, Findings, UnionFind};
+use super::{CheckSummary, Component, FindingKind, Findings};
+use crate::algorithms::summary::Undefined;
+use crate::algorithms::union_find::UnionFind;
 use crate::core::error::Error;
 use crate::core::soup::{Connectivity, PolygonSoup};
-use crate::summary::Undefined;
 use std::collections::{BTreeMap, HashSet};
 
 /// The edge analysis (non-manifold edges and vertices, orientation), components, boundary

@@ -622,8 +622,8 @@ pub fn minimum_faces<M: MeshTopology>(m: &M) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::families::half_edge::index::IndexHalfEdge;
     use crate::meshes;
-    use crate::IndexHalfEdge;
 
     #[test]
     fn a_plane_quadric_measures_squared_distance_times_area() {

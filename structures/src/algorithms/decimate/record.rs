@@ -488,8 +488,9 @@ mod tests {
     use crate::algorithms::decimate::{
         canonical_input, decimate_levels, live_soup, reconstruct_from, Strategy,
     };
+    use crate::core::topology::MeshTopology;
+    use crate::families::half_edge::index::IndexHalfEdge;
     use crate::meshes;
-    use crate::{IndexHalfEdge, MeshTopology};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 

@@ -19,7 +19,7 @@
 //!   2^-906, and so is every sum and rounded result: a non-zero value stays ≥ 2^-906, and even
 //!   its error bound (about 2^-50 times it) stays a normal double (≥ 2^-1022).
 
-use crate::error::{Error, Numbering, Result};
+use crate::core::error::{Error, Numbering, Result};
 use glam::DVec3;
 use robust::{Coord, Coord3D};
 

@@ -3,7 +3,7 @@
 //! traverses their edge the same way is flipped relative to it.
 
 use super::RepairLog;
-use crate::algorithms::checks::UnionFind;
+use crate::algorithms::union_find::UnionFind;
 use crate::core::soup::{Connectivity, PolygonSoup};
 
 /// `soup` with each orientable component (faces joined across edges of exactly two faces)

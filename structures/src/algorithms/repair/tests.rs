@@ -2,7 +2,7 @@
 //! on the output; and random meshes with every problem at once.
 
 use super::*;
-use crate::checks::{self, FindingKind, Options};
+use crate::algorithms::checks::{self, FindingKind, Options};
 use crate::io::RawSoup;
 use crate::meshes;
 use glam::DVec3;

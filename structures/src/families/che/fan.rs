@@ -191,18 +191,22 @@ impl Fan<'_> {
 
     /// R01: each spoke's edge `min(e, O[e])`, and the lone spoke's.
     #[inline(always)]
-    pub(crate) fn spoke_edges(self, v: VertexId, mut f: impl FnMut(crate::EdgeId)) {
+    pub(crate) fn spoke_edges(self, v: VertexId, mut f: impl FnMut(crate::core::ids::EdgeId)) {
         let lone = self.spokes(v, |e, o| {
-            f(crate::EdgeId(if o < 0 { e.0 } else { e.0.min(o as u32) }))
+            f(crate::core::ids::EdgeId(if o < 0 {
+                e.0
+            } else {
+                e.0.min(o as u32)
+            }))
         });
         if let Some(b) = lone {
-            f(crate::EdgeId(b.0));
+            f(crate::core::ids::EdgeId(b.0));
         }
     }
 
     /// R02: the triangle of each entering half-edge.
     #[inline(always)]
-    pub(crate) fn star_triangles(self, v: VertexId, mut f: impl FnMut(crate::FaceId)) {
+    pub(crate) fn star_triangles(self, v: VertexId, mut f: impl FnMut(crate::core::ids::FaceId)) {
         self.spokes(v, |e, _| f(super::triangle(e)));
     }
 }

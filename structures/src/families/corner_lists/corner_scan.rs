@@ -338,17 +338,17 @@ impl<K: Copy + PartialEq + Traced> Corners<K> {
     }
 
     /// Offsets start at 0, increase by at least 3, end at the corner count.
-    pub fn validate(&self, structure: &'static str) -> crate::Result<()> {
+    pub fn validate(&self, structure: &'static str) -> crate::core::error::Result<()> {
         if self.offsets.first() != Some(&0)
             || *self.offsets.last().unwrap_or(&1) as usize != self.keys.len()
         {
-            return Err(crate::Error::invariant(
+            return Err(crate::core::error::Error::invariant(
                 structure,
                 "offsets must run from 0 to the corner count",
             ));
         }
         if let Some(w) = self.offsets.windows(2).position(|w| w[1] < w[0] + 3) {
-            return Err(crate::Error::invariant(
+            return Err(crate::core::error::Error::invariant(
                 structure,
                 format!("face {w} has fewer than 3 corners"),
             ));

@@ -238,8 +238,9 @@ impl<L: HalfEdgeLinks> HalfEdge<L> {
 mod tests {
     use crate::core::soup::PolygonSoup;
     use crate::core::topology::{BoundaryCurves, MeshTopology};
+    use crate::families::half_edge::index::IndexHalfEdge;
+    use crate::families::half_edge::pointer::PointerHalfEdge;
     use crate::meshes;
-    use crate::{IndexHalfEdge, PointerHalfEdge};
     use glam::DVec3;
 
     /// Empty input, unused vertices and several boundary loops, for both storages.
@@ -254,7 +255,7 @@ mod tests {
         let lonely = PolygonSoup::from_polygons(vec![DVec3::ZERO; 2], &[] as &[[u32; 3]]);
         let m = M::from_soup(&lonely).expect("unused vertices are allowed");
         m.validate().expect("valid");
-        assert!(!m.is_boundary_vertex(crate::VertexId(1)));
+        assert!(!m.is_boundary_vertex(crate::core::ids::VertexId(1)));
 
         let annulus = M::from_soup(&meshes::annulus(5)).expect("manifold");
         annulus.boundary_curves(&mut curves);

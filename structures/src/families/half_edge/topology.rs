@@ -29,7 +29,7 @@ fn half_edge_cost(op: Operator, predecessor: Cost) -> Cost {
 
 impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
     const NAME: &'static str = L::NAME;
-    const FAMILY: crate::Family = crate::Family::HalfEdge;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::HalfEdge;
 
     fn capabilities() -> Capabilities {
         Capabilities::POLYGONS

@@ -11,7 +11,7 @@ use std::fmt::Write;
 
 impl<G: GridGeometry> MeshTopology for Grid<G> {
     const NAME: &'static str = G::NAME;
-    const FAMILY: crate::Family = crate::Family::RegularGrid;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::RegularGrid;
 
     fn capabilities() -> Capabilities {
         Capabilities {

@@ -29,7 +29,7 @@
 #![allow(unsafe_code)]
 
 use crate::core::error::{Error, Result};
-use crate::io::che_file::{CheFileProblem, Container, Layout, ALIGNMENT, HEADER_BYTES};
+use crate::families::che::file::{CheFileProblem, Container, Layout, ALIGNMENT, HEADER_BYTES};
 use glam::DVec3;
 use memmap2::Mmap;
 use std::fs::File;

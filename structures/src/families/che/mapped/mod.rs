@@ -1,4 +1,4 @@
-//! The CHE over memory-mapped containers: a `.che` file ([`crate::io::che_file`],
+//! The CHE over memory-mapped containers: a `.che` file ([`crate::che::file`],
 //! `docs/che-format.md`) opened in place, so a mesh larger than memory is queried through the
 //! page cache, with the same relations as the owned levels.
 //!
@@ -51,7 +51,7 @@ use crate::core::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use crate::core::reads::{self, read};
 use crate::core::soup::PolygonSoup;
 use crate::core::topology::{BoundaryCurves, MeshTopology};
-use crate::io::che_file::{checksum, write_mesh, CheFileProblem, Container, Header};
+use crate::families::che::file::{checksum, write_mesh, CheFileProblem, Container, Header};
 use glam::DVec3;
 use map::Mapping;
 use std::path::{Path, PathBuf};
@@ -87,7 +87,7 @@ fn first_outside<T: Copy + Into<i64>>(xs: &[T], allowed: impl Fn(i64) -> bool) -
 }
 
 impl CheFile {
-    /// Maps `path` and checks its header and length ([`crate::io::che_file::Layout::of_file`]);
+    /// Maps `path` and checks its header and length ([`crate::che::file::Layout::of_file`]);
     /// reads nothing else. Every malformed header or length is an [`Error::CheFile`].
     pub fn open(path: &Path) -> Result<Self> {
         Ok(Self {

@@ -79,7 +79,7 @@ impl Naming<DVec3> for PositionIds {
 
 impl MeshTopology for ExplicitStorage {
     const NAME: &'static str = "explicit";
-    const FAMILY: crate::Family = crate::Family::CornerLists;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::CornerLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {

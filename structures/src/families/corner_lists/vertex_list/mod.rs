@@ -75,7 +75,7 @@ impl VertexList {
 
 impl MeshTopology for VertexList {
     const NAME: &'static str = "vertex-list";
-    const FAMILY: crate::Family = crate::Family::CornerLists;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::CornerLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {
@@ -200,7 +200,7 @@ impl MeshTopology for VertexList {
             .iter()
             .position(|&v| v as usize >= self.positions.len())
         {
-            return Err(crate::Error::invariant(
+            return Err(crate::core::error::Error::invariant(
                 Self::NAME,
                 format!("corner {c} names a missing vertex"),
             ));

@@ -161,7 +161,7 @@ impl EdgeList {
 
 impl MeshTopology for EdgeList {
     const NAME: &'static str = "edge-list";
-    const FAMILY: crate::Family = crate::Family::EdgeLists;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::EdgeLists;
 
     fn capabilities() -> Capabilities {
         Capabilities {

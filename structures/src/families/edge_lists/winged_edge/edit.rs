@@ -380,8 +380,12 @@ impl FaceRewrite for WingedEdge {
 #[cfg(test)]
 mod tests {
     use crate::core::edit::MeshEdit;
+    use crate::core::ids::EdgeId;
+    use crate::core::ids::FaceId;
+    use crate::core::ids::VertexId;
+    use crate::core::topology::MeshTopology;
+    use crate::families::edge_lists::winged_edge::WingedEdge;
     use crate::meshes;
-    use crate::{EdgeId, FaceId, MeshTopology, VertexId, WingedEdge};
 
     #[test]
     fn a_flip_keeps_the_edge_id_and_a_split_keeps_the_face_id() {

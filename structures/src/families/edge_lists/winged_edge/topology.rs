@@ -14,7 +14,7 @@ use std::fmt::Write;
 
 impl MeshTopology for WingedEdge {
     const NAME: &'static str = "winged-edge";
-    const FAMILY: crate::Family = crate::Family::EdgeLists;
+    const FAMILY: crate::core::family::Family = crate::core::family::Family::EdgeLists;
 
     fn capabilities() -> Capabilities {
         Capabilities::POLYGONS

@@ -158,7 +158,7 @@ impl HalfEdgeLinks for IndexLinks {
             self.positions.len(),
             a.face_half_edge.len(),
         );
-        let fail = |what: String| Err(crate::Error::invariant(Self::NAME, what));
+        let fail = |what: String| Err(crate::core::error::Error::invariant(Self::NAME, what));
         if a.next.len() != nh || a.face.len() != nh || self.prev.len() != nh {
             return fail("per-half-edge arrays differ in length".into());
         }

@@ -221,8 +221,8 @@ mod tests {
     use super::links::LIVE_RECORDS;
     use super::*;
     use crate::core::topology::MeshTopology;
+    use crate::families::half_edge::index::IndexHalfEdge;
     use crate::meshes::{self, RandomMeshParams};
-    use crate::IndexHalfEdge;
 
     fn live() -> isize {
         LIVE_RECORDS.with(|n| n.get())

@@ -20,10 +20,8 @@ use glam::DVec3;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-pub mod format;
-
-use format::CHECKSUM_AT;
-pub use format::{
+use crate::core::che_format::CHECKSUM_AT;
+pub use crate::core::che_format::{
     CheFileProblem, Container, ALIGNMENT, BYTE_ORDER_MARK, HEADER_BYTES, MAGIC, VERSION,
 };
 
@@ -368,19 +366,19 @@ pub struct Containers<'a> {
 
 impl<'a> Containers<'a> {
     /// The containers of an owned level 0 (its edges counted by sorting, O(n log n)).
-    pub fn level0(m: &'a crate::CheL0) -> Self {
-        use crate::MeshTopology;
+    pub fn level0(m: &'a crate::families::che::CheL0) -> Self {
+        use crate::core::topology::MeshTopology;
         Self::geometry_and_corners(m, m.num_edges() as u64)
     }
 
     /// `G[]` and `V[]` of `m` and nothing else, with `edges` for the header: what every level
     /// starts from (the higher levels count their edges from `O[]` or `EH`, without the
     /// sort level 0 needs, which took a copy of every half-edge).
-    fn geometry_and_corners(m: &'a crate::CheL0, edges: u64) -> Self {
+    fn geometry_and_corners(m: &'a crate::families::che::CheL0, edges: u64) -> Self {
         Self {
             level: 0,
             g: m.geometry(),
-            v: crate::che::CheLevel::start_vertices(m),
+            v: crate::families::che::CheLevel::start_vertices(m),
             o: &[],
             vh: &[],
             eh: &[],
@@ -390,7 +388,7 @@ impl<'a> Containers<'a> {
     }
 
     /// The containers of an owned level 1.
-    pub fn level1(m: &'a crate::CheL1) -> Self {
+    pub fn level1(m: &'a crate::families::che::CheL1) -> Self {
         let o = m.opposite();
         let edges = o
             .iter()
@@ -405,7 +403,7 @@ impl<'a> Containers<'a> {
     }
 
     /// The containers of an owned level 2.
-    pub fn level2(m: &'a crate::CheL2) -> Self {
+    pub fn level2(m: &'a crate::families::che::CheL2) -> Self {
         Self {
             level: 2,
             vh: m.vertex_half_edge(),
@@ -416,7 +414,7 @@ impl<'a> Containers<'a> {
     }
 
     /// The containers of an owned level 3 (`O[]` with its curve labels).
-    pub fn level3(m: &'a crate::CheL3) -> Self {
+    pub fn level3(m: &'a crate::families::che::CheL3) -> Self {
         Self {
             level: 3,
             ch: m.curve_half_edge(),
@@ -512,7 +510,7 @@ impl<'a> Containers<'a> {
         Ok(bytes)
     }
 
-    /// Writes the `.che` file `path` atomically ([`super::write_atomically`]): the bytes are
+    /// Writes the `.che` file `path` atomically ([`crate::io::write_atomically`]): the bytes are
     /// laid out twice, once into the checksum and once into the file.
     pub fn write(&self, path: &Path) -> Result<()> {
         self.header().map_err(|p| p.at(path))?;
@@ -523,7 +521,7 @@ impl<'a> Containers<'a> {
         };
         self.emit(0, &mut hash).expect("hashing does not fail");
         let sum = sum.finish();
-        super::write_atomically(path, |w| {
+        crate::io::write_atomically(path, |w| {
             let mut write = |b: &[u8]| w.write_all(b);
             self.emit(sum, &mut write)
         })
@@ -538,12 +536,12 @@ impl<'a> Containers<'a> {
 /// ([`Containers::write`], atomically). Refuses a level other than 0–3 and what the level
 /// refuses (polygons, non-manifold edges and vertices: the owned levels' typed errors).
 pub fn write_mesh(soup: &PolygonSoup, level: u8, path: &Path) -> Result<()> {
-    use crate::MeshTopology;
+    use crate::core::topology::MeshTopology;
     match level {
-        0 => Containers::level0(&crate::CheL0::from_soup(soup)?).write(path),
-        1 => Containers::level1(&crate::CheL1::from_soup(soup)?).write(path),
-        2 => Containers::level2(&crate::CheL2::from_soup(soup)?).write(path),
-        3 => Containers::level3(&crate::CheL3::from_soup(soup)?).write(path),
+        0 => Containers::level0(&crate::families::che::CheL0::from_soup(soup)?).write(path),
+        1 => Containers::level1(&crate::families::che::CheL1::from_soup(soup)?).write(path),
+        2 => Containers::level2(&crate::families::che::CheL2::from_soup(soup)?).write(path),
+        3 => Containers::level3(&crate::families::che::CheL3::from_soup(soup)?).write(path),
         _ => Err(Error::InvalidParameter {
             parameter: "level",
             value: level.to_string(),
@@ -556,13 +554,13 @@ pub fn write_mesh(soup: &PolygonSoup, level: u8, path: &Path) -> Result<()> {
 /// written ([`OwnedLevel::write`]).
 pub enum OwnedLevel {
     /// Level 0.
-    L0(crate::CheL0),
+    L0(crate::families::che::CheL0),
     /// Level 1.
-    L1(crate::CheL1),
+    L1(crate::families::che::CheL1),
     /// Level 2.
-    L2(crate::CheL2),
+    L2(crate::families::che::CheL2),
     /// Level 3.
-    L3(crate::CheL3),
+    L3(crate::families::che::CheL3),
 }
 
 impl OwnedLevel {
@@ -571,12 +569,12 @@ impl OwnedLevel {
     /// (the peak is the level's containers and its construction's temporaries). Refuses what
     /// the level's `from_soup` refuses, alike, and a level other than 0–3.
     pub fn build(soup: PolygonSoup, level: u8) -> Result<Self> {
-        use crate::che::{CheL0, CheL1, CheL2, CheL3};
-        use crate::families::che::build::build_fast_owned;
-        use crate::MeshTopology;
+        use super::build::build_fast_owned;
+        use crate::core::topology::MeshTopology;
+        use crate::families::che::{CheL0, CheL1, CheL2, CheL3};
         let level2 = |soup, name| {
             build_fast_owned(soup, name)
-                .and_then(|c| CheL2::from_checked(c, crate::che::edge_map_by_scan, name))
+                .and_then(|c| CheL2::from_checked(c, crate::families::che::edge_map_by_scan, name))
         };
         Ok(match level {
             0 => build_fast_owned(soup, CheL0::NAME)

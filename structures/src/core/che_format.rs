@@ -1,6 +1,7 @@
 //! The `.che` format's constants, its containers by name and the problems a file can have:
-//! what [`crate::core::error::Error::CheFile`] carries, kept apart from the reading and writing
-//! (the parent module) so that the crate's error type does not depend on them.
+//! what [`crate::core::error::Error::CheFile`] carries. The reading and writing, which build
+//! the CHE levels, are the CHE's own ([`crate::che::file`]); these definitions stand here, below
+//! every structure, so that the crate's one error type names them without depending on the CHE.
 
 /// The first 8 bytes of every `.che` file: `0x89 'C' 'H' 'E' '\r' '\n' 0x1A '\n'`. As PNG's
 /// signature does, the first byte is not ASCII and the line endings and end-of-file character
@@ -21,7 +22,7 @@ pub const HEADER_BYTES: u64 = 64;
 pub const ALIGNMENT: u64 = 64;
 
 /// Where the checksum is stored in the header (a `u64`).
-pub(super) const CHECKSUM_AT: usize = 56;
+pub(crate) const CHECKSUM_AT: usize = 56;
 
 /// A container of the CHE, in file order.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -81,7 +82,7 @@ impl Container {
         }
     }
 
-    pub(super) fn index(self) -> usize {
+    pub(crate) fn index(self) -> usize {
         self as usize
     }
 }
@@ -142,7 +143,7 @@ pub enum CheFileProblem {
     /// The file's length is not what its counts lay out.
     #[error("{actual} bytes, but its counts lay out {expected} bytes")]
     LengthMismatch {
-        /// What the counts lay out ([`super::Layout::file_bytes`]).
+        /// What the counts lay out ([`Layout::file_bytes`](crate::che::file::Layout::file_bytes)).
         expected: u64,
         /// The file's length.
         actual: u64,
