@@ -1,4 +1,4 @@
-//! `cargo bench`: the criterion groups of `topolab_harness::bench` (one per operator, one for
+//! `cargo bench`: the criterion groups of `topolab_harness::measuring::bench` (one per operator, one for
 //! construction and each workload; `BenchmarkId::new(structure, triangles)`) for every
 //! structure of the lab, the C++ baselines included.
 //!

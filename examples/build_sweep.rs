@@ -22,8 +22,8 @@
 //! OpenMesh's: what each pass costs, and what the target leaves for them (0.3× OpenMesh).
 
 use topolab::alloc::{keep_freed_memory, minor_faults, release_free_memory, thread_cpu_ns};
-use topolab_harness::measure::Builder;
-use topolab_harness::timing::turns::{take_turns, Answer, Run as Turn};
+use topolab_harness::measuring::measure::Builder;
+use topolab_harness::measuring::timing::turns::{take_turns, Answer, Run as Turn};
 use topolab_structures::{
     che, meshes, CheL1, CheL2, CheL3, IndexHalfEdge, MeshTopology, PointerHalfEdge, PolygonSoup,
 };

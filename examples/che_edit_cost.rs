@@ -11,8 +11,8 @@
 //! ```
 
 use std::time::Instant;
-use topolab_harness::edit_explain::edge_between;
-use topolab_harness::timing::median;
+use topolab_harness::measuring::timing::median;
+use topolab_harness::teaching::edits::edge_between;
 use topolab_structures::{
     meshes, CheL0, CheL1, CheL2, CheL3, IndexHalfEdge, MeshEdit, PolygonSoup, VertexId,
 };

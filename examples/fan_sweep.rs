@@ -14,12 +14,12 @@
 //! ```
 //!
 //! The last form (STRUCTURES, comma separated or `all`, then one CELL) also serves instruction
-//! counts: `valgrind --tool=callgrind --toggle-collect='topolab_harness::kernels::run*'` on a
+//! counts: `valgrind --tool=callgrind --toggle-collect='topolab_harness::measuring::kernels::run*'` on a
 //! one-round run counts the timed kernel only.
 
 use std::time::Instant;
-use topolab_harness::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
-use topolab_harness::timing::turns::{take_turns, Answer, Run as Turn};
+use topolab_harness::measuring::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
+use topolab_harness::measuring::timing::turns::{take_turns, Answer, Run as Turn};
 use topolab_structures::{
     meshes, BoundaryCurves, CheL2, IndexHalfEdge, MeshTopology, Operator, PointerHalfEdge,
     PolygonSoup, WingedEdge,

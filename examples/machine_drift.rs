@@ -1,5 +1,5 @@
 //! How the machine itself moves while nothing of the lab runs: the report's drift probe
-//! (`topolab_harness::probe::Drift`: a sequential read and a dependent chase through 64 MiB,
+//! (`topolab_harness::measuring::probe::Drift`: a sequential read and a dependent chase through 64 MiB,
 //! the checksum arithmetic in L1) read again and again, one line a reading, with the spread
 //! of each over the readings at the end.
 //!
@@ -9,7 +9,7 @@
 //! ```
 
 use std::time::{Duration, Instant};
-use topolab_harness::probe::Drift;
+use topolab_harness::measuring::probe::Drift;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

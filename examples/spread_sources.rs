@@ -2,7 +2,7 @@
 //! against a fresh build each round (where the allocator put the arrays), and a sampled cell's
 //! fixed queries asked again against fresh queries each round (what the cache holds). The
 //! structures take turns in a random order each round, as the report's rounds do
-//! (`topolab_harness::rounds`), and each round's value is what a round of the report would
+//! (`topolab_harness::measuring::rounds`), and each round's value is what a round of the report would
 //! record; the table gives, per structure and way, the median, the smallest and largest round
 //! and the interval of the median (order statistics) relative to the median.
 //!
@@ -15,12 +15,12 @@ use rand::seq::SliceRandom;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::time::Duration;
-use topolab_harness::kernels::Kernel;
-use topolab_harness::measure::{Estimator, MeshCase, Plan};
+use topolab_harness::measuring::kernels::Kernel;
+use topolab_harness::measuring::measure::{Estimator, MeshCase, Plan};
+use topolab_harness::measuring::rounds::{round_sets, CellKey, Contender, SetUp, Setup};
+use topolab_harness::measuring::timing::interval::Interval;
+use topolab_harness::measuring::timing::median;
 use topolab_harness::results::Subject;
-use topolab_harness::rounds::{round_sets, CellKey, Contender, SetUp, Setup};
-use topolab_harness::timing::interval::Interval;
-use topolab_harness::timing::median;
 use topolab_structures::{meshes, Operator};
 
 /// The ways a cell is measured round after round.

@@ -1,10 +1,10 @@
 //! What the report says of each outside library it ran ("How the baselines are run"): the
 //! facts of this build (versions, sources, flags) and of how the lab calls each library, for
-//! `topolab_harness::baselines`. One function per library, each listed only when it is
+//! `topolab_harness::measuring::baselines`. One function per library, each listed only when it is
 //! compiled in and the run used it.
 
 use crate::registry;
-use topolab_harness::baselines::BaselineRun;
+use topolab_harness::measuring::baselines::BaselineRun;
 
 /// How the C++ baselines' heap is counted, the same sentence for each.
 const CPP_HEAP: &str = "in one untimed build of its own, by the lab's global operator new and delete (baselines/cpp/heap/heap.cpp), each block for its malloc_usable_size, as the Rust structures' blocks are counted by the lab's global allocator; peak and held bytes of that build";

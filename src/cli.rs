@@ -242,7 +242,7 @@ pub fn run(cli: Cli) -> u8 {
             mesh.as_deref(),
             trace.map(|op| commands::explain_trace::TraceRequest {
                 op,
-                query: topolab_harness::reads::trace::Query { vertex, edge, face },
+                query: topolab_harness::teaching::trace::Query { vertex, edge, face },
                 structures,
             }),
         ),

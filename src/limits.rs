@@ -61,7 +61,7 @@ pub fn available() -> Option<u64> {
     if let Some(bytes) = std::env::var_os("TOPOLAB_AVAILABLE_MEMORY") {
         return bytes.to_str().and_then(|b| b.trim().parse().ok());
     }
-    let meminfo = topolab_harness::machine::meminfo("MemAvailable");
+    let meminfo = topolab_harness::measuring::machine::meminfo("MemAvailable");
     let read = |file: &str| -> Option<u64> {
         std::fs::read_to_string(format!("/sys/fs/cgroup/{file}"))
             .ok()?

@@ -4,7 +4,7 @@
 #![cfg(has_openmesh)]
 
 use topolab::openmesh::OpenMesh;
-use topolab_harness::changing::mesh_checksum;
+use topolab_harness::studies::changing::mesh_checksum;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{meshes, IndexHalfEdge, MeshTopology, PointerHalfEdge};
 

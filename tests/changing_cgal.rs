@@ -15,7 +15,7 @@ fn skipped_cgal_not_compiled_in() {
 #[cfg(has_cgal)]
 mod cgal {
     use topolab::cgal::{Polyhedron, SurfaceMesh};
-    use topolab_harness::changing::mesh_checksum;
+    use topolab_harness::studies::changing::mesh_checksum;
     use topolab_structures::algorithms::changing::Changing;
     use topolab_structures::{meshes, IndexHalfEdge, MeshTopology};
 

@@ -21,7 +21,7 @@ topolab_structures::edit_conformance!(cgal_polyhedron, topolab::cgal::Polyhedron
 #[cfg(has_cgal)]
 mod polyhedron {
     use topolab::cgal::Polyhedron;
-    use topolab_harness::changing::mesh_checksum;
+    use topolab_harness::studies::changing::mesh_checksum;
     use topolab_structures::algorithms::changing::Changing;
     use topolab_structures::testing::editing;
     use topolab_structures::{

@@ -9,12 +9,12 @@ mod common;
 use common::{close, report_skip, NoMeter};
 use std::time::Duration;
 use topolab::registry::{self, StructureVisitor};
-use topolab_harness::kernels::{run, run_workload, Kernel, Queries, QuerySet};
-use topolab_harness::kernels::{Workload, WorkloadBuffers};
-use topolab_harness::measure::{cross_check, Estimator, MeshCase, Plan};
+use topolab_harness::measuring::kernels::{run, run_workload, Kernel, Queries, QuerySet};
+use topolab_harness::measuring::kernels::{Workload, WorkloadBuffers};
+use topolab_harness::measuring::measure::{cross_check, Estimator, MeshCase, Plan};
+use topolab_harness::measuring::rounds::measure_structure;
+use topolab_harness::measuring::rounds::{round_sets, PASS};
 use topolab_harness::results::{Measurement, Status, Subject};
-use topolab_harness::rounds::measure_structure;
-use topolab_harness::rounds::{round_sets, PASS};
 use topolab_structures::{
     meshes, BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, Sample,
     VertexId, VertexList,

@@ -45,7 +45,7 @@ mod in_process {
     #[test]
     fn qhull_in_process_builds_scipys_hull() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-        let Some(python) = topolab_harness::hull::qhull::python(root) else {
+        let Some(python) = topolab_harness::studies::hull::qhull::python(root) else {
             eprintln!(
                 "SKIPPED qhull_in_process_builds_scipys_hull: no {}/.venv/bin/python with scipy (bash .ci/install-deps)",
                 root.display()
@@ -53,7 +53,8 @@ mod in_process {
             return;
         };
         for (what, points) in point_sets() {
-            let scipy = topolab_harness::hull::qhull::run(&python, root, &points, 1).unwrap();
+            let scipy =
+                topolab_harness::studies::hull::qhull::run(&python, root, &points, 1).unwrap();
             let ours = qhull::convex_hull(&points).unwrap();
             assert_eq!(ours.vertices, scipy.vertices, "{what}: vertices");
             assert_eq!(ours.facets, scipy.simplices, "{what}: triangles");

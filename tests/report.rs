@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use topolab::registry;
-use topolab_harness::plot;
+use topolab_harness::page::plot;
 use topolab_structures::Operator;
 
 fn out_dir(name: &str) -> PathBuf {

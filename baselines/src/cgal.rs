@@ -21,7 +21,7 @@
 //! structure's own descriptors once, before the clock, so that a `Polyhedron_3`'s timed loop
 //! reads no id table; then answered exactly as the harness's generic kernel answers them) and
 //! each workload ([`Cgal::native_workload`]), with the checksums of
-//! `topolab_harness::checksum`. [`MeshTopology::native`] hands them to the harness, which then
+//! `topolab_harness::measuring::checksum`. [`MeshTopology::native`] hands them to the harness, which then
 //! times no cell of either structure through per-query calls. Operators and workloads reach
 //! C++ as the codes of `cgal/shim.h`'s tables (the OpenMesh shim's, by the same typed match).
 //!

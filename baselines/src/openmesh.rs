@@ -55,7 +55,7 @@
 //! ([`OpenMesh::native_sampled`]: the sampled vertices, edges, faces or (edge, face) pairs,
 //! checked once before the clock and handed over as OpenMesh's handles, which are the lab's
 //! indices, then answered exactly as the harness's generic kernel answers them) and each
-//! workload ([`OpenMesh::native_workload`]), with the checksums of `topolab_harness::checksum`.
+//! workload ([`OpenMesh::native_workload`]), with the checksums of `topolab_harness::measuring::checksum`.
 //! [`MeshTopology::native`] hands them to the harness, which then times no cell of OpenMesh
 //! through per-query calls. Operators and workloads reach C++ as the integer codes of
 //! `openmesh/shim.h`'s tables, by a typed match (`operator_code`, `workload_code`, shared with

@@ -14,13 +14,13 @@
 //! run the next n while its predicted `Volume6` tests are at most [`bench::MAX_TESTS`]; the
 //! randomized one always goes on. Each time is the median of [`bench::timed_runs`] runs after
 //! a warm-up run ([`bench::benchmark_row`]; the peak heap is counted in the warm-up), Qhull's
-//! and CGAL's the same way, in-process (`topolab_harness::hull::outside::add_outside_hulls`; a build without
+//! and CGAL's the same way, in-process (`topolab_harness::studies::hull::outside::add_outside_hulls`; a build without
 //! Qhull says so). Columns: `×Qhull` the time over Qhull's at the same n, `/bound` the
 //! `Volume6` tests over the algorithm's bound, `ΣP/nlgn` Σ|P(e)| over n lg n, `exact` the tests
 //! decided exactly, `B/pt` peak heap bytes per point.
 
 use std::time::Instant;
-use topolab_harness::hull::bench;
+use topolab_harness::studies::hull::bench;
 use topolab_structures::hull::plane::{FacePlane, TestCount};
 use topolab_structures::hull::predicates::volume6;
 use topolab_structures::hull::{random_points, Shape};
@@ -73,7 +73,7 @@ fn main() {
         .expect("hull benchmark");
         rows.extend(run);
     }
-    topolab_harness::hull::outside::add_outside_hulls(&mut rows).expect("outside hulls");
+    topolab_harness::studies::hull::outside::add_outside_hulls(&mut rows).expect("outside hulls");
     println!(
         "{:<7} {:>8} {:<18} {:>9} {:>4} {:>7} {:>8} {:>8} {:>7} {:>11} {:>7} {:>8} {:>7} {:>5}",
         "shape",

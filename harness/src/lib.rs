@@ -1,41 +1,30 @@
 //! # topolab-harness
 //!
-//! The operator catalogue (what each operator takes and answers), the kernels that time it on
-//! any structure (in the report and in the `cargo bench` groups of [`bench`](mod@bench)),
-//! [`timing`] (medians, contenders taking turns, the memory meter), complexity fits, the machine
-//! probe, the [`results`] schema, the HTML [`report`] and its sections, the
-//! [`targets`] measured in turns, and [`compare`](mod@compare): two runs side by side.
+//! Everything that measures and shows, in rooms by concern, each using only the rooms listed
+//! before it:
+//!
+//! | room | what it holds |
+//! |---|---|
+//! | [`format`] | escaping, times and sizes with their units, ratios beside their goals |
+//! | [`measuring`] | the checksum, the clock and its intervals, the machine probe, the operator catalogue and the timed kernels, measuring in rounds, speed limits, fits, the memory meter, the `cargo bench` groups |
+//! | [`teaching`] | a query traced read by read, an edit explained record by record: what `explain` prints and the report's teaching section draws |
+//! | [`studies`] | the changing workloads, decimation, the convex hull, the reads per query counted |
+//! | [`results`] | the `results.json` schema: one run's answers |
+//! | [`targets`] | the developers' guide's goals, measured in turns and read from a run |
+//! | [`page`] | plots, charts, thumbnails, findings: what every page draws with |
+//! | [`report`] | the report: its run from the request to the files, and its sections |
+//! | [`scale`] | the scale run's page |
+//! | [`compare`](mod@compare) | two runs side by side |
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
-pub mod baselines;
-pub mod bench;
-pub mod catalogue;
-pub mod changing;
-pub mod checksum;
 pub mod compare;
-pub mod counting;
-pub mod decimate;
-pub mod edit_explain;
-pub mod findings;
-pub mod fit;
 pub mod format;
-pub mod hull;
-pub mod kernels;
-pub mod limit;
-pub mod machine;
-pub mod measure;
-pub mod phases;
-pub mod plot;
-pub mod probe;
-pub mod reads;
-pub mod repaired;
+pub mod measuring;
+pub mod page;
 pub mod report;
 pub mod results;
-pub mod rounds;
 pub mod scale;
-pub mod skips;
-pub mod svg;
+pub mod studies;
 pub mod targets;
-pub mod thumbnail;
-pub mod timing;
+pub mod teaching;

@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 use std::path::Path;
-use topolab_harness::hull::qhull;
+use topolab_harness::studies::hull::qhull;
 use topolab_structures::hull::{convex_hull, random_points, Algorithm, Shape};
 
 fn sorted_positions(points: &[DVec3], indices: impl Iterator<Item = usize>) -> Vec<[f64; 3]> {

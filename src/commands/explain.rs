@@ -9,7 +9,7 @@ use crate::input::{is_che_file, mesh_or_tetrahedron, unknown_structure, Failure}
 use crate::limits;
 use crate::registry::{self, StructureVisitor};
 use std::path::Path;
-use topolab_harness::reads::trace::Query;
+use topolab_harness::teaching::trace::Query;
 use topolab_structures::che::{CheFile, MappedChe};
 use topolab_structures::{CheL3, Error, MeshTopology, PolygonSoup};
 

@@ -11,8 +11,8 @@
 //! `--op` takes every [`EditOp`] by its name ([`ExplainOp`], from [`EditOp::ALL`]), and
 //! `flip`, `split` and `collapse` for `flip-edge`, `split-edge` and `collapse-edge`. What an
 //! operation acts on, and so which of `--edge`, `--face`, `--vertex` and `--vertices` it
-//! takes, is [`topolab_harness::edit_explain::edit`]'s, which also does the edit and lists the
-//! records ([`topolab_harness::edit_explain::explain_on`]): the report's teaching section shows
+//! takes, is [`topolab_harness::teaching::edits::edit`]'s, which also does the edit and lists the
+//! records ([`topolab_harness::teaching::edits::explain_on`]): the report's teaching section shows
 //! the same lines. Elements are numbered the same on every structure: vertices and faces as the
 //! mesh's, edges as `--trace` numbers them (the mesh's edges in order of first appearance, the
 //! index half-edge's edge ids). `collapse-edge` collapses the edge's first vertex into its
@@ -39,7 +39,7 @@
 //!
 //! The records are each structure's [`MeshTopology::explain`] lines read as records, except
 //! for the CHE levels, whose containers are listed entry by entry
-//! ([`topolab_harness::edit_explain::records`]). The reads are described, not counted: the
+//! ([`topolab_harness::teaching::edits::records`]). The reads are described, not counted: the
 //! edit code reads its containers directly, not through the counted accessors `--trace` uses.
 
 use crate::input::{mesh_or_tetrahedron, Failure};
@@ -49,7 +49,7 @@ use crate::registry::{
 use std::any::TypeId;
 use std::fmt::Write;
 use std::sync::LazyLock;
-use topolab_harness::edit_explain::{
+use topolab_harness::teaching::edits::{
     choose, default_case, edit, explain_on, kind_of, prepare, Choice, Prepared, Subject,
     SubjectKind,
 };
@@ -456,7 +456,10 @@ fn chosen(
                 if single {
                     "its only one".to_string()
                 } else {
-                    format!("at most {} of them", topolab_harness::edit_explain::TRIED)
+                    format!(
+                        "at most {} of them",
+                        topolab_harness::teaching::edits::TRIED
+                    )
                 },
                 choice
                     .refused

@@ -3,7 +3,7 @@
 //! containers named as the sources name them, then the answer and the number of reads.
 //!
 //! The reads come from the counting build of the structures
-//! (`topolab_harness::reads::trace`), which the timed code never runs. Edges are numbered as
+//! (`topolab_harness::teaching::trace`), which the timed code never runs. Edges are numbered as
 //! the soup's (the edge list's and the half-edge's ids; see there), so `--edge E` is the same
 //! edge on every structure. `explain che --trace r00|r01|r02 --vertex N` keeps the CHE's own
 //! trace of Algorithm 7 ([`super::explain_che`]); `explain che --trace OP` otherwise traces
@@ -11,7 +11,7 @@
 
 use crate::input::{mesh_or_tetrahedron, Failure};
 use crate::limits;
-use topolab_harness::reads::trace::{self, counted_soup, Query, TraceError};
+use topolab_harness::teaching::trace::{self, counted_soup, Query, TraceError};
 use topolab_structures_counted::{Input, Operator};
 
 /// What `--trace` asks.

@@ -98,7 +98,7 @@ pub fn list(json: bool) -> Result<String, Failure> {
         .map(|(name, why)| serde_json::json!({ "name": name, "why": why }))
         .collect();
     if json {
-        let ops: Vec<_> = topolab_harness::catalogue::CATALOGUE.to_vec();
+        let ops: Vec<_> = topolab_harness::measuring::catalogue::CATALOGUE.to_vec();
         let v = serde_json::json!({
             "structures": rows,
             "operators": ops,
@@ -125,7 +125,10 @@ pub fn list(json: bool) -> Result<String, Failure> {
         let _ = write!(out, "{:>width$}", r.name);
     }
     out.push('\n');
-    for (i, spec) in topolab_harness::catalogue::CATALOGUE.iter().enumerate() {
+    for (i, spec) in topolab_harness::measuring::catalogue::CATALOGUE
+        .iter()
+        .enumerate()
+    {
         let _ = write!(out, "{:<18}", spec.name);
         for r in &rows {
             let _ = write!(out, "{:>width$}", r.costs[i].1);
@@ -193,7 +196,7 @@ pub fn list(json: bool) -> Result<String, Failure> {
         out.push('\n');
     }
     let _ = writeln!(out, "\noperators:");
-    for spec in &topolab_harness::catalogue::CATALOGUE {
+    for spec in &topolab_harness::measuring::catalogue::CATALOGUE {
         let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);
     }
     Ok(out)

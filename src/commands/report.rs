@@ -7,8 +7,8 @@
 use crate::input::Failure;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
-use topolab_harness::baselines::BaselineRun;
-use topolab_harness::measure::MemoryMeter;
+use topolab_harness::measuring::baselines::BaselineRun;
+use topolab_harness::measuring::measure::MemoryMeter;
 use topolab_harness::report::pipeline::{self, Host, Used};
 use topolab_harness::report::run::{MeshFamily, ReportError, Request};
 use topolab_harness::report::sections::libigl::LIBIGL;

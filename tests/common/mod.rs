@@ -1,4 +1,4 @@
-//! The checksums of `topolab_harness::checksum`, written over [`MeshTopology`] for any
+//! The checksums of `topolab_harness::measuring::checksum`, written over [`MeshTopology`] for any
 //! structure, to check the baselines (OpenMesh's C++ sweeps, libigl's outputs) against.
 
 // Each test crate that includes this module uses part of it.
@@ -13,11 +13,11 @@ pub use shared::{broken_soups, closed_fan_soups, report_skip};
 
 use glam::DVec3;
 use std::time::Duration;
-use topolab_harness::checksum::{edge_key, mix};
-use topolab_harness::kernels::Kernel;
-use topolab_harness::measure::{Estimator, MemoryMeter, MeshCase, Plan};
+use topolab_harness::measuring::checksum::{edge_key, mix};
+use topolab_harness::measuring::kernels::Kernel;
+use topolab_harness::measuring::measure::{Estimator, MemoryMeter, MeshCase, Plan};
+use topolab_harness::measuring::rounds::measure_structure;
 use topolab_harness::results::Measurement;
-use topolab_harness::rounds::measure_structure;
 use topolab_structures::meshes::{self, RandomMeshParams};
 use topolab_structures::{
     BoundaryCurves, EdgeId, FaceId, Input, MeshTopology, Operator, PolygonSoup, VertexId,

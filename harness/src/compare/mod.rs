@@ -16,7 +16,7 @@ mod page;
 
 pub use page::{html, text};
 
-use crate::kernels::Kernel;
+use crate::measuring::kernels::Kernel;
 use crate::results::{Measurement, Status, Subject, FORMAT_VERSION};
 use serde::de::IgnoredAny;
 use std::collections::HashMap;
@@ -321,7 +321,7 @@ pub fn compare(mut old: Run, mut new: Run) -> Comparison {
         if r.is_empty() {
             1.0
         } else {
-            crate::timing::median(&r)
+            crate::measuring::timing::median(&r)
         }
     };
     for c in &mut cells {

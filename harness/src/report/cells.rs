@@ -1,9 +1,9 @@
 //! Looking cells up in the results, for the sections that draw them: a structure's cells of
 //! one kind by size, their plot lines, the largest mesh of a family, a sweep against its limit.
 
-use crate::kernels::Kernel;
-use crate::plot;
-use crate::plot::Style;
+use crate::measuring::kernels::Kernel;
+use crate::page::plot;
+use crate::page::plot::Style;
 use crate::results::{Measurement, Results, Subject};
 use topolab_structures::{Input, Operator};
 
@@ -66,7 +66,7 @@ pub(crate) fn table_kernel(op: Operator) -> Kernel {
 }
 
 pub(crate) fn family_of(op: Operator) -> &'static str {
-    if crate::rounds::boundary(op) {
+    if crate::measuring::rounds::boundary(op) {
         "grid"
     } else {
         "torus"

@@ -1,4 +1,4 @@
-//! The clock of the report's phases ([`crate::phases`]): the wall time and the
+//! The clock of the report's phases ([`crate::measuring::phases`]): the wall time and the
 //! process's CPU time (its own threads and the subprocesses it waited for) of each section, one
 //! stderr line as each finishes, all of them into `results.json` and the page's run facts.
 //!
@@ -6,10 +6,10 @@
 //! (`docs/report.md`). What was cut to keep it there is here, with the reasons the page's notes
 //! give.
 
-use crate::measure::Plan;
-use crate::phases::{Phase, PhaseTime};
-use crate::rounds::RoundPlan;
-use crate::timing::interval::ROUNDS_FOR_LEVEL;
+use crate::measuring::measure::Plan;
+use crate::measuring::phases::{Phase, PhaseTime};
+use crate::measuring::rounds::RoundPlan;
+use crate::measuring::timing::interval::ROUNDS_FOR_LEVEL;
 use std::time::{Duration, Instant};
 
 /// (process, children) CPU seconds; 0 where `getrusage` is unavailable (the table then shows
@@ -84,7 +84,7 @@ impl Clock {
     }
 }
 
-/// The plan of the size sweep ([`crate::rounds`]): every cell in at least
+/// The plan of the size sweep ([`crate::measuring::rounds`]): every cell in at least
 /// [`ROUNDS_FOR_LEVEL`] rounds (the fewest whose interval reaches 95%), a cell whose interval is
 /// still wide in extra rounds that may take 30% of that time again, at most [`MAX_ROUNDS`]
 /// rounds ([`FULL_MAX_ROUNDS`] with `--full`); a cell whose one run is estimated above 0.15 s
@@ -103,7 +103,11 @@ pub fn plan(quick: bool, full: bool) -> Plan {
             cold_rounds: 0,
             seed: 2026,
         },
-        samples: if quick { 1024 } else { crate::rounds::SAMPLES },
+        samples: if quick {
+            1024
+        } else {
+            crate::measuring::rounds::SAMPLES
+        },
     }
 }
 
@@ -122,7 +126,7 @@ pub fn plan_for(plan: &Plan, light: bool, family: &str, shows_cold: bool) -> Pla
         rounds: RoundPlan {
             extra: if generated { plan.rounds.extra } else { 0.0 },
             cold_rounds: if shows_cold {
-                crate::rounds::COLD_ROUNDS
+                crate::measuring::rounds::COLD_ROUNDS
             } else {
                 0
             },
@@ -173,7 +177,7 @@ pub fn budget_notes(quick: bool, full: bool) -> Vec<String> {
     }
     notes.push(format!(
         "For the same budget, the 3D convex hulls stop at 100k points on the sphere (1M in a ball): on a sphere every point is on the hull, and 1M points there took 44 s alone for the n log n growth the smaller sizes show. Gift wrapping and the incremental algorithm run a size only when its predicted Volume6 tests are at most {:.0e}: the incremental algorithm's 1M ball and 100k sphere (53 s alone) are left out, its O(n²) shown on the sizes before. The changing workloads run {} times on the 1M torus (5 on the smaller ones). `--full` runs all of these further.",
-        crate::hull::bench::MAX_TESTS,
+        crate::studies::hull::bench::MAX_TESTS,
         changing_runs(1_000_000, false, false)
     ));
     notes

@@ -1,8 +1,8 @@
 //! The structures of a list ([`Structures`]) as the report's sections ask for them by name
 //! ([`Roster`]).
 
+use crate::measuring::rounds::{SetUp, Setup};
 use crate::report::run::Roster;
-use crate::rounds::{SetUp, Setup};
 use crate::targets::group::{Case, First};
 use crate::targets::plan::Turns;
 use std::marker::PhantomData;

@@ -11,6 +11,7 @@ pub mod clock;
 pub mod listed;
 pub mod page;
 pub mod pipeline;
+pub mod reads;
 pub mod refined;
 pub mod repair;
 pub mod run;

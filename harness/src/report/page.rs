@@ -40,7 +40,7 @@ pub fn render(r: &Results) -> String {
         s.render(&mut h, &page);
     }
     machine_section(&mut h, r);
-    crate::baselines::render(&mut h, &r.baselines);
+    crate::measuring::baselines::render(&mut h, &r.baselines);
     for s in shown().filter(|s| !s.before_machine()) {
         s.render(&mut h, &page);
     }
@@ -57,7 +57,7 @@ pub fn render(r: &Results) -> String {
 
 /// One probe level for the Machine table: its load latency, its chain steps with arithmetic,
 /// its bandwidth.
-fn level_text(l: &crate::probe::Level) -> String {
+fn level_text(l: &crate::measuring::probe::Level) -> String {
     let steps: Vec<String> = l
         .step_ns
         .iter()
@@ -91,5 +91,5 @@ fn machine_section(h: &mut String, r: &Results) {
         r.settings.rounds.min_rounds, r.settings.rounds.max_rounds
     );
     crate::report::sure::machine(h, r);
-    crate::phases::render(h, &r.phases);
+    crate::measuring::phases::render(h, &r.phases);
 }

@@ -6,10 +6,11 @@
 //! and the files. What only the program running it has (its allocator, the machine's limits,
 //! how it writes files) comes from its [`Host`].
 
-use crate::baselines::BaselineRun;
-use crate::limit::{self, MeshCounts};
-use crate::measure::{cross_check, Estimator, MeshCase};
-use crate::phases::Phase;
+use crate::measuring::baselines::BaselineRun;
+use crate::measuring::measure::{cross_check, Estimator, MeshCase};
+use crate::measuring::phases::Phase;
+use crate::measuring::speed_limit::MeshCounts;
+use crate::measuring::timing::meter::MemoryMeter;
 use crate::report::clock::{self, Clock};
 use crate::report::listed::Listed;
 use crate::report::run::{Case, MeshFamily, ReportError, Request, Run};
@@ -21,8 +22,7 @@ use crate::results::{
     CostRow, MeshInfo, MeshRoundsRow, Results, Settings, Status, StructureInfo, Teaching,
     FORMAT_VERSION,
 };
-use crate::timing::meter::MemoryMeter;
-use crate::{fit, machine, probe, svg};
+use crate::{measuring::fit, measuring::machine, measuring::probe, page::svg};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -126,7 +126,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
             quick: req.quick,
             sizes: req.sizes.clone(),
             samples: plan.samples,
-            rounds: crate::rounds::round_settings(&plan),
+            rounds: crate::measuring::rounds::round_settings(&plan),
             cell_max_s: plan.cell_max.as_secs_f64(),
             command: req.command.clone(),
             sections: selection.names(),
@@ -145,7 +145,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         targets: Vec::new(),
         decimate: Vec::new(),
         teaching: Vec::new(),
-        teaching_edits: crate::edit_explain::teaching_edits(),
+        teaching_edits: crate::teaching::edits::teaching_edits(),
         reads: Vec::new(),
         notes,
         phases: Vec::new(),
@@ -180,7 +180,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
         .max_by_key(|c| c.2.num_faces())
         .map(|c| c.0.clone());
     let kept = crate::targets::swept::kept(&req.names);
-    let drift = crate::probe::Drift::new();
+    let drift = crate::measuring::probe::Drift::new();
     for (i, (name, fam, soup)) in cases.iter().enumerate() {
         let light_here = selection.light(fam) || (!req.full && refined::light(name));
         let targets_here = target_mesh.as_deref() == Some(name.as_str());
@@ -209,7 +209,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
             results.drift.push(drift.read(name, clock.since_start()));
             let keep = if targets_here { &kept[..] } else { &[] };
             let mut progress = |round: usize| bar.set_message(format!("{name}: round {round}"));
-            let done = crate::rounds::measure_mesh::<L>(
+            let done = crate::measuring::rounds::measure_mesh::<L>(
                 &req.names,
                 &case,
                 plan,
@@ -260,7 +260,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     }
     bar.finish_and_clear();
     results.fits = fit::fit_all(&results.measurements, &results.structures);
-    limit::annotate(&mut results);
+    results.annotate_limits();
     clock.lap(Phase::FITS, None);
     let listed = Listed::<L>::new();
     let mut run = Run {
@@ -420,17 +420,17 @@ fn write(
     })?;
     results.phases = clock.times().to_vec();
     let mut without = String::new();
-    crate::phases::render(&mut without, &results.phases);
+    crate::measuring::phases::render(&mut without, &results.phases);
     let page = crate::report::page::render(results);
     clock.lap(Phase::WRITING, None);
     results.phases = clock.times().to_vec();
     let mut with = String::new();
-    crate::phases::render(&mut with, &results.phases);
+    crate::measuring::phases::render(&mut with, &results.phases);
     let page = page.replacen(&without, &with, 1);
     let json = serde_json::to_string_pretty(results).expect("serialisable");
     host.write(&out.join("results.json"), json.as_bytes())?;
     host.write(&out.join("index.html"), page.as_bytes())?;
-    let findings = crate::findings::markdown(results);
+    let findings = crate::page::findings::markdown(results);
     host.write(&out.join("FINDINGS.md"), findings.as_bytes())?;
     Ok(())
 }

@@ -1,10 +1,10 @@
 //! What a report run is asked for ([`Request`]: plain data, not a command line's), how it
 //! fails ([`ReportError`]), and what a section's own measurement works with ([`Run`]).
 
-use crate::measure::Plan;
+use crate::measuring::measure::Plan;
+use crate::measuring::rounds::{SetUp, Setup};
+use crate::measuring::timing::meter::MemoryMeter;
 use crate::results::Results;
-use crate::rounds::{SetUp, Setup};
-use crate::timing::meter::MemoryMeter;
 use std::path::PathBuf;
 use topolab_structures::PolygonSoup;
 
@@ -124,7 +124,7 @@ pub type Case = (String, String, PolygonSoup);
 /// The structures of a run, by name, for the sections that measure some of them themselves
 /// ([`Listed`](crate::report::listed::Listed) lists those of a list of structures).
 pub trait Roster {
-    /// The structure called `name` set up on `case` for rounds ([`crate::rounds`]); `None` for
+    /// The structure called `name` set up on `case` for rounds ([`crate::measuring::rounds`]); `None` for
     /// a name not in the list.
     fn set_up<'a>(&self, name: &str, set_up: SetUp<'a, '_>) -> Option<Result<Setup<'a>, String>>;
 

@@ -3,8 +3,8 @@
 //! measurement is timed as, and its HTML. The page, the selection of a run and the run's
 //! phases all follow the one list of [`crate::report::sections::SECTIONS`].
 
-use crate::phases::Phase;
-use crate::plot::{self, Style};
+use crate::measuring::phases::Phase;
+use crate::page::plot::{self, Style};
 use crate::report::run::{ReportError, Run};
 use crate::results::Results;
 

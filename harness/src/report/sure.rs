@@ -4,8 +4,8 @@
 //! before every mesh ([`machine`]).
 
 use crate::format::{esc, ns};
+use crate::measuring::timing::interval::Interval;
 use crate::results::{Measurement, Results};
-use crate::timing::interval::Interval;
 use std::fmt::Write;
 
 /// A measured cell's interval, if it has one.
@@ -97,8 +97,8 @@ pub(crate) fn machine(h: &mut String, r: &Results) {
         let _ = write!(
             h,
             "<h3>The machine over the run</h3><p>The same probe before every mesh: a sequential read and a dependent chase through {}, and the checksum arithmetic in L1, each the median of {} runs. Nothing of a structure is in it: what moves here is the machine.</p>",
-            crate::format::bytes(crate::probe::DRIFT_BYTES as f64),
-            crate::probe::DRIFT_RUNS
+            crate::format::bytes(crate::measuring::probe::DRIFT_BYTES as f64),
+            crate::measuring::probe::DRIFT_RUNS
         );
         h.push_str(&drift_svg(&r.drift));
         let (lo, hi) = r
@@ -118,8 +118,8 @@ pub(crate) fn machine(h: &mut String, r: &Results) {
 
 /// The drift probe's three readings over the run as lines on a linear plot, each relative to
 /// its own median over the run (1 = its usual value; above 1, slower).
-fn drift_svg(points: &[crate::probe::DriftPoint]) -> String {
-    type Get = fn(&crate::probe::DriftPoint) -> f64;
+fn drift_svg(points: &[crate::measuring::probe::DriftPoint]) -> String {
+    type Get = fn(&crate::measuring::probe::DriftPoint) -> f64;
     let series: [(&str, &str, Get); 3] = [
         ("read time per byte", "#1f77b4", |d| {
             1.0 / d.read_bytes_per_s
@@ -135,7 +135,7 @@ fn drift_svg(points: &[crate::probe::DriftPoint]) -> String {
             let mut v: Vec<f64> = points.iter().map(get).collect();
             let mut sorted = v.clone();
             sorted.sort_by(f64::total_cmp);
-            let mid = crate::timing::median(&sorted);
+            let mid = crate::measuring::timing::median(&sorted);
             v.iter_mut().for_each(|x| *x /= mid);
             v
         })

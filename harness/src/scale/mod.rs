@@ -13,8 +13,8 @@
 pub mod page;
 pub mod proc;
 
-use crate::machine::Machine;
-use crate::probe::Level;
+use crate::measuring::machine::Machine;
+use crate::measuring::probe::Level;
 use proc::Faults;
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
@@ -180,11 +180,11 @@ pub enum Check {
 
 impl Check {
     /// Whether two results agree: exactly, or for sums by the report's rule
-    /// ([`crate::checksum::sums_agree`]).
+    /// ([`crate::measuring::checksum::sums_agree`]).
     pub fn agrees(self, other: Check) -> bool {
         match (self, other) {
             (Check::Exact(a), Check::Exact(b)) => a == b,
-            (Check::Float(a), Check::Float(b)) => crate::checksum::sums_agree(a, b),
+            (Check::Float(a), Check::Float(b)) => crate::measuring::checksum::sums_agree(a, b),
             _ => false,
         }
     }

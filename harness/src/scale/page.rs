@@ -5,7 +5,7 @@
 
 use super::{Check, Measure, Outcome, ScaleCell, ScaleResults, Timing, ID_LIMIT_TRIANGLES};
 use crate::format::{bytes, esc, ns};
-use crate::plot::{self, Line, Point, Style};
+use crate::page::plot::{self, Line, Point, Style};
 use crate::report::page::CSS;
 use std::fmt::Write;
 use topolab_structures::Family;

@@ -1,10 +1,10 @@
 //! One group of a target's structures taking turns, its structures visited by name from a
 //! list of structures ([`First`], then [`Second`]).
 
+use crate::measuring::timing::meter::MemoryMeter;
 use crate::targets::plan::{Cell, Turns, PROBE};
 use crate::targets::probe::{with_probe, ProbeTurns};
 use crate::targets::rounds::pair;
-use crate::timing::meter::MemoryMeter;
 use std::marker::PhantomData;
 use topolab_structures::registry::{StructureVisitor, Structures};
 use topolab_structures::{MeshTopology, PolygonSoup};

@@ -1,11 +1,11 @@
 //! The ratio a target measured in turns, per round: against another structure, against its
 //! limit at the probe's figures of that round, or against its chain.
 
+use crate::measuring::timing::turns::Spread;
 use crate::results::{Limit, Results};
 use crate::targets::plan::{
     Against, Cell, Target, Turns, PROBE, PROBE_CHECKSUM, PROBE_LOAD, PROBE_STEP,
 };
-use crate::timing::turns::Spread;
 use topolab_structures::Step;
 
 /// Whether `name` ran in `r`: a structure of the run, or an algorithm of the hull section.

@@ -12,14 +12,14 @@
 //! round gives one ratio, the table shows their median and their spread (the smallest and the
 //! largest), and a load change hits both sides of a round alike. A target against a limit
 //! (the vertex 1-ring sweep of the half-edge family against its access model, see
-//! [`crate::limit`]) takes turns with the probe ([`with_probe`]: its read, its chases and its
+//! [`crate::measuring::speed_limit`]) takes turns with the probe ([`with_probe`]: its read, its chases and its
 //! checksum arithmetic) and divides each round of the sweep by the limit of that round, so the
 //! limit follows the machine from round to round. A row held to a limit whose chain steps do
 //! arithmetic also shows the sweep against its chain at its own step's latency
 //! ([`measured_chain`]).
 //!
-//! The runs are the size sweep's own: the harness kernels ([`crate::kernels::run`],
-//! [`crate::kernels::run_workload`]), and a baseline's own loops for every run of a baseline
+//! The runs are the size sweep's own: the harness kernels ([`crate::measuring::kernels::run`],
+//! [`crate::measuring::kernels::run_workload`]), and a baseline's own loops for every run of a baseline
 //! ([`topolab_structures::NativeKernels`]). Every run is timed in the measuring thread's CPU
 //! time ([`Stopwatch`]), as the size sweep times construction: time slices given to other
 //! processes do not count. Every run's answer must agree with the first run's; a disagreement
@@ -35,7 +35,7 @@ pub mod swept;
 mod tests;
 pub mod text;
 
-pub use crate::timing::turns::{take_turns, Answer, Run, Spread, Stopwatch};
+pub use crate::measuring::timing::turns::{take_turns, Answer, Run, Spread, Stopwatch};
 pub use measured::{measured, measured_chain};
 pub use plan::{
     plan, Against, Cell, Group, Target, Turns, CHANGING_ROUNDS, PROBE, PROBE_CHECKSUM, PROBE_LOAD,

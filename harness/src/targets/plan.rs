@@ -13,8 +13,8 @@ pub const ROUNDS: usize = 15;
 /// report within its time; no warm-up round, since every run starts from a fresh build.
 pub const CHANGING_ROUNDS: usize = 3;
 
-pub use crate::hull::bench::HULL_POINTS;
 pub use crate::results::{Cell, Turns};
+pub use crate::studies::hull::bench::HULL_POINTS;
 
 // `Cell` is named in `results.json` (crate::results); how many rounds each cell takes is
 // this plan's.
@@ -54,7 +54,7 @@ impl Cell {
 pub enum Against {
     /// Another structure, in the same rounds.
     Structure(&'static str),
-    /// The cell's limit ([`crate::limit`]).
+    /// The cell's limit ([`crate::measuring::speed_limit`]).
     Limit,
 }
 
@@ -164,7 +164,7 @@ pub fn plan(can: impl Fn(&str, Cell) -> bool) -> Vec<Group> {
 }
 
 /// The name of the probe's turn in the rounds of a target against its limit: a sequential read
-/// of the working set whose bandwidth sets the limit's bandwidth bound ([`Reader`](crate::probe::Reader)).
+/// of the working set whose bandwidth sets the limit's bandwidth bound ([`Reader`](crate::measuring::probe::Reader)).
 pub const PROBE: &str = "probe";
 
 /// The third turn of a construction target between one of the lab's structures and an outside
@@ -175,9 +175,9 @@ pub const PROBE: &str = "probe";
 pub const CHECKS: &str = "lab-checks";
 
 /// The probe's plain chase in the rounds of a target against its limit: ns per dependent load
-/// at the latency bound's working set ([`crate::probe::Chase`]).
+/// at the latency bound's working set ([`crate::measuring::probe::Chase`]).
 pub const PROBE_LOAD: &str = "probe-load";
 /// The probe's chase whose steps do the chain's work ([`ChaseTurns::step`](crate::targets::probe::ChaseTurns::step)): ns per step.
 pub const PROBE_STEP: &str = "probe-step";
-/// The probe's checksum arithmetic ([`crate::probe::Terms`]): ns per term.
+/// The probe's checksum arithmetic ([`crate::measuring::probe::Terms`]): ns per term.
 pub const PROBE_CHECKSUM: &str = "probe-checksum";

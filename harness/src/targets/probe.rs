@@ -1,12 +1,12 @@
 //! The rounds of a structure held to its limit: its sweep takes turns with the probe's read,
 //! chases and checksum arithmetic, so that each round's limit is the machine's in that round.
 
-use crate::probe::{Chase, Cycle, Probe, Reader, Terms};
+use crate::measuring::probe::{Chase, Cycle, Probe, Reader, Terms};
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::measuring::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use crate::results::Limit;
 use crate::targets::plan::{Cell, Turns, PROBE, PROBE_CHECKSUM, PROBE_LOAD, PROBE_STEP};
 use crate::targets::rounds::{turns, Built};
-use crate::timing::meter::MemoryMeter;
-use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
 use topolab_structures::{MeshTopology, PolygonSoup, Step};
 

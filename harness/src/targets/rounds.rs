@@ -1,11 +1,11 @@
 //! The rounds of two structures taking turns on the cells a target times: each built once (or
 //! built in every run, for construction), each run timed by a [`Stopwatch`].
 
-use crate::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
-use crate::measure::Builder;
+use crate::measuring::kernels::{run, run_workload, Queries, Workload, WorkloadBuffers};
+use crate::measuring::measure::Builder;
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::measuring::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use crate::targets::plan::{Cell, Turns, CHECKS, HULL_POINTS};
-use crate::timing::meter::MemoryMeter;
-use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::time::Instant;
 use topolab_structures::{BoundaryCurves, InputChecks, MeshTopology, Operator, PolygonSoup};
 

@@ -2,13 +2,13 @@
 //! 1-ring sweep, smoothing, construction) are read from the size sweep's own rounds on the
 //! largest torus, so the Targets, the chooser, the tables and the plots read the same cells:
 //! in every round both structures were built afresh and ran in a random order
-//! ([`crate::rounds`]), so the ratio of a round is a ratio in turns. That mesh gets the run's
+//! ([`crate::measuring::rounds`]), so the ratio of a round is a ratio in turns. That mesh gets the run's
 //! most rounds (the pipeline's plan); the cells the targets read are kept ([`kept`]) and their
 //! rounds become the target's [`Turns`] ([`turns`]), side by side. The changing workloads' targets read
 //! the changing section's rounds the same way ([`changing_turns`]).
 
-use crate::changing::ChangingRow;
-use crate::rounds::{CellKey, MeshRounds};
+use crate::measuring::rounds::{CellKey, MeshRounds};
+use crate::studies::changing::ChangingRow;
 use crate::targets::plan::{Against, Cell, Turns, CHECKS, TARGETS};
 use crate::targets::text::sequential_subject;
 use topolab_structures::PolygonSoup;
@@ -99,7 +99,7 @@ pub fn turns(
 }
 
 /// The [`Turns`] of every changing target from the changing section's rounds on `mesh`: every
-/// structure ran once in every round there ([`crate::changing::in_rounds`]), so round `i` of
+/// structure ran once in every round there ([`crate::studies::changing::in_rounds`]), so round `i` of
 /// two rows was taken in turns.
 pub fn changing_turns(rows: &[ChangingRow], mesh: &str, soup: &PolygonSoup) -> Vec<Turns> {
     let mut out = Vec::new();

@@ -6,11 +6,11 @@ use super::plan::*;
 use super::probe::{with_probe, ChaseTurns, ProbeTurns};
 use super::rounds::pair;
 use super::text::{checks_text, missed_limit_text, versus_text};
-use crate::kernels::Kernel;
-use crate::probe::Probe;
+use crate::measuring::kernels::Kernel;
+use crate::measuring::probe::Probe;
+use crate::measuring::timing::median;
+use crate::measuring::timing::meter::MemoryMeter;
 use crate::results::{Limit, Measurement, Subject};
-use crate::timing::median;
-use crate::timing::meter::MemoryMeter;
 use topolab_structures::algorithms::changing::Changing;
 use topolab_structures::{meshes, CheL2, IndexHalfEdge};
 use topolab_structures::{Operator, Step};
@@ -289,7 +289,7 @@ fn a_missed_target_between_two_structures_says_how_far_each_is_from_its_limit() 
 /// L1 of 16 kB at 100 GB/s and 1 ns a load (a CHE corner step 2 ns), memory of 1 MiB at
 /// 10 GB/s and 100 ns a load.
 fn machine() -> Probe {
-    use crate::probe::Level;
+    use crate::measuring::probe::Level;
     Probe {
         read_bytes_per_s: 1e10,
         read_array_bytes: 1 << 20,
@@ -324,7 +324,7 @@ fn without_probe_turns(turns: &[Turns]) -> Vec<Turns> {
 fn limit_of(bytes: f64, latency: f64, checksum: f64) -> Limit {
     Limit {
         ns_per_item: 0.0,
-        bound: crate::limit::Bound::Bandwidth,
+        bound: crate::measuring::speed_limit::Bound::Bandwidth,
         bytes_per_item: bytes,
         bandwidth_ns_per_item: 0.0,
         bandwidth_level: "L1".into(),

@@ -1,13 +1,13 @@
 //! The texts beside a target's ratio: the same ratio from the size sweep's cells (the
 //! structures timed one after another), and why a target is missed, measured.
 
-use crate::kernels::{Kernel, Workload};
-use crate::limit::{limit_text, times_limit};
-use crate::probe::Probe;
+use crate::measuring::kernels::{Kernel, Workload};
+use crate::measuring::probe::Probe;
+use crate::measuring::speed_limit::{limit_text, times_limit};
+use crate::measuring::timing::turns::Spread;
 use crate::results::{Limit, Measurement, Results, Status, Subject};
 use crate::targets::measured::measured_chain;
 use crate::targets::plan::{Against, Cell, Target, Turns, CHECKS};
-use crate::timing::turns::Spread;
 use std::fmt::Write;
 use topolab_structures::{Operator, Step};
 
@@ -47,14 +47,15 @@ pub(crate) fn one_after_another(r: &Results, mesh: &str, t: &Target) -> Option<f
         let Against::Structure(b) = t.against else {
             return None;
         };
-        return crate::changing::ratio(&r.changing, w, t.structure, b);
+        return crate::studies::changing::ratio(&r.changing, w, t.structure, b);
     }
     if t.cell == Cell::Hull {
         // The hull table's medians of the same points, one algorithm after the other.
         let Against::Structure(b) = t.against else {
             return None;
         };
-        let seconds = |a: &str| crate::hull::bench::hull_target_row(&r.hull, a).map(|x| x.seconds);
+        let seconds =
+            |a: &str| crate::studies::hull::bench::hull_target_row(&r.hull, a).map(|x| x.seconds);
         return Some(seconds(t.structure)? / seconds(b)?);
     }
     let a = sequential(&r.measurements, mesh, t.structure, t.cell)?;

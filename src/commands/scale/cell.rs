@@ -5,7 +5,7 @@
 use crate::failure::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::time::Instant;
-use topolab_harness::kernels::{self, sample_queries, Queries, WorkloadBuffers};
+use topolab_harness::measuring::kernels::{self, sample_queries, Queries, WorkloadBuffers};
 use topolab_harness::scale::proc::{faults, resident};
 use topolab_harness::scale::{time_kernel, Check, Measure, SAMPLED_QUERIES};
 use topolab_structures::{meshes, BoundaryCurves, Cost, MeshTopology, Operator, Workload};

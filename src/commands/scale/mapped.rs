@@ -10,7 +10,7 @@ use crate::failure::Failure;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
-use topolab_harness::kernels::{self, Queries};
+use topolab_harness::measuring::kernels::{self, Queries};
 use topolab_harness::scale::proc::faults;
 use topolab_harness::scale::{time_kernel_runs, Check, MappedRun, Outcome, ScaleCell, Timing};
 use topolab_structures::che::{CheFile, MappedCheL2};

@@ -107,14 +107,16 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
     let probe_mb = args.probe_mb.unwrap_or(PROBE_MB);
     let first_estimates = admit_smallest(&structures, probe_mb)?;
     // The build's facts as the run starts (its commit is the binary's, not a later edit's).
-    let machine = topolab_harness::machine::facts(&topolab_baselines::openmesh_description());
+    let machine =
+        topolab_harness::measuring::machine::facts(&topolab_baselines::openmesh_description());
     let memory_available = limits::available().unwrap_or(0);
     eprintln!(
         "scale: {} structures, sizes up to {max_triangles} triangles, {} available; the memory probe first (alone)",
         structures.len(),
         limits::human(memory_available)
     );
-    let probe = topolab_harness::probe::measure(probe_mb as usize, probe_mb as usize).levels;
+    let probe =
+        topolab_harness::measuring::probe::measure(probe_mb as usize, probe_mb as usize).levels;
     let sizes: Vec<u64> = LADDER
         .iter()
         .copied()
@@ -143,7 +145,7 @@ pub fn scale(args: &ScaleArgs, command: String) -> Result<String, Failure> {
         format: FORMAT.into(),
         command,
         machine,
-        memory_total: topolab_harness::machine::meminfo("MemTotal").unwrap_or(0),
+        memory_total: topolab_harness::measuring::machine::meminfo("MemTotal").unwrap_or(0),
         memory_available,
         structures: structures
             .iter()

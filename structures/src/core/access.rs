@@ -115,7 +115,7 @@ impl Read {
 
 /// The work a step of the chain does between one dependent load and the address of the next,
 /// as the structure's code computes it: the probe times a chase of each kind
-/// (`topolab_harness::probe`), so a chain's steps are priced as measured, arithmetic included.
+/// (`topolab_harness::measuring::probe`), so a chain's steps are priced as measured, arithmetic included.
 #[derive(
     Copy, Clone, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
 )]

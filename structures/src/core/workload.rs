@@ -1,6 +1,6 @@
 //! The application [`Workload`]s the harness times on every structure: named here, next to the
 //! [`crate::Operator`]s, so that a baseline's [`crate::NativeKernels`] can be asked for one by
-//! type. The harness runs them (`topolab_harness::kernels::run_workload`).
+//! type. The harness runs them (`topolab_harness::measuring::kernels::run_workload`).
 
 use crate::core::operator::Operator;
 

@@ -8,7 +8,7 @@
 //! state what the design gives; the numbers beside them say what it measured on this machine.
 
 use crate::format::esc;
-use crate::kernels::Kernel;
+use crate::measuring::kernels::Kernel;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::{interval_title, tied};
 use crate::results::{Measurement, Results, Status, StructureInfo, Subject};

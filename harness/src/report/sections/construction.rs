@@ -1,9 +1,9 @@
 //! "Construction time": builds per face against mesh size, warm and cold.
 
 use crate::format::ns;
-use crate::kernels::Kernel;
-use crate::plot;
-use crate::plot::Style;
+use crate::measuring::kernels::Kernel;
+use crate::page::plot;
+use crate::page::plot::Style;
 use crate::report::cells::{largest, lines};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status, Subject};

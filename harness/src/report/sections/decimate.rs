@@ -1,4 +1,4 @@
-//! "Decimation by quadric error, and reconstruction" (see [`crate::decimate`]): on the closed
+//! "Decimation by quadric error, and reconstruction" (see [`crate::studies::decimate`]): on the closed
 //! tori of the run up to [`MAX_FACES`], each mesh decimated to 10% of its faces by the lab's
 //! decimater on the index and the pointer half-edge (the two structures whose eager collapses
 //! are compared with OpenMesh's Decimater; the decimation suite enrols every editable one),
@@ -21,13 +21,13 @@
 //! each collapse's edges in a `std::set`: about a third of its instructions in callgrind are
 //! `malloc`, `free` and the tree, none of it a setting of ours).
 
-use crate::decimate::{distance, result_checksum, DecimateRow};
-use crate::phases::Phase;
+use crate::measuring::phases::Phase;
+use crate::measuring::timing::median;
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::measuring::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use crate::report::run::{Case, ReportError, Run as SectionRun};
 use crate::report::section::{Needs, Page, Section};
-use crate::timing::median;
-use crate::timing::meter::MemoryMeter;
-use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
+use crate::studies::decimate::{distance, result_checksum, DecimateRow};
 use glam::DVec3;
 use std::fmt::Write;
 use topolab_baselines::native_decimate::NativeDecimater;

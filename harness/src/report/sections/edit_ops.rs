@@ -21,15 +21,15 @@
 //! operations show their slope on small meshes already. The cap, the sample counts and the
 //! skip by estimate are what bound the section's time (its phase in `results.json` records it).
 
-use crate::changing::mesh_checksum;
-use crate::checksum::mix;
-use crate::edit_explain::edge_between;
-use crate::phases::Phase;
+use crate::measuring::checksum::mix;
+use crate::measuring::phases::Phase;
+use crate::measuring::timing::median;
+use crate::page::skips::{self, Skip};
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
 use crate::results::{EditOpOutcome, EditOpRow};
-use crate::skips::{self, Skip};
-use crate::timing::median;
+use crate::studies::changing::mesh_checksum;
+use crate::teaching::edits::edge_between;
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_registry::{self as registry, EditVisitor};

@@ -2,17 +2,17 @@
 //! quantities of the lecture's analysis, counted in the same runs.
 
 use crate::format::esc;
-use crate::hull::bench::hull_target_row;
-use crate::hull::bench::vertex_checksum;
-use crate::phases::Phase;
-use crate::plot;
+use crate::measuring::phases::Phase;
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::measuring::timing::turns::{take_turns, Answer, Run as Turn};
+use crate::page::plot;
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section};
 use crate::results::HullRow;
 use crate::results::Results;
+use crate::studies::hull::bench::hull_target_row;
+use crate::studies::hull::bench::vertex_checksum;
 use crate::targets::plan::{Cell, Turns, HULL_POINTS};
-use crate::timing::meter::MemoryMeter;
-use crate::timing::turns::{take_turns, Answer, Run as Turn};
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_baselines::hulls::HullLibrary;
@@ -106,7 +106,7 @@ fn hull(h: &mut String, r: &Results) {
 
 /// The quantities of the lecture's analysis of the hull algorithms, per run and fitted.
 fn hull_analysis(h: &mut String, r: &Results) {
-    use crate::hull::bench::{bound, n_lg_n};
+    use crate::studies::hull::bench::{bound, n_lg_n};
     let ours: Vec<_> = r
         .hull
         .iter()
@@ -170,7 +170,7 @@ fn hull_analysis(h: &mut String, r: &Results) {
 
 /// How far the hull benchmark goes: the largest n in a ball and on a sphere, and the
 /// `Volume6` tests a slow algorithm's next size may be predicted to take
-/// ([`crate::hull::bench::run`]).
+/// ([`crate::studies::hull::bench::run`]).
 #[derive(Copy, Clone, Debug, PartialEq)]
 struct HullSizes {
     ball: usize,
@@ -182,11 +182,11 @@ impl HullSizes {
     /// The default: the ball to 1M, the sphere to 100k. On a sphere every point is on the hull
     /// (h = n); its 1M points took about 44 s alone (CGAL about 20 s, the randomized algorithm
     /// 12, Qhull 11) for the same n log n growth the sphere shows to 100k and the ball to 1M.
-    /// The slow algorithms stop at [`MAX_TESTS`](crate::hull::bench::MAX_TESTS). `--full` takes
+    /// The slow algorithms stop at [`MAX_TESTS`](crate::studies::hull::bench::MAX_TESTS). `--full` takes
     /// the sphere to 1M and lets the slow algorithms run to 1.5·10¹⁰ predicted tests (the
     /// incremental algorithm's 1M ball and 100k sphere, 53 s), `--quick` stays small.
     fn of(quick: bool, full: bool) -> Self {
-        use crate::hull::bench::MAX_TESTS;
+        use crate::studies::hull::bench::MAX_TESTS;
         match (quick, full) {
             (true, _) => HullSizes {
                 ball: 10_000,
@@ -215,7 +215,7 @@ fn measure(
     meter: &dyn MemoryMeter,
     notes: &mut Vec<String>,
 ) -> Result<Vec<HullRow>, ReportError> {
-    use crate::hull::bench;
+    use crate::studies::hull::bench;
     use topolab_structures::hull::Shape;
     if !topolab_baselines::HAS_QHULL {
         notes.push(format!(
@@ -247,7 +247,7 @@ fn measure(
         );
         rows.extend(run.map_err(|e| ReportError::Measurement(format!("hull benchmark: {e}")))?);
     }
-    crate::hull::outside::add_outside_hulls(&mut rows)
+    crate::studies::hull::outside::add_outside_hulls(&mut rows)
         .map_err(|e| ReportError::Measurement(format!("hull benchmark: {e}")))?;
     Ok(rows)
 }
@@ -263,14 +263,18 @@ fn in_turns(rows: &[HullRow]) -> Result<Option<Turns>, ReportError> {
         return Ok(None);
     }
     eprintln!("topolab report: hull ball {HULL_POINTS}: randomized and qhull taking turns");
-    let points = random_points(Shape::Ball, HULL_POINTS, crate::hull::bench::POINTS_SEED);
+    let points = random_points(
+        Shape::Ball,
+        HULL_POINTS,
+        crate::studies::hull::bench::POINTS_SEED,
+    );
     let names = ["randomized", qhull.name()];
     let (cell, start) = (Cell::Hull, Instant::now());
     let run = |i: usize| -> Result<Turn, String> {
         let (seconds, ids) = if i == 0 {
             let start = Instant::now();
             let randomized = Algorithm::Randomized {
-                seed: crate::hull::bench::RANDOMIZED_SEED,
+                seed: crate::studies::hull::bench::RANDOMIZED_SEED,
             };
             let hull = convex_hull(&points, randomized).map_err(|e| e.to_string())?;
             let seconds = start.elapsed().as_secs_f64();
@@ -323,7 +327,7 @@ impl Section for Hull {
     fn measure(&self, run: &mut Run) -> Result<(), ReportError> {
         let (req, r) = (run.request, &mut *run.results);
         r.hull = measure(HullSizes::of(req.quick, req.full), run.meter, &mut r.notes)?;
-        r.hull_fits = crate::hull::bench::fits(&r.hull);
+        r.hull_fits = crate::studies::hull::bench::fits(&r.hull);
         r.qhull = topolab_registry::qhull_description();
         r.targets.extend(in_turns(&r.hull)?);
         Ok(())
@@ -349,7 +353,7 @@ mod tests {
         let quick = HullSizes::of(true, false);
         assert!(quick.ball <= 10_000 && quick.sphere <= 1_000);
         // The incremental algorithm's next sizes, predicted from the tests counted: its 100k sphere and 1M ball run with --full only.
-        use crate::hull::bench::predicted_tests;
+        use crate::studies::hull::bench::predicted_tests;
         let sphere = predicted_tests(Some((1_000, 995_004)), (10_000, 99_950_004), 100_000);
         let ball = predicted_tests(Some((10_000, 5_830_028)), (100_000, 185_455_794), 1_000_000);
         for next in [sphere, ball] {

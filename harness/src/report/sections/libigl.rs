@@ -1,8 +1,8 @@
 //! "libigl as reference": libigl's whole-mesh functions, timed, their answers checked.
 
 use crate::format::{esc, ns};
-use crate::kernels::Kernel;
-use crate::phases::Phase;
+use crate::measuring::kernels::Kernel;
+use crate::measuring::phases::Phase;
 use crate::report::run::{Case, ReportError, Run};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{LibiglRow, Measurement, Results, Subject};

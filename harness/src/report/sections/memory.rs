@@ -1,11 +1,11 @@
 //! "Memory per triangle": heap bytes of each built structure and the peak while building it.
 
-use crate::kernels::Kernel;
-use crate::plot::Style;
+use crate::measuring::kernels::Kernel;
+use crate::page::plot::Style;
+use crate::page::svg;
 use crate::report::cells::largest;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status};
-use crate::svg;
 use std::fmt::Write;
 
 /// One bar per structure built on `mesh`, per triangle of its `tri`: `bar` gives a construction

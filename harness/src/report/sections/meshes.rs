@@ -13,7 +13,7 @@ fn meshes(h: &mut String, r: &Results) {
             "<figure>{}<figcaption>{}{}<br>{} vertices, {} faces</figcaption></figure>",
             m.thumbnail_svg,
             esc(&m.name),
-            crate::repaired::mark(m),
+            crate::page::repaired::mark(m),
             m.vertices,
             m.faces
         );

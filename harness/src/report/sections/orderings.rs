@@ -1,14 +1,14 @@
 //! "Element order": the vertex 1-ring sweep of a mesh renumbered in each order.
 
-use crate::kernels::Kernel;
-use crate::measure::{cross_check, Estimator, MeshCase};
-use crate::phases::Phase;
+use crate::measuring::kernels::Kernel;
+use crate::measuring::measure::{cross_check, Estimator, MeshCase};
+use crate::measuring::phases::Phase;
+use crate::measuring::rounds::{round_sets, run_rounds, Contender, SetUp, Setup};
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Refined, Section};
 use crate::report::sections::real_at_scale::FAMILY;
 use crate::report::sure::ns_with_interval;
 use crate::results::{Measurement, Results, Status, Subject};
-use crate::rounds::{round_sets, run_rounds, Contender, SetUp, Setup};
 use std::fmt::Write;
 use topolab_structures::{Operator, PolygonSoup};
 

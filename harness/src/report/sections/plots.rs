@@ -1,7 +1,7 @@
 //! "Time per query against mesh size": one log-log plot per operator.
 
-use crate::plot;
-use crate::plot::Style;
+use crate::page::plot;
+use crate::page::plot::Style;
 use crate::report::cells::{family_of, lines, table_kernel};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Subject};

@@ -3,7 +3,7 @@
 //! measured like the tori, each cell beside the same cell on the torus of the nearest size.
 
 use crate::format::{esc, ns};
-use crate::kernels::Kernel;
+use crate::measuring::kernels::Kernel;
 use crate::report::run::MeshFamily;
 use crate::report::section::{Needs, Page, Refined, Section};
 use crate::report::sure::interval_title;

@@ -1,7 +1,7 @@
 //! "Real meshes": the fetched meshes, each structure's sweep and construction on them.
 
 use crate::format::esc;
-use crate::kernels::Kernel;
+use crate::measuring::kernels::Kernel;
 use crate::report::section::{Needs, Page, Real, Section};
 use crate::report::sure::ns_with_interval;
 use crate::results::{MeshInfo, Results, Status, Subject};
@@ -13,7 +13,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
     if real.is_empty() {
         return;
     }
-    let _ = write!(h, "<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles). {}</div><table><tr><th class=l>mesh</th><th>faces</th>", crate::repaired::HOW_TO_READ);
+    let _ = write!(h, "<h2>Real meshes</h2><div class=read><b>How to read it.</b> Meshes fetched from package registries by <code>make data</code> (see <code>bench-data/manifest.toml</code>). Each cell: the vertex 1-ring sweep in nanoseconds per vertex and the construction time per face; a structure that cannot store the mesh says why (scans and dirty inputs are refused by the structures that require an oriented manifold or triangles). {}</div><table><tr><th class=l>mesh</th><th>faces</th>", crate::page::repaired::HOW_TO_READ);
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
@@ -23,7 +23,7 @@ fn real_meshes(h: &mut String, r: &Results, names: &[&str]) {
             h,
             "<tr><th class=l>{}{}</th><td>{}</td>",
             esc(&mesh.name),
-            crate::repaired::mark(mesh),
+            crate::page::repaired::mark(mesh),
             mesh.faces
         );
         for n in names {

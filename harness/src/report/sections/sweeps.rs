@@ -2,8 +2,8 @@
 //! structure's access model allows on this machine.
 
 use crate::format::{esc, ns};
-use crate::kernels::Kernel;
-use crate::limit::{limit_text, times_limit};
+use crate::measuring::kernels::Kernel;
+use crate::measuring::speed_limit::{limit_text, times_limit};
 use crate::report::cells::largest;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::ns_with_interval;

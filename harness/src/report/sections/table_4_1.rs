@@ -2,14 +2,14 @@
 //! and the time at the largest size, with libigl's functions beside them.
 
 use crate::format::ns;
-use crate::kernels::Kernel;
-use crate::phases::Phase;
-use crate::reads::count::{count_all, Budget, ReadsRow};
+use crate::measuring::kernels::Kernel;
+use crate::measuring::phases::Phase;
 use crate::report::cells::{cells, family_of, table_kernel};
 use crate::report::run::{ReportError, Run};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::report::sure::ns_with_interval;
 use crate::results::{Results, Status, Subject};
+use crate::studies::reads::{count_all, Budget, ReadsRow};
 use std::fmt::Write;
 use std::time::Instant;
 use topolab_structures::Operator;
@@ -163,6 +163,6 @@ impl Section for Table41 {
 
     fn render(&self, h: &mut String, page: &Page) {
         table_4_1(h, page.r, &page.names);
-        crate::reads::section::table(h, page.r);
+        crate::report::reads::table(h, page.r);
     }
 }

@@ -3,14 +3,16 @@
 //! the changing workloads from fresh builds in turns (OpenMesh natively, as the changing
 //! section runs it), every run in the measuring thread's CPU time.
 
-use crate::changing::{mesh_checksum, MeshChecksum};
 use crate::format::{against_goal, class_of, esc};
-use crate::phases::Phase;
-use crate::probe::Probe;
+use crate::measuring::phases::Phase;
+use crate::measuring::probe::Probe;
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::measuring::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use crate::report::cells::largest;
 use crate::report::run::{Case as Mesh, ReportError, Roster, Run as SectionRun};
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Measurement, Results, Status};
+use crate::studies::changing::{mesh_checksum, MeshChecksum};
 use crate::targets::group::Case;
 use crate::targets::measured::{measured, ran, shown_turns};
 use crate::targets::plan::{Against, Cell, Turns, CHANGING_ROUNDS, PROBE, ROUNDS, TARGETS};
@@ -20,8 +22,6 @@ use crate::targets::text::{
     chain_text, checks_text, missed_limit_text, one_after_another, sequential, sequential_subject,
     versus_text,
 };
-use crate::timing::meter::MemoryMeter;
-use crate::timing::turns::{take_turns, Answer, Run, Stopwatch};
 use std::fmt::Write;
 use std::time::Instant;
 #[cfg(has_openmesh)]
@@ -279,7 +279,7 @@ fn render(h: &mut String, r: &Results) {
     }
     // Decimation is timed in its own section, the index half-edge and OpenMesh taking turns on
     // the run's largest torus there: its row shows the median of their per-round ratios.
-    for row in crate::decimate::targets(&r.decimate) {
+    for row in crate::studies::decimate::targets(&r.decimate) {
         let (value, met) = match row.value {
             Some(v) => (
                 against_goal(v, row.goal),

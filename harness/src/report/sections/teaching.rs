@@ -2,9 +2,9 @@
 //! edits shown record by record with the mesh before and after (`edits`).
 
 use crate::format::esc;
+use crate::page::svg;
 use crate::report::section::{Page, Section};
 use crate::results::{Results, TeachingEdit};
-use crate::svg;
 use std::fmt::Write;
 
 fn teaching(h: &mut String, r: &Results) {
@@ -67,7 +67,7 @@ impl Section for Teaching {
 
     fn render(&self, h: &mut String, page: &Page) {
         teaching(h, page.r);
-        crate::reads::section::teaching(h);
+        crate::report::reads::teaching(h);
         edits(h, page.r);
     }
 }

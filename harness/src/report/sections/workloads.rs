@@ -1,8 +1,8 @@
 //! "Application workloads": the Surface_mesh benchmark's workloads against mesh size.
 
-use crate::kernels::Kernel;
-use crate::plot;
-use crate::plot::Style;
+use crate::measuring::kernels::Kernel;
+use crate::page::plot;
+use crate::page::plot::Style;
 use crate::report::cells::lines;
 use crate::report::section::{Needs, Page, Section, SizeSweep};
 use crate::results::{Results, Subject};

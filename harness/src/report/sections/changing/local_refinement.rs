@@ -20,13 +20,13 @@
 //! inside C++). The Rust crates run where they offer the edge split (tri-mesh).
 
 use super::{lacks, too_long};
-use crate::changing::{
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::page::skips::Skip;
+use crate::report::run::{Case, ReportError};
+use crate::studies::changing::{
     declared_operations, in_rounds, mesh_checksum, runner, LocalRefinement, LocalRefinementCase,
     LocalRefinementRow, Runner,
 };
-use crate::report::run::{Case, ReportError};
-use crate::skips::Skip;
-use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::adaptive::{refine_adaptive, Region, Request};
@@ -308,7 +308,7 @@ mod tests {
             &editing,
             (true, false),
             |_| 2,
-            &crate::timing::meter::Uncounted,
+            &crate::measuring::timing::meter::Uncounted,
             &mut skips,
             &mut notes,
         )

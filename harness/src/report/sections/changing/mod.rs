@@ -1,5 +1,5 @@
 //! "Changing meshes": the changing workloads (√3 subdivision and the collapse test of the
-//! Surface_mesh benchmark; see [`crate::changing`]): every editable structure among
+//! Surface_mesh benchmark; see [`crate::studies::changing`]): every editable structure among
 //! those asked for (the registry's capability, [`registry::visit_editable`]), and OpenMesh and
 //! CGAL's two structures natively ([`registry::NATIVE_CHANGING`]: the whole workload in C++),
 //! on the closed tori of the run; and local refinement (the `local_refinement` module: adaptive
@@ -17,15 +17,15 @@
 
 mod local_refinement;
 
-use crate::changing::{
+use crate::measuring::phases::Phase;
+use crate::measuring::timing::meter::MemoryMeter;
+use crate::page::skips::{self, Skip};
+use crate::report::run::{Case, ReportError, Run};
+use crate::report::section::{Needs, Page, Section};
+use crate::studies::changing::{
     cross_check, declared, declared_operations, in_rounds, mesh_checksum, runner, ChangingRow,
     LocalRefinement, Runner,
 };
-use crate::phases::Phase;
-use crate::report::run::{Case, ReportError, Run};
-use crate::report::section::{Needs, Page, Section};
-use crate::skips::{self, Skip};
-use crate::timing::meter::MemoryMeter;
 use std::fmt::Write;
 #[cfg(has_openmesh)]
 use topolab_baselines::openmesh::OpenMesh;
