@@ -5,7 +5,7 @@
 //!
 //! | room | what it holds |
 //! |---|---|
-//! | [`format`] | escaping, times and sizes with their units, ratios beside their goals |
+//! | [`format`](mod@format) | escaping, times and sizes with their units, ratios beside their goals |
 //! | [`measuring`] | the checksum, the clock and its intervals, the machine probe, the operator catalogue and the timed kernels, measuring in rounds, speed limits, fits, the memory meter, the `cargo bench` groups |
 //! | [`teaching`] | a query traced read by read, an edit explained record by record: what `explain` prints and the report's teaching section draws |
 //! | [`studies`] | the changing workloads, decimation, the convex hull, the reads per query counted |

@@ -2,7 +2,7 @@
 //!
 //! Mesh data structures side by side behind one trait, [`MeshTopology`], with what they are built
 //! from ([`PolygonSoup`]), read from ([`io`]), checked against ([`oracle`](testing::oracle),
-//! [`conformance`](mod@conformance)) and tested on ([`meshes`]), refined to any size ([`refine`])
+//! [`conformance`](mod@testing::conformance)) and tested on ([`meshes`]), refined to any size ([`refine`])
 //! and renumbered to measure the effect of element order ([`ordering`]); [`checks`] runs the
 //! consistency checks of the lecture on polygon-mesh data structures on a file as written.
 //!

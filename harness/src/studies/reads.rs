@@ -332,7 +332,7 @@ pub struct ReadsRow {
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Verdict {
-    /// The fitted exponent is the declared cost's (within [`TOLERANCE`](crate::studies::reads::TOLERANCE)).
+    /// The fitted exponent is the declared cost's (within [`TOLERANCE`]).
     Matches,
     /// It is not: a finding about the code or the declared cost.
     Differs,

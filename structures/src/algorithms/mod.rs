@@ -5,7 +5,7 @@
 //! ([`adaptive`]), the changing workloads of the Surface_mesh benchmark on any editable
 //! structure ([`changing`]), the selection, rotation, scaling and smoothing of vertices
 //! ([`select`]), decimation by quadric error and its reconstruction
-//! ([`decimate`]), element renumbering ([`ordering`]), and the union-find they share ([`union_find`]).
+//! ([`decimate`]), element renumbering ([`ordering`]), and the union-find they share.
 
 pub mod adaptive;
 pub mod changing;
