@@ -10,7 +10,6 @@
 // The FFI and the allocator, the only `unsafe` code, are in the crates below.
 #![forbid(unsafe_code)]
 
-pub mod baselines;
 pub mod cli;
 pub mod commands;
 pub mod extend;

@@ -1,5 +1,6 @@
 //! The house's rules, checked on the tree as it stands (docs/architecture.md): no Rust file
-//! over 900 lines, and every path a document cites exists.
+//! over 900 lines, no arrow back up between the rooms of a crate, and every path a document
+//! cites exists.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -191,4 +192,183 @@ fn the_citation_reader_finds_paths_and_leaves_the_rest() {
             "docs"
         ]
     );
+}
+
+/// The rooms of each crate (a top-level module of its `src/`, a folder or a file), in the order
+/// they stand: a room may use only the rooms before it. A new room takes its place here.
+const ROOMS: [(&str, &[&str]); 5] = [
+    (
+        "structures/src",
+        &[
+            "core",
+            "io",
+            "families",
+            "algorithms",
+            "meshes",
+            "registry",
+            "testing",
+        ],
+    ),
+    (
+        "harness/src",
+        &[
+            "format",
+            "measuring",
+            "teaching",
+            "studies",
+            "results",
+            "targets",
+            "page",
+            "report",
+            "scale",
+            "compare",
+        ],
+    ),
+    (
+        "peers/src",
+        &[
+            "versions",
+            "compose",
+            "baby_shark_corner_table",
+            "lox_directed_edge",
+            "lox_half_edge",
+            "tri_mesh",
+            "edit",
+            "crates",
+            "registry",
+        ],
+    ),
+    (
+        "baselines/src",
+        &[
+            "foreign",
+            "heap",
+            "openmesh",
+            "cgal",
+            "qhull",
+            "hulls",
+            "compiled",
+            "native_decimate",
+        ],
+    ),
+    (
+        "src",
+        &[
+            "failure", "output", "limits", "input", "commands", "cli", "extend",
+        ],
+    ),
+];
+
+/// The code of a source file the crate's build sees, without comments and without its test
+/// module (`#[cfg(test)]` to the end: a room's tests may use the rooms above it, as an
+/// integration test would).
+fn production_code(text: &str) -> String {
+    let text = &text[..text.find("#[cfg(test)]").unwrap_or(text.len())];
+    text.lines()
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The first names after every `crate::` of `code` (not `$crate::`, a macro's path for its
+/// callers), with the names of a `crate::{a, b::c}` group.
+fn crate_paths(code: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    for (i, _) in code.match_indices("crate::") {
+        let before = code[..i].chars().next_back();
+        if before.is_some_and(|c| c == '$' || c == '_' || c.is_alphanumeric()) {
+            continue;
+        }
+        let rest = &code[i + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let group = &group[..group.find('}').unwrap_or(group.len())];
+            for item in group.split(',') {
+                let name = item.trim().split("::").next().unwrap_or("").trim();
+                if !name.is_empty() {
+                    names.push(name.to_string());
+                }
+            }
+        } else {
+            let end = rest
+                .find(|c: char| !(c == '_' || c.is_alphanumeric()))
+                .unwrap_or(rest.len());
+            let macro_call = rest[end..].starts_with('!');
+            if end > 0 && !macro_call {
+                names.push(rest[..end].to_string());
+            }
+        }
+    }
+    names
+}
+
+/// The room a source file belongs to: the first part of its path below the crate's `src/`
+/// (`None` for the crate root, which declares the rooms).
+fn room_of(relative: &str) -> Option<String> {
+    let first = relative.split('/').next()?;
+    let room = first.strip_suffix(".rs").unwrap_or(first);
+    (!matches!(room, "lib" | "main")).then(|| room.to_string())
+}
+
+#[test]
+fn no_room_uses_a_room_after_it() {
+    let all = files();
+    let mut back_up = Vec::new();
+    let mut unplaced = Vec::new();
+    let mut arrows = 0;
+    for (src, order) in ROOMS {
+        let place = |room: &str| order.iter().position(|r| *r == room);
+        let mut rooms_seen = 0;
+        for file in all.iter().filter(|f| f.ends_with(".rs")) {
+            let Some(relative) = file.strip_prefix(&format!("{src}/")) else {
+                continue;
+            };
+            let Some(room) = room_of(relative) else {
+                continue;
+            };
+            rooms_seen += 1;
+            let Some(here) = place(&room) else {
+                unplaced.push(format!("{src}/{room}"));
+                continue;
+            };
+            if relative.ends_with("/tests.rs") {
+                continue;
+            }
+            let code = production_code(&fs::read_to_string(root().join(file)).unwrap());
+            for name in crate_paths(&code) {
+                match place(&name) {
+                    Some(there) if there > here => {
+                        back_up.push(format!("{file}: {room} uses {name}, which stands after it"))
+                    }
+                    Some(there) if there < here => arrows += 1,
+                    // A name of the crate root that is no room: its re-exports, which hide
+                    // which room a path reaches (and so a circle), in the structures' crate.
+                    None if src == "structures/src" => back_up.push(format!(
+                        "{file}: crate::{name} is a re-export of the crate root; name its module"
+                    )),
+                    _ => {}
+                }
+            }
+        }
+        assert!(rooms_seen > 3, "{src}: only {rooms_seen} files in rooms");
+    }
+    unplaced.sort();
+    unplaced.dedup();
+    assert!(
+        unplaced.is_empty(),
+        "rooms missing from ROOMS (give each its place): {unplaced:?}"
+    );
+    assert!(arrows > 100, "only {arrows} arrows between rooms found");
+    assert!(back_up.is_empty(), "arrows back up: {back_up:#?}");
+}
+
+#[test]
+fn the_path_reader_finds_rooms_and_leaves_macros_and_comments() {
+    let code = production_code(
+        "use crate::core::ids;\n// crate::testing\nuse crate::{io::obj, families};\n\
+         $crate::Family; crate::for_each!(x); my_crate::x;\n#[cfg(test)]\nuse crate::meshes;",
+    );
+    assert_eq!(crate_paths(&code), ["core", "io", "families"]);
+    assert_eq!(room_of("core/ids.rs").as_deref(), Some("core"));
+    assert_eq!(room_of("format.rs").as_deref(), Some("format"));
+    assert_eq!(room_of("lib.rs"), None);
 }

@@ -1,15 +1,14 @@
 //! `topolab report`: its options, checked ([`report_with`]: names, families, and what the
 //! machine and the output folder admit) and handed to the harness's report run
 //! ([`topolab_harness::report::pipeline`]) as a plain request, with what only this program has
-//! ([`Host`]: its counting allocator, its baselines, its atomic writes). [`report_with`] is the
+//! ([`Host`]: its counting allocator, and what the machine it runs on admits). [`report_with`] is the
 //! same report with structures from outside the lab beside the lab's (see [`crate::extend`]).
 
 use crate::input::Failure;
 use std::marker::PhantomData;
-use std::path::{Path, PathBuf};
-use topolab_harness::measuring::baselines::BaselineRun;
+use std::path::PathBuf;
 use topolab_harness::measuring::measure::MemoryMeter;
-use topolab_harness::report::pipeline::{self, Host, Used};
+use topolab_harness::report::pipeline::{self, Host};
 use topolab_harness::report::run::{MeshFamily, ReportError, Request};
 use topolab_harness::report::sections::libigl::LIBIGL;
 use topolab_registry::Lab;
@@ -163,21 +162,6 @@ impl<X: Structures> Host for Cli<X> {
     fn admit_refined(&self, faces: usize, structures: &[String]) -> Result<(), ReportError> {
         // As a torus of as many triangles, with two builds of the largest structure.
         crate::limits::admit_report(&[faces], &["torus"], structures, 0).map_err(report_error)
-    }
-
-    fn baselines(&self, used: Used) -> Vec<BaselineRun> {
-        crate::baselines::runs(crate::baselines::Used {
-            structures: used.structures,
-            hull: used.hull,
-            decimate: used.decimate,
-            libigl: used.libigl,
-        })
-    }
-
-    fn write(&self, path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
-        use std::io::Write as _;
-        crate::output::write_file(path, |w| w.write_all(bytes))
-            .map_err(|f| ReportError::Output(f.message))
     }
 }
 

@@ -3,10 +3,10 @@
 //! refined), the size sweep (every structure on every mesh its sections need), the fits and
 //! the limits, then each shown section's own measurement in page order
 //! ([`Section::measure`](crate::report::section::Section::measure)), each timed as its phase,
-//! and the files. What only the program running it has (its allocator, the machine's limits,
-//! how it writes files) comes from its [`Host`].
+//! and the files. What only the program running it has (its allocator, the machine's limits
+//! it admits) comes from its [`Host`].
 
-use crate::measuring::baselines::BaselineRun;
+use crate::measuring::baselines::{self, Used};
 use crate::measuring::measure::{cross_check, Estimator, MeshCase};
 use crate::measuring::phases::Phase;
 use crate::measuring::speed_limit::MeshCounts;
@@ -26,21 +26,10 @@ use crate::{measuring::fit, measuring::machine, measuring::probe, page::svg};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use topolab_structures::io::{echo, write_atomically};
 use topolab_structures::registry::{StructureVisitor, Structures};
 use topolab_structures::repair::RepairLog;
 use topolab_structures::{meshes, MeshTopology, Operator, PolygonSoup};
-
-/// Which outside libraries a run used, for the rows of "How the baselines are run".
-pub struct Used<'a> {
-    /// The structures measured (OpenMesh's and CGAL's rows when they are among them).
-    pub structures: &'a [&'a str],
-    /// The hull section ran (Qhull's and CGAL's hulls).
-    pub hull: bool,
-    /// The decimation section ran (OpenMesh's and CGAL's decimaters).
-    pub decimate: bool,
-    /// The libigl version that answered, when its section ran.
-    pub libigl: Option<&'a str>,
-}
 
 /// What the program running a report provides.
 pub trait Host {
@@ -49,10 +38,6 @@ pub trait Host {
     /// Refuses a refined mesh of `faces` triangles the machine cannot hold with `structures`
     /// built on it.
     fn admit_refined(&self, faces: usize, structures: &[String]) -> Result<(), ReportError>;
-    /// How each outside library the run used was built, used, timed and counted.
-    fn baselines(&self, used: Used) -> Vec<BaselineRun>;
-    /// Writes one file of the report, whole or not at all.
-    fn write(&self, path: &Path, bytes: &[u8]) -> Result<(), ReportError>;
 }
 
 struct Describe;
@@ -282,7 +267,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
     }
     let libigl_version = run.libigl_version;
     let measured: Vec<&str> = req.names.iter().map(String::as_str).collect();
-    results.baselines = host.baselines(Used {
+    results.baselines = baselines::runs(Used {
         structures: &measured,
         hull: !results.hull.is_empty(),
         decimate: !results.decimate.is_empty(),
@@ -299,7 +284,7 @@ pub fn report<L: Structures>(req: &Request, host: &dyn Host) -> Result<String, R
             plan.cell_max.as_secs_f64()
         ));
     }
-    write(&req.out, &mut results, clock, host)?;
+    write_report(&req.out, &mut results, clock)?;
     Ok(format!(
         "wrote {} measurements of {} structures on {} meshes to {}\n",
         results.measurements.len(),
@@ -406,17 +391,15 @@ fn real_meshes(notes: &mut Vec<String>) -> Vec<(String, PolygonSoup)> {
     out
 }
 
-/// Writes `results.json`, `index.html` and `FINDINGS.md` through `host`, with the phases' times
-/// of `clock` and the time of rendering the page itself (its row is put into the rendered
-/// page's table afterwards).
-fn write(
-    out: &Path,
-    results: &mut Results,
-    mut clock: Clock,
-    host: &dyn Host,
-) -> Result<(), ReportError> {
+/// Writes `results.json`, `index.html` and `FINDINGS.md`, with the phases' times of `clock`
+/// and the time of rendering the page itself (its row is put into the rendered page's table
+/// afterwards).
+fn write_report(out: &Path, results: &mut Results, mut clock: Clock) -> Result<(), ReportError> {
     std::fs::create_dir_all(out).map_err(|e| {
-        ReportError::Output(format!("cannot write the report to {}: {e}", out.display()))
+        ReportError::Output(format!(
+            "cannot write the report to {}: {e}",
+            echo::path(out)
+        ))
     })?;
     results.phases = clock.times().to_vec();
     let mut without = String::new();
@@ -428,9 +411,16 @@ fn write(
     crate::measuring::phases::render(&mut with, &results.phases);
     let page = page.replacen(&without, &with, 1);
     let json = serde_json::to_string_pretty(results).expect("serialisable");
-    host.write(&out.join("results.json"), json.as_bytes())?;
-    host.write(&out.join("index.html"), page.as_bytes())?;
+    write_file(&out.join("results.json"), json.as_bytes())?;
+    write_file(&out.join("index.html"), page.as_bytes())?;
     let findings = crate::page::findings::markdown(results);
-    host.write(&out.join("FINDINGS.md"), findings.as_bytes())?;
+    write_file(&out.join("FINDINGS.md"), findings.as_bytes())?;
     Ok(())
+}
+
+/// Writes one file of the report, whole or not at all (a reader never sees half a page).
+fn write_file(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
+    use std::io::Write as _;
+    write_atomically(path, |w| w.write_all(bytes))
+        .map_err(|e| ReportError::Output(format!("cannot write {}: {e}", echo::path(path))))
 }

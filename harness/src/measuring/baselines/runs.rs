@@ -1,10 +1,9 @@
 //! What the report says of each outside library it ran ("How the baselines are run"): the
-//! facts of this build (versions, sources, flags) and of how the lab calls each library, for
-//! `topolab_harness::measuring::baselines`. One function per library, each listed only when it is
-//! compiled in and the run used it.
+//! facts of this build (versions, sources, flags) and of how the lab calls each library. One
+//! function per library, each listed only when it is compiled in and the run used it.
 
-use crate::registry;
-use topolab_harness::measuring::baselines::BaselineRun;
+use super::BaselineRun;
+use topolab_registry as registry;
 
 /// How the C++ baselines' heap is counted, the same sentence for each.
 const CPP_HEAP: &str = "in one untimed build of its own, by the lab's global operator new and delete (baselines/cpp/heap/heap.cpp), each block for its malloc_usable_size, as the Rust structures' blocks are counted by the lab's global allocator; peak and held bytes of that build";
@@ -27,14 +26,14 @@ pub struct Used<'a> {
 pub fn runs(used: Used<'_>) -> Vec<BaselineRun> {
     let mut runs = Vec::new();
     let measured = |name: &str| used.structures.contains(&name);
-    if let Some(build) = crate::OPENMESH_BUILD {
+    if let Some(build) = topolab_baselines::OPENMESH_BUILD {
         if measured(registry::OPENMESH) || used.decimate {
             runs.push(openmesh(build));
         }
     }
     #[cfg(has_cgal)]
     {
-        let version = crate::cgal::version();
+        let version = topolab_baselines::cgal::version();
         if measured(registry::CGAL_SURFACE_MESH) || measured(registry::CGAL_POLYHEDRON) {
             runs.push(cgal_structures(&version));
         }
@@ -122,9 +121,9 @@ fn cgal_hull(version: &str) -> BaselineRun {
 fn qhull() -> BaselineRun {
     BaselineRun {
         name: topolab_baselines::hulls::HullLibrary::Qhull.name().into(),
-        library: format!("Qhull {} (libqhull_r)", crate::qhull::version()),
+        library: format!("Qhull {} (libqhull_r)", topolab_baselines::qhull::version()),
         build: "Debian's libqhull-dev, linked; the C shim baselines/c/qhull/shim.c compiled here at -O3 -DNDEBUG".into(),
-        used_as: crate::qhull::description(),
+        used_as: topolab_baselines::qhull::description(),
         timed: "qh_new_qhull and collecting the hull's vertex ids, in-process, warm: a run to warm up, then the median of the timed runs; copying the points, the volume and freeing are outside the clock".into(),
         counted: "not counted".into(),
         differences: vec![
@@ -194,7 +193,7 @@ mod tests {
 
     #[test]
     fn openmesh_is_described_by_its_build() {
-        let Some(build) = crate::OPENMESH_BUILD else {
+        let Some(build) = topolab_baselines::OPENMESH_BUILD else {
             eprintln!("SKIPPED: OpenMesh is not compiled in");
             return;
         };
@@ -216,7 +215,7 @@ mod tests {
     #[cfg(has_cgal)]
     #[test]
     fn cgal_names_the_version_of_its_headers() {
-        let v = crate::cgal::version();
+        let v = topolab_baselines::cgal::version();
         assert!(
             v.split('.').all(|p| p.parse::<u32>().is_ok()),
             "a dotted version: {v}"

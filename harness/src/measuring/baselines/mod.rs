@@ -1,8 +1,11 @@
 //! "How the baselines are run": for every outside library the run measured, which version,
 //! from where, built how, used how, what the clock covers, how its memory is counted, and the
 //! differences from the lab's own structures that remain, each with its reason. The facts come
-//! from the build that ran (the `topolab` crate fills [`BaselineRun`]s), so the page says what
-//! was measured, not what was meant.
+//! from the build that ran ([`runs`] fills the [`BaselineRun`]s of the libraries compiled in),
+//! so the page says what was measured, not what was meant.
+
+mod runs;
+pub use runs::{runs, Used};
 
 use crate::format::esc;
 use std::fmt::Write;
