@@ -277,9 +277,9 @@ pub fn run(cli: Cli) -> u8 {
         Command::ScaleCell {
             structure,
             triangles,
-        } => commands::scale::cell::cell(&structure, triangles),
+        } => commands::scale::cell(&structure, triangles),
         Command::ScaleMapped { file, cgroup_procs } => {
-            commands::scale::mapped::sweep(&file, cgroup_procs.as_deref())
+            commands::scale::sweep(&file, cgroup_procs.as_deref())
         }
     };
     match result {

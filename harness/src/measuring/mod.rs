@@ -4,7 +4,7 @@
 //! the timed kernels ([`catalogue`], [`kernels`]), what measuring a structure on a mesh is made
 //! of ([`measure`]) and the rounds every cell is measured in ([`rounds`]), a sweep cell's speed
 //! limit ([`speed_limit`]), the fitted exponents ([`fit`]), the memory meter over the counting
-//! allocator ([`counting`]), the `cargo bench` groups ([`bench`](mod@bench)), how long each
+//! allocator ([`counting`]), the machine's memory as runs plan with it ([`memory`]), the `cargo bench` groups ([`bench`](mod@bench)), how long each
 //! part of a run took ([`phases`]) and how the outside libraries were built and used
 //! ([`baselines`]).
 
@@ -18,6 +18,7 @@ pub mod fit;
 pub mod kernels;
 pub mod machine;
 pub mod measure;
+pub mod memory;
 pub mod phases;
 pub mod probe;
 pub mod rounds;

@@ -7,11 +7,12 @@
 //!
 //! Here: what a run records ([`ScaleResults`], written as `results.json` with its `scale` list
 //! of [`ScaleCell`]s), how a cell times its kernels ([`Timing`]), the `/proc` readers
-//! ([`proc`]) and the page ([`page`]). The run itself is the `topolab` program's
-//! (`src/commands/scale/`), which builds the structures.
+//! ([`proc`]), the run itself ([`run`]) and the page ([`page`]). The `topolab` program is the
+//! run's front (`topolab scale`) and its workers.
 
 pub mod page;
 pub mod proc;
+pub mod run;
 
 use crate::measuring::machine::Machine;
 use crate::measuring::probe::Level;

@@ -1,19 +1,19 @@
-//! The scale run's `.che` part: a torus written as a level-2 `.che` file by `topolab convert`,
-//! then opened and swept by a worker process (`topolab scale-mapped FILE`, [`sweep`]) twice:
+//! The scale run's `.che` part: a torus written as a level-2 `.che` file by the host's convert
+//! worker, then opened and swept by its sweep worker ([`sweep`]) twice:
 //! with the machine's memory, and in a memory cgroup whose limit is a quarter of the file
 //! (the `group` module), so the file cannot stay resident and every sweep reads it from the
 //! disk. Each sweep's result is compared with the in-memory CHE's on the same torus.
 
-use super::ended;
 use super::group::MemoryGroup;
-use crate::failure::Failure;
+use super::{ended, ScaleHost};
+use crate::measuring::kernels::{self, Queries};
+use crate::measuring::memory::human;
+use crate::scale::proc::faults;
+use crate::scale::{time_kernel_runs, Check, MappedRun, Outcome, ScaleCell, Timing};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::Instant;
-use topolab_harness::measuring::kernels::{self, Queries};
-use topolab_harness::scale::proc::faults;
-use topolab_harness::scale::{time_kernel_runs, Check, MappedRun, Outcome, ScaleCell, Timing};
 use topolab_structures::che::{CheFile, MappedCheL2};
+use topolab_structures::io::echo;
 use topolab_structures::{BoundaryCurves, MeshTopology, Operator};
 
 /// Seconds the later sweeps may take, beyond their fewest runs.
@@ -44,30 +44,37 @@ impl Drop for Scratch {
     }
 }
 
+/// What the `.che` part found.
+pub(super) struct MappedPart {
+    /// The sweeps: without a memory limit, then within one when it could be made.
+    pub runs: Vec<MappedRun>,
+    /// What the reader should know (why a limited run could not be made).
+    pub notes: Vec<String>,
+    /// A sweep's answer that disagrees with the in-memory CHE's.
+    pub disagreements: Vec<String>,
+}
+
 /// Writes a torus of `triangles` as a level-2 `.che` file under `scratch`, sweeps it without
-/// and with a memory limit below its size; returns the runs and what the reader should know
-/// (why a limited run could not be made). An error when the file cannot be written.
+/// and with a memory limit below its size. An error when the file cannot be written.
 pub(super) fn run(
+    host: &dyn ScaleHost,
     triangles: u64,
     scratch: &Path,
     cells: &[ScaleCell],
-) -> Result<(Vec<MappedRun>, Vec<String>), String> {
-    let exe = std::env::current_exe().map_err(|e| format!("cannot find this program: {e}"))?;
+) -> Result<MappedPart, String> {
     let file = Scratch(scratch.join(format!("topolab-scale-{}.che", std::process::id())));
     eprintln!(
         "scale: .che part: converting torus:{triangles} to {}",
         file.0.display()
     );
     let t = Instant::now();
-    let out = Command::new(&exe)
-        .args(["convert", &format!("torus:{triangles}")])
-        .arg(&file.0)
-        .args(["--to", "che", "--level", "2"])
-        .output()
-        .map_err(|e| format!("cannot start topolab convert: {e}"))?;
+    let out = host
+        .convert_worker(triangles, &file.0)
+        .and_then(|mut worker| worker.output())
+        .map_err(|e| format!("cannot start the conversion: {e}"))?;
     if !out.status.success() {
         return Err(format!(
-            "topolab convert: {}",
+            "the conversion: {}",
             ended(out.status, &out.stderr)
         ));
     }
@@ -81,7 +88,8 @@ pub(super) fn run(
         });
     let mut runs = Vec::new();
     let mut notes = Vec::new();
-    let mut free = sweep_in_child(&exe, &file.0, None)?;
+    let mut disagreements = Vec::new();
+    let mut free = sweep_in_child(host, &file.0, None)?;
     free.limit_how = "none".into();
     runs.push(free);
     let file_bytes = runs[0].file_bytes;
@@ -89,17 +97,17 @@ pub(super) fn run(
     if limit < MIN_LIMIT {
         notes.push(format!(
             "the .che file was not swept beyond memory: at {}, a quarter of it is below the {} the sweeping process needs for itself (its program and its list of vertices); --mapped-triangles 16000000 or more makes a file large enough",
-            crate::limits::human(file_bytes),
-            crate::limits::human(MIN_LIMIT)
+            human(file_bytes),
+            human(MIN_LIMIT)
         ));
     } else {
         match MemoryGroup::create(limit) {
             Ok(group) => {
                 eprintln!(
                     "scale: .che part: sweeping in a memory cgroup limited to {}",
-                    crate::limits::human(limit)
+                    human(limit)
                 );
-                match sweep_in_child(&exe, &file.0, Some(&group.procs())) {
+                match sweep_in_child(host, &file.0, Some(&group.procs())) {
                     Ok(mut limited) => {
                         limited.memory_limit = Some(limit);
                         limited.limit_how = group.how();
@@ -108,7 +116,7 @@ pub(super) fn run(
                     }
                     Err(why) => notes.push(format!(
                         "the .che file's sweep in a memory cgroup of {} failed: {why}",
-                        crate::limits::human(limit)
+                        human(limit)
                     )),
                 }
             }
@@ -123,48 +131,49 @@ pub(super) fn run(
         if let Some(c) = in_memory_check {
             let mut sweeps = std::iter::once(&r.first_sweep).chain(r.fills());
             if let Some(t) = sweeps.find(|t| !c.agrees(t.check)) {
-                notes.push(format!(
+                disagreements.push(format!(
                     "the .che file's R00 sweep and the in-memory CHE's disagree ({:?} against {c:?})",
                     t.check
                 ));
             }
         }
     }
-    Ok((runs, notes))
+    Ok(MappedPart {
+        runs,
+        notes,
+        disagreements,
+    })
 }
 
-/// Runs `topolab scale-mapped` on `file` (in the cgroup whose `cgroup.procs` is `group`).
-fn sweep_in_child(exe: &Path, file: &Path, group: Option<&Path>) -> Result<MappedRun, String> {
-    let mut cmd = Command::new(exe);
-    cmd.arg("scale-mapped").arg(file);
-    if let Some(procs) = group {
-        cmd.arg("--cgroup-procs").arg(procs);
-    }
-    let out = cmd
-        .output()
-        .map_err(|e| format!("cannot start topolab scale-mapped: {e}"))?;
+/// Runs the host's sweep worker on `file` (in the cgroup whose `cgroup.procs` is `group`).
+fn sweep_in_child(
+    host: &dyn ScaleHost,
+    file: &Path,
+    group: Option<&Path>,
+) -> Result<MappedRun, String> {
+    let out = host
+        .sweep_worker(file, group)
+        .and_then(|mut worker| worker.output())
+        .map_err(|e| format!("cannot start the sweep: {e}"))?;
     if !out.status.success() {
-        return Err(format!(
-            "topolab scale-mapped: {}",
-            ended(out.status, &out.stderr)
-        ));
+        return Err(format!("the sweep: {}", ended(out.status, &out.stderr)));
     }
     serde_json::from_slice(&out.stdout)
-        .map_err(|e| format!("topolab scale-mapped printed no measurement ({e})"))
+        .map_err(|e| format!("the sweep printed no measurement ({e})"))
 }
 
 /// Drops `file`'s pages from the page cache (those no mapping holds).
-fn drop_pages(file: &Path) -> Result<(), Failure> {
+fn drop_pages(file: &Path) -> Result<(), String> {
     let cached = std::fs::File::open(file).map_err(|e| failure(file, "cannot open", e))?;
-    crate::alloc::drop_file_cache(&cached)
+    topolab_alloc::drop_file_cache(&cached)
         .map_err(|e| failure(file, "cannot drop its pages from the page cache", e))
 }
 
-fn open_level2(file: &Path) -> Result<MappedCheL2, Failure> {
+fn open_level2(file: &Path) -> Result<MappedCheL2, String> {
     MappedCheL2::open(file).map_err(|e| failure(file, "cannot open as CHE level 2", e))
 }
 
-fn verify(m: &mut MappedCheL2, file: &Path) -> Result<(), Failure> {
+fn verify(m: &mut MappedCheL2, file: &Path) -> Result<(), String> {
     m.verify().map_err(|e| failure(file, "does not verify", e))
 }
 
@@ -176,25 +185,25 @@ fn warm_sweeps(m: &MappedCheL2, every: &Queries, curves: &mut BoundaryCurves) ->
     })
 }
 
-fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> Failure {
-    Failure::usage(format!("{}: {what}: {e}", file.display()))
+fn failure(file: &Path, what: &str, e: impl std::fmt::Display) -> String {
+    format!("{}: {what}: {e}", echo::path(file))
 }
 
-/// `topolab scale-mapped FILE [--cgroup-procs PATH]` (hidden: the scale run's worker): joins
+/// The sweep worker's measurement (`topolab scale-mapped FILE [--cgroup-procs PATH]`): joins
 /// the cgroup when given, drops the file's pages from the page cache, opens it three times,
 /// sweeps R00 once before verifying (the bounds-checked reads, from the disk), verifies it,
 /// then sweeps again, three times at least and until two seconds have gone by (the
 /// verified walk); without a cgroup, fills the page cache twice more (unmapped, pages dropped,
-/// opened and verified again) and sweeps after each; prints a [`MappedRun`] as JSON. Only
+/// opened and verified again) and sweeps after each. Only
 /// level-2 files.
-pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure> {
+pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<MappedRun, String> {
     if let Some(procs) = cgroup_procs {
         // Only an existing `cgroup.procs` file: never a file of another name, never created.
         if procs.file_name() != Some(std::ffi::OsStr::new("cgroup.procs")) {
-            return Err(Failure::usage(format!(
+            return Err(format!(
                 "--cgroup-procs {}: not a cgroup's cgroup.procs file",
-                procs.display()
-            )));
+                echo::path(procs)
+            ));
         }
         std::fs::OpenOptions::new()
             .write(true)
@@ -263,5 +272,5 @@ pub fn sweep(file: &Path, cgroup_procs: Option<&Path>) -> Result<String, Failure
         group_peak_bytes: None,
         in_memory_check: None,
     };
-    Ok(serde_json::to_string(&run).expect("a run serializes") + "\n")
+    Ok(run)
 }

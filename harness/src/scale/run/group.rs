@@ -5,12 +5,12 @@
 //! show this: it counts the mapping's address space, and refuses to map a file larger than
 //! the limit at all.)
 //!
-//! Made under the cgroup this process belongs to ([`crate::limits::memory_cgroup`]): cgroup v1's `memory`
+//! Made under the cgroup this process belongs to ([`memory_cgroup`]): cgroup v1's `memory`
 //! controller (`memory.limit_in_bytes`, `memory.max_usage_in_bytes`) or cgroup v2
 //! (`memory.max`, `memory.peak`). Creating one needs the right to write there (root, or a
 //! delegated subtree); where that is refused, the run says so and sweeps without the limit.
 
-use crate::limits::{memory_cgroup, CgroupVersion};
+use crate::measuring::memory::{memory_cgroup, CgroupVersion};
 use std::path::PathBuf;
 
 /// A memory cgroup, removed when dropped.

@@ -1,13 +1,12 @@
-//! `topolab scale-cell --structure NAME --triangles N` (hidden: the scale run's worker): one
-//! structure built on one torus, measured, printed as JSON ([`Measure`]). Run in a process of
-//! its own, so the kernel's count of resident memory and page faults is this build's alone.
+//! One cell of the scale run, in its worker process (`topolab scale-cell`): one structure built
+//! on one torus, measured ([`Measure`]). Run in a process of its own, so the kernel's count of
+//! resident memory and page faults is this build's alone.
 
-use crate::failure::Failure;
-use crate::registry::{self, StructureVisitor};
+use crate::measuring::kernels::{self, sample_queries, Queries, WorkloadBuffers};
+use crate::scale::proc::{faults, resident};
+use crate::scale::{time_kernel, Check, Measure, SAMPLED_QUERIES};
 use std::time::Instant;
-use topolab_harness::measuring::kernels::{self, sample_queries, Queries, WorkloadBuffers};
-use topolab_harness::scale::proc::{faults, resident};
-use topolab_harness::scale::{time_kernel, Check, Measure, SAMPLED_QUERIES};
+use topolab_registry::{self as registry, StructureVisitor};
 use topolab_structures::{meshes, BoundaryCurves, Cost, MeshTopology, Operator, Workload};
 
 /// Seconds each kernel's repeated runs may take (at least 3 runs, at most 21).
@@ -87,23 +86,8 @@ impl StructureVisitor for Cell {
     }
 }
 
-/// Measures `structure` on a torus of about `triangles` triangles; returns the JSON line the
-/// scale run reads. Exit code 1 when the structure refuses the torus, 2 for an unknown name.
-pub fn cell(structure: &str, triangles: u64) -> Result<String, Failure> {
-    let triangles = usize::try_from(triangles)
-        .ok()
-        .filter(|&n| n as u64 <= crate::limits::MAX_TRIANGLES)
-        .ok_or_else(|| Failure::usage(format!("--triangles {triangles}: too many for u32 ids")))?;
-    if !registry::NAMES.contains(&structure) {
-        return Err(crate::input::unknown_structure(structure));
-    }
-    let what = format!("{structure} on a torus of {triangles} triangles");
-    crate::limits::admit(&what, super::estimate(structure, triangles as u64, None).0)?;
-    let measure = registry::visit(structure, Cell { triangles })
-        .ok_or_else(|| crate::input::unknown_structure(structure))?
-        .map_err(|e| Failure {
-            message: format!("{structure} cannot store the torus: {e}"),
-            code: 1,
-        })?;
-    Ok(serde_json::to_string(&measure).expect("a measure serializes") + "\n")
+/// Measures `structure` on a torus of about `triangles` triangles: `None` for a name this
+/// build does not have, the structure's refusal of the torus as text.
+pub fn measure(structure: &str, triangles: usize) -> Option<Result<Measure, String>> {
+    registry::visit(structure, Cell { triangles })
 }
