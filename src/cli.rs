@@ -96,8 +96,10 @@ pub enum Command {
         /// boundaries sewn together).
         #[arg(long, value_delimiter = ',', requires = "op")]
         faces: Vec<u32>,
-        /// With `--trace`: more structures side by side, comma-separated.
-        #[arg(long, value_delimiter = ',', requires = "trace")]
+        /// With `--trace` or `--op`: more structures side by side, comma-separated (with
+        /// `--op`, each explained, all counted side by side, and the same edit counted on
+        /// tori of growing size).
+        #[arg(long, value_delimiter = ',')]
         structures: Vec<String>,
         /// Do one edit (any editing operation, by its name; `flip`, `split` and `collapse` for
         /// the three edge operations) on the element `--edge`, `--face`, `--vertex`,
@@ -212,6 +214,7 @@ pub fn run(cli: Cli) -> u8 {
             vertices,
             edges,
             faces,
+            structures,
             op: Some(op),
             ..
         } => commands::explain_edit::run(
@@ -226,7 +229,20 @@ pub fn run(cli: Cli) -> u8 {
                 edges,
                 faces,
             },
+            &commands::explain_edit::Counting {
+                // The comparison mode: the same edit on tori of growing size too.
+                growth: !structures.is_empty(),
+                beside: structures,
+            },
         ),
+        Command::Explain {
+            trace: None,
+            structures,
+            ..
+        } if !structures.is_empty() => Err(crate::failure::Failure::usage(format!(
+            "--structures {}: names the structures shown beside NAME's with --trace OP or --op OP, and neither was given",
+            structures.join(",")
+        ))),
         Command::Explain {
             name,
             mesh,

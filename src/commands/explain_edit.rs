@@ -39,9 +39,11 @@
 //!
 //! The records are each structure's [`MeshTopology::explain`] lines read as records, except
 //! for the CHE levels, whose containers are listed entry by entry
-//! ([`topolab_harness::teaching::edits::records`]). The reads are described, not counted: the
-//! edit code reads its containers directly, not through the counted accessors `--trace` uses.
+//! ([`topolab_harness::teaching::edits::records`]). The reads are described per family, then
+//! counted ([`topolab_harness::teaching::edits::counted`]): every structure explained, and those `--structures` adds, side by
+//! side, with the same edit on tori of growing size.
 
+use super::explain_counted as counted;
 use crate::input::{mesh_or_tetrahedron, Failure};
 use crate::registry::{
     missing_baseline, peer_crate, visit_editable, EditVisitor, CPP_BASELINES, NAMES,
@@ -360,9 +362,33 @@ fn subject_words(subject: &Subject) -> String {
     }
 }
 
+/// What `explain --op` counts besides the records: the structures shown beside NAME's
+/// (`--structures`), and whether the same edit is counted on tori of growing size.
+#[derive(Clone, Debug, Default)]
+pub struct Counting {
+    /// More structures, each explained and counted beside NAME's.
+    pub beside: Vec<String>,
+    /// Count the edit on the tori of the growth table too (a few hundred milliseconds per
+    /// structure).
+    pub growth: bool,
+}
+
 /// The text of `topolab explain NAME --op OP [element] [--mesh M]`; see the module docs.
-pub fn run(name: &str, mesh: Option<&str>, op: EditOp, asked: &Asked) -> Result<String, Failure> {
-    let names = structures_of(name)?;
+pub fn run(
+    name: &str,
+    mesh: Option<&str>,
+    op: EditOp,
+    asked: &Asked,
+    counting: &Counting,
+) -> Result<String, Failure> {
+    let mut names = structures_of(name)?;
+    for other in &counting.beside {
+        for n in structures_of(other)? {
+            if !names.contains(&n) {
+                names.push(n);
+            }
+        }
+    }
     let asked_subject = asked.subject(op)?;
     let mut preface = String::new();
     let kind = kind_of(op);
@@ -417,7 +443,7 @@ pub fn run(name: &str, mesh: Option<&str>, op: EditOp, asked: &Asked) -> Result<
     let prepared = prepare(op, subject, &soup, &reference)
         .map_err(|e| Failure::usage(format!("--op {op}: {e} ({label})")))?;
     let mut out = preface;
-    for n in names {
+    for &n in &names {
         let e = Explain {
             soup: &soup,
             label: &label,
@@ -426,6 +452,14 @@ pub fn run(name: &str, mesh: Option<&str>, op: EditOp, asked: &Asked) -> Result<
         };
         out += &visit_editable(n, e).expect("an editable structure")?;
     }
+    let case = counted::Case {
+        soup: &soup,
+        label: &label,
+        op,
+        subject: &prepared.subject,
+        description: &prepared.description,
+    };
+    out += &counted::table(&names, &case, counting.growth);
     Ok(out)
 }
 
@@ -509,10 +543,6 @@ impl Explain<'_> {
             w,
             "reads: {}",
             reads(Family::of::<M>(), op, spec.reads, spec.local)
-        );
-        let _ = writeln!(
-            w,
-            "  (described, not counted: the edit code reads its records directly, not through the counted accessors of --trace)"
         );
         let _ = writeln!(w, "writes (old -> new; + added, - removed):");
         for line in &done.changes {

@@ -9,6 +9,7 @@ pub mod decimate;
 pub mod explain;
 pub mod explain_che;
 pub mod explain_costs;
+mod explain_counted;
 pub mod explain_edit;
 pub mod explain_trace;
 pub mod hull;

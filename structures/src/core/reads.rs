@@ -256,5 +256,18 @@ pub(crate) fn each<'a, T: Copy + Traced + 'a>(
     }
 }
 
+/// Announces the reads of a scan of `slice` (which starts at index `first` of the container
+/// `name`) that the code makes some other way (a `contains`, a library call): one read per
+/// element in the `count-reads` build; nothing otherwise.
+#[inline(always)]
+pub(crate) fn scanned<T: Copy + Traced>(name: &'static str, slice: &[T], first: usize) {
+    #[cfg(feature = "count-reads")]
+    for (i, x) in slice.iter().enumerate() {
+        record(name, (first + i) as u64, x);
+    }
+    #[cfg(not(feature = "count-reads"))]
+    let _ = (name, slice, first);
+}
+
 // Tested through the counting build: `topolab-harness`'s `reads` tests trace and count every
 // structure (this crate's own tests are built without `count-reads`).

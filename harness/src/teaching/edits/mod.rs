@@ -17,6 +17,7 @@
 //! appearance, which `--trace` uses too; an edge is found in each structure by its ends).
 
 mod choose;
+pub mod counted;
 mod explained;
 mod operations;
 pub mod picture;
@@ -32,3 +33,7 @@ pub use explained::{explain_on, Explained};
 pub use operations::{edit, kind_of, Call, Edit, Target};
 pub use prepare::{edge_between, mirror_image, prepare, Prepared};
 pub use subject::{Subject, SubjectKind};
+
+/// The structures' crate the edits here act on: the timed build. The same call table, subjects
+/// and records are compiled a second time over the counting build in [`counted`].
+use topolab_structures as st;

@@ -1,17 +1,17 @@
 //! [`edit`]: the one place that knows each operation, its subject, what it reads and the
 //! call, with the [`Target`] the call acts on.
 
-use super::subject::SubjectKind;
-use glam::DQuat;
-use glam::DVec3;
-use topolab_structures::algorithms::select::{
+use super::st::algorithms::select::{
     rotate_selection, scale_selection, select_vertices_in, smooth_step, Aabb, VertexSelection,
 };
-use topolab_structures::algorithms::weld::{weld_edges, weld_faces, weld_meshes};
-use topolab_structures::{
+use super::st::algorithms::weld::{weld_edges, weld_faces, weld_meshes};
+use super::st::{
     EdgeId, EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Result,
     VertexId,
 };
+use super::subject::SubjectKind;
+use glam::DQuat;
+use glam::DVec3;
 
 /// The tolerance of the weld of meshes: the mirror image's boundary vertices on z = 0 are
 /// the mesh's own positions, bit for bit; this only forgives rounding in a file's numbers.

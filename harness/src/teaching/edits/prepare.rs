@@ -2,12 +2,12 @@
 //! [`Prepared`] edit, with the point a new vertex goes to.
 
 use super::operations::{centroid, kind_of, Target};
-use super::subject::Subject;
-use glam::DVec3;
-use topolab_structures::{
+use super::st::{
     EdgeId, EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Result,
     VertexId,
 };
+use super::subject::Subject;
+use glam::DVec3;
 
 /// A [`Subject`] with what every structure needs to find it and do the edit, found once on
 /// the index half-edge (the reference whose numbering [`Subject`] uses).
@@ -31,7 +31,7 @@ pub struct Prepared {
     pub description: String,
 }
 
-pub(super) fn out_of_range(element: topolab_structures::Element, id: u32, count: usize) -> Error {
+pub(super) fn out_of_range(element: super::st::Element, id: u32, count: usize) -> Error {
     Error::ElementOutOfRange {
         structure: "the mesh",
         element,
@@ -70,7 +70,7 @@ pub fn prepare(
     soup: &PolygonSoup,
     reference: &IndexHalfEdge,
 ) -> Result<Prepared> {
-    use topolab_structures::Element as E;
+    use super::st::Element as E;
     let kind = kind_of(op);
     if subject.kind() != kind {
         return Err(Error::Unsupported(format!("{op} takes {}", kind.flags())));

@@ -18,12 +18,12 @@
 //! A position `(x, y, z)` followed by named fields (the winged-edge's `v: (x, y, z)  av = e`)
 //! is split into `x = …, y = …, z = …` and those fields.
 
+use super::st::che::CheLevel;
+use super::st::{CheL0, CheL1, CheL2, CheL3, MeshEdit, MeshTopology, VertexId};
 use glam::DVec3;
 use std::any::Any;
 use std::collections::HashMap;
 use std::fmt::Write;
-use topolab_structures::che::CheLevel;
-use topolab_structures::{CheL0, CheL1, CheL2, CheL3, MeshEdit, MeshTopology, VertexId};
 
 /// The field names of the edge list's edge record `E = (start, end, left, right)`.
 const EDGE_LIST_EDGE: [&str; 4] = ["start", "end", "left", "right"];
@@ -275,6 +275,60 @@ pub fn diff(before: &[(String, String)], after: &[(String, String)]) -> Vec<Stri
     }
 }
 
+/// The elements of a value: the entries of a tuple `(a, b, c)`, the one value otherwise (a
+/// comment after two spaces left out).
+fn elements(value: &str) -> Vec<&str> {
+    let value = value.split("  (").next().unwrap_or(value).trim();
+    match value.strip_prefix('(').and_then(|v| v.strip_suffix(')')) {
+        Some(inner) => inner.split(", ").collect(),
+        None => vec![value],
+    }
+}
+
+/// The elements of a record: each field's elements ([`elements`]) where it is written in
+/// fields, its value's otherwise.
+fn record_elements(value: &str) -> Vec<Vec<&str>> {
+    match fields(value) {
+        Some(f) => f.into_iter().map(|(_, v)| elements(v)).collect(),
+        None => vec![elements(value)],
+    }
+}
+
+/// How many elements the change from `before` to `after` wrote: per record, the fields and
+/// tuple entries that differ, position by position (an entry added or removed counts), and
+/// every element of a record added or removed. The count `explain --op` gives as an edit's
+/// writes: a value written over itself is not seen.
+pub fn written(before: &[(String, String)], after: &[(String, String)]) -> u64 {
+    let index =
+        |list: &[(String, String)]| -> HashMap<String, String> { list.iter().cloned().collect() };
+    let (old_index, new_index) = (index(before), index(after));
+    let size = |v: &str| record_elements(v).iter().map(Vec::len).sum::<usize>() as u64;
+    let mut n = 0;
+    for (key, old) in before {
+        match new_index.get(key) {
+            Some(new) if new == old => {}
+            Some(new) => {
+                let (x, y) = (record_elements(old), record_elements(new));
+                if x.len() != y.len() {
+                    n += size(old).max(size(new));
+                    continue;
+                }
+                for (a, b) in x.iter().zip(&y) {
+                    let differ = a.iter().zip(b).filter(|(p, q)| p != q).count();
+                    n += (differ + a.len().abs_diff(b.len())) as u64;
+                }
+            }
+            None => n += size(old),
+        }
+    }
+    for (key, new) in after {
+        if !old_index.contains_key(key) {
+            n += size(new);
+        }
+    }
+    n
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -304,5 +358,25 @@ mod tests {
         assert_eq!(find("vertices"), Some("2 (coordinates)"));
         assert_eq!(find("edges"), Some("2"));
         assert_eq!(got.len(), 11, "{got:?}");
+    }
+
+    #[test]
+    fn written_counts_the_fields_and_entries_that_changed() {
+        let rec = |k: &str, v: &str| (k.to_string(), v.to_string());
+        let before = [
+            rec("f0", "(v0, v1, v2)"),
+            rec("h1", "vert = v1, face = f0  (edge e0)"),
+            rec("v3", "x = 0.0, y = 1.0, z = 2.0"),
+            rec("f9", "(v4, v5, v6)"),
+        ];
+        let after = [
+            rec("f0", "(v1, v1, v3)"),
+            rec("h1", "vert = v1, face = null  (edge e0)"),
+            rec("v3", "x = 0.0, y = 1.0, z = 2.0"),
+            rec("f10", "(v4, v5, v6, v7)"),
+        ];
+        // f0: two entries; h1: one field; f9 removed: three; f10 added: four.
+        assert_eq!(written(&before, &after), 2 + 1 + 3 + 4);
+        assert_eq!(written(&before, &before), 0);
     }
 }

@@ -349,7 +349,12 @@ pub fn edge_map_algorithm_2(o: &[i32]) -> Vec<u32> {
 /// the smaller of their pair, or alone on the boundary, come out already in order.
 pub fn edge_map_by_scan(o: &[i32]) -> Vec<u32> {
     let mut eh = Vec::with_capacity(o.len() / 2 + 1);
-    eh.extend((0..o.len() as u32).filter(|&he| o[he as usize] < 0 || he < o[he as usize] as u32));
+    eh.extend(
+        crate::core::reads::each("O", o, 0)
+            .zip(0u32..)
+            .filter(|&(x, he)| x < 0 || he < x as u32)
+            .map(|(_, he)| he),
+    );
     eh.shrink_to_fit();
     eh
 }
@@ -362,7 +367,7 @@ pub fn boundary_curves_algorithm_4(o: &mut [i32]) -> Vec<u32> {
     let mut visited = vec![false; o.len()];
     let mut ch = Vec::new();
     for he in 0..o.len() as u32 {
-        if o[he as usize] >= 0 || visited[he as usize] {
+        if crate::core::reads::read!("O", o, he as usize) >= 0 || visited[he as usize] {
             continue;
         }
         ch.push(he);

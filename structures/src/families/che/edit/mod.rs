@@ -193,6 +193,8 @@ impl Parts<'_> {
     /// construction, refused (nothing changed) when `v` is not an oriented manifold with one
     /// fan per vertex; `num_vertices` counts a vertex the caller is about to add.
     fn rebuild(&mut self, op: EditOp, v: Vec<u32>, num_vertices: usize) -> Result<()> {
+        // The rebuild reads the whole new `V[]`, at least once each: counted so.
+        crate::core::reads::scanned("V", &v, 0);
         let (mut o, vh) = opposites_and_vertex_half_edges(&v, num_vertices)
             .ok_or_else(|| self.refuse(op, Refusal::NonManifoldEdge))?;
         if !every_vertex_one_fan(&o, &vh) {

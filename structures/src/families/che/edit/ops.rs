@@ -6,6 +6,7 @@ use super::{nx, pv, Parts};
 use crate::core::edit::{EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::VertexId;
+use crate::core::reads::{self, read};
 use crate::families::che::build::{boundary_curves_algorithm_4, edge_map_by_scan};
 use glam::DVec3;
 
@@ -26,20 +27,26 @@ fn edge_key(a: u32, b: u32) -> u64 {
 }
 
 impl Parts<'_> {
+    /// `V[h]`, a read the counting build counts (see [`crate::core::reads`]).
+    #[inline(always)]
+    fn v_at(&self, h: u32) -> u32 {
+        read!("V", self.v, h as usize)
+    }
+
     /// `O[h]` if the edge of `h` is interior; level 0 scans `V[]` for it (Algorithm 8).
     fn twin(&self, h: u32) -> Option<u32> {
         match self.o.as_deref() {
             Some(o) => {
-                let x = o[h as usize];
+                let x = read!("O", o, h as usize);
                 (x >= 0).then_some(x as u32)
             }
-            None => self.scan_half_edge(self.v[nx(h) as usize], self.v[h as usize]),
+            None => self.scan_half_edge(self.v_at(nx(h)), self.v_at(h)),
         }
     }
 
     /// The half-edge from `a` to `b` by a scan of `V[]`.
     fn scan_half_edge(&self, a: u32, b: u32) -> Option<u32> {
-        (0..self.v.len() as u32).find(|&g| self.v[g as usize] == a && self.v[nx(g) as usize] == b)
+        (0..self.v.len() as u32).find(|&g| self.v_at(g) == a && self.v_at(nx(g)) == b)
     }
 
     /// Calls `f` with each half-edge leaving `x` until it returns `true`; returns whether it
@@ -48,9 +55,10 @@ impl Parts<'_> {
     fn any_leaving(&self, x: u32, mut f: impl FnMut(u32) -> bool) -> bool {
         match (self.vh.as_deref(), self.o.as_deref()) {
             (Some(vh), Some(o)) => {
-                let Some(&start) = vh.get(x as usize) else {
+                if x as usize >= vh.len() {
                     return false;
-                };
+                }
+                let start = read!("VH", vh, x as usize);
                 if start < 0 {
                     return false;
                 }
@@ -59,7 +67,7 @@ impl Parts<'_> {
                     if f(h) {
                         return true;
                     }
-                    let back = o[pv(h) as usize];
+                    let back = read!("O", o, pv(h) as usize);
                     if back < 0 || back as u32 == start as u32 {
                         return false;
                     }
@@ -67,7 +75,7 @@ impl Parts<'_> {
                 }
                 false
             }
-            _ => (0..self.v.len() as u32).any(|h| self.v[h as usize] == x && f(h)),
+            _ => (0..self.v.len() as u32).any(|h| self.v_at(h) == x && f(h)),
         }
     }
 
@@ -78,7 +86,7 @@ impl Parts<'_> {
         }
         let mut found = None;
         self.any_leaving(a, |h| {
-            let hit = self.v[nx(h) as usize] == b;
+            let hit = self.v_at(nx(h)) == b;
             if hit {
                 found = Some(h);
             }
@@ -91,8 +99,8 @@ impl Parts<'_> {
     fn neighbours(&self, x: u32) -> Vec<u32> {
         let mut out = Vec::new();
         self.any_leaving(x, |h| {
-            out.push(self.v[nx(h) as usize]);
-            out.push(self.v[pv(h) as usize]);
+            out.push(self.v_at(nx(h)));
+            out.push(self.v_at(pv(h)));
             false
         });
         out.sort_unstable();
@@ -129,9 +137,9 @@ impl Parts<'_> {
         };
         for &t in region {
             for h in 3 * t..3 * t + 3 {
-                patch.touched.push(self.v[h as usize]);
+                patch.touched.push(self.v_at(h));
                 if let Some(o) = self.o.as_deref() {
-                    let x = o[h as usize];
+                    let x = read!("O", o, h as usize);
                     if x < 0 {
                         patch.boundary = true;
                     } else if !region.contains(&(x as u32 / 3)) {
@@ -147,9 +155,10 @@ impl Parts<'_> {
     /// before those of `removed` (rewritten, untouched) leave; see the module docs.
     fn finish(&mut self, mut patch: Patch, changed: &[u32], removed: &mut [u32]) {
         for &t in changed {
+            let first = 3 * t as usize;
             patch
                 .touched
-                .extend_from_slice(&self.v[3 * t as usize..3 * t as usize + 3]);
+                .extend(reads::each("V", &self.v[first..first + 3], first));
         }
         patch.touched.sort_unstable();
         patch.touched.dedup();
@@ -159,7 +168,12 @@ impl Parts<'_> {
                 .iter()
                 .flat_map(|&t| 3 * t..3 * t + 3)
                 .chain(patch.outer.iter().copied())
-                .map(|h| (edge_key(v[h as usize], v[nx(h) as usize]), h))
+                .map(|h| {
+                    (
+                        edge_key(read!("V", v, h as usize), read!("V", v, nx(h) as usize)),
+                        h,
+                    )
+                })
                 .collect();
             keyed.sort_unstable();
             for group in keyed.chunk_by(|x, y| x.0 == y.0) {
@@ -187,14 +201,14 @@ impl Parts<'_> {
                         let t = h / 3;
                         3 * t..3 * t + 3
                     }))
-                    .find(|&h| v[h as usize] == x);
+                    .find(|&h| read!("V", v, h as usize) == x);
                 vh[x as usize] = match leaving {
                     None => -1,
                     Some(start) => {
                         // Turn back to the boundary half-edge leaving x, if there is one.
                         let mut h = start;
                         for _ in 0..o.len() {
-                            let back = o[h as usize];
+                            let back = read!("O", o, h as usize);
                             if back < 0 {
                                 break;
                             }
@@ -233,9 +247,9 @@ impl Parts<'_> {
             let to = |h: u32| h - 3 * last + 3 * t;
             for k in 0..3 {
                 let (from, into) = ((3 * last + k) as usize, (3 * t + k) as usize);
-                self.v[into] = self.v[from];
+                self.v[into] = read!("V", self.v, from);
                 if let Some(o) = self.o.as_deref_mut() {
-                    let x = o[from];
+                    let x = read!("O", o, from);
                     o[into] = x;
                     if x >= 0 {
                         o[x as usize] = into as i32;
@@ -243,12 +257,14 @@ impl Parts<'_> {
                 }
                 if let Some(vh) = self.vh.as_deref_mut() {
                     let x = self.v[into] as usize;
-                    if vh[x] >= 0 && moved(vh[x] as u32) {
+                    let start = read!("VH", vh, x);
+                    if start >= 0 && moved(start as u32) {
                         vh[x] = to(vh[x] as u32) as i32;
                     }
                 }
             }
             if let Some(ch) = self.ch.as_deref_mut() {
+                reads::scanned("CH", ch, 0);
                 ch.iter_mut()
                     .filter(|h| moved(**h))
                     .for_each(|h| *h = to(*h));
@@ -318,6 +334,7 @@ impl Parts<'_> {
         if !self.live_vertex(x) {
             return Err(self.refuse(op, Refusal::NoSuchElement));
         }
+        reads::scanned("V", self.v, 0);
         let v: Vec<u32> = self
             .v
             .chunks_exact(3)
@@ -342,6 +359,7 @@ impl Parts<'_> {
             return Err(self.refuse(op, Refusal::SameVertex));
         }
         let mut uses_b = false;
+        reads::scanned("V", self.v, 0);
         for t in self.v.chunks_exact(3) {
             let has_b = t.contains(&b);
             if has_b && t.contains(&a) {
@@ -363,7 +381,7 @@ impl Parts<'_> {
         let g = self
             .twin(h)
             .ok_or_else(|| self.refuse(op, Refusal::BoundaryEdge))?;
-        let (x, y) = (self.v[pv(h) as usize], self.v[pv(g) as usize]);
+        let (x, y) = (self.v_at(pv(h)), self.v_at(pv(g)));
         if x == y || self.find(x, y).is_some() || self.find(y, x).is_some() {
             return Err(self.refuse(op, Refusal::EdgeExists));
         }
@@ -382,7 +400,7 @@ impl Parts<'_> {
         let h = self.half_edge(op, e)?;
         let g = self.twin(h);
         if let Some(g) = g {
-            if self.v[pv(h) as usize] == self.v[pv(g) as usize] {
+            if self.v_at(pv(h)) == self.v_at(pv(g)) {
                 return Err(self.refuse(op, Refusal::LinkCondition));
             }
         }
@@ -393,7 +411,7 @@ impl Parts<'_> {
         let n = self.push_vertex(p);
         for s in sides {
             // (s, t, o) becomes (s, n, o) and (n, t, o) is appended.
-            let (t, o) = (self.v[nx(s) as usize], self.v[pv(s) as usize]);
+            let (t, o) = (self.v_at(nx(s)), self.v_at(pv(s)));
             self.v[nx(s) as usize] = n;
             changed.push(self.push_triangle(n, t, o));
         }
@@ -409,7 +427,11 @@ impl Parts<'_> {
         let patch = self.begin(&[f]);
         let n = self.push_vertex(p);
         let t = 3 * f as usize;
-        let (a, b, c) = (self.v[t], self.v[t + 1], self.v[t + 2]);
+        let (a, b, c) = (
+            read!("V", self.v, t),
+            read!("V", self.v, t + 1),
+            read!("V", self.v, t + 2),
+        );
         // (a, b, c) becomes (a, b, n); (b, c, n) and (c, a, n) are appended.
         self.v[t + 2] = n;
         let t1 = self.push_triangle(b, c, n);
@@ -423,7 +445,7 @@ impl Parts<'_> {
     /// ([`Refusal::TetrahedronTest`]; see the half-edge's collapse), asked through this level's
     /// relations.
     fn collapse_ok(&self, from: u32, to: u32) -> Result<(), Refusal> {
-        let third = |a: u32, b: u32| self.find(a, b).map(|h| self.v[pv(h) as usize]);
+        let third = |a: u32, b: u32| self.find(a, b).map(|h| self.v_at(pv(h)));
         let (left, right) = (third(from, to), third(to, from));
         for (side, a, b) in [(left, to, from), (right, from, to)] {
             if let Some(x) = side {
@@ -473,6 +495,7 @@ impl Parts<'_> {
         let (mut removed, mut changed) = (Vec::new(), Vec::new());
         for &t in &region {
             let corners = &mut self.v[3 * t as usize..3 * t as usize + 3];
+            reads::scanned("V", corners, 3 * t as usize);
             if corners.contains(&to) {
                 removed.push(t);
             } else {
@@ -509,7 +532,7 @@ impl Parts<'_> {
                 return Err(self.refuse(op, Refusal::NotNeighbours));
             }
             moved.push(h / 3);
-            let before = self.v[pv(h) as usize];
+            let before = self.v_at(pv(h));
             if before == right {
                 break;
             }
