@@ -864,3 +864,29 @@ fn structures_without_trace_or_op_is_a_usage_error() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--trace OP or --op OP"));
 }
+
+/// A deletion shows as one: on a structure that marks (the half-edges), the deleted face and
+/// the edge that bordered it alone get records of their own, as a deleted vertex does.
+#[test]
+fn a_deleted_face_and_edge_get_records_of_their_own() {
+    for name in ["index-half-edge", "pointer-half-edge"] {
+        let text = run(
+            name,
+            None,
+            EditOp::DeleteFace,
+            &Asked {
+                face: Some(0),
+                ..Asked::default()
+            },
+        )
+        .unwrap_or_else(|f| panic!("{name}: {}", f.message));
+        let added = added(&text);
+        assert!(added.contains(&"f0.deleted"), "{name}: {text}");
+        assert!(
+            added
+                .iter()
+                .any(|k| k.starts_with('e') && k.ends_with(".deleted")),
+            "{name}: {text}"
+        );
+    }
+}

@@ -282,6 +282,13 @@ pub trait MeshEdit: MeshTopology {
     fn is_deleted_vertex(&self, v: VertexId) -> bool;
     /// Is face `f` deleted (and not yet collected)?
     fn is_deleted_face(&self, f: FaceId) -> bool;
+    /// Is edge `e` deleted (and not yet collected)? Only a structure whose deletion is
+    /// [`Deletion::Marked`] keeps a deleted edge's slot; the default, `false`, is every other's
+    /// answer (a deleted edge's slot is reused or removed at once).
+    fn is_deleted_edge(&self, e: EdgeId) -> bool {
+        let _ = e;
+        false
+    }
     /// Removes the slots of deleted elements, keeping the order of the others.
     fn garbage_collection(&mut self);
     /// Reserves room for `vertices`, `edges` and `faces` more elements.

@@ -19,7 +19,7 @@
 //! is split into `x = …, y = …, z = …` and those fields.
 
 use super::st::che::CheLevel;
-use super::st::{CheL0, CheL1, CheL2, CheL3, MeshEdit, MeshTopology, VertexId};
+use super::st::{CheL0, CheL1, CheL2, CheL3, EdgeId, FaceId, MeshEdit, MeshTopology, VertexId};
 use glam::DVec3;
 use std::any::Any;
 use std::collections::HashMap;
@@ -172,12 +172,29 @@ pub fn records<M: MeshEdit + 'static>(m: &M) -> Vec<(String, String)> {
     } else {
         explained_records(m)
     };
+    // A deleted element that keeps its slot (until garbage collection) gets a record of its
+    // own, so that a deletion shows as one; an edge's two half-edges go with it.
+    let marked = "yes (marked until garbage collection)";
     for v in 0..m.num_vertices() {
         if m.is_deleted_vertex(VertexId::new(v)) {
+            out.push((format!("v{v}.deleted"), marked.to_string()));
+        }
+    }
+    for e in 0..m.num_edges() {
+        if m.is_deleted_edge(EdgeId::new(e)) {
             out.push((
-                format!("v{v}.deleted"),
-                "yes (marked until garbage collection)".to_string(),
+                format!("e{e}.deleted"),
+                format!(
+                    "{marked}, with its half-edges h{} and h{}",
+                    2 * e,
+                    2 * e + 1
+                ),
             ));
+        }
+    }
+    for f in 0..m.num_faces() {
+        if m.is_deleted_face(FaceId::new(f)) {
+            out.push((format!("f{f}.deleted"), marked.to_string()));
         }
     }
     out

@@ -40,7 +40,7 @@ mod euler;
 use super::{HalfEdge, HalfEdgeArrays, HalfEdgeLinks, NONE};
 use crate::core::edit::{smooth_cost, Deletion, EditOp, MeshEdit, Offers};
 use crate::core::error::Result;
-use crate::core::ids::{FaceId, VertexId};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::Cost;
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
@@ -215,6 +215,9 @@ impl<L: HalfEdgeLinksMut> MeshEdit for HalfEdge<L> {
     }
     fn is_deleted_face(&self, f: FaceId) -> bool {
         self.marks.face(f.0)
+    }
+    fn is_deleted_edge(&self, e: EdgeId) -> bool {
+        self.marks.edge(e.0)
     }
     fn garbage_collection(&mut self) {
         if self.marks.is_empty() {
