@@ -546,7 +546,7 @@ fn every_operation_succeeds_by_default_on_every_structure_and_names_its_element(
             if not_offered(name, op) {
                 assert_eq!(out.status.code(), Some(1), "{name} {op}: {stderr}");
                 assert!(
-                    stderr.contains(&format!("refuses {op}: {}", Refusal::NotImplemented)),
+                    stderr.contains(&format!("does not offer {op} (not offered")),
                     "{name} {op}: {stderr}"
                 );
                 continue;
@@ -732,16 +732,13 @@ fn edge_insertion_and_deletion_are_refused_with_their_reasons() {
             args.extend_from_slice(flags);
             let out = topolab(&args);
             let stderr = String::from_utf8_lossy(&out.stderr);
-            let reason = if not_offered(name, op) {
-                Refusal::NotImplemented
+            let said = if not_offered(name, op) {
+                format!("does not offer {op} (not offered")
             } else {
-                reason
+                format!("refuses {op}: {reason}")
             };
             assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
-            assert!(
-                stderr.contains(&format!("refuses {op}: {reason}")),
-                "{args:?}: {stderr}"
-            );
+            assert!(stderr.contains(&said), "{args:?}: {stderr}");
             assert!(out.stdout.is_empty(), "{args:?}");
         }
     }
@@ -888,5 +885,36 @@ fn a_deleted_face_and_edge_get_records_of_their_own() {
                 .any(|k| k.starts_with('e') && k.ends_with(".deleted")),
             "{name}: {text}"
         );
+    }
+}
+
+/// The refused example named beside a default element is the structure's own refusal: no
+/// refusal names another structure, and none is a missing feature (`not offered` is no
+/// refusal).
+#[test]
+fn a_refusal_named_by_default_is_the_structures_own() {
+    for name in editable() {
+        for op in [
+            EditOp::FlipEdge,
+            EditOp::CollapseEdge,
+            EditOp::SplitVertex,
+            EditOp::DeleteEdge,
+        ] {
+            let Ok(text) = run(name, None, op, &Asked::default()) else {
+                continue;
+            };
+            for line in text.lines().filter(|l| l.contains(" refuses ")) {
+                let who = line
+                    .split(" refuses ")
+                    .next()
+                    .and_then(|l| l.rsplit(['(', ' ']).next())
+                    .unwrap_or_default();
+                assert_eq!(who, name, "{name} {op}: {line}");
+                assert!(
+                    !line.contains(&Refusal::NotImplemented.to_string()),
+                    "{name} {op}: {line}"
+                );
+            }
+        }
     }
 }

@@ -28,13 +28,13 @@
 //! the whole mesh; `weld-edges` sews the second of two boundary edges (`--edges E,F`) onto the
 //! first, `weld-faces` removes two faces (`--faces F,G`) and sews their boundaries together.
 //!
-//! Without an element, the first one on which the edit succeeds (tried on the index
-//! half-edge, on the open tetrahedron or, where none succeeds there, on the canonical `grid`,
-//! where none succeeds on triangles, on the canonical `quad-strip`, and where none succeeds on
-//! an open mesh, on a torus of 128 triangles),
-//! named, with one where it is refused and why. A refused edit exits with code 1 and the
-//! structure's reason ([`topolab_structures::Refusal`]); so does an operation a structure does
-//! not offer ([`topolab_structures::Refusal::NotImplemented`]). An element past the mesh's
+//! Without an element, the first one on which the edit succeeds (tried on the structure asked
+//! about, its level 0 for `che`: on the open tetrahedron or, where none succeeds there, on the
+//! canonical `grid`, where none succeeds on triangles, on the canonical `quad-strip`, and where
+//! none succeeds on an open mesh, on a torus of 128 triangles), named, with one where that
+//! structure refuses it and why. A refused edit exits with code 1 and the structure's reason
+//! ([`topolab_structures::Refusal`]); an operation the structure does not offer exits with
+//! code 1 too, said to be not offered (a missing feature, not a refusal). An element past the mesh's
 //! count, or of the wrong kind for the operation, is a usage error (code 2).
 //!
 //! The records are each structure's [`MeshTopology::explain`] lines read as records, except
@@ -52,8 +52,8 @@ use std::any::TypeId;
 use std::fmt::Write;
 use std::sync::LazyLock;
 use topolab_harness::teaching::edits::{
-    choose, default_case, edit, explain_on, kind_of, prepare, Choice, Prepared, Subject,
-    SubjectKind,
+    choose_on, default_case_on, edit, explain_on, kind_of, prepare, Choice, DefaultCase, Prepared,
+    Subject, SubjectKind,
 };
 use topolab_structures::{
     CheL0, CheL1, CheL2, CheL3, EdgeList, EditOp, IndexHalfEdge, MeshEdit, MeshTopology,
@@ -389,13 +389,33 @@ pub fn run(
             }
         }
     }
+    // An operation the structure does not offer is a missing feature, said so before any
+    // element is chosen, never shown as a refusal of one.
+    if let Some(&lacking) = names
+        .iter()
+        .find(|n| visit_editable(n, Offers(op)) == Some(false))
+    {
+        let offering: Vec<&str> = editable()
+            .into_iter()
+            .filter(|n| visit_editable(n, Offers(op)) == Some(true))
+            .collect();
+        return Err(Failure {
+            message: format!(
+                "{lacking} does not offer {op} (not offered: a missing feature, not a refusal of an element); the structures that offer it: {}",
+                offering.join(", ")
+            ),
+            code: 1,
+        });
+    }
     let asked_subject = asked.subject(op)?;
     let mut preface = String::new();
     let kind = kind_of(op);
     let single = kind.is_single();
     let (soup, label, subject) = match (mesh, asked_subject) {
         (None, None) => {
-            let case = default_case(op);
+            // Chosen on the structure asked about (its first level for `che`), so that a
+            // refusal named is its own.
+            let case = visit_editable(names[0], DefaultOn(op)).expect("an editable structure");
             if let Some(tetra) = &case.on_tetrahedron {
                 let why = tetra
                     .refused
@@ -429,7 +449,8 @@ pub fn run(
                     chosen(&choice, op, &label, kind, "", &mut preface)?
                 }
                 None => {
-                    let choice = choose(&soup, op);
+                    let choice = visit_editable(names[0], ChooseOn(&soup, op))
+                        .expect("an editable structure");
                     chosen(&choice, op, &label, kind, "", &mut preface)?
                 }
             };
@@ -461,6 +482,33 @@ pub fn run(
     };
     out += &counted::table(&names, &case, counting.growth);
     Ok(out)
+}
+
+/// Does the structure visited offer the operation?
+struct Offers(EditOp);
+impl EditVisitor for Offers {
+    type Output = bool;
+    fn visit<M: MeshEdit + 'static>(self) -> bool {
+        M::supports(self.0)
+    }
+}
+
+/// [`default_case_on`] the structure visited.
+struct DefaultOn(EditOp);
+impl EditVisitor for DefaultOn {
+    type Output = DefaultCase;
+    fn visit<M: MeshEdit + 'static>(self) -> DefaultCase {
+        default_case_on::<M>(self.0)
+    }
+}
+
+/// [`choose_on`] the structure visited.
+struct ChooseOn<'a>(&'a PolygonSoup, EditOp);
+impl EditVisitor for ChooseOn<'_> {
+    type Output = Choice;
+    fn visit<M: MeshEdit + 'static>(self) -> Choice {
+        choose_on::<M>(self.0, self.1)
+    }
 }
 
 /// The only subject of an operation that takes no element.

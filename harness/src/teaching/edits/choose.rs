@@ -8,7 +8,9 @@ use super::prepare::{corners_of, prepare};
 use super::subject::{Subject, SubjectKind};
 use crate::teaching::edits::picture::TeachingEdit;
 use topolab_structures::meshes;
-use topolab_structures::{EditOp, FaceId, IndexHalfEdge, MeshTopology, PolygonSoup, VertexId};
+use topolab_structures::{
+    EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Refusal, VertexId,
+};
 
 /// What [`choose`] found: the first subject on which the edit succeeds, and the first on
 /// which it is refused, with the refusal.
@@ -124,21 +126,26 @@ pub(super) fn candidates(kind: SubjectKind, m: &IndexHalfEdge) -> Vec<Subject> {
     }
 }
 
-/// The first subject of `soup` on which `op` succeeds and the first on which it is refused,
-/// tried on the index half-edge (among its first [`TRIED`] vertices, edges or faces, or the
-/// combinations of its first few vertices for the operations that take several): every
+/// [`choose_on`] the index half-edge, the reference whose numbering subjects use: every
 /// editable structure refuses what it refuses (the editing suite holds them to one model),
-/// with the same reason on the cases `explain`'s tests name. A subject whose setup is refused
-/// (a vertex that cannot be deleted, before a garbage collection) is skipped.
+/// with the same reason on the cases `explain`'s tests name.
 pub fn choose(soup: &PolygonSoup, op: EditOp) -> Choice {
+    choose_on::<IndexHalfEdge>(soup, op)
+}
+
+/// The first subject of `soup` on which `op` succeeds in structure `M` and the first on
+/// which `M` refuses it (among the first [`TRIED`] vertices, edges or faces, or the
+/// combinations of the first few vertices for the operations that take several), so that a
+/// refusal shown is the refusal of the structure asked about. A subject whose setup is refused
+/// (a vertex that cannot be deleted, before a garbage collection) is skipped, and so is an
+/// edit `M` does not offer there ([`Refusal::NotImplemented`]): a missing feature, not a
+/// refusal.
+pub fn choose_on<M: MeshEdit>(soup: &PolygonSoup, op: EditOp) -> Choice {
     let mut choice = Choice::default();
-    let (Ok(reference), Ok(mut m)) = (
-        IndexHalfEdge::from_soup(soup),
-        IndexHalfEdge::from_soup(soup),
-    ) else {
+    let (Ok(reference), Ok(mut m)) = (IndexHalfEdge::from_soup(soup), M::from_soup(soup)) else {
         return choice;
     };
-    let spec = edit::<IndexHalfEdge>(op);
+    let spec = edit::<M>(op);
     for subject in candidates(spec.kind, &reference) {
         let Ok(prepared) = prepare(op, subject.clone(), soup, &reference) else {
             continue;
@@ -160,12 +167,16 @@ pub fn choose(soup: &PolygonSoup, op: EditOp) -> Choice {
                 changed = true;
                 choice.success.get_or_insert(subject);
             }
+            Err(Error::EditRefused {
+                reason: Refusal::NotImplemented,
+                ..
+            }) => {}
             Err(e) => {
                 choice.refused.get_or_insert((subject, e.to_string()));
             }
         }
         if changed {
-            match IndexHalfEdge::from_soup(soup) {
+            match M::from_soup(soup) {
                 Ok(fresh) => m = fresh,
                 Err(_) => break,
             }
@@ -215,8 +226,13 @@ pub(super) type MakeMesh = fn() -> PolygonSoup;
 /// torus of 128 triangles (a weld of two faces needs faces apart on a closed mesh) on which
 /// `op` succeeds, or the last.
 pub fn default_case(op: EditOp) -> DefaultCase {
+    default_case_on::<IndexHalfEdge>(op)
+}
+
+/// [`default_case`] with the elements chosen on structure `M` ([`choose_on`]).
+pub fn default_case_on<M: MeshEdit>(op: EditOp) -> DefaultCase {
     let soup = meshes::open_tetrahedron();
-    let choice = choose(&soup, op);
+    let choice = choose_on::<M>(&soup, op);
     if choice.success.is_some() {
         return DefaultCase {
             soup,
@@ -234,7 +250,7 @@ pub fn default_case(op: EditOp) -> DefaultCase {
     let mut case = None;
     for (make, label, flag) in others {
         let other = make();
-        let found = choose(&other, op);
+        let found = choose_on::<M>(&other, op);
         let done = found.success.is_some();
         case = Some(DefaultCase {
             choice: found,

@@ -26,8 +26,8 @@ pub mod records;
 mod subject;
 
 pub use choose::{
-    choose, default_case, teaching_edits, Choice, DefaultCase, GRID, QUAD_STRIP, TAUGHT,
-    TETRAHEDRON, TORUS, TRIED,
+    choose, choose_on, default_case, default_case_on, teaching_edits, Choice, DefaultCase, GRID,
+    QUAD_STRIP, TAUGHT, TETRAHEDRON, TORUS, TRIED,
 };
 pub use explained::{explain_on, Explained};
 pub use operations::{edit, kind_of, Call, Edit, Target};
