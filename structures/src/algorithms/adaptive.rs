@@ -424,7 +424,7 @@ pub fn refine_adaptive_with_progress<M: MeshEdit>(
         let v = m.split_edge(e, middle)?;
         report.edges_split += 1;
         report.rounds = report.rounds.max(c.round);
-        if report.edges_split % PROGRESS_EVERY == 0 {
+        if report.edges_split.is_multiple_of(PROGRESS_EVERY) {
             progress(m.num_faces());
         }
         // The new vertex's edges: the two halves and one to each third corner.

@@ -14,7 +14,7 @@
 //!
 //! Ties: the eager rows and the pair break them by storage, as OpenMesh does
 //! ([`Ties::Storage`], which the half-edges share with OpenMesh), the lazy rows by ids as
-//! `topolab decimate` does ([`ties`]).
+//! `topolab decimate` does (the function `ties`).
 //!
 //! Cost: OpenMesh's Decimater and the library functions it calls (its legality test,
 //! `collapse`) are OpenMesh's own, compiled from its source at `-O3 -DNDEBUG` by `build.rs`.
