@@ -236,4 +236,77 @@ mod adaptive {
         assert_eq!(failure.code, 2);
         assert!(failure.message.contains("not both"), "{}", failure.message);
     }
+
+    /// `topolab refine` with `args`: its exit code, stdout and stderr.
+    fn topolab(args: &[&str]) -> (Option<i32>, String, String) {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_topolab"))
+            .args(args)
+            .output()
+            .expect("run topolab");
+        let text = |b: Vec<u8>| String::from_utf8(b).expect("UTF-8");
+        (out.status.code(), text(out.stdout), text(out.stderr))
+    }
+
+    /// The number written before `word` in `text` (`about 1234 faces predicted`).
+    fn number_before(text: &str, word: &str) -> u128 {
+        let before = text.split(word).next().expect("the word");
+        let number = before.split_whitespace().last().expect("a number");
+        number
+            .parse()
+            .unwrap_or_else(|_| panic!("{number:?} before {word:?} in {text}"))
+    }
+
+    #[test]
+    fn the_estimate_is_stated_before_the_work_and_is_near_the_result() {
+        let out = scratch("estimated.obj");
+        let path = out.to_str().unwrap();
+        let (code, stdout, stderr) =
+            topolab(&["refine", "torus", "--max-edge", "0.05", "--out", path]);
+        assert_eq!(code, Some(0), "{stderr}");
+        let line = stderr
+            .lines()
+            .find(|l| l.contains("faces predicted"))
+            .unwrap_or_else(|| panic!("no estimate in {stderr:?}"));
+        assert!(
+            line.contains("--max-edge 0.05 of torus") && line.contains("of memory"),
+            "{line}"
+        );
+        let predicted = number_before(line, " faces predicted") as f64;
+        let fewest = number_before(line, ")").max(1) as f64;
+        assert!(predicted >= fewest, "{line}");
+        let made = clean_faces(&out) as f64;
+        assert!(
+            made <= 2.0 * predicted && predicted <= 2.0 * made,
+            "{made} faces made, {line}"
+        );
+        assert!(stdout.contains("24 faces before"), "{stdout}");
+        // Uniform refinement states its exact count.
+        let (code, _, stderr) = topolab(&["refine", "torus", "--levels", "2", "--out", path]);
+        assert_eq!(code, Some(0), "{stderr}");
+        assert!(stderr.contains("384 faces when done"), "{stderr}");
+    }
+
+    #[test]
+    fn a_request_predicted_past_the_memory_is_refused_before_the_work() {
+        // The canonical torus's 36 edges of about 1.4 to 2 halved down to 1e-4: at least some
+        // 2 million faces (the lower bound, which fits), but its area predicts billions, far
+        // more than any machine's memory holds.
+        let out = scratch("never-predicted.obj");
+        let path = out.to_str().unwrap();
+        let (code, _, stderr) = topolab(&["refine", "torus", "--max-edge", "1e-4", "--out", path]);
+        assert_eq!(code, Some(2), "{stderr}");
+        let estimate = stderr
+            .lines()
+            .find(|l| l.contains("faces predicted"))
+            .unwrap_or_else(|| panic!("no estimate in {stderr:?}"));
+        assert!(
+            number_before(estimate, " faces predicted") > 1_000_000_000,
+            "{estimate}"
+        );
+        assert!(
+            stderr.contains("more than the") && stderr.contains("--allow-memory"),
+            "{stderr}"
+        );
+        assert!(!out.exists());
+    }
 }

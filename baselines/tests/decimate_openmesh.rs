@@ -8,7 +8,9 @@
 //! input's ids found by position: the same surviving vertices and the same oriented triangles,
 //! hence the same number of collapses. On closed meshes they agree exactly, on symmetric ones
 //! too, where `f32` errors tie: the heap sifts equal keys as OpenMesh's `HeapT` does, and the
-//! half-edges rotate around a vertex from the half-edge OpenMesh would start at. On an open
+//! half-edges rotate around a vertex from the half-edge OpenMesh would start at (the tie rule
+//! [`Ties::Storage`]; `decimate`'s default, ties by ids, gives one mesh on every structure
+//! instead, which on symmetric meshes is not OpenMesh's, as checked below). On an open
 //! mesh they cannot agree: OpenMesh slides boundary vertices along the boundary, the lab keeps
 //! them all (its collapses must be undone by vertex splits of interior fans), which the test
 //! checks instead. The lazy strategy, another algorithm, must differ on a torus: the
@@ -19,7 +21,7 @@
 use std::collections::HashMap;
 use topolab_baselines::native_decimate::NativeDecimater;
 use topolab_structures::algorithms::changing::to_soup;
-use topolab_structures::algorithms::decimate::{decimate, Strategy};
+use topolab_structures::algorithms::decimate::{decimate_with_ties, Strategy, Ties};
 use topolab_structures::{
     meshes, IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup, VertexId,
 };
@@ -69,15 +71,25 @@ fn in_input(input: &PolygonSoup, result: &PolygonSoup) -> InInput {
     }
 }
 
-/// `input` decimated to `target` faces on `M` with `strategy`, compacted; and its number of
-/// collapses.
+/// `input` decimated to `target` faces on `M` with `strategy` and OpenMesh's tie rule
+/// ([`Ties::Storage`]), compacted; and its number of collapses.
 fn lab<M: MeshEdit>(
     input: &PolygonSoup,
     target: usize,
     strategy: Strategy,
 ) -> (PolygonSoup, usize) {
+    lab_with::<M>(input, target, strategy, Ties::Storage)
+}
+
+/// [`lab`] with the tie rule `ties`.
+fn lab_with<M: MeshEdit>(
+    input: &PolygonSoup,
+    target: usize,
+    strategy: Strategy,
+    ties: Ties,
+) -> (PolygonSoup, usize) {
     let mut m = M::from_soup(input).expect("manifold");
-    let d = decimate(&mut m, target, strategy).expect("decimates");
+    let d = decimate_with_ties(&mut m, target, strategy, ties).expect("decimates");
     m.garbage_collection();
     (to_soup(&m), d.collapses.len())
 }
@@ -135,6 +147,19 @@ fn the_eager_strategy_makes_openmesh_decimaters_collapses_on_closed_meshes() {
             assert_eq!(ours, om, "{name}, {structure}");
         }
     }
+    // Ties by ids (`decimate`'s rule): OpenMesh's collapses where nothing ties, another mesh
+    // where the generated torus ties.
+    let perturbed = meshes::perturb(&torus, 0.01, 7);
+    let (ids, _) = lab_with::<IndexHalfEdge>(&perturbed, 160, Strategy::Eager, Ties::Ids);
+    assert_eq!(
+        in_input(&perturbed, &ids),
+        in_input(&perturbed, &openmesh(&perturbed, 160))
+    );
+    let (ids, _) = lab_with::<IndexHalfEdge>(&torus, 160, Strategy::Eager, Ties::Ids);
+    assert_ne!(
+        in_input(&torus, &ids),
+        in_input(&torus, &openmesh(&torus, 160))
+    );
     // The comparison tells algorithms apart: the lazy strategy keeps other vertices.
     let (lazy, _) = lab::<IndexHalfEdge>(&torus, 160, Strategy::Lazy);
     assert_ne!(

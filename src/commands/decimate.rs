@@ -7,7 +7,9 @@
 //! how candidates are kept ([`Strategy`]): `lazy`, the default, because its normal-flipping
 //! test keeps flat regions from decimating into zero-area triangles, which `topolab check`
 //! would report in the file written; `eager` runs OpenMesh's Decimater step for step, as the
-//! report compares it with OpenMesh's own.
+//! report compares it with OpenMesh's own. Both break ties by vertex ids
+//! ([`topolab_structures::algorithms::decimate::Ties::Ids`]), so every structure gives the
+//! same mesh (the report's eager rows keep OpenMesh's order of ties instead).
 //!
 //! Two modes: `--faces N` or `--ratio R` write the decimated mesh to the file `--out` (its
 //! deleted elements collected, in the structure's order); `--levels 50%,10%` decimates once
@@ -36,6 +38,7 @@ use topolab_structures::algorithms::decimate::{
     canonical_input, decimate, decimate_levels, live_soup, minimum_faces, Decimation, Strategy,
 };
 use topolab_structures::io::write_obj;
+use topolab_structures::summary::plural;
 use topolab_structures::{EditOp, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup};
 
 /// Options of `topolab decimate`.
@@ -338,8 +341,9 @@ pub fn write_levels<M: MeshEdit>(
     outputs.push((files::RECORD.into(), Box::new(|w| record.write(w))));
     write_files_together(&args.out, outputs)?;
     let mut text = format!(
-        "{spec}: {faces} faces decimated through {} levels by {} collapses on {} ({} strategy), written to {} ({:.2} s):\n",
+        "{spec}: {faces} faces decimated through {} level{} by {} collapses on {} ({} strategy), written to {} ({:.2} s):\n",
         targets.len(),
+        plural(targets.len()),
         d.collapses.len(),
         args.structure,
         args.strategy,

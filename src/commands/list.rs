@@ -195,6 +195,13 @@ pub fn list(json: bool) -> Result<String, Failure> {
         }
         out.push('\n');
     }
+    // The selection rows count what is selected, not a neighbourhood: their k says so.
+    let _ = writeln!(
+        out,
+        "\n(n: elements scanned; k: the local size around the element edited (valence or face size), except in {} and {}, where k is the number of vertices selected)",
+        EditOp::RotateSelection.name(),
+        EditOp::ScaleSelection.name(),
+    );
     let _ = writeln!(out, "\noperators:");
     for spec in &topolab_harness::measuring::catalogue::CATALOGUE {
         let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use topolab_structures::ordering::{reorder, Ordering};
 use topolab_structures::refine::{subdivide, subdivide_levels, Scheme};
+use topolab_structures::summary::plural;
 use topolab_structures::PolygonSoup;
 
 /// Options of `topolab refine`: uniform (`--levels`) or adaptive (`--max-edge`), one of them.
@@ -92,6 +93,8 @@ fn levels_within_u32(
 /// Refuses `levels` levels of `soup` when the result's ids would pass `u32` or its last level
 /// would not fit in memory: that level's input, edge analysis and output, and the renumbered
 /// copy, measured on one level of [`limits::sample_mesh`] and scaled by the result's corners.
+/// The estimate is stated on stderr before it is checked: the faces the last level has and,
+/// past the sample's size, the memory it needs.
 fn admit_levels(
     spec: &str,
     soup: &PolygonSoup,
@@ -102,6 +105,7 @@ fn admit_levels(
     let (what, faces) = levels_within_u32(spec, soup.num_faces() as u64, levels)?;
     let sample = limits::sample_mesh();
     if levels == 0 || faces <= 4 * sample.num_faces() as u128 {
+        eprintln!("refine: {what}: {faces} faces when done");
         return Ok(());
     }
     let (fine_corners, peak) = limits::peak_of(|| {
@@ -118,6 +122,10 @@ fn admit_levels(
         peak + sample.heap_bytes() as u64,
         fine_corners,
         3 * faces as u64,
+    );
+    eprintln!(
+        "refine: {what}: {faces} faces when done, about {} of memory",
+        limits::human(need)
     );
     limits::admit(&what, need)
 }
@@ -192,7 +200,8 @@ pub fn refine(
     let mut text = String::new();
     let _ = writeln!(
         text,
-        "{spec}: {levels} levels of {} subdivision, {} order: {} vertices, {} faces, written to {} ({:.1} s)",
+        "{spec}: {levels} level{} of {} subdivision, {} order: {} vertices, {} faces, written to {} ({:.1} s)",
+        plural(levels),
         scheme.name(),
         ordering.name(),
         fine.num_vertices(),

@@ -6,7 +6,10 @@
 //! Refused before any work, nothing written (exit 2): a `--max-edge` that is not a finite
 //! length > 0, a `--region` that is not six finite numbers with each minimum at most its
 //! maximum, an unknown `--structure`, an unwritable output, and a request whose fewest faces
-//! ([`fewest_faces`], a lower bound) pass what `u32` ids number or the available memory holds.
+//! ([`fewest_faces`], a lower bound) pass what `u32` ids number, or whose predicted faces
+//! ([`predicted_faces`], an estimate from the area) need more than the available memory holds
+//! (`--allow-memory` runs it anyway). The prediction and its memory are stated on stderr before
+//! the work, and the faces made so far shown against it while it runs (a bar, on a terminal).
 //! Refused (exit 1): a structure that cannot refine locally (the regular grid and the height
 //! field, whose vertices are implicit in (i, j): a split would break the grid; the explicit
 //! storage, which has no editing operations), polygons, input the structure cannot store. The
@@ -19,11 +22,15 @@ use crate::input::{load_mesh, refuse_empty, Failure};
 use crate::limits;
 use crate::output::{check_mesh_out, write_mesh};
 use crate::registry::{self, EditVisitor};
+use indicatif::{ProgressBar, ProgressStyle};
 use std::path::Path;
 use std::time::Instant;
-use topolab_structures::algorithms::adaptive::{fewest_faces, refine_adaptive, Region, Request};
+use topolab_structures::algorithms::adaptive::{
+    fewest_faces, predicted_faces, refine_adaptive_with_progress, Region, Request,
+};
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::glam::DVec3;
+use topolab_structures::summary::plural;
 use topolab_structures::{Error, MeshEdit, PolygonSoup};
 
 /// The structure `--structure` defaults to.
@@ -128,6 +135,19 @@ fn bytes_per_face<M: MeshEdit>() -> u64 {
     3 * (peak + sample.heap_bytes() as u64).div_ceil(sample.num_faces() as u64)
 }
 
+/// The bar of a refinement from `faces` faces towards `predicted`, on stderr (drawn on a
+/// terminal only, as `topolab report`'s).
+fn progress_bar(faces: usize, predicted: u128) -> ProgressBar {
+    let bar = ProgressBar::new(u64::try_from(predicted).unwrap_or(u64::MAX));
+    if let Ok(style) = ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:30}] {human_pos}/{human_len} faces (predicted), eta {eta}",
+    ) {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_position(faces as u64);
+    bar
+}
+
 impl EditVisitor for Adaptive<'_> {
     type Output = Result<String, Failure>;
 
@@ -163,14 +183,32 @@ impl EditVisitor for Adaptive<'_> {
             ],
         )?;
         let per_face = bytes_per_face::<M>();
+        let predicted = predicted_faces(&m, &request).map_err(refused)?;
+        let bytes = u64::try_from(predicted.saturating_mul(per_face.into())).unwrap_or(u64::MAX);
+        let estimate = format!(
+            "about {predicted} faces predicted (at least {fewest}), about {} of memory at {} per face",
+            limits::human(bytes),
+            limits::human(per_face)
+        );
+        eprintln!("topolab refine: {what} on {}: {estimate}", M::NAME);
         limits::admit(
-            &format!("{what} (at least {fewest} faces)"),
-            u64::try_from(fewest.saturating_mul(per_face.into())).unwrap_or(u64::MAX),
+            &format!("{what} (about {predicted} faces predicted)"),
+            bytes,
         )?;
         let by_memory = limits::affordable(per_face);
         let budget = by_memory.map_or(MAX_FACES_U32, |n| n.min(MAX_FACES_U32));
         let started = Instant::now();
-        let report = refine_adaptive(&mut m, &request, budget as usize).map_err(|e| match e {
+        let bar = progress_bar(m.num_faces(), predicted);
+        let progress = |faces: usize| {
+            let faces = faces as u64;
+            if faces > bar.length().unwrap_or(0) {
+                bar.set_length(faces);
+            }
+            bar.set_position(faces);
+        };
+        let report = refine_adaptive_with_progress(&mut m, &request, budget as usize, progress);
+        bar.finish_and_clear();
+        let report = report.map_err(|e| match e {
             Error::BudgetExceeded { limit, .. } => Failure::usage(format!(
                 "{what} would make more than {limit} faces, {}; nothing written",
                 if by_memory.is_some_and(|n| n < MAX_FACES_U32) {
@@ -199,11 +237,12 @@ impl EditVisitor for Adaptive<'_> {
             None => String::new(),
         };
         Ok(format!(
-            "{spec}: adaptive refinement (longest-edge bisection) on {} of the edges longer than {}{inside}: {} edges split in {} rounds, {} faces before, {} after, {} vertices, written to {} (refinement {:.3} s)\n",
+            "{spec}: adaptive refinement (longest-edge bisection) on {} of the edges longer than {}{inside}: {} edges split in {} round{}, {} faces before, {} after, {} vertices, written to {} (refinement {:.3} s)\n",
             M::NAME,
             request.max_edge(),
             report.edges_split,
             report.rounds,
+            plural(report.rounds),
             report.faces_before,
             report.faces_after,
             fine.num_vertices(),

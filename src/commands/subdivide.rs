@@ -18,6 +18,7 @@ use crate::output::{check_mesh_out, write_mesh};
 use std::path::Path;
 use std::time::Instant;
 use topolab_structures::algorithms::changing::{sqrt3_step, to_soup};
+use topolab_structures::summary::plural;
 use topolab_structures::{IndexHalfEdge, MeshTopology, PolygonSoup};
 
 /// The schemes of `topolab subdivide`.
@@ -134,7 +135,8 @@ pub fn subdivide(spec: &str, scheme: &str, levels: usize, out: &Path) -> Result<
     drop(mesh);
     write_mesh(out, &fine)?;
     Ok(format!(
-        "{spec}: {levels} levels of sqrt3 subdivision: {} vertices, {} faces, written to {} ({:.1} s)\n",
+        "{spec}: {levels} level{} of sqrt3 subdivision: {} vertices, {} faces, written to {} ({:.1} s)\n",
+        plural(levels),
         fine.num_vertices(),
         fine.num_faces(),
         out.display(),

@@ -230,7 +230,9 @@ pub(crate) fn edit_cost(op: EditOp) -> Cost {
         EditOp::Select => Cost::Linear,
         // k: the vertices selected, each moved by the shim's `set_position`.
         EditOp::RotateSelection | EditOp::ScaleSelection => Cost::Local,
-        // Not offered (the shims have no call for them): refused as not implemented.
+        // Not offered: OpenMesh (`PolyConnectivity::insert_edge`, `remove_edge`) and CGAL
+        // (`Euler::split_face`, `join_face`) have them, the shims do not bind them, so they
+        // are refused as not implemented.
         EditOp::InsertEdge | EditOp::DeleteEdge => Cost::Local,
         // Declared by the structure from its query costs (`impl_mesh_edit!`).
         EditOp::Smooth => Cost::Linear,
@@ -467,8 +469,9 @@ macro_rules! impl_mesh_edit {
                 }
                 $crate::foreign::edit::edit_cost(op)
             }
-            /// Everything but the insertion and deletion of an edge, for which the shims have
-            /// no call.
+            /// Everything but the insertion and deletion of an edge, which the libraries have
+            /// (OpenMesh's `insert_edge` and `remove_edge`, CGAL's `Euler::split_face` and
+            /// `join_face`) but the shims do not bind.
             const OFFERS: topolab_structures::Offers<Self> = topolab_structures::Offers {
                 add_vertex: Some($crate::foreign::edit::add_vertex),
                 add_face: Some($crate::foreign::edit::add_face),

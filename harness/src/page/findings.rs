@@ -9,6 +9,7 @@ use crate::results::{Measurement, Results, Status, Subject};
 use crate::targets::measured::{ran, shown_turns};
 use crate::targets::{measured, sequential, Against, TARGETS};
 use std::fmt::Write;
+use topolab_structures::summary::plural;
 use topolab_structures::{Operator, Workload};
 
 /// The findings of `r` as a Markdown document.
@@ -168,7 +169,13 @@ fn target_line(what: &str, ratio: Option<f64>, spread: Option<&Spread>, goal: f6
         return format!("| {what} | not measured | ≤ {goal}× | – |");
     };
     let spread = match spread {
-        Some(s) => format!("interval {:.2}–{:.2}, {} rounds", s.low, s.high, s.rounds),
+        Some(s) => format!(
+            "interval {:.2}–{:.2}, {} round{}",
+            s.low,
+            s.high,
+            s.rounds,
+            plural(s.rounds)
+        ),
         None => "one after the other".into(),
     };
     let met = if v <= goal { "met" } else { "**missed**" };

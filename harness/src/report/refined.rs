@@ -8,6 +8,7 @@
 
 use crate::report::run::ReportError;
 use topolab_structures::refine::{subdivide_levels, Scheme};
+use topolab_structures::summary::plural;
 use topolab_structures::PolygonSoup;
 
 /// One refined mesh: the file stem in `bench-data/cache/` and the Loop levels.
@@ -95,8 +96,10 @@ pub fn refined_meshes(
         // Checked before refining: 4^levels times the faces.
         admit(soup.num_faces().saturating_mul(1 << (2 * r.levels)))?;
         eprintln!(
-            "topolab report: refining {} by {} Loop levels",
-            r.source, r.levels
+            "topolab report: refining {} by {} Loop level{}",
+            r.source,
+            r.levels,
+            plural(r.levels)
         );
         match subdivide_levels(soup, Scheme::Loop, r.levels, |_, _| {}) {
             Ok(s) => out.push((r.name(), s)),

@@ -7,6 +7,7 @@ use crate::format::{esc, ns};
 use crate::measuring::timing::interval::Interval;
 use crate::results::{Measurement, Results};
 use std::fmt::Write;
+use topolab_structures::summary::plural;
 
 /// A measured cell's interval, if it has one.
 pub(crate) fn interval(m: &Measurement) -> Option<Interval> {
@@ -22,11 +23,12 @@ pub(crate) fn interval(m: &Measurement) -> Option<Interval> {
 pub(crate) fn interval_title(m: &Measurement) -> String {
     match interval(m) {
         Some(ci) => format!(
-            "{:.0}% interval {} to {}, median of {} rounds, each on a fresh build",
+            "{:.0}% interval {} to {}, median of {} round{}, each on a fresh build",
             ci.coverage * 100.0,
             ns(ci.low),
             ns(ci.high),
-            m.rounds
+            m.rounds,
+            plural(m.rounds)
         ),
         None => String::new(),
     }

@@ -64,8 +64,10 @@ impl std::fmt::Display for Undefined {
     }
 }
 
-fn plural(n: usize) -> &'static str {
-    if n == 1 {
+/// The ending of a regular plural for a count of `n`: `""` for 1, `"s"` otherwise, so that
+/// text says `1 round` and `2 rounds`.
+pub fn plural(n: impl TryInto<u64>) -> &'static str {
+    if n.try_into().ok() == Some(1) {
         ""
     } else {
         "s"

@@ -12,6 +12,10 @@
 //! structures) take turns, three rounds from fresh builds, so the Targets row's ratio is the
 //! median of per-round ratios with its spread; above [`MAX_FACES`] only that pair runs there.
 //!
+//! Ties: the eager rows and the pair break them by storage, as OpenMesh does
+//! ([`Ties::Storage`], which the half-edges share with OpenMesh), the lazy rows by ids as
+//! `topolab decimate` does (the function `ties`).
+//!
 //! Cost: OpenMesh's Decimater and the library functions it calls (its legality test,
 //! `collapse`) are OpenMesh's own, compiled from its source at `-O3 -DNDEBUG` by `build.rs`.
 //! The eager strategy runs as many legality tests as OpenMesh's Decimater (one for every
@@ -32,7 +36,9 @@ use glam::DVec3;
 use std::fmt::Write;
 use topolab_baselines::native_decimate::NativeDecimater;
 use topolab_structures::algorithms::changing::to_soup;
-use topolab_structures::algorithms::decimate::{decimate, reconstruct, same_mesh, Strategy};
+use topolab_structures::algorithms::decimate::{
+    decimate_with_ties, reconstruct, same_mesh, Strategy, Ties,
+};
 use topolab_structures::{
     FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup,
 };
@@ -52,6 +58,17 @@ const PAIR: [&str; 2] = ["index-half-edge", topolab_registry::OPENMESH];
 
 /// The strategy of the Targets row's lab decimater: the one that runs OpenMesh's algorithm.
 const PAIR_STRATEGY: Strategy = Strategy::Eager;
+
+/// The tie rule of the report's lab decimations ([`Ties`]): the eager strategy keeps
+/// OpenMesh's order ([`Ties::Storage`]), so that on the half-edges, which store what OpenMesh
+/// stores, it makes OpenMesh's collapses on the symmetric tori too and the pair gives one mesh;
+/// the lazy one, the lab's own, breaks ties by ids as `topolab decimate` does.
+const fn ties(strategy: Strategy) -> Ties {
+    match strategy {
+        Strategy::Eager => Ties::Storage,
+        Strategy::Lazy => Ties::Ids,
+    }
+}
 
 /// Timed rounds of the pair's turns (at least 2: one run gives the result, the last one the
 /// reconstruction).
@@ -73,7 +90,7 @@ fn ours<M: MeshEdit>(
     for run in 0..runs.max(2) {
         let mut m = M::from_soup(soup)?;
         let watch = Stopwatch::start(meter);
-        let d = decimate(&mut m, target, strategy)?;
+        let d = decimate_with_ties(&mut m, target, strategy, ties(strategy))?;
         times.push(watch.ns() * 1e-9);
         if run == 0 {
             m.garbage_collection();
@@ -243,7 +260,8 @@ fn pair_in_turns(
             let mut m =
                 <IndexHalfEdge as MeshTopology>::from_soup(soup).map_err(|e| e.to_string())?;
             let watch = Stopwatch::start(meter);
-            let d = decimate(&mut m, target, PAIR_STRATEGY).map_err(|e| e.to_string())?;
+            let d = decimate_with_ties(&mut m, target, PAIR_STRATEGY, ties(PAIR_STRATEGY))
+                .map_err(|e| e.to_string())?;
             let seconds = watch.ns() * 1e-9;
             let checksum = result_checksum(live_triangles(&m));
             if runs[i] == 1 {
@@ -372,6 +390,7 @@ fn render(h: &mut String, rows: &[DecimateRow]) {
         "The lab's decimater runs on the index and the pointer half-edge (of the editable structures, which its test suite all enrols, the two whose collapses are compared with OpenMesh's Decimater) with two strategies, both with OpenMesh's area-weighted plane quadrics, a heap of vertices keyed by their best half-edge collapse (the error rounded to <code>f32</code>), the removed vertex collapsed onto its neighbour (no optimal placement), the structure's collapse test (the link condition and OpenMesh's tetrahedron test), and boundary vertices kept. ",
         "<b>eager</b> rows run OpenMesh's <code>DecimaterT</code> with <code>ModQuadricT</code> step for step: every neighbour of a vertex tested for legality (<code>MeshEdit::check_collapse</code>, the structure's own test) before it is priced, only legal collapses heaped, one refused when it leaves the heap dropped, every neighbour of the removed vertex heaped again, no geometric test. ",
         "They and OpenMesh's Decimater run one algorithm, so their time ratio compares the structures: the Targets row is the index half-edge's eager decimation against OpenMesh. ",
+        "That includes the ties, which the generated tori have all over (their <code>f32</code> errors take a handful of values): the eager rows break them as OpenMesh does, by storage (of equal errors the first in the rotation from the vertex's stored half-edge, equal keys leaving the heap in the order of OpenMesh's <code>HeapT</code>), which the two half-edges share with OpenMesh, so that they make its collapses exactly. Another structure starts its rotations elsewhere, so <code>topolab decimate</code> and the lazy rows break ties by vertex ids instead, and every editable structure then gives the same mesh (tested on all of them); without ties the two rules agree. ",
         "<b>lazy</b> rows run the lab's own variant: collapses priced without a legality test and tested when they leave the heap (a refused vertex heaped again with its next-best neighbour), and a collapse that would flip or flatten a face skipped (OpenMesh's <code>ModNormalFlippingT</code> at 90°, which OpenMesh's row does not run): another algorithm, with fewer legality tests, shown beside but not a structure comparison. ",
         "OpenMesh's own Decimater and CGAL's <code>edge_collapse</code> with the Garland–Heckbert plane policies on a <code>Surface_mesh</code> (edges keyed, the new vertex at the quadric's minimiser) run in C++. ",
         "Time: the decimation alone, median of fresh builds (the build not timed); on the run's largest torus the index half-edge (eager) and OpenMesh take turns, round by round, and must give the same mesh, triangle for triangle, in every round (the report stops otherwise); the Targets table gives the median of their per-round ratios. ",

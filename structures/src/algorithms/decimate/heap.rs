@@ -4,22 +4,26 @@
 //! as `HeapT` does, equal keys included: an entry rises past a strictly larger parent only,
 //! sinks past a child that is not larger (the right child taken only when strictly smaller
 //! than the left), a key change or a removal sinks then rises, so that for the same
-//! operations equal keys leave in the same order as from OpenMesh's heap.
+//! operations equal keys leave in the same order as from OpenMesh's heap. With `IDS` the
+//! order is total instead, `(key, vertex id)`: no two entries are equal, so the vertex that
+//! leaves first is the smallest of the entries stored, whatever the order of the operations
+//! that stored them (the decimater's tie rule [`super::Ties::Ids`]).
 
 /// Marks a vertex that is not in the heap.
 const OUT: u32 = u32::MAX;
 
 /// An indexed binary min-heap of vertex ids; the keys live in the caller's array, passed to
-/// every call, so that the decimater keeps one array per vertex attribute.
+/// every call, so that the decimater keeps one array per vertex attribute. `IDS`: equal keys
+/// ordered by vertex id (a constant, so that each order compiles to its own comparison).
 #[derive(Clone, Debug, Default)]
-pub(super) struct VertexHeap {
+pub(super) struct VertexHeap<const IDS: bool> {
     /// The heap, vertex ids.
     items: Vec<u32>,
     /// Per vertex, its index in `items`, [`OUT`] when not stored.
     place: Vec<u32>,
 }
 
-impl VertexHeap {
+impl<const IDS: bool> VertexHeap<IDS> {
     /// An empty heap for vertices `0..n`.
     pub(super) fn new(n: usize) -> Self {
         Self {
@@ -72,8 +76,11 @@ impl VertexHeap {
         self.place[self.items[j] as usize] = j as u32;
     }
 
+    #[inline]
     fn less(&self, i: usize, j: usize, key: &[f32]) -> bool {
-        key[self.items[i] as usize] < key[self.items[j] as usize]
+        let (a, b) = (self.items[i], self.items[j]);
+        let (ka, kb) = (key[a as usize], key[b as usize]);
+        ka < kb || (IDS && ka == kb && a < b)
     }
 
     fn up(&mut self, mut i: usize, key: &[f32]) -> usize {
@@ -116,7 +123,7 @@ mod tests {
     #[test]
     fn pops_in_key_order_after_updates_and_removals() {
         let mut key = vec![5.0, 3.0, 8.0, 1.0, 9.0, 2.0];
-        let mut h = VertexHeap::new(key.len());
+        let mut h = VertexHeap::<false>::new(key.len());
         for v in 0..key.len() as u32 {
             h.upsert(v, &key);
         }
@@ -138,7 +145,7 @@ mod tests {
     #[test]
     fn equal_keys_leave_in_the_order_of_openmesh_heap() {
         let key = vec![1.0, 1.0, 1.0, 1.0];
-        let mut h = VertexHeap::new(key.len());
+        let mut h = VertexHeap::<false>::new(key.len());
         for v in 0..4 {
             h.upsert(v, &key);
         }
@@ -150,5 +157,33 @@ mod tests {
             out.push(v);
         }
         assert_eq!(out, vec![0, 1, 3, 2]);
+    }
+
+    /// With ids, equal keys leave by id whatever the order they came in and were changed in:
+    /// the same heap operations in two orders give one sequence.
+    #[test]
+    fn with_ids_equal_keys_leave_by_id_whatever_the_order_of_operations() {
+        let key = vec![2.0, 1.0, 1.0, 3.0, 1.0, 2.0, 1.0];
+        let order = |vs: &[u32]| {
+            let mut h = VertexHeap::<true>::new(key.len());
+            for &v in vs {
+                h.upsert(v, &key);
+            }
+            let mut out = Vec::new();
+            while let Some(v) = h.pop(&key) {
+                out.push(v);
+            }
+            out
+        };
+        let expected = vec![1, 2, 4, 6, 0, 5, 3];
+        assert_eq!(order(&[0, 1, 2, 3, 4, 5, 6]), expected);
+        assert_eq!(order(&[6, 5, 4, 3, 2, 1, 0]), expected);
+        assert_eq!(order(&[3, 6, 0, 4, 1, 5, 2]), expected);
+        // Without ids the order of insertion shows through.
+        let mut h = VertexHeap::<false>::new(key.len());
+        for v in [6, 4, 2, 1] {
+            h.upsert(v, &key);
+        }
+        assert_ne!(h.pop(&key), Some(1));
     }
 }

@@ -19,7 +19,7 @@
 //!   position); its error is `(Q_from + Q_to)(p_to)`, rounded to `f32` as OpenMesh's
 //!   priorities are. An error past `f32` (or NaN) is no candidate.
 //! - **Heap** (`DecimaterT`'s `HeapT`, `heap.rs`): vertices, each keyed by its best collapse;
-//!   the same sifting, so equal keys leave in the same order for the same operations.
+//!   the same sifting (equal keys: see **Ties** below).
 //! - **After a collapse** (`postprocess_collapse`): `Q_to += Q_from`, and every former
 //!   neighbour of `from` is heaped again, in the structure's rotation around `from`. The
 //!   other vertices keep their keys, even those whose best collapse goes onto `to` (its
@@ -34,8 +34,8 @@
 //!   tested for legality by [`MeshEdit::check_collapse`] (the tests of OpenMesh's
 //!   `is_collapse_legal` that concern an interior vertex: `is_collapse_ok`, with its link
 //!   condition, and the tetrahedron test; OpenMesh's locked and feature marks have no
-//!   counterpart here), and only a legal one is priced; the smallest error wins, the first of
-//!   equal ones (OpenMesh's strict `<`), and an error that round-off makes negative is
+//!   counterpart here), and only a legal one is priced; the smallest error wins (equal ones:
+//!   see **Ties** below), and an error that round-off makes negative is
 //!   skipped (OpenMesh keeps priorities `>= 0`). A vertex
 //!   with no legal collapse leaves the heap. When a vertex comes off the heap its collapse is
 //!   tested again (by [`MeshEdit::collapse_edge`]'s own refusal, the same tests) and, if
@@ -62,15 +62,20 @@
 //!   other boundary rule, at least two faces at `from`, always holds for an interior vertex
 //!   whose collapse passes `is_collapse_ok` (with two neighbours, its two triangles' third
 //!   corners would be one vertex, which `is_collapse_ok` refuses).
-//! - **Ties**: of equal errors around a vertex, OpenMesh keeps the first in the rotation
-//!   from its vertex's stored half-edge, and heaps a removed vertex's neighbours again in
-//!   that rotation; here the rotation starts at the structure's own stored half-edge. The
-//!   half-edges store the one OpenMesh does on the meshes tested: on closed tori, spheres and
-//!   a genus-2 plate, symmetric ones included (whose `f32` errors tie all over, and a flat
-//!   region's are 0), the eager strategy on both half-edges makes OpenMesh's collapses
-//!   exactly (`baselines/tests/decimate_openmesh.rs` in the `topolab-baselines` crate). A structure that starts
-//!   its rotations elsewhere may break such ties otherwise; without ties the start does not
-//!   matter.
+//! - **Ties** ([`Ties`]): of equal errors around a vertex, OpenMesh keeps the first in the
+//!   rotation from its vertex's stored half-edge, and its heap lets equal keys leave in an
+//!   order set by the order it heaped them in (a removed vertex's neighbours in that
+//!   rotation): an order of its storage, which another structure does not share. So
+//!   [`decimate`] and [`decimate_levels`] break ties by ids ([`Ties::Ids`]: of equal errors
+//!   the smallest neighbour id, of equal keys the smallest vertex id), and every structure
+//!   gives the same mesh (`registry/tests/decimate_agrees.rs`); without ties the two rules
+//!   agree. [`decimate_with_ties`] with [`Ties::Storage`] keeps OpenMesh's order, each
+//!   rotation starting at the structure's own stored half-edge. The half-edges store the one
+//!   OpenMesh does on the meshes tested: on closed tori, spheres and a genus-2 plate,
+//!   symmetric ones included (whose `f32` errors tie all over, and a flat region's are 0),
+//!   the eager strategy with storage ties on both half-edges makes OpenMesh's collapses
+//!   exactly (`baselines/tests/decimate_openmesh.rs` in the `topolab-baselines` crate),
+//!   which is what the report times against OpenMesh.
 //!
 //! CGAL's `Surface_mesh_simplification::edge_collapse` with the Garland–Heckbert policies
 //! differs more: it keys edges, not vertices, and places the new vertex at the quadric's
@@ -245,7 +250,8 @@ pub enum Strategy {
     /// As OpenMesh's `DecimaterT` with `ModQuadricT` alone: every neighbour of a vertex tested
     /// for legality before it is priced, only legal collapses heaped, one refused when it
     /// leaves the heap dropped, no geometric test. What the report times against OpenMesh's
-    /// own Decimater, so that the two run one algorithm and the ratio compares structures.
+    /// own Decimater (with [`Ties::Storage`], OpenMesh's order of ties), so that the two run
+    /// one algorithm and the ratio compares structures.
     Eager,
     /// The lab's: collapses priced without a legality test and tested when they leave the
     /// heap (a refused vertex heaped again with its next-best neighbour), and a collapse that
@@ -293,17 +299,38 @@ pub struct Decimation {
     pub levels: Vec<usize>,
 }
 
-/// The decimater's state: the per-vertex arrays of `DecimaterT` and `ModQuadricT`.
-struct Decimater {
+/// How the decimater orders collapses of equal error, around a vertex and in its heap.
+/// Symmetric meshes tie all over (a generated torus's `f32` errors come in a handful of
+/// values, a flat region's are all 0), so the rule decides which mesh comes out.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Ties {
+    /// By vertex ids, so that every structure gives the same mesh: of a vertex's collapses of
+    /// equal error the one onto the smallest neighbour id, and of vertices keyed equally the
+    /// smallest id leaves the heap first. What [`decimate`] and [`decimate_levels`] do.
+    #[default]
+    Ids,
+    /// By the structure's storage, as OpenMesh's Decimater: of equal errors around a vertex
+    /// the first in the structure's rotation from its stored half-edge, vertices keyed equally
+    /// in the order of OpenMesh's `HeapT` for the operations done (which depends on the order
+    /// the rotation heaps them in). On the two half-edges, which store the half-edge OpenMesh
+    /// does, the eager strategy so makes OpenMesh's own collapses on symmetric meshes too;
+    /// other structures start their rotations elsewhere and give other meshes. What the
+    /// report times against OpenMesh, through [`decimate_with_ties`].
+    Storage,
+}
+
+/// The decimater's state: the per-vertex arrays of `DecimaterT` and `ModQuadricT`; `IDS`:
+/// [`Ties::Ids`] (a constant, so that neither rule pays for the other in its loops).
+struct Decimater<const IDS: bool> {
     quadric: Vec<Quadric>,
     /// Per vertex, the best neighbour to collapse onto ([`u32::MAX`]: none).
     target: Vec<u32>,
     /// Per vertex, that collapse's error: the heap key.
     priority: Vec<f32>,
-    heap: VertexHeap,
+    heap: VertexHeap<IDS>,
 }
 
-impl Decimater {
+impl<const IDS: bool> Decimater<IDS> {
     /// Keys `v` by `best` (its collapse's error and target) and heaps it, or takes it out of
     /// the heap when it has none: the end of `DecimaterT::heap_vertex`.
     fn key(&mut self, v: u32, best: Option<(f32, u32)>) {
@@ -330,8 +357,9 @@ impl Decimater {
 
     /// The eager strategy's search (`DecimaterT::heap_vertex`): every neighbour `w` of `v`
     /// in the structure's rotation whose collapse [`MeshEdit::check_collapse`] allows, priced;
-    /// the smallest `f32` error wins, the first of equal ones, skipping what OpenMesh skips
-    /// (a negative error, NaN, `FLT_MAX` and beyond). A boundary `v` has none (module docs).
+    /// the smallest `f32` error wins, of equal ones the smallest `w` with ids, the first in
+    /// the rotation without, skipping what OpenMesh skips (a negative error, NaN, `FLT_MAX`
+    /// and beyond). A boundary `v` has none (module docs).
     fn cheapest_legal<M: MeshEdit>(&self, m: &M, v: VertexId) -> Option<(f32, u32)> {
         if m.is_boundary_vertex(v) {
             return None;
@@ -343,7 +371,8 @@ impl Decimater {
                 return;
             }
             let p = self.error(m, v, w) as f32;
-            if (0.0..f32::MAX).contains(&p) && best.is_none_or(|(b, _)| p < b) {
+            let better = |(b, bw): (f32, u32)| p < b || (IDS && p == b && w.0 < bw);
+            if (0.0..f32::MAX).contains(&p) && best.is_none_or(better) {
                 best = Some((p, w.0));
             }
         });
@@ -351,7 +380,8 @@ impl Decimater {
     }
 
     /// The lazy strategy's search: the neighbour `w` of `v` with the smallest
-    /// `(error, w)` after `after` when given, untested (a negative error counts as 0; past
+    /// `(error, w)` after `after` when given (an order by ids under either tie rule: the
+    /// refused vertex's next-best neighbour needs it), untested (a negative error counts as 0; past
     /// `f32` or NaN is no candidate). A boundary `v` has none (module docs).
     fn cheapest<M: MeshTopology>(
         &self,
@@ -429,7 +459,9 @@ fn wings<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> Option<(u32, u
 /// `ModNormalFlippingT` test at its default maximal deviation of 90° (the new normal's dot
 /// product with the old one must stay positive), which also refuses a face that would lose
 /// its area: the collapses quadric error alone allows on flat regions would otherwise leave
-/// zero-area triangles, which `topolab check` reports.
+/// zero-area triangles, which `topolab check` reports. Each normal is taken at `from`'s
+/// corner, whichever corner the structure lists first, so that its rounding, and the answer
+/// on a face that is all but flat, is the same on every structure.
 fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
     let p_to = m.position(to);
     let mut ok = true;
@@ -448,10 +480,11 @@ fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
         if k != 3 || c.contains(&to) {
             return;
         }
-        let p = c.map(|v| m.position(v));
-        let q = c.map(|v| if v == from { p_to } else { m.position(v) });
-        let before = (p[1] - p[0]).cross(p[2] - p[0]);
-        let after = (q[1] - q[0]).cross(q[2] - q[0]);
+        let i = c.iter().position(|&v| v == from).unwrap_or(0);
+        let (a, b) = (m.position(c[(i + 1) % 3]), m.position(c[(i + 2) % 3]));
+        let p_from = m.position(from);
+        let before = (a - p_from).cross(b - p_from);
+        let after = (a - p_to).cross(b - p_to);
         if before.dot(after) <= 0.0 || after.length() <= 1e-6 * before.length() {
             ok = false;
         }
@@ -460,16 +493,30 @@ fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
 }
 
 /// Decimates `m` by quadric error with `strategy` until at most `target_faces` live faces
-/// remain or no legal collapse is left (see the module docs for the algorithm). Deleted
-/// elements stay marked (call [`MeshEdit::garbage_collection`] to compact them;
-/// [`reconstruct`] needs them uncollected). Errors other than a collapse's refusal are
-/// returned as they come.
+/// remain or no legal collapse is left (see the module docs for the algorithm), ties broken
+/// by ids ([`Ties::Ids`]: the same mesh on every structure). Deleted elements stay marked
+/// (call [`MeshEdit::garbage_collection`] to compact them; [`reconstruct`] needs them
+/// uncollected). Errors other than a collapse's refusal are returned as they come.
 pub fn decimate<M: MeshEdit>(
     m: &mut M,
     target_faces: usize,
     strategy: Strategy,
 ) -> Result<Decimation> {
-    decimate_levels(m, &[target_faces], strategy, |_, _| {})
+    decimate_with_ties(m, target_faces, strategy, Ties::Ids)
+}
+
+/// [`decimate`] with the tie rule `ties`: [`Ties::Storage`] is OpenMesh's order, which the
+/// report's comparison with OpenMesh's Decimater runs.
+pub fn decimate_with_ties<M: MeshEdit>(
+    m: &mut M,
+    target_faces: usize,
+    strategy: Strategy,
+    ties: Ties,
+) -> Result<Decimation> {
+    match ties {
+        Ties::Ids => run::<M, true>(m, &[target_faces], strategy, |_, _| {}),
+        Ties::Storage => run::<M, false>(m, &[target_faces], strategy, |_, _| {}),
+    }
 }
 
 /// [`decimate`] through several targets in one run: the collapses go on, one heap and one set
@@ -479,8 +526,18 @@ pub fn decimate<M: MeshEdit>(
 /// with the mesh as far as it went. One run rather than one [`decimate`] per target, so that
 /// a level's collapses are those a single decimation to it would make: the quadrics keep
 /// what earlier collapses added to them. [`Decimation::levels`] says how many collapses were
-/// done at each level.
+/// done at each level. Ties by ids, as [`decimate`].
 pub fn decimate_levels<M: MeshEdit>(
+    m: &mut M,
+    targets: &[usize],
+    strategy: Strategy,
+    at_level: impl FnMut(&M, usize),
+) -> Result<Decimation> {
+    run::<M, true>(m, targets, strategy, at_level)
+}
+
+/// [`decimate_levels`] with ties by ids (`IDS`) or by storage.
+fn run<M: MeshEdit, const IDS: bool>(
     m: &mut M,
     targets: &[usize],
     strategy: Strategy,
@@ -494,7 +551,7 @@ pub fn decimate_levels<M: MeshEdit>(
         faces_before: faces,
         ..Decimation::default()
     };
-    let mut d = Decimater {
+    let mut d = Decimater::<IDS> {
         quadric: vertex_quadrics(m),
         target: vec![u32::MAX; n],
         priority: vec![-1.0; n],

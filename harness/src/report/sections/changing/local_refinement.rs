@@ -32,6 +32,7 @@ use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::adaptive::{refine_adaptive, Region, Request};
 use topolab_structures::families::regular_grid::NO_LOCAL_REFINEMENT;
 use topolab_structures::glam::DVec3;
+use topolab_structures::summary::plural;
 use topolab_structures::{EditOp, IndexHalfEdge, MeshEdit, MeshTopology, Operator, PolygonSoup};
 
 /// What the skip notes call this work.
@@ -208,8 +209,9 @@ pub(super) fn measure(
             }
         }
         eprintln!(
-            "topolab report: {WHAT} on {mesh}: {} structures, {runs} rounds",
-            runners.len()
+            "topolab report: {WHAT} on {mesh}: {} structures, {runs} round{}",
+            runners.len(),
+            plural(runs)
         );
         let rounds = in_rounds(&mut runners, runs, 2026, meter)
             .map_err(|e| ReportError::Measurement(format!("{WHAT} on {mesh} failed on {e}")))?;
@@ -264,8 +266,9 @@ pub(crate) fn render(h: &mut String, local: &LocalRefinement) {
                 r.seconds * 1e3,
                 r.ns_per_split_ci
                     .map(|[lo, hi]| format!(
-                        "interval {lo:.0} to {hi:.0} ns per split, median of {} rounds",
-                        r.runs
+                        "interval {lo:.0} to {hi:.0} ns per split, median of {} round{}",
+                        r.runs,
+                        plural(r.runs)
                     ))
                     .unwrap_or_default(),
                 r.ns_per_split,
@@ -278,10 +281,11 @@ pub(crate) fn render(h: &mut String, local: &LocalRefinement) {
         }
         let _ = write!(
             h,
-            "<tr><td class=l>{}</td><td>{}</td><td class=l>regular-grid, height-field</td><td colspan=6 class=l>cannot: {NO_LOCAL_REFINEMENT}. Refined everywhere instead, {} levels of uniform midpoint refinement bring the longest edge to {:.3e}: {} faces, against {} here ({:.1}×).</td></tr>",
+            "<tr><td class=l>{}</td><td>{}</td><td class=l>regular-grid, height-field</td><td colspan=6 class=l>cannot: {NO_LOCAL_REFINEMENT}. Refined everywhere instead, {} level{} of uniform midpoint refinement bring the longest edge to {:.3e}: {} faces, against {} here ({:.1}×).</td></tr>",
             c.mesh,
             c.faces,
             c.uniform_levels,
+            plural(c.uniform_levels),
             c.max_edge,
             c.uniform_faces,
             c.faces_after,

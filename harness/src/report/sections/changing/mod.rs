@@ -31,6 +31,7 @@ use std::fmt::Write;
 use topolab_baselines::openmesh::OpenMesh;
 use topolab_registry::{self as registry, EditVisitor};
 use topolab_structures::algorithms::changing::Changing;
+use topolab_structures::summary::plural;
 #[cfg(any(has_openmesh, has_cgal))]
 use topolab_structures::MeshTopology;
 use topolab_structures::{Cost, EditOp, MeshEdit, Operator, PolygonSoup};
@@ -283,9 +284,10 @@ fn measure(
                 declared_by.push(declared);
             }
             eprintln!(
-                "topolab report: {} on {mesh}: {} structures, {runs} rounds",
+                "topolab report: {} on {mesh}: {} structures, {runs} round{}",
                 w.name(),
-                runners.len()
+                runners.len(),
+                plural(runs)
             );
             let rounds = in_rounds(&mut runners, runs, 2026, meter).map_err(|e| {
                 ReportError::Measurement(format!("{} on {mesh} failed on {e}", w.name()))
@@ -337,8 +339,9 @@ pub(crate) fn render(h: &mut String, rows: &[ChangingRow]) {
             r.seconds * 1e3,
             r.ns_per_face_ci
                 .map(|[lo, hi]| format!(
-                    "interval {lo:.1} to {hi:.1} ns per face, median of {} rounds",
-                    r.runs
+                    "interval {lo:.1} to {hi:.1} ns per face, median of {} round{}",
+                    r.runs,
+                    plural(r.runs)
                 ))
                 .unwrap_or_default(),
             r.ns_per_face,
