@@ -89,6 +89,9 @@ pub fn read_bytes(bytes: &[u8], format: Format) -> Result<PolygonSoup> {
 /// problem of a file (`topolab check`) instead of stopping at the first.
 pub fn read_raw(path: &Path) -> Result<RawSoup> {
     let format = format_of(path)?;
+    if format == Format::Ply {
+        return ply::read_path(path);
+    }
     let bytes = std::fs::read(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
@@ -119,13 +122,21 @@ pub fn read_raw(path: &Path) -> Result<RawSoup> {
 /// coordinates. What a command does with the mesh comes on top (measured on a sample and
 /// scaled by elements: `topolab`'s limits).
 pub fn read_peak_bound(format: Format, head: &[u8], file_bytes: u64) -> u64 {
-    let soup = match format {
-        Format::Obj | Format::Off | Format::Stl => file_bytes.saturating_mul(4),
-        Format::Ply => ply::soup_bound(head, file_bytes)
-            .unwrap_or(u64::MAX)
-            .min(file_bytes.saturating_mul(8)),
+    let (soup, whole) = match format {
+        Format::Obj | Format::Off | Format::Stl => (file_bytes.saturating_mul(4), true),
+        Format::Ply => match ply::soup_bound(head, file_bytes) {
+            Some((soup, whole)) => (soup.min(file_bytes.saturating_mul(8)), whole),
+            None => (file_bytes.saturating_mul(8), true),
+        },
     };
-    file_bytes.saturating_add(soup).saturating_add(4096)
+    // A binary PLY's body is read a window at a time: its header, read by doubling, is in
+    // `head` (twice it, at most, and the window).
+    let held = if whole {
+        file_bytes
+    } else {
+        (2 * head.len() as u64 + 64 * 1024).min(file_bytes)
+    };
+    held.saturating_add(soup).saturating_add(4096)
 }
 
 /// Reads a mesh from memory as written, without [`PolygonSoup::check`]. Fails only on what
