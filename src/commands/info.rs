@@ -3,7 +3,7 @@
 
 use super::info_text::summary_lines;
 use crate::input::{
-    invalid_mesh_hint, is_che_file, load_mesh_consumed, refuse_empty, unknown_structure, Failure,
+    invalid_mesh_hint, is_che_file, load_mesh, refuse_empty, unknown_structure, Failure,
 };
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
@@ -48,10 +48,11 @@ pub fn info_through(spec: &str, structure: Option<&str>, json: bool) -> Result<S
     if !registry::NAMES.contains(&structure) {
         return Err(unknown_structure(structure));
     }
-    // The work holds the mesh (a copy of the sample, measured with it) until the structure is
-    // built.
-    let soup = load_mesh_consumed(spec, |sample| {
-        summary_of(structure, sample);
+    // The mesh is counted exactly (its soup), and again in the work's peak measured on the
+    // sample, whose copy the work takes: an estimate above the peak by the soup, as the mesh
+    // generated (a quad grid's faces and corners) may weigh more an element than the sample's.
+    let soup = load_mesh(spec, |sample| {
+        summary_of(structure, sample.clone());
         0
     })?;
     refuse_empty(spec, &soup)?;
