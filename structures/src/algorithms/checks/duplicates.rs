@@ -122,7 +122,11 @@ pub(super) fn duplicate_vertices(
     let mut distinct = 0;
     {
         // `+ 0.0` makes -0 and +0 one position.
-        let key = |v: u32| (positions[v as usize] + DVec3::ZERO).to_array().map(f64::to_bits);
+        let key = |v: u32| {
+            (positions[v as usize] + DVec3::ZERO)
+                .to_array()
+                .map(f64::to_bits)
+        };
         let finite_vertices = finite.iter().filter(|&&ok| ok).count();
         let mut first_at: HashTable<u32> = HashTable::with_capacity(finite_vertices);
         for v in (0..n as u32).filter(|&v| finite[v as usize]) {

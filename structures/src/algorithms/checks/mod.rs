@@ -441,8 +441,11 @@ fn inspect(raw: &RawSoup, options: &Options) -> Inspected {
             && firsts.first_of(soup, j, &mut key, &mut scratch) == Some(j as u32)
     };
     let count = (0..soup.num_faces()).filter(|&j| analysed(j)).count();
-    let kept = (count < soup.num_faces())
-        .then(|| (0..soup.num_faces() as u32).filter(|&j| analysed(j as usize)).collect());
+    let kept = (count < soup.num_faces()).then(|| {
+        (0..soup.num_faces() as u32)
+            .filter(|&j| analysed(j as usize))
+            .collect()
+    });
     Inspected {
         found,
         kept,
