@@ -215,7 +215,7 @@ pub fn read_bytes(file_bytes: u64) -> u64 {
 
 /// The peak of reading the mesh file `path` of `file_bytes` bytes, bounded from its format and
 /// its first 64 KiB (its header): [`topolab_structures::io::read_peak_bound`], at most 5 times
-/// the file (9 for a binary PLY of one-byte coordinates). A file whose format is not known by
+/// the file (8 for a binary PLY of one-byte coordinates, read a window at a time). A file whose format is not known by
 /// its name counts as the largest.
 pub fn read_mesh_bytes(path: &std::path::Path, file_bytes: u64) -> u64 {
     use std::io::Read;

@@ -147,14 +147,29 @@ fn estimates_cover_the_peak_of_each_command_without_excess() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The fixed part of the memory bound on hostile files: what a command allocates whatever the
+/// file (its sample mesh measured before the work, the readers' windows, the report's text).
+const ALLOWANCE: f64 = 1.5e6;
+
 /// Runs `command` refused (no memory available) for its estimate, then for real for its peak:
 /// the estimate covers the peak, and the peak stays within `factor` times the file's `bytes`
-/// plus a fixed allowance. An upper bound, not a measurement: no [`SLACK`] on how far above.
+/// plus [`ALLOWANCE`]. An upper bound, not a measurement: no [`SLACK`] on how far above.
 ///
 /// A command may ask twice (reading the file, then the work on the mesh and the mesh itself):
 /// each refusal states its own estimate, and the next run is given the largest so far, until
 /// none refuses; the estimate is the largest, each asked of the memory available on its own.
 fn covers<T>(what: &str, bytes: u64, factor: f64, command: impl Fn() -> Result<T, Failure>) {
+    covers_estimated(what, bytes, factor, true, command)
+}
+
+/// [`covers`], the estimate held to cover the peak only when `estimate_covers`.
+fn covers_estimated<T>(
+    what: &str,
+    bytes: u64,
+    factor: f64,
+    estimate_covers: bool,
+    command: impl Fn() -> Result<T, Failure>,
+) {
     let mut estimated = 0.0f64;
     loop {
         let available = if estimated > 0.0 {
@@ -189,18 +204,38 @@ fn covers<T>(what: &str, bytes: u64, factor: f64, command: impl Fn() -> Result<T
         peak / bytes as f64
     );
     assert!(
-        estimated + 0.05e6 >= peak,
+        !estimate_covers || estimated + 0.05e6 >= peak,
         "{what}: estimate {estimated} below the peak {peak}"
     );
     assert!(
-        peak <= factor * bytes as f64 + 4e6,
-        "{what}: peak {peak}, more than {factor} times the file's {bytes} bytes"
+        peak <= factor * bytes as f64 + ALLOWANCE,
+        "{what}: peak {peak}, more than {factor} times the file's {bytes} bytes and {ALLOWANCE}"
     );
 }
 
-/// The hostile files of issue 52, a few MB each, through `check`, `info` and `convert`: each
-/// command's estimate covers its peak, and the peak stays within the factor of the file's size
-/// `docs/limits.md` states (the readers' bound, `read_peak_bound`, and the work on top).
+/// The bound of `docs/limits.md` on hostile files: 4 times the file's size (and
+/// [`ALLOWANCE`]), but where a command holds the mesh and a structure or analysis of it that
+/// outweighs a file of the fewest bytes an element (binary PLY of separate triangles, 49 bytes
+/// one), or builds a CHE of a vertex of many fans before refusing it. Each exception is the
+/// measured factor, rounded up to the next half.
+fn bound(kind: &str, command: &str) -> f64 {
+    match (kind, command) {
+        ("separate.ply", "info") => 6.0,
+        ("separate.ply", "info --structure che-l2" | "check" | "repair") => 5.0,
+        ("fans.obj", "info --structure che-l2") => 8.0,
+        ("fans.obj", "repair") => 6.0,
+        _ => 4.0,
+    }
+}
+
+/// A vertex of many fans (`fans.obj`) weighs more an element than the sample mesh the
+/// estimates scale (a grid, each vertex one fan): level 2 builds its arrays for it before it
+/// refuses it, the repair splits it into a vertex a fan. There the estimate falls short of the
+/// peak (left open, docs/limits.md); the bound on the peak holds all the same.
+///
+/// The hostile files of issue 52, of a few MB, through every command that reads a mesh file
+/// (`info`, `info --structure che-l2`, `check`, `convert`, `repair`): each command's estimate
+/// covers its peak, and the peak stays within the bound `docs/limits.md` states ([`bound`]).
 fn hostile_files(dir: &std::path::Path) {
     use topolab::commands::check::{report, CheckArgs};
     use topolab::commands::convert::convert;
@@ -209,19 +244,39 @@ fn hostile_files(dir: &std::path::Path) {
         std::fs::write(&path, &bytes).unwrap();
         (path, bytes.len() as u64)
     };
-    // 1,000,000 faces without corners: 1.24 GB for 4.9 MB of them, when every finding was kept.
-    let mut ply = b"ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n\
-        property float y\nproperty float z\nelement face 1000000\n\
-        property list uchar int vertex_indices\nend_header\n"
-        .to_vec();
-    ply.resize(ply.len() + 1_000_000, 0);
-    let (faces, faces_bytes) = write("faces.ply", ply);
-    // 100,000 distinct unknown statement kinds.
-    let mut unknown = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    for i in 0..100_000 {
-        unknown += &format!("kind{i} 1\n");
+    let binary_ply = |vertices: usize, faces: usize, body: Vec<u8>| {
+        let mut ply = format!(
+            "ply\nformat binary_little_endian 1.0\nelement vertex {vertices}\n\
+             property float x\nproperty float y\nproperty float z\nelement face {faces}\n\
+             property list uchar int vertex_indices\nend_header\n"
+        )
+        .into_bytes();
+        ply.extend(body);
+        ply
+    };
+    let triangles = |text: &mut String, n: usize| {
+        for t in 0..n {
+            *text += &format!("f {} {} {}\n", 3 * t + 1, 3 * t + 2, 3 * t + 3);
+        }
+    };
+    let mut files = Vec::new();
+    // 3,000,000 faces without corners: 1.24 GB for 4.9 MB of them, when every finding was
+    // kept; 5 times the file when the reader held the file besides the faces' offsets.
+    files.push(write(
+        "faces.ply",
+        binary_ply(0, 3_000_000, vec![0; 3_000_000]),
+    ));
+    // 60,000 distinct vertices with coordinates of 1e10 and more, in separate triangles.
+    let mut far = String::new();
+    for i in 0..60_000u64 {
+        far += &format!(
+            "v {:?} {:?} 3e12\n",
+            1e10 + 4096.0 * i as f64,
+            2e10 + (i % 7) as f64
+        );
     }
-    let (unknown, unknown_bytes) = write("unknown.obj", unknown.into_bytes());
+    triangles(&mut far, 20_000);
+    files.push(write("far.obj", far.into_bytes()));
     // 60,000 distinct vertices a few ulps apart, in separate triangles.
     let mut ulps = String::new();
     for i in 0..60_000u64 {
@@ -231,32 +286,72 @@ fn hostile_files(dir: &std::path::Path) {
             i % 3
         );
     }
-    for t in 0..20_000 {
-        ulps += &format!("f {} {} {}\n", 3 * t + 1, 3 * t + 2, 3 * t + 3);
+    triangles(&mut ulps, 20_000);
+    files.push(write("ulps.obj", ulps.into_bytes()));
+    // 40,000 triangles sharing vertex 1, each a fan of its own.
+    let mut fans = String::from("v 0 0 0\n");
+    for i in 0..40_000 {
+        fans += &format!("v {i} 1 0\nv {i} 2 0\n");
     }
-    let (ulps, ulps_bytes) = write("ulps.obj", ulps.into_bytes());
+    for i in 0..40_000 {
+        fans += &format!("f 1 {} {}\n", 2 * i + 2, 2 * i + 3);
+    }
+    files.push(write("fans.obj", fans.into_bytes()));
+    // 100,000 distinct unknown statement kinds.
+    let mut unknown = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    for i in 0..100_000 {
+        unknown += &format!("kind{i} 1\n");
+    }
+    files.push(write("unknown.obj", unknown.into_bytes()));
+    // 40,000 separate triangles in binary PLY: 49 bytes a triangle, the densest file.
+    let mut body = Vec::new();
+    for i in 0..40_000u32 {
+        for p in [[i, 0, 0], [i, 1, 0], [i, 0, 1]] {
+            body.extend(p.iter().flat_map(|&c| (c as f32).to_le_bytes()));
+        }
+    }
+    for i in 0..40_000u32 {
+        body.push(3);
+        body.extend(
+            [3 * i, 3 * i + 1, 3 * i + 2]
+                .iter()
+                .flat_map(|c| c.to_le_bytes()),
+        );
+    }
+    files.push(write("separate.ply", binary_ply(120_000, 40_000, body)));
+    // A file of NUL bytes, read as OFF and as OBJ.
+    files.push(write("nul.off", vec![0; 2_000_000]));
+    files.push(write("nul.obj", vec![0; 2_000_000]));
     let out = dir.join("hostile-out.obj");
-    for (path, bytes) in [
-        (&faces, faces_bytes),
-        (&unknown, unknown_bytes),
-        (&ulps, ulps_bytes),
-    ] {
+    for (path, bytes) in &files {
+        let bytes = *bytes;
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let spec = path.to_str().unwrap();
         let args = CheckArgs {
             file: path.clone(),
             json: false,
             tolerance: 1e-9,
             planarity_tolerance: 1e-6,
         };
-        // The file and the faces' offsets (4 bytes for 1) dominate; checks add a few bytes a
-        // face; 9 times is the readers' bound for any file.
-        covers(&format!("check {name}"), bytes, 9.0, || report(&args));
-        let spec = path.to_str().unwrap();
-        covers(&format!("info {name}"), bytes, 9.0, || {
-            info::info(spec, "index-half-edge", false)
+        let repair = repair::RepairArgs {
+            file: spec.into(),
+            out: dir.join("hostile-repaired.obj"),
+            skip: Vec::new(),
+        };
+        let what = |command: &str| (format!("{command} {name}"), bound(&name, command));
+        let (w, f) = what("check");
+        covers(&w, bytes, f, || report(&args));
+        let (w, f) = what("info");
+        covers(&w, bytes, f, || info::info(spec, "index-half-edge", false));
+        let (w, f) = what("info --structure che-l2");
+        covers_estimated(&w, bytes, f, name != "fans.obj", || {
+            info::info(spec, "che-l2", false)
         });
-        covers(&format!("convert {name}"), bytes, 9.0, || {
-            convert(spec, &out, None, None, false)
+        let (w, f) = what("convert");
+        covers(&w, bytes, f, || convert(spec, &out, None, None, false));
+        let (w, f) = what("repair");
+        covers_estimated(&w, bytes, f, name != "fans.obj", || {
+            repair::repair_file(&repair)
         });
     }
 }

@@ -76,8 +76,9 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
                     soup,
                     ..RawSoup::default()
                 };
+                // The checks take the mesh read, as they take the sample here.
                 let ((), peak) = limits::peak_of(|| {
-                    checks::check(&sample, options);
+                    checks::check_owned(sample, options);
                 });
                 limits::scale(peak, n, elements)
             })
@@ -114,7 +115,7 @@ pub fn report(args: &CheckArgs) -> Result<Report, Failure> {
         ..Options::default()
     };
     let raw = read(args, &options)?;
-    Ok(checks::check(&raw, &options))
+    Ok(checks::check_owned(raw, &options))
 }
 
 /// Runs the check, prints the report; returns the exit code.

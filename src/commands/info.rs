@@ -11,18 +11,20 @@ use std::path::Path;
 use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
-struct InfoVisit<'a>(&'a PolygonSoup);
-impl StructureVisitor for InfoVisit<'_> {
+/// Takes the mesh: it is dropped once the structure is built, before the summary's work.
+struct InfoVisit(PolygonSoup);
+impl StructureVisitor for InfoVisit {
     type Output = Result<Summary, Error>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
-        let m = M::from_soup(self.0)?;
+        let m = M::from_soup(&self.0)?;
+        drop(self.0);
         Ok(summarize(&m))
     }
 }
 
 /// What `info` computes on a mesh: the structure's summary, or why it cannot store the mesh.
 /// `None` for an unknown structure.
-fn summary_of(structure: &str, soup: &PolygonSoup) -> Option<Result<Summary, Error>> {
+fn summary_of(structure: &str, soup: PolygonSoup) -> Option<Result<Summary, Error>> {
     registry::visit(structure, InfoVisit(soup))
 }
 
@@ -46,12 +48,15 @@ pub fn info_through(spec: &str, structure: Option<&str>, json: bool) -> Result<S
     if !registry::NAMES.contains(&structure) {
         return Err(unknown_structure(structure));
     }
+    // The mesh is counted exactly (its soup), and again in the work's peak measured on the
+    // sample, whose copy the work takes: an estimate above the peak by the soup, as the mesh
+    // generated (a quad grid's faces and corners) may weigh more an element than the sample's.
     let soup = load_mesh(spec, |sample| {
-        summary_of(structure, sample);
+        summary_of(structure, sample.clone());
         0
     })?;
     refuse_empty(spec, &soup)?;
-    let summary = summary_of(structure, &soup).ok_or_else(|| unknown_structure(structure))?;
+    let summary = summary_of(structure, soup).ok_or_else(|| unknown_structure(structure))?;
     let summary = summary.map_err(|e| Failure {
         message: format!(
             "{structure} cannot store {spec}: {e}{}",

@@ -49,7 +49,8 @@
 // Unsafe code lives only where `allow(unsafe_code)` marks it: the pointer half-edge's links
 // (real pointers are that structure's point), the CHE's unchecked walk (`families::che::fan`,
 // and the two places that promise its ranges: `CheL2::fan`, `MappedChe::fan`), and the mapping
-// of `.che` files (`families::che::mapped::map`).
+// of `.che` files (`families::che::mapped::map`); and the growth tests' thread CPU clock
+// (`testing::growth`).
 #![deny(unsafe_code)]
 
 pub mod algorithms;

@@ -363,6 +363,60 @@ fn the_raw_reader_keeps_what_the_check_refuses() {
     );
 }
 
+/// A binary PLY file is read a window of its body at a time (so that reading holds the soup,
+/// not the file besides): file by file, what it reads, refuses or skips is what the reader of
+/// the same bytes in memory does, on bodies of several windows, cut anywhere, with trailing
+/// bytes, and with a header longer than the first read.
+#[test]
+fn a_binary_ply_read_from_its_file_a_window_at_a_time_reads_as_in_memory() {
+    let dir = std::env::temp_dir().join(format!("topolab-io-ply-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("mesh.ply");
+    // 60,000 faces of a torus: about 1.4 MB of body, some 22 windows of 64 KiB.
+    let soup = meshes::torus(300, 100);
+    let mut long_header = binary_ply(&soup, false);
+    let comments = "comment a long header\n".repeat(8000);
+    let at = long_header
+        .windows(7)
+        .position(|w| w == b"element")
+        .unwrap();
+    long_header.splice(at..at, comments.bytes());
+    for big_endian in [false, true] {
+        let whole = binary_ply(&soup, big_endian);
+        let mut trailing = whole.clone();
+        trailing.extend_from_slice(b"\n\0\0");
+        let cuts = [
+            whole.len() - 1,
+            whole.len() - 5,
+            whole.len() / 2,
+            70_000,
+            200,
+        ];
+        let files = [whole.clone(), trailing, long_header.clone()]
+            .into_iter()
+            .chain(cuts.iter().map(|&n| whole[..n].to_vec()));
+        for bytes in files {
+            std::fs::write(&path, &bytes).unwrap();
+            let from_file = io::read_raw(&path);
+            let in_memory = read_bytes_raw(&bytes, Format::Ply);
+            match (&from_file, &in_memory) {
+                (Ok(a), Ok(b)) => assert!(a == b, "{} bytes read differently", bytes.len()),
+                (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string()),
+                _ => panic!("{} bytes: read from one, refused by the other", bytes.len()),
+            }
+        }
+    }
+    // The long header's file holds the mesh (its float coordinates), as written.
+    std::fs::write(&path, &long_header).unwrap();
+    let read = io::read(&path).unwrap();
+    assert_eq!(
+        (read.num_vertices(), read.num_faces()),
+        (soup.num_vertices(), soup.num_faces())
+    );
+    assert!(read.faces().eq(soup.faces()));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 #[test]
 fn files_are_read_by_extension() {
     let dir = std::env::temp_dir().join(format!("topolab-io-{}", std::process::id()));

@@ -24,7 +24,7 @@ pub fn measurable(
     let Some(why) = refusal(&soup) else {
         return (soup, None);
     };
-    let Repaired { soup: fixed, log } = repair(&soup, &Step::ALL);
+    let Repaired { soup: fixed, log } = repair(soup.clone(), &Step::ALL);
     match refusal(&fixed) {
         None => {
             notes.push(format!(

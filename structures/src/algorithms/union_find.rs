@@ -36,6 +36,15 @@ impl UnionFind {
         (root, parity)
     }
 
+    /// Per element its root and its parity relative to the root: the forest itself, each
+    /// path compressed to one link.
+    pub(crate) fn into_roots(mut self) -> (Vec<u32>, Vec<bool>) {
+        for x in 0..self.parent.len() as u32 {
+            self.find(x);
+        }
+        (self.parent, self.flip)
+    }
+
     /// Joins `a` and `b` with relative parity `flip`; `false` if they were already joined
     /// with the other parity (a contradiction).
     pub(crate) fn union(&mut self, a: u32, b: u32, flip: bool) -> bool {

@@ -21,6 +21,7 @@ fn random_soups() -> impl proptest::strategy::Strategy<Value = PolygonSoup> {
 }
 
 pub(crate) use buckets::bucket_step_budget;
+pub(crate) use fans::find_root;
 
 /// Positions plus polygons of any size k >= 3, stored as one flat index buffer with offsets.
 ///
@@ -281,6 +282,37 @@ impl PolygonSoup {
         out
     }
 
+    /// Keeps the faces `keep` says to keep, in their order, in place: the index buffer and
+    /// the offsets are compacted, nothing is allocated (the vertex list is unchanged). `keep`
+    /// is asked once a face, in order.
+    pub fn retain_faces(&mut self, mut keep: impl FnMut(usize) -> bool) {
+        let (mut faces, mut corners) = (0, 0);
+        for j in 0..self.num_faces() {
+            // Face j starts at or after where it is written (faces <= j). offsets[faces] is
+            // written after offsets[j + 1] is read, and is offsets[j + 1] itself, unchanged,
+            // until a face is dropped; then faces <= j, below any offset read later.
+            let (start, end) = (self.offsets[j] as usize, self.offsets[j + 1] as usize);
+            if keep(j) {
+                self.indices.copy_within(start..end, corners);
+                corners += end - start;
+                faces += 1;
+                self.offsets[faces] = corners as u32;
+            }
+        }
+        self.indices.truncate(corners);
+        self.offsets.truncate(faces + 1);
+    }
+
+    /// The corners of face `f`, to change in place (the repair's flips and splits).
+    pub(crate) fn face_mut(&mut self, f: usize) -> &mut [u32] {
+        &mut self.indices[self.offsets[f] as usize..self.offsets[f + 1] as usize]
+    }
+
+    /// The flat index buffer, to change in place (the repair renames vertices).
+    pub(crate) fn indices_mut(&mut self) -> &mut [u32] {
+        &mut self.indices
+    }
+
     /// The same mesh with vertices renamed: old vertex `i` becomes `perm[i]`.
     pub fn relabel_vertices(&self, perm: &[u32]) -> Self {
         assert_eq!(perm.len(), self.num_vertices());
@@ -313,6 +345,10 @@ impl PolygonSoup {
             + self.offsets.capacity() * 4
     }
 }
+
+/// No corner: the missing second corner of a boundary edge, or a corner the analysis did not
+/// reach.
+const NO_CORNER: u32 = u32::MAX;
 
 /// The undirected edges of a checked soup with each edge's one or two corners: found in one
 /// pass by buckets when every edge has at most two corners running opposite ways, by sorting
@@ -362,7 +398,11 @@ impl Connectivity {
     }
 
     /// [`Connectivity::analyse`] by sorting the corners by vertex pair, O(c log c): the
-    /// analysis that reports problems, and the oracle the buckets are tested against.
+    /// analysis that reports problems, and the oracle the buckets are tested against. The
+    /// corners' ids are sorted (4 bytes a corner), each one's edge read from the soup when
+    /// compared, and the edges are numbered in a pass over the corners in order (each edge by
+    /// its smallest corner, which the sort puts first): at its peak 12 bytes a corner, the
+    /// corners' faces and edges included.
     fn analyse_by_sorting(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
         let nc = soup.num_corners();
         let mut corner_face = Vec::with_capacity(nc);
@@ -370,30 +410,31 @@ impl Connectivity {
             corner_face.extend(std::iter::repeat_n(j as u32, f.len()));
         }
         let next = |c: usize| soup.next_corner(c, corner_face[c] as usize);
-        // Sort key: (min vertex, max vertex) in the high bits, corner in the low bits.
-        let mut keys: Vec<(u64, u32)> = (0..nc)
-            .map(|c| {
-                let (a, b) = (soup.indices[c], soup.indices[next(c)]);
-                let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-                (((lo as u64) << 32) | hi as u64, c as u32)
-            })
-            .collect();
-        keys.sort_unstable();
-        let mut edge_corners: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
-        // Per edge whose corners are not one corner or one twin pair: the edge and its corners.
-        let mut unpaired: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+        // Sort key: (min vertex, max vertex) in the high bits, then the corner.
+        let edge = |c: usize| {
+            let (a, b) = (soup.indices[c], soup.indices[next(c)]);
+            let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+            ((lo as u64) << 32) | hi as u64
+        };
+        let mut sorted: Vec<u32> = (0..nc as u32).collect();
+        sorted.sort_unstable_by_key(|&c| (edge(c as usize), c));
+        // Per corner, first the smallest corner of its edge, then (below) the edge's number.
+        let mut corner_edge = vec![NO_CORNER; nc];
         let mut problems = Vec::new();
+        let mut edges = 0;
         let mut i = 0;
-        while i < keys.len() && (problems.is_empty() || !stop_at_first) {
+        while i < nc && (problems.is_empty() || !stop_at_first) {
+            let key = edge(sorted[i] as usize);
             let mut j = i + 1;
-            while j < keys.len() && keys[j].0 == keys[i].0 {
+            while j < nc && edge(sorted[j] as usize) == key {
                 j += 1;
             }
-            let (a, b) = ((keys[i].0 >> 32) as u32, keys[i].0 as u32);
-            let problem = match j - i {
+            let (a, b) = ((key >> 32) as u32, key as u32);
+            let group = &sorted[i..j];
+            let problem = match group.len() {
                 1 => None,
                 2 => {
-                    let (c0, c1) = (keys[i].1 as usize, keys[i + 1].1 as usize);
+                    let (c0, c1) = (group[0] as usize, group[1] as usize);
                     (soup.indices[c0] == soup.indices[c1]).then(|| Error::InconsistentOrientation {
                         a: soup.indices[c0],
                         b: soup.indices[next(c0)],
@@ -402,44 +443,46 @@ impl Connectivity {
                     })
                 }
                 _ => {
-                    let mut faces: Vec<u32> = keys[i..j]
-                        .iter()
-                        .map(|k| corner_face[k.1 as usize])
-                        .collect();
+                    let mut faces: Vec<u32> =
+                        group.iter().map(|&c| corner_face[c as usize]).collect();
                     faces.sort_unstable();
                     Some(Error::NonManifoldEdge { a, b, faces })
                 }
             };
-            match j - i {
-                1 => edge_corners.push([keys[i].1, u32::MAX]),
-                2 => edge_corners.push([keys[i].1, keys[i + 1].1]),
-                _ => {
-                    unpaired.push((edge_corners.len(), i..j));
-                    edge_corners.push([keys[i].1, u32::MAX]);
-                }
+            for &c in group {
+                corner_edge[c as usize] = group[0];
             }
+            edges += 1;
             problems.extend(problem);
             i = j;
         }
-        // Number edges by first appearance (smallest corner).
-        let mut order: Vec<u32> = (0..edge_corners.len() as u32).collect();
-        order.sort_unstable_by_key(|&e| edge_corners[e as usize][0]);
-        let mut renumber = vec![0u32; order.len()];
-        for (new, &old) in order.iter().enumerate() {
-            renumber[old as usize] = new as u32;
-        }
-        let mut corner_edge = vec![u32::MAX; nc];
-        for (old, cs) in edge_corners.iter().enumerate() {
-            for c in cs.iter().filter(|&&c| c != u32::MAX) {
-                corner_edge[*c as usize] = renumber[old];
+        drop(sorted);
+        // Number edges by first appearance (smallest corner): a corner that is its edge's
+        // smallest opens the edge, a later one is its other side; a third marks it
+        // non-manifold (no twin: all its corners map to it, `edge_corners` holds the first).
+        const THIRD: u32 = NO_CORNER - 1;
+        let mut edge_corners: Vec<[u32; 2]> = Vec::with_capacity(edges);
+        for c in 0..nc {
+            let first = corner_edge[c];
+            if first == NO_CORNER {
+                // Past the first problem, when the analysis stopped there.
+                continue;
+            }
+            if first as usize == c {
+                corner_edge[c] = edge_corners.len() as u32;
+                edge_corners.push([c as u32, NO_CORNER]);
+            } else {
+                let e = corner_edge[first as usize];
+                corner_edge[c] = e;
+                let other = &mut edge_corners[e as usize][1];
+                *other = if *other == NO_CORNER { c as u32 } else { THIRD };
             }
         }
-        for (old, range) in unpaired {
-            for k in &keys[range] {
-                corner_edge[k.1 as usize] = renumber[old];
+        for pair in &mut edge_corners {
+            if pair[1] == THIRD {
+                pair[1] = NO_CORNER;
             }
         }
-        let edge_corners = order.iter().map(|&e| edge_corners[e as usize]).collect();
         let connectivity = Self {
             edge_corners,
             corner_edge,

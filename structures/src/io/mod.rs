@@ -89,6 +89,9 @@ pub fn read_bytes(bytes: &[u8], format: Format) -> Result<PolygonSoup> {
 /// problem of a file (`topolab check`) instead of stopping at the first.
 pub fn read_raw(path: &Path) -> Result<RawSoup> {
     let format = format_of(path)?;
+    if format == Format::Ply {
+        return ply::read_path(path);
+    }
     let bytes = std::fs::read(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
@@ -98,7 +101,8 @@ pub fn read_raw(path: &Path) -> Result<RawSoup> {
 
 /// An upper bound on the heap bytes reading a file of `file_bytes` bytes allocates at its
 /// peak, given its first bytes `head` (64 KiB are enough for any header the lab writes or
-/// meets): the file's bytes, which the readers hold whole, and the soup, 24 bytes a vertex, 4
+/// meets): the file's bytes, which the readers hold whole but for a binary PLY's body (read a
+/// window at a time: its header and the window instead), and the soup, 24 bytes a vertex, 4
 /// a corner and 4 a face. How large the soup can be follows from the fewest bytes each element
 /// takes in the file, and from what is reserved before the elements are read:
 ///
@@ -115,17 +119,25 @@ pub fn read_raw(path: &Path) -> Result<RawSoup> {
 ///   offset, up to three new vertices of 24 bytes (their array doubling as it grows) and the
 ///   welding table's slots (4 bytes each, at most half full): at most 4 times.
 ///
-/// So reading takes at most 5 times the file's size, 9 times for a binary PLY of one-byte
-/// coordinates. What a command does with the mesh comes on top (measured on a sample and
+/// So reading takes at most 5 times the file's size; a binary PLY at most 4, 8 for one of
+/// one-byte coordinates. What a command does with the mesh comes on top (measured on a sample and
 /// scaled by elements: `topolab`'s limits).
 pub fn read_peak_bound(format: Format, head: &[u8], file_bytes: u64) -> u64 {
-    let soup = match format {
-        Format::Obj | Format::Off | Format::Stl => file_bytes.saturating_mul(4),
-        Format::Ply => ply::soup_bound(head, file_bytes)
-            .unwrap_or(u64::MAX)
-            .min(file_bytes.saturating_mul(8)),
+    let (soup, whole) = match format {
+        Format::Obj | Format::Off | Format::Stl => (file_bytes.saturating_mul(4), true),
+        Format::Ply => match ply::soup_bound(head, file_bytes) {
+            Some((soup, whole)) => (soup.min(file_bytes.saturating_mul(8)), whole),
+            None => (file_bytes.saturating_mul(8), true),
+        },
     };
-    file_bytes.saturating_add(soup).saturating_add(4096)
+    // A binary PLY's body is read a window at a time: its header, read by doubling, is in
+    // `head` (twice it, at most, and the window).
+    let held = if whole {
+        file_bytes
+    } else {
+        (2 * head.len() as u64 + 64 * 1024).min(file_bytes)
+    };
+    held.saturating_add(soup).saturating_add(4096)
 }
 
 /// Reads a mesh from memory as written, without [`PolygonSoup::check`]. Fails only on what

@@ -27,7 +27,10 @@ use super::{FindingKind, Findings};
 use crate::algorithms::union_find::UnionFind;
 use crate::core::soup::PolygonSoup;
 use glam::DVec3;
+use hashbrown::HashTable;
+use std::collections::hash_map::RandomState;
 use std::collections::HashMap;
+use std::hash::BuildHasher;
 
 /// The most positions of one grid cell a vertex is compared with in the search for near
 /// duplicates (see the module docs).
@@ -35,6 +38,10 @@ pub const NEAR_DUPLICATES_COMPARED: usize = 16;
 
 /// No vertex: the end of a cell's chain.
 const NONE: u32 = u32::MAX;
+
+/// In place of the vertex filed before: a vertex at the position of an earlier one, which is
+/// not filed in the grid.
+const SAME: u32 = u32::MAX - 1;
 
 /// One coordinate's part of a cell's key: the cell index along the axis, or, for a coordinate
 /// too large for an index, the coordinate's bits (only an equal coordinate is within the
@@ -98,61 +105,103 @@ pub(super) fn duplicate_vertices(
     found: &mut Findings,
 ) -> SamePlace {
     let n = soup.num_vertices();
+    let positions = &soup.positions;
     let mut groups = UnionFind::new(n);
     let mut work = Work::default();
-    let mut not_exhaustive = 0;
-    // `+ 0.0` makes -0 and +0 one position.
-    let exact_key = |p: DVec3| (p + DVec3::ZERO).to_array().map(f64::to_bits);
-    let mut first_at: HashMap<[u64; 3], u32> = HashMap::new();
-    // The grid: per cell the latest vertex filed in it and how many there are; `earlier[v]`
-    // the vertex filed in v's cell before v.
-    let mut cells: HashMap<[Axis; 3], (u32, u32)> = HashMap::new();
-    let mut earlier: Vec<u32> = Vec::new();
-    if tolerance > 0.0 {
-        earlier.resize(n, NONE);
-    }
-    for v in (0..n as u32).filter(|&v| finite[v as usize]) {
-        let p = soup.positions[v as usize];
-        work.lookups += 1;
-        if let Some(&first) = first_at.get(&exact_key(p)) {
-            groups.union(v, first, false);
-            continue;
-        }
-        first_at.insert(exact_key(p), v);
-        if tolerance <= 0.0 {
-            continue;
-        }
-        let [x, y, z] = p.to_array().map(|c| axis_cells(c, tolerance));
-        let mut cut_short = false;
-        for cx in x.iter().flatten() {
-            for cy in y.iter().flatten() {
-                for cz in z.iter().flatten() {
-                    work.lookups += 1;
-                    let Some(&(latest, filed)) = cells.get(&[*cx, *cy, *cz]) else {
-                        continue;
-                    };
-                    cut_short |= filed as usize > NEAR_DUPLICATES_COMPARED;
-                    let mut w = latest;
-                    for _ in 0..NEAR_DUPLICATES_COMPARED {
-                        if w == NONE {
-                            break;
-                        }
-                        work.comparisons += 1;
-                        if soup.positions[w as usize].distance(p) <= tolerance {
-                            groups.union(v, w, false);
-                        }
-                        w = earlier[w as usize];
+    // The tables hold vertex ids, 5 bytes a slot, each key computed again from the position
+    // of the vertex filed (no copy of the keys); each is reserved once for every vertex it may
+    // receive, so that it never grows (a growing table holds its old slots and its new ones
+    // at once), and the second is made once the first is gone. The hasher is keyed at random
+    // per process.
+    let hasher = RandomState::new();
+    // `earlier[v]`: for a vertex at the position of an earlier one, `SAME`; for the others
+    // filed in the grid, the vertex filed in v's cell before v.
+    let near = tolerance > 0.0;
+    let mut earlier: Vec<u32> = if near { vec![NONE; n] } else { Vec::new() };
+    // Vertices at exactly one position, in one pass: the first vertex at each position.
+    let mut distinct = 0;
+    {
+        // `+ 0.0` makes -0 and +0 one position.
+        let key = |v: u32| {
+            (positions[v as usize] + DVec3::ZERO)
+                .to_array()
+                .map(f64::to_bits)
+        };
+        let finite_vertices = finite.iter().filter(|&&ok| ok).count();
+        let mut first_at: HashTable<u32> = HashTable::with_capacity(finite_vertices);
+        for v in (0..n as u32).filter(|&v| finite[v as usize]) {
+            work.lookups += 1;
+            let k = key(v);
+            let hash = hasher.hash_one(k);
+            match first_at.find(hash, |&w| key(w) == k) {
+                Some(&first) => {
+                    groups.union(v, first, false);
+                    if near {
+                        earlier[v as usize] = SAME;
                     }
+                }
+                None => {
+                    first_at.insert_unique(hash, v, |&w| hasher.hash_one(key(w)));
+                    distinct += 1;
                 }
             }
         }
-        not_exhaustive += cut_short as usize;
-        let cell = cells.entry(home(p, tolerance)).or_insert((NONE, 0));
-        earlier[v as usize] = cell.0;
-        *cell = (v, cell.1.saturating_add(1));
     }
-    drop((first_at, cells, earlier));
-    let representative: Vec<u32> = (0..n as u32).map(|v| groups.find(v).0).collect();
+    // Near duplicates, in a second pass over the first vertex at each position, in order: the
+    // grid, per cell the latest vertex filed in it (the key is its cell).
+    let mut not_exhaustive = 0;
+    if near {
+        let cell_of = |v: u32| home(positions[v as usize], tolerance);
+        let mut cells: HashTable<u32> = HashTable::with_capacity(distinct);
+        for v in 0..n as u32 {
+            if !finite[v as usize] || earlier[v as usize] == SAME {
+                continue;
+            }
+            let p = positions[v as usize];
+            let [x, y, z] = p.to_array().map(|c| axis_cells(c, tolerance));
+            let mut cut_short = false;
+            for cx in x.iter().flatten() {
+                for cy in y.iter().flatten() {
+                    for cz in z.iter().flatten() {
+                        work.lookups += 1;
+                        let cell = [*cx, *cy, *cz];
+                        let found = cells.find(hasher.hash_one(cell), |&w| cell_of(w) == cell);
+                        let Some(&latest) = found else {
+                            continue;
+                        };
+                        let mut w = latest;
+                        for _ in 0..NEAR_DUPLICATES_COMPARED {
+                            if w == NONE {
+                                break;
+                            }
+                            work.comparisons += 1;
+                            if positions[w as usize].distance(p) <= tolerance {
+                                groups.union(v, w, false);
+                            }
+                            w = earlier[w as usize];
+                        }
+                        // More filed in the cell than were compared.
+                        cut_short |= w != NONE;
+                    }
+                }
+            }
+            not_exhaustive += cut_short as usize;
+            let cell = cell_of(v);
+            let hash = hasher.hash_one(cell);
+            match cells.find_mut(hash, |&w| cell_of(w) == cell) {
+                Some(latest) => {
+                    earlier[v as usize] = *latest;
+                    *latest = v;
+                }
+                None => {
+                    cells.insert_unique(hash, v, |&w| hasher.hash_one(cell_of(w)));
+                }
+            }
+        }
+    }
+    drop(earlier);
+    // Per vertex the root of its group: the forest itself, flattened.
+    let (representative, _) = groups.into_roots();
     report_groups(&representative, tolerance, found);
     SamePlace {
         representative,
@@ -205,27 +254,92 @@ fn report_groups(representative: &[u32], tolerance: f64, found: &mut Findings) {
     found.count(kind, groups - firsts.len());
 }
 
+/// The first face of each set of vertices (with their multiplicities) among the faces filed:
+/// a hash table of face ids, 5 bytes a slot, whose keys are the faces' vertices, read again
+/// from the soup (see [`duplicate_faces`]).
+pub(super) struct FirstFaces {
+    hasher: RandomState,
+    table: HashTable<u32>,
+}
+
+impl FirstFaces {
+    /// Room for `faces` faces, so that the table never grows.
+    fn with_capacity(faces: usize) -> Self {
+        Self {
+            hasher: RandomState::new(),
+            table: HashTable::with_capacity(faces),
+        }
+    }
+
+    /// The first face filed whose vertices, each mapped by `map`, are `key` (sorted); `j` is
+    /// filed when there is none, and is the answer then. `scratch` is a buffer to sort in.
+    fn first_or_file(
+        &mut self,
+        soup: &PolygonSoup,
+        j: u32,
+        key: &[u32],
+        map: impl Fn(u32) -> u32,
+        scratch: &mut Vec<u32>,
+    ) -> u32 {
+        let hash = set_hash(&self.hasher, key.iter().copied());
+        let same = |f: &u32| {
+            let face = soup.face(*f as usize);
+            face.len() == key.len() && {
+                scratch.clear();
+                scratch.extend(face.iter().map(|&v| map(v)));
+                scratch.sort_unstable();
+                scratch == key
+            }
+        };
+        if let Some(&first) = self.table.find(hash, same) {
+            return first;
+        }
+        let Self { hasher, table } = self;
+        table.insert_unique(hash, j, |&f| {
+            set_hash(hasher, soup.face(f as usize).iter().map(|&v| map(v)))
+        });
+        j
+    }
+}
+
+/// The hash of a set of vertices with their multiplicities: the sum of the vertices' hashes
+/// (the same in any order), and of their number. The hasher is keyed at random, so no file
+/// can make two sets collide on purpose.
+fn set_hash(hasher: &RandomState, vertices: impl Iterator<Item = u32>) -> u64 {
+    let (sum, n) = vertices.fold((0u64, 0u64), |(sum, n), v| {
+        (sum.wrapping_add(hasher.hash_one(v)), n + 1)
+    });
+    sum.wrapping_add(hasher.hash_one(n))
+}
+
 /// Faces with the same vertex set (topological duplicates), and faces whose vertices are at
-/// the same positions without being the same vertices (geometric duplicates). Returns, per
-/// face, whether it repeats an earlier face's vertices.
+/// the same positions without being the same vertices (geometric duplicates), among the
+/// `usable` faces (`count` of them). Returns the first face of each vertex set: a face whose
+/// first is another repeats an earlier face's vertices ([`FirstFaces::first_of`]).
 pub(super) fn duplicate_faces(
     soup: &PolygonSoup,
-    usable: &[bool],
+    usable: impl Fn(usize, &mut Vec<u32>) -> bool,
+    count: usize,
     same_place: &[u32],
     found: &mut Findings,
-) -> Vec<bool> {
-    let mut duplicate = vec![false; soup.num_faces()];
-    let mut by_vertices: HashMap<Vec<u32>, u32> = HashMap::new();
-    let mut by_positions: HashMap<Vec<u32>, u32> = HashMap::new();
+) -> FirstFaces {
+    let mut by_vertices = FirstFaces::with_capacity(count);
+    let mut by_positions = FirstFaces::with_capacity(count);
+    let (mut key, mut scratch) = (Vec::new(), Vec::new());
     let ids = found.numbering();
-    for j in (0..soup.num_faces()).filter(|&j| usable[j]) {
+    for j in 0..soup.num_faces() {
+        if !usable(j, &mut scratch) {
+            continue;
+        }
         let face = soup.face(j);
-        let mut key: Vec<u32> = face.to_vec();
+        key.clear();
+        key.extend_from_slice(face);
         key.sort_unstable();
-        if let Some(&first) = by_vertices.get(&key) {
+        let first = by_vertices.first_or_file(soup, j as u32, &key, |v| v, &mut scratch);
+        if first != j as u32 {
             found.add(FindingKind::DuplicateFace, || {
                 (
-                    key,
+                    key.clone(),
                     vec![first, j as u32],
                     format!(
                         "faces {} and {} have the same vertices",
@@ -234,14 +348,15 @@ pub(super) fn duplicate_faces(
                     ),
                 )
             });
-            duplicate[j] = true;
             continue;
         }
-        by_vertices.insert(key, j as u32);
-        let mut places: Vec<u32> = face.iter().map(|&v| same_place[v as usize]).collect();
-        places.sort_unstable();
-        match by_positions.get(&places) {
-            Some(&first) => found.add(FindingKind::GeometricDuplicateFace, || {
+        key.clear();
+        key.extend(face.iter().map(|&v| same_place[v as usize]));
+        key.sort_unstable();
+        let place = |v: u32| same_place[v as usize];
+        let first = by_positions.first_or_file(soup, j as u32, &key, place, &mut scratch);
+        if first != j as u32 {
+            found.add(FindingKind::GeometricDuplicateFace, || {
                 (
                     face.to_vec(),
                     vec![first, j as u32],
@@ -251,13 +366,38 @@ pub(super) fn duplicate_faces(
                         ids.id(j as u64)
                     ),
                 )
-            }),
-            None => {
-                by_positions.insert(places, j as u32);
-            }
+            });
         }
     }
-    duplicate
+    by_vertices
+}
+
+impl FirstFaces {
+    /// The first face filed with the vertices of face `j` of `soup` (`j` itself when it was
+    /// filed); `None` when none was (face `j` was not filed, nor one with its vertices).
+    pub(super) fn first_of(
+        &self,
+        soup: &PolygonSoup,
+        j: usize,
+        key: &mut Vec<u32>,
+        scratch: &mut Vec<u32>,
+    ) -> Option<u32> {
+        key.clear();
+        key.extend_from_slice(soup.face(j));
+        key.sort_unstable();
+        let hash = set_hash(&self.hasher, key.iter().copied());
+        self.table
+            .find(hash, |f| {
+                let face = soup.face(*f as usize);
+                face.len() == key.len() && {
+                    scratch.clear();
+                    scratch.extend_from_slice(face);
+                    scratch.sort_unstable();
+                    scratch == key
+                }
+            })
+            .copied()
+    }
 }
 
 #[cfg(test)]

@@ -1,55 +1,47 @@
 //! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
 //! orientability, and per component its Euler characteristic, boundary and genus.
+//!
+//! Memory: the edge analysis ([`Connectivity`]: 8 bytes a corner and 8 an edge), one
+//! union-find forest over the corners for the fans and then the boundary curves, one over the
+//! faces for the orientation, a component number a vertex, and the components themselves.
 
 use super::{CheckSummary, Component, FindingKind, Findings};
 use crate::algorithms::summary::Undefined;
 use crate::algorithms::union_find::UnionFind;
 use crate::core::error::Error;
-use crate::core::soup::{Connectivity, PolygonSoup};
-use std::collections::{BTreeMap, HashSet};
+use crate::core::soup::{find_root, Connectivity, PolygonSoup};
+use std::collections::BTreeMap;
+
+/// No vertex, corner or face.
+const NONE: u32 = u32::MAX;
 
 /// The edge analysis (non-manifold edges and vertices, orientation), components, boundary
-/// curves, Euler characteristic and genus, on `clean` (the faces `kept` of `soup`).
+/// curves, Euler characteristic and genus, on `clean`: the faces `kept` of the soup checked
+/// (all of them when `None`), which has `vertices` vertices and `faces` faces.
 pub(super) fn topology(
     clean: &PolygonSoup,
-    kept: &[u32],
-    soup: &PolygonSoup,
+    kept: Option<&[u32]>,
+    (vertices, faces): (usize, usize),
     found: &mut Findings,
 ) -> CheckSummary {
     let ids = found.numbering();
     let (conn, problems) = Connectivity::analyse(clean, false);
-    let original = |f: u32| kept[f as usize];
-    let nf = clean.num_faces();
-    // Components: faces joined through shared vertices, keyed by the root of their vertices.
-    let mut joined = UnionFind::new(clean.num_vertices());
-    for face in clean.faces() {
-        for w in face.windows(2) {
-            joined.union(w[0], w[1], false);
-        }
-    }
-    let root_of_face: Vec<u32> = clean.faces().map(|f| joined.find(f[0]).0).collect();
-    let mut components: BTreeMap<u32, Component> = BTreeMap::new();
-    // Orientation: faces across an interior edge agree (parity 0), across an edge both
-    // traverse the same way they disagree (parity 1); an odd cycle means no orientation exists.
-    let mut orientation = UnionFind::new(nf);
-    let mut first_face_of_non_orientable: BTreeMap<u32, u32> = BTreeMap::new();
-    let mut relate = |f: u32, g: u32, flip: bool, orientation: &mut UnionFind| {
-        if !orientation.union(f, g, flip) {
-            first_face_of_non_orientable
-                .entry(root_of_face[f as usize])
-                .or_insert(original(f));
-        }
-    };
-    // Components where an edge has more than two faces: their boundary curves are undefined.
-    let mut with_non_manifold_edge = HashSet::new();
+    let original = |f: u32| kept.map_or(f, |kept| kept[f as usize]);
+    let (nf, nc) = (clean.num_faces(), clean.num_corners());
+    let indices = clean.indices();
+    let (component_of, mut components) = components(clean);
+    let component_of_face = |f: u32| component_of[clean.face(f as usize)[0] as usize] as usize;
+    let mut non_manifold_edges = 0;
     for problem in problems {
         match problem {
             Error::NonManifoldEdge { a, b, faces } => {
-                let root = joined.find(a).0;
-                component(&mut components, root).manifold = false;
-                with_non_manifold_edge.insert(root);
+                let c = &mut components[component_of[a as usize] as usize];
+                c.manifold = false;
+                // Its boundary curves are undefined where an edge has more than two faces.
+                c.boundary_curves = None;
+                non_manifold_edges += 1;
                 found.add(FindingKind::NonManifoldEdge, || {
-                    let faces: Vec<u32> = faces.into_iter().map(original).collect();
+                    let faces: Vec<u32> = faces.into_iter().map(&original).collect();
                     (
                         vec![a, b],
                         faces.clone(),
@@ -82,73 +74,96 @@ pub(super) fn topology(
             _ => {}
         }
     }
-    for (v, &fans) in conn.vertex_fans(clean).iter().enumerate() {
-        if fans > 1 {
-            component(&mut components, joined.find(v as u32).0).manifold = false;
+    // The fans: one forest over the corners (corners at a vertex joined across interior
+    // edges), flattened; a vertex whose corners have more than one root has more than one
+    // fan. Per vertex, whether it has none, one or more (a byte); a finding kept counts them.
+    let mut fan = conn.fan_forest(clean);
+    for c in 0..nc as u32 {
+        fan[c as usize] = find_root(&mut fan, c);
+    }
+    let roots_at = |v: u32, fan: &[u32]| {
+        (0..nc)
+            .filter(|&c| indices[c] == v && fan[c] == c as u32)
+            .count()
+    };
+    {
+        let mut fans = vec![0u8; component_of.len()];
+        for c in (0..nc).filter(|&c| fan[c] == c as u32) {
+            let n = &mut fans[indices[c] as usize];
+            *n = n.saturating_add(1).min(2);
+        }
+        for v in (0..fans.len()).filter(|&v| fans[v] > 1) {
+            components[component_of[v] as usize].manifold = false;
             found.add(FindingKind::NonManifoldVertex, || {
                 (
                     vec![v as u32],
                     vec![],
                     format!(
-                        "vertex {}: its faces form {fans} separate fans",
-                        ids.id(v as u64)
+                        "vertex {}: its faces form {} separate fans",
+                        ids.id(v as u64),
+                        roots_at(v as u32, &fan)
                     ),
                 )
             });
         }
     }
-    // Corners per edge: 1 on the boundary, 2 for an interior edge (or an inconsistent pair),
-    // more on a non-manifold edge.
-    let mut corners_per_edge = vec![0u32; conn.num_edges()];
-    for &e in &conn.corner_edge {
-        corners_per_edge[e as usize] += 1;
+    // An edge of more than two corners (non-manifold): a corner maps to it that is neither
+    // of the two it lists. Any other edge with one corner is on the boundary.
+    let mut crowded = vec![false; conn.num_edges()];
+    for (c, &e) in conn.corner_edge.iter().enumerate() {
+        let [c0, c1] = conn.edge_corners[e as usize];
+        crowded[e as usize] |= c as u32 != c0 && c as u32 != c1;
     }
+    // Orientation: faces across an interior edge agree (parity 0), across an edge both
+    // traverse the same way they disagree (parity 1); an odd cycle means no orientation exists.
     // Boundary curves per fan (the definition of `crate::summary`): each boundary edge joins
     // the fan of its face at one end with the fan of its face at the other; a curve is a
-    // connected set of fans so joined (each open fan holds two boundary ends).
-    let fans = conn.corner_fans(clean);
-    let mut curves = UnionFind::new(clean.num_corners());
+    // connected set of fans so joined (each open fan holds two boundary ends). The fans'
+    // forest is joined on: its sets become the curves.
+    let mut orientation = UnionFind::new(nf);
+    // The first face of each component found non-orientable, by component.
+    let mut non_orientable: Vec<(u32, u32)> = Vec::new();
     let mut boundary_edges = 0;
     for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
-        let (f, c0) = (conn.corner_face[c0 as usize], c0 as usize);
-        component(&mut components, root_of_face[f as usize]).edges += 1;
-        if c1 != u32::MAX {
-            let same_direction = clean.indices()[c0] == clean.indices()[c1 as usize];
-            relate(
-                f,
-                conn.corner_face[c1 as usize],
-                same_direction,
-                &mut orientation,
-            );
-        } else if corners_per_edge[e] == 1 {
-            let next = clean.next_corner(c0, f as usize);
-            curves.union(fans[c0], fans[next], false);
+        let f = conn.corner_face[c0 as usize];
+        components[component_of_face(f)].edges += 1;
+        if c1 != NONE {
+            let same_direction = indices[c0 as usize] == indices[c1 as usize];
+            let g = conn.corner_face[c1 as usize];
+            if !orientation.union(f, g, same_direction) {
+                let c = component_of_face(f);
+                if components[c].orientable {
+                    components[c].orientable = false;
+                    non_orientable.push((c as u32, original(f)));
+                }
+            }
+        } else if !crowded[e] {
+            let next = clean.next_corner(c0 as usize, f as usize) as u32;
+            let (a, b) = (find_root(&mut fan, c0), find_root(&mut fan, next));
+            if a != b {
+                fan[a as usize] = b;
+            }
             boundary_edges += 1;
         }
     }
-    let mut counted_curves = HashSet::new();
-    for (e, &[c0, _]) in conn.edge_corners.iter().enumerate() {
-        if corners_per_edge[e] == 1 {
-            let curve = curves.find(fans[c0 as usize]).0;
-            if counted_curves.insert(curve) {
-                let f = conn.corner_face[c0 as usize];
-                let c = component(&mut components, root_of_face[f as usize]);
+    drop(orientation);
+    let mut counted = vec![false; nc];
+    for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
+        if c1 == NONE && !crowded[e] {
+            let curve = find_root(&mut fan, c0) as usize;
+            if !counted[curve] {
+                counted[curve] = true;
+                let c = &mut components[component_of_face(conn.corner_face[c0 as usize])];
                 c.boundary_curves = c.boundary_curves.map(|n| n + 1);
             }
         }
     }
-    for &root in &root_of_face {
-        component(&mut components, root).faces += 1;
+    drop((fan, counted, crowded));
+    for f in 0..nf as u32 {
+        components[component_of_face(f)].faces += 1;
     }
-    let mut in_use = vec![false; clean.num_vertices()];
-    for &v in clean.indices() {
-        in_use[v as usize] = true;
-    }
-    for v in (0..clean.num_vertices() as u32).filter(|&v| in_use[v as usize]) {
-        component(&mut components, joined.find(v).0).vertices += 1;
-    }
-    for (root, face) in first_face_of_non_orientable {
-        component(&mut components, root).orientable = false;
+    non_orientable.sort_unstable();
+    for (_, face) in non_orientable {
         found.add(FindingKind::NonOrientable, || {
             (
                 vec![],
@@ -160,31 +175,26 @@ pub(super) fn topology(
             )
         });
     }
-    let components: Vec<Component> = components
-        .into_iter()
-        .map(|(root, mut c)| {
-            c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.faces as i64;
-            if with_non_manifold_edge.contains(&root) {
-                c.boundary_curves = None;
-            }
-            // χ = 2 - 2g - b for a connected orientable surface.
-            c.genus = match (c.manifold && c.orientable, c.boundary_curves) {
-                (true, Some(b)) => Some((2 - c.euler_characteristic - b as i64) / 2),
-                _ => None,
-            };
-            c
-        })
-        .collect();
+    for c in &mut components {
+        c.euler_characteristic = i64::from(c.vertices) - i64::from(c.edges) + i64::from(c.faces);
+        // χ = 2 - 2g - b for a connected orientable surface.
+        c.genus = match (c.manifold && c.orientable, c.boundary_curves) {
+            (true, Some(b)) => Some((2 - c.euler_characteristic - i64::from(b)) / 2),
+            _ => None,
+        };
+    }
     CheckSummary {
-        vertices: soup.num_vertices(),
-        faces: soup.num_faces(),
+        vertices,
+        faces,
         usable_faces: nf,
         edges: conn.num_edges(),
         boundary_edges,
-        boundary_curves: components.iter().map(|c| c.boundary_curves).sum(),
-        boundary_curves_undefined: (!with_non_manifold_edge.is_empty()).then(|| {
-            Undefined::NonManifoldEdges(corners_per_edge.iter().filter(|&&n| n > 2).count())
-        }),
+        boundary_curves: components
+            .iter()
+            .map(|c| c.boundary_curves.map(|n| n as usize))
+            .sum(),
+        boundary_curves_undefined: (non_manifold_edges > 0)
+            .then_some(Undefined::NonManifoldEdges(non_manifold_edges)),
         euler_characteristic: components.iter().map(|c| c.euler_characteristic).sum(),
         components,
         counts: BTreeMap::new(),
@@ -192,9 +202,35 @@ pub(super) fn topology(
     }
 }
 
-/// The component with vertex root `root`, created empty (and manifold) on first use.
-fn component(components: &mut BTreeMap<u32, Component>, root: u32) -> &mut Component {
-    components.entry(root).or_insert(Component {
+/// Per vertex its component (faces joined through shared vertices; `NONE` for a vertex no
+/// face uses), the components numbered in the order of the roots of the vertices'
+/// union-find, as the report lists them; and the components, their vertices counted.
+fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Component>) {
+    let nv = clean.num_vertices();
+    let mut joined = UnionFind::new(nv);
+    for face in clean.faces() {
+        for w in face.windows(2) {
+            joined.union(w[0], w[1], false);
+        }
+    }
+    // Used vertices first marked 0, then numbered by root.
+    let mut component_of = vec![NONE; nv];
+    for &v in clean.indices() {
+        component_of[v as usize] = 0;
+    }
+    let mut roots = 0;
+    for v in 0..nv as u32 {
+        if component_of[v as usize] != NONE && joined.find(v).0 == v {
+            component_of[v as usize] = roots;
+            roots += 1;
+        }
+    }
+    for v in 0..nv as u32 {
+        if component_of[v as usize] != NONE {
+            component_of[v as usize] = component_of[joined.find(v).0 as usize];
+        }
+    }
+    let empty = Component {
         faces: 0,
         vertices: 0,
         edges: 0,
@@ -203,5 +239,10 @@ fn component(components: &mut BTreeMap<u32, Component>, root: u32) -> &mut Compo
         orientable: true,
         manifold: true,
         genus: None,
-    })
+    };
+    let mut components = vec![empty; roots as usize];
+    for &c in component_of.iter().filter(|&&c| c != NONE) {
+        components[c as usize].vertices += 1;
+    }
+    (component_of, components)
 }

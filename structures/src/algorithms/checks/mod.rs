@@ -32,6 +32,7 @@ pub use duplicates::NEAR_DUPLICATES_COMPARED;
 pub use polygon::MAX_SIMPLICITY_CORNERS;
 
 use crate::algorithms::summary::Undefined;
+use crate::core::soup::PolygonSoup;
 use crate::io::RawSoup;
 use duplicates::{duplicate_faces, duplicate_vertices};
 use manifold::topology;
@@ -167,18 +168,20 @@ impl Default for Options {
     }
 }
 
-/// One connected component (faces joined through shared vertices).
+/// One connected component (faces joined through shared vertices). Its counts are `u32`, as
+/// the soup's ids are: a report lists every component, one a face for a file of separate
+/// faces, so it takes 48 bytes rather than 72.
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Component {
     /// Its faces.
-    pub faces: usize,
+    pub faces: u32,
     /// Its vertices.
-    pub vertices: usize,
+    pub vertices: u32,
     /// Its edges.
-    pub edges: usize,
+    pub edges: u32,
     /// Its boundary curves (per fan, as `crate::summary` defines them); `None` where an edge
     /// of it has more than two faces.
-    pub boundary_curves: Option<usize>,
+    pub boundary_curves: Option<u32>,
     /// V - E + F.
     pub euler_characteristic: i64,
     /// Its faces can be oriented consistently.
@@ -340,8 +343,44 @@ pub const LISTED_IDS: usize = 8;
 
 /// Runs every check on `raw`. Time and memory are O(n) in the file's elements (hashing
 /// expected O(1) per lookup), but for the polygon checks' O(k²) self-intersection test of a
-/// face of k ≤ [`MAX_SIMPLICITY_CORNERS`] corners.
+/// face of k ≤ [`MAX_SIMPLICITY_CORNERS`] corners. The edge analysis runs on a copy of the
+/// faces it takes part in and of the positions; [`check_owned`] runs it on `raw`'s own arrays.
 pub fn check(raw: &RawSoup, options: &Options) -> Report {
+    let inspected = inspect(raw, options);
+    let clean = match &inspected.kept {
+        Some(kept) => raw
+            .soup
+            .with_faces(|j| kept.binary_search(&(j as u32)).is_ok()),
+        None => raw.soup.clone(),
+    };
+    inspected.finish(&clean)
+}
+
+/// [`check`], taking `raw`: the faces that take part in the edge analysis are kept in its
+/// arrays, the others dropped in place, so that the analysis needs no copy of the mesh.
+pub fn check_owned(mut raw: RawSoup, options: &Options) -> Report {
+    let inspected = inspect(&raw, options);
+    if let Some(kept) = &inspected.kept {
+        let mut kept = kept.iter().peekable();
+        raw.soup
+            .retain_faces(|j| kept.next_if(|&&k| k as usize == j).is_some());
+    }
+    inspected.finish(&raw.soup)
+}
+
+/// The checks before the edge analysis, and what the analysis needs of them.
+struct Inspected {
+    found: Findings,
+    /// The faces of the edge analysis, when not all of them: usable, visiting each vertex
+    /// once, and not a duplicate of an earlier face (already reported).
+    kept: Option<Vec<u32>>,
+    vertices: usize,
+    faces: usize,
+    not_exhaustive: usize,
+}
+
+/// Every check but the edge analysis (which [`Inspected::finish`] runs on the faces kept).
+fn inspect(raw: &RawSoup, options: &Options) -> Inspected {
     let soup = &raw.soup;
     let mut found = Findings::new(options, raw.numbering);
     let n = soup.num_vertices();
@@ -372,34 +411,71 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
             )
         });
     }
-    let faces = faces::usable_faces(raw, &mut found);
+    let usable_count = faces::usable_faces(raw, &mut found);
+    let shape = |j: usize, sorted: &mut Vec<u32>| faces::shape(soup.face(j), n, sorted);
     let same_place = duplicate_vertices(soup, &finite, options.tolerance, &mut found);
-    let duplicate = duplicate_faces(soup, &faces.usable, &same_place.representative, &mut found);
-    for j in (0..soup.num_faces()).filter(|&j| faces.usable[j]) {
+    let usable = |j: usize, sorted: &mut Vec<u32>| shape(j, sorted).usable();
+    let firsts = duplicate_faces(
+        soup,
+        usable,
+        usable_count,
+        &same_place.representative,
+        &mut found,
+    );
+    drop(same_place.representative);
+    let mut sorted = Vec::new();
+    for j in 0..soup.num_faces() {
         let face = soup.face(j);
-        if face.iter().all(|&v| finite[v as usize]) {
+        if usable(j, &mut sorted) && face.iter().all(|&v| finite[v as usize]) {
             polygon_checks(soup, j, options, &mut found);
         }
     }
+    drop(finite);
 
     // The edge analysis on the usable faces that visit each vertex once and are not a
-    // duplicate of an earlier face (already reported); face ids mapped back.
-    let analysed = |j: usize| faces.usable[j] && !duplicate[j] && !faces.repeats[j];
-    let kept: Vec<u32> = (0..soup.num_faces() as u32)
-        .filter(|&j| analysed(j as usize))
-        .collect();
-    let clean = soup.with_faces(analysed);
-    let mut summary = topology(&clean, &kept, soup, &mut found);
-    summary.near_duplicates_not_exhaustive = same_place.not_exhaustive;
+    // duplicate of an earlier face (already reported); face ids mapped back. Counted before
+    // they are listed: when every face takes part, no list.
+    let (mut key, mut scratch) = (Vec::new(), Vec::new());
+    let mut analysed = |j: usize| {
+        shape(j, &mut sorted) == faces::Shape::Simple
+            && firsts.first_of(soup, j, &mut key, &mut scratch) == Some(j as u32)
+    };
+    let count = (0..soup.num_faces()).filter(|&j| analysed(j)).count();
+    let kept = (count < soup.num_faces()).then(|| {
+        (0..soup.num_faces() as u32)
+            .filter(|&j| analysed(j as usize))
+            .collect()
+    });
+    Inspected {
+        found,
+        kept,
+        vertices: n,
+        faces: soup.num_faces(),
+        not_exhaustive: same_place.not_exhaustive,
+    }
+}
 
-    let Findings {
-        mut kept, counts, ..
-    } = found;
-    kept.sort_by_key(|f| f.kind);
-    summary.counts = counts.into_iter().map(|(k, n)| (k.name(), n)).collect();
-    Report {
-        findings: kept,
-        summary,
+impl Inspected {
+    /// The edge analysis on `clean` (the faces kept), and the report.
+    fn finish(self, clean: &PolygonSoup) -> Report {
+        let Inspected {
+            mut found,
+            kept,
+            vertices,
+            faces,
+            not_exhaustive,
+        } = self;
+        let mut summary = topology(clean, kept.as_deref(), (vertices, faces), &mut found);
+        summary.near_duplicates_not_exhaustive = not_exhaustive;
+        let Findings {
+            mut kept, counts, ..
+        } = found;
+        kept.sort_by_key(|f| f.kind);
+        summary.counts = counts.into_iter().map(|(k, n)| (k.name(), n)).collect();
+        Report {
+            findings: kept,
+            summary,
+        }
     }
 }
 

@@ -4,10 +4,10 @@
 use super::RepairLog;
 use crate::core::soup::PolygonSoup;
 
-/// `soup` without the faces whose vertex set an earlier face has; the dropped faces' ids go to
-/// `log.duplicate_faces`. Faces are sorted by their sorted vertex lists (O(c log c)); of equal
-/// keys the first in input order stays.
-pub(super) fn drop_duplicates(soup: &PolygonSoup, log: &mut RepairLog) -> PolygonSoup {
+/// Drops from `soup` the faces whose vertex set an earlier face has; the dropped faces' ids go
+/// to `log.duplicate_faces`. Faces are sorted by their sorted vertex lists (O(c log c)); of
+/// equal keys the first in input order stays.
+pub(super) fn drop_duplicates(soup: &mut PolygonSoup, log: &mut RepairLog) {
     // Each face's vertices sorted, in one buffer with the soup's offsets.
     let mut keys: Vec<u32> = soup.indices().to_vec();
     for j in 0..soup.num_faces() {
@@ -24,11 +24,11 @@ pub(super) fn drop_duplicates(soup: &PolygonSoup, log: &mut RepairLog) -> Polygo
             duplicate[w[1] as usize] = true;
         }
     }
+    drop((order, keys));
     log.duplicate_faces = (0..soup.num_faces() as u32)
         .filter(|&j| duplicate[j as usize])
         .collect();
-    if log.duplicate_faces.is_empty() {
-        return soup.clone();
+    if !log.duplicate_faces.is_empty() {
+        soup.retain_faces(|j| !duplicate[j]);
     }
-    soup.with_faces(|j| !duplicate[j])
 }

@@ -207,27 +207,27 @@ pub struct Repaired {
     pub log: RepairLog,
 }
 
-/// Runs `steps` (in [`Step::ALL`] order, whatever order they are given in) on `soup`.
-pub fn repair(soup: &PolygonSoup, steps: &[Step]) -> Repaired {
+/// Runs `steps` (in [`Step::ALL`] order, whatever order they are given in) on `soup`. Each
+/// step changes the soup in place (new vertices of a split are appended), so a repair holds
+/// one mesh, and the arrays of the step running.
+pub fn repair(mut soup: PolygonSoup, steps: &[Step]) -> Repaired {
     let mut log = RepairLog::default();
     let run = |s: Step| steps.contains(&s);
-    let mut soup = if run(Step::DuplicateFaces) {
-        duplicate_faces::drop_duplicates(soup, &mut log)
-    } else {
-        soup.clone()
-    };
+    if run(Step::DuplicateFaces) {
+        duplicate_faces::drop_duplicates(&mut soup, &mut log);
+    }
     // Run even with neither split: it counts the non-manifold edges the log says were left.
-    soup = split::split(
-        &soup,
+    split::split(
+        &mut soup,
         run(Step::SplitEdges),
         run(Step::SplitVertices),
         &mut log,
     );
     if run(Step::Orient) {
-        soup = orient::orient(&soup, &mut log);
+        orient::orient(&mut soup, &mut log);
     }
     if run(Step::UnusedVertices) {
-        soup = unused_vertices::drop_unused(&soup, &mut log);
+        unused_vertices::drop_unused(&mut soup, &mut log);
     }
     Repaired { soup, log }
 }

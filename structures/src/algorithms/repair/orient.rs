@@ -6,72 +6,68 @@ use super::RepairLog;
 use crate::algorithms::union_find::UnionFind;
 use crate::core::soup::{Connectivity, PolygonSoup};
 
-/// `soup` with each orientable component (faces joined across edges of exactly two faces)
-/// oriented like the majority of its faces (ties: like its smallest face), so that scans and
+/// Orients, in `soup`, each orientable component (faces joined across edges of exactly two
+/// faces) like the majority of its faces (ties: like its smallest face), so that scans and
 /// shuffled files keep the orientation most of their faces had. A component with an odd cycle
 /// of relative flips (a Möbius strip) is left as it is and listed in `log.non_orientable`.
 /// Union-find with parity over faces, as the orientability check runs it.
-pub(super) fn orient(soup: &PolygonSoup, log: &mut RepairLog) -> PolygonSoup {
+pub(super) fn orient(soup: &mut PolygonSoup, log: &mut RepairLog) {
     let nf = soup.num_faces();
-    let (conn, _) = Connectivity::analyse(soup, false);
     let mut parity = UnionFind::new(nf);
     let mut contradicted = Vec::new();
-    for &[c0, c1] in conn.edge_corners.iter().filter(|e| e[1] != u32::MAX) {
-        let (f, g) = (conn.corner_face[c0 as usize], conn.corner_face[c1 as usize]);
-        // The same start vertex: both traverse the edge the same way, one must be flipped.
-        let flip = soup.indices()[c0 as usize] == soup.indices()[c1 as usize];
-        if !parity.union(f, g, flip) {
-            contradicted.push(f);
+    {
+        let (conn, _) = Connectivity::analyse(soup, false);
+        for &[c0, c1] in conn.edge_corners.iter().filter(|e| e[1] != u32::MAX) {
+            let (f, g) = (conn.corner_face[c0 as usize], conn.corner_face[c1 as usize]);
+            // The same start vertex: both traverse the edge the same way, one must be flipped.
+            let flip = soup.indices()[c0 as usize] == soup.indices()[c1 as usize];
+            if !parity.union(f, g, flip) {
+                contradicted.push(f);
+            }
         }
     }
-    let side: Vec<(u32, bool)> = (0..nf as u32).map(|f| parity.find(f)).collect();
+    // Per face its component's root and its side (parity) relative to the root.
+    let (root, side) = parity.into_roots();
     let mut non_orientable = vec![false; nf];
     for f in contradicted {
-        non_orientable[side[f as usize].0 as usize] = true;
+        non_orientable[root[f as usize] as usize] = true;
     }
-    // Per component root: faces on the root's side and on the other, and its smallest face.
-    let mut count = vec![[0usize; 2]; nf];
-    let mut smallest = vec![u32::MAX; nf];
-    for (f, &(root, flipped)) in side.iter().enumerate() {
-        count[root as usize][flipped as usize] += 1;
-        smallest[root as usize] = smallest[root as usize].min(f as u32);
+    // Per component root: faces on the root's side and on the other, and the side of its
+    // smallest face (the first met).
+    let mut count = vec![[0u32; 2]; nf];
+    let mut smallest_side = vec![false; nf];
+    for f in 0..nf {
+        let r = root[f] as usize;
+        if count[r] == [0, 0] {
+            smallest_side[r] = side[f];
+            if non_orientable[r] {
+                log.non_orientable.push(f as u32);
+            }
+        }
+        count[r][side[f] as usize] += 1;
     }
     // The side whose faces are flipped, per root: the minority (on a tie, the side the
     // smallest face is not on).
-    let flip_side = |root: usize| {
-        let [same, other] = count[root];
+    let flip_side = |r: usize| {
+        let [same, other] = count[r];
         match same.cmp(&other) {
             std::cmp::Ordering::Greater => true,
             std::cmp::Ordering::Less => false,
-            std::cmp::Ordering::Equal => !side[smallest[root] as usize].1,
+            std::cmp::Ordering::Equal => !smallest_side[r],
         }
     };
-    let flips: Vec<bool> = side
-        .iter()
-        .map(|&(root, s)| !non_orientable[root as usize] && s == flip_side(root as usize))
-        .collect();
-    for root in (0..nf).filter(|&r| side[r].0 == r as u32) {
-        if non_orientable[root] {
-            log.non_orientable.push(smallest[root]);
-        } else if count[root][flip_side(root) as usize] > 0 {
+    let flips = |f: usize| {
+        let r = root[f] as usize;
+        !non_orientable[r] && side[f] == flip_side(r)
+    };
+    for r in (0..nf).filter(|&r| root[r] == r as u32 && !non_orientable[r]) {
+        if count[r][flip_side(r) as usize] > 0 {
             log.oriented_components += 1;
         }
     }
     log.non_orientable.sort_unstable();
-    log.flipped_faces = flips.iter().filter(|f| **f).count();
-    if log.flipped_faces == 0 {
-        return soup.clone();
+    log.flipped_faces = (0..nf).filter(|&f| flips(f)).count();
+    for f in (0..nf).filter(|&f| flips(f)) {
+        soup.face_mut(f).reverse();
     }
-    let mut out = PolygonSoup::with_capacity(soup.num_vertices(), nf, soup.num_corners());
-    out.positions = soup.positions.clone();
-    let mut face = Vec::new();
-    for (j, f) in soup.faces().enumerate() {
-        face.clear();
-        face.extend_from_slice(f);
-        if flips[j] {
-            face.reverse();
-        }
-        out.push_face(&face);
-    }
-    out
 }

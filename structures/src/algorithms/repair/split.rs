@@ -11,18 +11,13 @@
 
 use super::{RepairLog, Split};
 use crate::core::error::Error;
-use crate::core::soup::{Connectivity, PolygonSoup};
+use crate::core::soup::{find_root, Connectivity, PolygonSoup};
 
-/// `soup` with the end points of its non-manifold edges split into one vertex per fan (when
+/// Splits, in `soup`, the end points of its non-manifold edges into one vertex per fan (when
 /// `edges`) and its other vertices of several fans too (when `vertices`). The vertex keeps its
 /// first fan (in corner order); each other fan gets a new vertex, appended, at its position.
 /// Counts and splits go to `log`.
-pub(super) fn split(
-    soup: &PolygonSoup,
-    edges: bool,
-    vertices: bool,
-    log: &mut RepairLog,
-) -> PolygonSoup {
+pub(super) fn split(soup: &mut PolygonSoup, edges: bool, vertices: bool, log: &mut RepairLog) {
     let (conn, problems) = Connectivity::analyse(soup, false);
     let mut on_non_manifold_edge = vec![false; soup.num_vertices()];
     for problem in &problems {
@@ -32,18 +27,23 @@ pub(super) fn split(
             on_non_manifold_edge[b as usize] = true;
         }
     }
+    drop(problems);
     if !edges && !vertices {
-        return soup.clone();
+        return;
     }
-    let fan = conn.corner_fans(soup);
-    let mut positions = soup.positions.clone();
-    // Per fan (named by its root corner): its vertex in the output.
+    // Per corner the fan it lies in, named by its root corner; the analysis is not needed
+    // past it.
+    let mut fan = conn.fan_forest(soup);
+    drop(conn);
+    let n = soup.num_vertices() as u32;
+    // Per fan (named by its root corner): its vertex in the output, a new one numbered from
+    // `n` on in corner order; per vertex, the fans it has.
     let mut fan_vertex = vec![u32::MAX; soup.num_corners()];
-    // Per vertex: the fans it has, once it has more than one.
     let mut fans = vec![0u32; soup.num_vertices()];
-    let mut indices = Vec::with_capacity(soup.num_corners());
-    for (c, &v) in soup.indices().iter().enumerate() {
-        let root = fan[c] as usize;
+    let mut new = 0;
+    for c in 0..soup.num_corners() {
+        let v = soup.indices()[c];
+        let root = find_root(&mut fan, c as u32) as usize;
         if fan_vertex[root] == u32::MAX {
             let split = if on_non_manifold_edge[v as usize] {
                 edges
@@ -52,13 +52,22 @@ pub(super) fn split(
             };
             fans[v as usize] += 1;
             fan_vertex[root] = if fans[v as usize] > 1 && split {
-                positions.push(soup.positions[v as usize]);
-                (positions.len() - 1) as u32
+                new += 1;
+                n + new - 1
             } else {
                 v
             };
         }
-        indices.push(fan_vertex[root]);
+    }
+    soup.positions.reserve_exact(new as usize);
+    for c in 0..soup.num_corners() {
+        let root = find_root(&mut fan, c as u32) as usize;
+        let (v, w) = (soup.indices()[c], fan_vertex[root]);
+        if w == soup.num_vertices() as u32 {
+            // The next new vertex, first met here (they are numbered in corner order).
+            soup.positions.push(soup.positions[v as usize]);
+        }
+        soup.indices_mut()[c] = w;
     }
     for (v, &n) in fans.iter().enumerate().filter(|(_, &n)| n > 1) {
         let split = Split {
@@ -71,10 +80,4 @@ pub(super) fn split(
             _ => {}
         }
     }
-    let mut out = PolygonSoup::with_capacity(positions.len(), soup.num_faces(), soup.num_corners());
-    out.positions = positions;
-    for j in 0..soup.num_faces() {
-        out.push_face(&indices[soup.face_start(j)..soup.face_start(j + 1)]);
-    }
-    out
 }

@@ -112,7 +112,7 @@ fn inconsistent_orientation_is_made_consistent_by_the_majority() {
     }
     let shuffled = PolygonSoup::from_polygons(sphere.positions.clone(), &faces);
     assert!(kinds(&shuffled).contains(&FindingKind::InconsistentOrientation));
-    let r = repair(&shuffled, &all());
+    let r = repair(shuffled.clone(), &all());
     assert_eq!(kinds(&r.soup), [], "{:?}", r.log);
     // The minority was flipped back: the sphere as generated.
     assert_eq!(r.soup, sphere);
@@ -120,7 +120,7 @@ fn inconsistent_orientation_is_made_consistent_by_the_majority() {
     assert_eq!(r.log.oriented_components, 1);
     // Without the step, the problem stays.
     let steps: Vec<Step> = all().into_iter().filter(|&s| s != Step::Orient).collect();
-    let kept = repair(&shuffled, &steps);
+    let kept = repair(shuffled.clone(), &steps);
     assert_eq!(kept.soup, shuffled);
     assert_eq!(kinds(&kept.soup), [FindingKind::InconsistentOrientation]);
 }
@@ -133,11 +133,11 @@ fn duplicate_faces_are_dropped_keeping_the_first() {
     soup.push_face(&[first[1], first[0], first[2]]);
     soup.push_face(&first);
     assert!(kinds(&soup).contains(&FindingKind::DuplicateFace));
-    let r = repair(&soup, &all());
+    let r = repair(soup.clone(), &all());
     assert_eq!(r.log.duplicate_faces, [4, 5]);
     assert_eq!(r.soup, meshes::closed_tetrahedron());
     assert_eq!(kinds(&r.soup), []);
-    let only = repair(&soup, &[Step::DuplicateFaces]);
+    let only = repair(soup.clone(), &[Step::DuplicateFaces]);
     assert_eq!(only.soup, meshes::closed_tetrahedron());
 }
 
@@ -145,7 +145,7 @@ fn duplicate_faces_are_dropped_keeping_the_first() {
 fn a_non_manifold_edge_is_split_at_its_end_points() {
     let soup = book();
     assert!(kinds(&soup).contains(&FindingKind::NonManifoldEdge));
-    let r = repair(&soup, &all());
+    let r = repair(soup.clone(), &all());
     assert_eq!(r.log.non_manifold_edges, 1);
     // Each end point: three pages, three fans (the edge is a cut): two new vertices each.
     assert_eq!(
@@ -158,7 +158,7 @@ fn a_non_manifold_edge_is_split_at_its_end_points() {
     // What remains: the copies at one position, by design.
     assert_eq!(kinds(&r.soup), [FindingKind::DuplicateVertices]);
     // Splitting vertices alone leaves the edge's end points as they are.
-    let vertices_only = repair(&soup, &[Step::SplitVertices]);
+    let vertices_only = repair(soup.clone(), &[Step::SplitVertices]);
     assert_eq!(vertices_only.soup, soup);
     assert!(kinds(&vertices_only.soup).contains(&FindingKind::NonManifoldEdge));
 }
@@ -171,7 +171,7 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
     let (a, b) = (soup.face(0)[0], soup.face(0)[1]);
     let tip = soup.push_vertex(DVec3::new(5.0, 5.0, 5.0)).0;
     soup.push_face(&[a, b, tip]);
-    let r = repair(&soup, &all());
+    let r = repair(soup.clone(), &all());
     assert_eq!(r.log.new_vertices(), 2);
     assert_eq!(kinds(&r.soup), [FindingKind::DuplicateVertices]);
     let check = checks::check(
@@ -181,7 +181,7 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
         },
         &Options::default(),
     );
-    let mut closed: Vec<Option<usize>> = check
+    let mut closed: Vec<Option<u32>> = check
         .summary
         .components
         .iter()
@@ -199,13 +199,13 @@ fn a_fin_on_a_closed_surface_leaves_the_surface_closed() {
 fn a_non_manifold_vertex_gets_one_vertex_per_fan() {
     let soup = meshes::bowtie();
     assert_eq!(kinds(&soup), [FindingKind::NonManifoldVertex]);
-    let r = repair(&soup, &all());
+    let r = repair(soup.clone(), &all());
     assert_eq!(r.log.vertex_splits, [Split { vertex: 0, fans: 2 }]);
     assert_eq!(r.soup.num_vertices(), 6);
     assert_eq!(r.soup.positions[5], soup.positions[0]);
     same_geometry(&soup, &r.soup, &[0, 1]);
     assert_eq!(kinds(&r.soup), [FindingKind::DuplicateVertices]);
-    let edges_only = repair(&soup, &[Step::SplitEdges]);
+    let edges_only = repair(soup.clone(), &[Step::SplitEdges]);
     assert_eq!(edges_only.soup, soup);
 }
 
@@ -221,7 +221,7 @@ fn unused_vertices_are_dropped_and_the_rest_keep_their_order() {
         .collect();
     let soup = PolygonSoup::from_polygons(soup.positions.clone(), &faces);
     assert_eq!(kinds(&soup), [FindingKind::UnusedVertex]);
-    let r = repair(&soup, &all());
+    let r = repair(soup.clone(), &all());
     assert_eq!(r.log.unused_vertices, 2);
     assert_eq!(r.soup.positions, positions);
     assert_eq!(r.soup, meshes::open_tetrahedron());
@@ -231,7 +231,7 @@ fn unused_vertices_are_dropped_and_the_rest_keep_their_order() {
 fn a_mobius_strip_stays_non_orientable_and_untouched() {
     let strip = mobius(8);
     assert!(kinds(&strip).contains(&FindingKind::NonOrientable));
-    let r = repair(&strip, &all());
+    let r = repair(strip.clone(), &all());
     assert_eq!(r.log.non_orientable, [0]);
     assert_eq!(r.log.flipped_faces, 0);
     assert_eq!(r.soup, strip);
@@ -241,7 +241,7 @@ fn a_mobius_strip_stays_non_orientable_and_untouched() {
 #[test]
 fn a_clean_mesh_is_left_as_it_is() {
     for soup in [meshes::torus(8, 6), meshes::grid(4, 3, false)] {
-        let r = repair(&soup, &all());
+        let r = repair(soup.clone(), &all());
         assert!(r.log.is_empty(), "{:?}", r.log);
         assert!(r.log.lines().is_empty());
         assert_eq!(r.soup, soup);
@@ -282,7 +282,7 @@ proptest! {
             faces.push(vec![f[0], f[1], positions.len() as u32 - 1]);
         }
         let soup = PolygonSoup::from_polygons(positions, &faces);
-        let r = repair(&soup, &all());
+        let r = repair(soup.clone(), &all());
         let left: Vec<FindingKind> = kinds(&r.soup).into_iter().filter(|k| REPAIRED.contains(k)).collect();
         prop_assert!(left.is_empty(), "{:?} left after {:?}", left, r.log);
         prop_assert!(r.log.non_orientable.is_empty());

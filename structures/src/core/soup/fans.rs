@@ -159,7 +159,7 @@ impl Connectivity {
 
     /// The union-find forest over corners of [`Connectivity::corner_fans`]: corners that meet
     /// at a vertex across an interior edge are joined.
-    fn fan_forest(&self, soup: &PolygonSoup) -> Vec<u32> {
+    pub(crate) fn fan_forest(&self, soup: &PolygonSoup) -> Vec<u32> {
         let mut parent: Vec<u32> = (0..soup.num_corners() as u32).collect();
         for &[c0, c1] in &self.edge_corners {
             if c1 == u32::MAX {
@@ -191,7 +191,7 @@ impl Connectivity {
 }
 
 /// The root of `x` in a union-find forest, halving the path on the way.
-fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
+pub(crate) fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
     while parent[x as usize] != x {
         let p = parent[parent[x as usize] as usize];
         parent[x as usize] = p;
