@@ -18,6 +18,7 @@
 
 mod choose;
 pub mod counted;
+pub mod described;
 mod explained;
 mod operations;
 pub mod picture;
