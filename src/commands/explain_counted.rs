@@ -5,7 +5,9 @@
 //! one that reaches the element through its relations does not.
 
 use std::fmt::Write;
-use topolab_harness::teaching::edits::counted::{self, CountError, CountedEdit, GROWTH_FACES};
+use topolab_harness::teaching::edits::counted::{
+    self, CountError, CountedEdit, EditCase, GROWTH_FACES,
+};
 use topolab_harness::teaching::edits::Subject;
 use topolab_structures::{EditOp, PolygonSoup};
 
@@ -55,8 +57,13 @@ pub fn table(names: &[&str], case: &Case, growth: bool) -> String {
         "structure", "cost", "reads", "writes"
     );
     let mut notes = Vec::new();
+    let here = EditCase::new(soup, op, subject);
     for &name in names {
-        match counted::count(name, soup, op, subject) {
+        match here
+            .as_ref()
+            .map_err(Clone::clone)
+            .and_then(|case| case.count(name))
+        {
             Ok(c) => {
                 let _ = writeln!(
                     w,
@@ -93,9 +100,14 @@ pub fn table(names: &[&str], case: &Case, growth: bool) -> String {
     }
     let _ = writeln!(w);
     let mut missing = Vec::new();
+    let tori = counted::growth(op, subject);
     for &name in names {
         let _ = write!(w, "  {name:<width$}");
-        for (faces, found) in counted::growth(name, op, subject) {
+        for (faces, case) in &tori {
+            let found = case
+                .as_ref()
+                .map_err(Clone::clone)
+                .and_then(|c| c.count(name));
             let _ = write!(w, "  {:>18}", cell(&found));
             if let Err(e) = found {
                 missing.push(format!("{name} on {faces} faces: {e}"));

@@ -48,7 +48,7 @@
 use crate::core::edit::MeshEdit;
 use crate::core::error::{Error, Numbering, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::topology::MeshTopology;
+use crate::core::topology::{first_three_corners, MeshTopology};
 use glam::DVec3;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -321,19 +321,12 @@ pub fn predicted_faces<M: MeshEdit>(m: &M, request: &Request) -> Result<u128> {
     // The area of an equilateral triangle of side² 0.4 max_edge².
     let small = 3f64.sqrt() / 4.0 * 0.4 * request.max_edge * request.max_edge;
     let mut total = 0f64;
-    let mut corners = [DVec3::ZERO; 3];
     for f in 0..m.num_faces() {
         let face = FaceId::new(f);
         if m.is_deleted_face(face) {
             continue;
         }
-        let mut k = 0;
-        m.face_vertices(face, |v| {
-            if k < 3 {
-                corners[k] = m.position(v);
-            }
-            k += 1;
-        });
+        let corners = first_three_corners(m, face).0.map(|v| m.position(v));
         let [a, b, c] = corners;
         let inside = request
             .region

@@ -81,6 +81,22 @@ impl BoundaryCurves {
     }
 }
 
+/// The first three corners of face `f` and how many corners it has: a triangle whole, a
+/// polygon's first three (as OpenMesh's face-vertex walk takes them). Corners past the count
+/// are `VertexId(u32::MAX)`.
+#[inline(always)]
+pub fn first_three_corners<M: MeshTopology>(m: &M, f: FaceId) -> ([VertexId; 3], usize) {
+    let mut corners = [VertexId(u32::MAX); 3];
+    let mut k = 0;
+    m.face_vertices(f, |v| {
+        if k < 3 {
+            corners[k] = v;
+        }
+        k += 1;
+    });
+    (corners, k)
+}
+
 /// One interface to every mesh data structure of the lab.
 ///
 /// Vertex and face ids are the input's ([`PolygonSoup`] order); edge ids are the structure's own

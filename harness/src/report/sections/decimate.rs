@@ -39,6 +39,7 @@ use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::algorithms::decimate::{
     decimate_with_ties, reconstruct, same_mesh, Strategy, Ties,
 };
+use topolab_structures::core::topology::first_three_corners;
 use topolab_structures::{
     FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PointerHalfEdge, PolygonSoup,
 };
@@ -333,17 +334,8 @@ fn pair_in_turns(
 /// The live triangles of `m` (not garbage-collected), by their corners' positions.
 fn live_triangles<M: MeshEdit>(m: &M) -> impl Iterator<Item = [DVec3; 3]> + '_ {
     let live = (0..m.num_faces()).map(FaceId::new);
-    live.filter(|&f| !m.is_deleted_face(f)).map(|f| {
-        let mut t = [DVec3::ZERO; 3];
-        let mut k = 0;
-        m.face_vertices(f, |v| {
-            if k < 3 {
-                t[k] = m.position(v);
-            }
-            k += 1;
-        });
-        t
-    })
+    live.filter(|&f| !m.is_deleted_face(f))
+        .map(|f| first_three_corners(m, f).0.map(|v| m.position(v)))
 }
 
 /// The section's note on what its times mean: each decimater's thread CPU time per removed

@@ -82,43 +82,74 @@ fn counted_op(op: topolab_structures::EditOp) -> st::EditOp {
         .expect("both builds have every operation")
 }
 
-/// Does `op` on `subject` in `structure` built from `soup`, counting its reads and writes.
+/// One edit to count on any structure: the mesh in the counting build, the operation, and its
+/// element found once on the reference (every structure then finds it by its ends or corners).
+pub struct EditCase {
+    soup: PolygonSoup,
+    op: st::EditOp,
+    prepared: prepare::Prepared,
+    /// The mesh's faces.
+    pub faces: usize,
+}
+
+impl EditCase {
+    /// `op` on `subject` of `soup`; an error when the mesh or the element does not take it.
+    pub fn new(
+        soup: &topolab_structures::PolygonSoup,
+        op: topolab_structures::EditOp,
+        subject: &Subject,
+    ) -> Result<EditCase, CountError> {
+        let soup = counted_soup(soup);
+        let op = counted_op(op);
+        let reference = IndexHalfEdge::from_soup(&soup)
+            .map_err(|e| CountError::Mesh(format!("not an oriented manifold mesh: {e}")))?;
+        let prepared = prepare::prepare(op, subject.clone(), &soup, &reference)
+            .map_err(|e| CountError::Mesh(e.to_string()))?;
+        Ok(EditCase {
+            faces: soup.num_faces(),
+            soup,
+            op,
+            prepared,
+        })
+    }
+
+    /// Does the edit in `structure` built from the mesh, counting its reads and writes.
+    pub fn count(&self, structure: &str) -> Result<CountedEdit, CountError> {
+        let visit = Count {
+            soup: &self.soup,
+            op: self.op,
+            prepared: &self.prepared,
+        };
+        visit_editable(structure, visit).ok_or_else(|| {
+            CountError::NotCounted(format!(
+                "{structure} is not one of the lab's editable structures, whose edits the counting build counts"
+            ))
+        })?
+    }
+}
+
+/// Does `op` on `subject` in `structure` built from `soup`, counting its reads and writes
+/// (one [`EditCase`], counted once).
 pub fn count(
     structure: &str,
     soup: &topolab_structures::PolygonSoup,
     op: topolab_structures::EditOp,
     subject: &Subject,
 ) -> Result<CountedEdit, CountError> {
-    let soup = counted_soup(soup);
-    let op = counted_op(op);
-    let reference = IndexHalfEdge::from_soup(&soup)
-        .map_err(|e| CountError::Mesh(format!("not an oriented manifold mesh: {e}")))?;
-    let prepared = prepare::prepare(op, subject.clone(), &soup, &reference)
-        .map_err(|e| CountError::Mesh(e.to_string()))?;
-    let visit = Count {
-        soup: &soup,
-        op,
-        prepared: &prepared,
-    };
-    visit_editable(structure, visit).ok_or_else(|| {
-        CountError::NotCounted(format!(
-            "{structure} is not one of the lab's editable structures, whose edits the counting build counts"
-        ))
-    })?
+    EditCase::new(soup, op, subject)?.count(structure)
 }
 
-/// [`count`] on tori of [`GROWTH_FACES`] triangles: the same operation on the same element
-/// ids (which each torus has: its ids start at 0), one count per size.
+/// The [`EditCase`]s of the growth table: `op` on `subject` on tori of [`GROWTH_FACES`]
+/// triangles, the same element ids (which each torus has: its ids start at 0).
 pub fn growth(
-    structure: &str,
     op: topolab_structures::EditOp,
     subject: &Subject,
-) -> Vec<(usize, Result<CountedEdit, CountError>)> {
+) -> Vec<(usize, Result<EditCase, CountError>)> {
     GROWTH_FACES
         .iter()
         .map(|&faces| {
             let torus = topolab_structures::meshes::torus_with_triangles(faces);
-            (torus.num_faces(), count(structure, &torus, op, subject))
+            (torus.num_faces(), EditCase::new(&torus, op, subject))
         })
         .collect()
 }

@@ -240,6 +240,11 @@ fn che_records(
     out
 }
 
+/// Records by their keys.
+fn by_key(list: &[(String, String)]) -> HashMap<&str, &str> {
+    list.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect()
+}
+
 /// `name = value` fields of a record, if it is written so.
 fn fields(value: &str) -> Option<Vec<(&str, &str)>> {
     let value = value.split("  (").next().unwrap_or(value);
@@ -253,12 +258,10 @@ fn fields(value: &str) -> Option<Vec<(&str, &str)>> {
 /// fields, `  key: old -> new` otherwise), were removed (`- key: old`) or were added
 /// (`+ key: new`), one line each; `  (no record changed)` alone when none did.
 pub fn diff(before: &[(String, String)], after: &[(String, String)]) -> Vec<String> {
-    let index =
-        |list: &[(String, String)]| -> HashMap<String, String> { list.iter().cloned().collect() };
-    let (old_index, new_index) = (index(before), index(after));
+    let (old_index, new_index) = (by_key(before), by_key(after));
     let mut w = String::new();
     for (key, old) in before {
-        match new_index.get(key) {
+        match new_index.get(key.as_str()) {
             Some(new) if new == old => {}
             Some(new) => match (fields(old), fields(new)) {
                 // Per field, where the fields differ (a change in the comment after them
@@ -280,7 +283,7 @@ pub fn diff(before: &[(String, String)], after: &[(String, String)]) -> Vec<Stri
         }
     }
     for (key, new) in after {
-        if !old_index.contains_key(key) {
+        if !old_index.contains_key(key.as_str()) {
             let _ = writeln!(w, "+ {key}: {new}");
         }
     }
@@ -316,13 +319,11 @@ fn record_elements(value: &str) -> Vec<Vec<&str>> {
 /// every element of a record added or removed. The count `explain --op` gives as an edit's
 /// writes: a value written over itself is not seen.
 pub fn written(before: &[(String, String)], after: &[(String, String)]) -> u64 {
-    let index =
-        |list: &[(String, String)]| -> HashMap<String, String> { list.iter().cloned().collect() };
-    let (old_index, new_index) = (index(before), index(after));
+    let (old_index, new_index) = (by_key(before), by_key(after));
     let size = |v: &str| record_elements(v).iter().map(Vec::len).sum::<usize>() as u64;
     let mut n = 0;
     for (key, old) in before {
-        match new_index.get(key) {
+        match new_index.get(key.as_str()) {
             Some(new) if new == old => {}
             Some(new) => {
                 let (x, y) = (record_elements(old), record_elements(new));
@@ -339,7 +340,7 @@ pub fn written(before: &[(String, String)], after: &[(String, String)]) -> u64 {
         }
     }
     for (key, new) in after {
-        if !old_index.contains_key(key) {
+        if !old_index.contains_key(key.as_str()) {
             n += size(new);
         }
     }

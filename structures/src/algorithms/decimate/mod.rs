@@ -102,7 +102,7 @@ pub use reconstruct::{
 use crate::core::edit::MeshEdit;
 use crate::core::error::{Error, Result};
 use crate::core::ids::{FaceId, VertexId};
-use crate::core::topology::MeshTopology;
+use crate::core::topology::{first_three_corners, MeshTopology};
 use glam::DVec3;
 use heap::VertexHeap;
 
@@ -187,23 +187,16 @@ pub fn triangle_quadric(p0: DVec3, p1: DVec3, p2: DVec3) -> Quadric {
 /// corners (a polygon's first three corners, as OpenMesh's face-vertex walk takes them).
 pub fn vertex_quadrics<M: MeshEdit>(m: &M) -> Vec<Quadric> {
     let mut q = vec![Quadric::default(); m.num_vertices()];
-    let mut corners = [0u32; 3];
     for f in 0..m.num_faces() {
         let f = FaceId::new(f);
         if m.is_deleted_face(f) {
             continue;
         }
-        let mut k = 0;
-        m.face_vertices(f, |v| {
-            if k < 3 {
-                corners[k] = v.0;
-            }
-            k += 1;
-        });
-        let p = corners.map(|v| m.position(VertexId(v)));
+        let corners = first_three_corners(m, f).0;
+        let p = corners.map(|v| m.position(v));
         let fq = triangle_quadric(p[0], p[1], p[2]);
         for v in corners {
-            q[v as usize].add_assign(&fq);
+            q[v.index()].add_assign(&fq);
         }
     }
     q
@@ -469,14 +462,7 @@ fn keeps_faces<M: MeshTopology>(m: &M, from: VertexId, to: VertexId) -> bool {
         if !ok {
             return;
         }
-        let mut c = [VertexId(u32::MAX); 3];
-        let mut k = 0;
-        m.face_vertices(f, |v| {
-            if k < 3 {
-                c[k] = v;
-            }
-            k += 1;
-        });
+        let (c, k) = first_three_corners(m, f);
         if k != 3 || c.contains(&to) {
             return;
         }
