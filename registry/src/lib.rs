@@ -15,6 +15,7 @@ pub use topolab_baselines::compiled::{
     absent_baselines, missing_baseline, note_absent, qhull_description, CGAL_POLYHEDRON,
     CGAL_SURFACE_MESH, CPP_BASELINES, OPENMESH,
 };
+use topolab_structures::core::edit::edits_topology;
 use topolab_structures::registry as structures;
 pub use topolab_structures::registry::{EditVisitor, StructureVisitor, Structures};
 
@@ -111,15 +112,19 @@ pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Outpu
 /// their own Euler operations (OpenMesh's, CGAL's), when compiled in.
 pub const NATIVE_CHANGING: &[&str] = COMPILED;
 
-/// Does the structure called `name` change meshes: through `MeshEdit`
-/// ([`visit_editable`]) or natively ([`NATIVE_CHANGING`])?
+/// Does the structure called `name` change a mesh's topology: through `MeshEdit`'s
+/// topological edits ([`visit_editable`], [`edits_topology`]) or natively
+/// ([`NATIVE_CHANGING`])? Explicit storage implements `MeshEdit` for its moves only: not
+/// editable in this sense.
 pub fn is_editable(name: &str) -> bool {
     struct Probe;
     impl EditVisitor for Probe {
-        type Output = ();
-        fn visit<M: topolab_structures::MeshEdit>(self) {}
+        type Output = bool;
+        fn visit<M: topolab_structures::MeshEdit>(self) -> bool {
+            edits_topology::<M>()
+        }
     }
-    visit_editable(name, Probe).is_some() || NATIVE_CHANGING.contains(&name)
+    visit_editable(name, Probe) == Some(true) || NATIVE_CHANGING.contains(&name)
 }
 
 /// Every structure of this build of the lab (this crate's list: the structures of

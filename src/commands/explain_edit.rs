@@ -165,6 +165,9 @@ impl Asked {
             SubjectKind::Vertex if only(self.vertex.is_some()) => self.vertex.map(Subject::Vertex),
             SubjectKind::Edge if only(self.edge.is_some()) => self.edge.map(Subject::Edge),
             SubjectKind::Face if only(self.face.is_some()) => self.face.map(Subject::Face),
+            SubjectKind::Selected if given.len() == 1 => (self.vertex.map(Subject::Vertex))
+                .or(self.edge.map(Subject::Edge))
+                .or(self.face.map(Subject::Face)),
             SubjectKind::Corners if only(vs.len() >= 3) => Some(Subject::Vertices(vs.clone())),
             SubjectKind::TwoVertices if only(vs.len() == 2) => Some(Subject::Vertices(vs.clone())),
             SubjectKind::TwoEdges if only(self.edges.len() == 2) => {

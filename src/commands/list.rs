@@ -6,9 +6,7 @@
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
-use topolab_structures::{
-    Capabilities, Deletion, EditOp, ExplicitStorage, MeshEdit, MeshTopology, Operator,
-};
+use topolab_structures::{Capabilities, Deletion, EditOp, MeshEdit, MeshTopology, Operator};
 
 /// An editable structure's declared cost per editing operation.
 #[derive(serde::Serialize)]
@@ -45,17 +43,12 @@ impl registry::EditVisitor for EditRowOf {
 }
 
 /// The structures that implement `MeshEdit`, in registry order: the `[editable]` ones and
-/// explicit storage, which offers the operations on positions only (the lecture's contrast:
-/// its moves are O(n)) and so is not `[editable]` (see its edit module).
+/// those with `[moves]` (explicit storage, which offers the operations on positions only: the
+/// lecture's contrast, its moves are O(n)).
 fn edit_rows() -> Vec<EditRow> {
     registry::NAMES
         .iter()
-        .filter_map(|n| {
-            if *n == ExplicitStorage::NAME {
-                return Some(registry::EditVisitor::visit::<ExplicitStorage>(EditRowOf));
-            }
-            registry::visit_editable(n, EditRowOf)
-        })
+        .filter_map(|n| registry::visit_editable(n, EditRowOf))
         .collect()
 }
 

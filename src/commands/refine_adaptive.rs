@@ -31,7 +31,7 @@ use topolab_structures::algorithms::adaptive::{
 use topolab_structures::algorithms::changing::to_soup;
 use topolab_structures::glam::DVec3;
 use topolab_structures::summary::plural;
-use topolab_structures::{Error, MeshEdit, PolygonSoup};
+use topolab_structures::{EditOp, Error, MeshEdit, PolygonSoup};
 
 /// The structure `--structure` defaults to.
 pub const DEFAULT_STRUCTURE: &str = "index-half-edge";
@@ -88,27 +88,45 @@ pub fn adaptive(
     let region = region.map(parse_region).transpose()?;
     let request = Request::new(max_edge, region)
         .map_err(|e| Failure::usage(format!("--max-edge {max_edge}: {e}")))?;
-    struct Probe;
-    impl EditVisitor for Probe {
-        type Output = ();
-        fn visit<M: MeshEdit + 'static>(self) {}
-    }
-    if registry::visit_editable(structure, Probe).is_none() {
-        if let Some(why) = not_editable(structure) {
-            return Err(Failure {
-                message: why,
-                code: 1,
-            });
+    // Longest-edge bisection splits edges: a structure that implements `MeshEdit` without
+    // offering the split (explicit storage moves vertices only) cannot run it.
+    struct Splits;
+    impl EditVisitor for Splits {
+        type Output = bool;
+        fn visit<M: MeshEdit + 'static>(self) -> bool {
+            M::supports(EditOp::SplitEdge)
         }
-        let editable: Vec<&str> = registry::NAMES
+    }
+    let splitting = || -> Vec<&str> {
+        registry::NAMES
             .iter()
             .copied()
-            .filter(|n| registry::visit_editable(n, Probe).is_some())
-            .collect();
-        return Err(Failure::usage(format!(
-            "--structure {structure}: no such structure; the editable ones are {}",
-            editable.join(", ")
-        )));
+            .filter(|n| registry::visit_editable(n, Splits) == Some(true))
+            .collect()
+    };
+    match registry::visit_editable(structure, Splits) {
+        Some(true) => {}
+        Some(false) => {
+            return Err(Failure {
+                message: format!(
+                    "{structure} cannot refine adaptively: it does not offer split-edge (not offered: a missing feature, not a refusal of an element); the structures that offer it are {}",
+                    splitting().join(", ")
+                ),
+                code: 1,
+            })
+        }
+        None => {
+            if let Some(why) = not_editable(structure) {
+                return Err(Failure {
+                    message: why,
+                    code: 1,
+                });
+            }
+            return Err(Failure::usage(format!(
+                "--structure {structure}: no such structure; the editable ones are {}",
+                splitting().join(", ")
+            )));
+        }
     }
     check_mesh_out(out, spec)?;
     registry::visit_editable(structure, Adaptive { spec, request, out })

@@ -36,15 +36,18 @@ pub trait StructureVisitor {
 /// Calls `$callback!` with every structure of this crate, in report order: one line
 /// `module_name => Type` per structure (`module_name` names the structure's tests, such as
 /// its conformance module), followed by its capabilities in brackets: `[editable]` for a
-/// structure that implements [`MeshEdit`] (the CLI's and the report's changing workloads, the
-/// editing suite). This is the registry: add a structure here and the CLI, the report, the
-/// benches, the conformance suite and, with `[editable]`, the editing suite have it.
+/// structure that implements [`MeshEdit`] with the lecture's topological edits (the CLI's and
+/// the report's changing workloads, the editing suite), `[moves]` for one that implements
+/// [`MeshEdit`] for the operations on positions only (moving, selecting, rotating, scaling,
+/// smoothing) and refuses every topological edit as not offered. This is the registry: add a
+/// structure here and the CLI, the report, the benches, the conformance suite and, with either
+/// capability, the editing suite and `explain --op` have it.
 /// A callback matches each line as `$module:ident => $ty:ty $([$($capability:ident),*])?`.
 #[macro_export]
 macro_rules! for_each_structure {
     ($($callback:ident)::+) => {
         $($callback)::+! {
-            explicit => $crate::families::corner_lists::explicit::ExplicitStorage,
+            explicit => $crate::families::corner_lists::explicit::ExplicitStorage [moves],
             vertex_list => $crate::families::corner_lists::vertex_list::VertexList [editable],
             edge_list => $crate::families::edge_lists::edge_list::EdgeList [editable],
             winged_edge => $crate::families::edge_lists::winged_edge::WingedEdge [editable],
@@ -69,7 +72,8 @@ pub trait EditVisitor {
     fn visit<M: MeshEdit + 'static>(self) -> Self::Output;
 }
 
-/// One line's `[editable]` capability: the visit of an editable structure, `None` otherwise.
+/// One line's `[editable]` or `[moves]` capability: the visit of a structure that implements
+/// [`MeshEdit`], `None` otherwise.
 macro_rules! visit_if {
     ($visitor:ident, $ty:ty $(,)?) => {
         None
@@ -77,15 +81,21 @@ macro_rules! visit_if {
     ($visitor:ident, $ty:ty, editable) => {
         Some($visitor.visit::<$ty>())
     };
+    ($visitor:ident, $ty:ty, moves) => {
+        Some($visitor.visit::<$ty>())
+    };
 }
 
-/// One line's capabilities: is `editable` among them?
+/// One line's capabilities: is `editable` among them (the topological edits)?
 macro_rules! is_editable {
     () => {
         false
     };
     (editable) => {
         true
+    };
+    (moves) => {
+        false
     };
 }
 
@@ -99,8 +109,9 @@ macro_rules! registry {
         /// Per structure of [`NAMES`], whether it is editable (`[editable]` in the list).
         const EDITABLE_FLAGS: &[bool] = &[$(is_editable!($($($capability),*)?)),*];
 
-        /// Runs `visitor` with the editable structure called `name`; `None` if there is none
-        /// of that name or it is not editable.
+        /// Runs `visitor` with the structure called `name` if it implements [`MeshEdit`]
+        /// (`[editable]` or `[moves]`); `None` if there is none of that name or it edits
+        /// nothing. What it offers is [`MeshEdit::supports`].
         pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
             $(
                 if name == <$ty as MeshTopology>::NAME {

@@ -45,7 +45,7 @@
 //! edges pushed on the heap (O(log n)). Memory: the heap, one entry (24 bytes) per edge still
 //! to split.
 
-use crate::core::edit::MeshEdit;
+use crate::core::edit::{offered, EditOp, MeshEdit};
 use crate::core::error::{Error, Numbering, Result};
 use crate::core::ids::{EdgeId, FaceId, VertexId};
 use crate::core::topology::{first_three_corners, MeshTopology};
@@ -361,7 +361,8 @@ fn find_edge<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> Option<EdgeId>
 /// is not done and the refinement stops with [`Error::BudgetExceeded`], the mesh valid but
 /// partly refined.
 ///
-/// Refused before any change: polygons ([`Error::NotTriangles`]) and non-finite coordinates
+/// Refused before any change: a structure that does not offer [`EditOp::SplitEdge`] (as not
+/// offered), polygons ([`Error::NotTriangles`]) and non-finite coordinates
 /// ([`Error::NonFiniteCoordinate`]). Run it on a mesh without deleted elements (after
 /// [`MeshEdit::garbage_collection`]); vertices that no face uses stay as they are.
 pub fn refine_adaptive<M: MeshEdit>(
@@ -383,6 +384,7 @@ pub fn refine_adaptive_with_progress<M: MeshEdit>(
     max_faces: usize,
     mut progress: impl FnMut(usize),
 ) -> Result<AdaptiveReport> {
+    offered::<M>(EditOp::SplitEdge)?;
     admit(m)?;
     let mut report = AdaptiveReport {
         edges_split: 0,

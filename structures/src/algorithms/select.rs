@@ -3,10 +3,11 @@
 //! [`MeshEdit`]: the lecture names the operations, not a method, so what follows is the lab's
 //! choice.
 //!
-//! - **Select** ([`select_vertices`], [`select_faces`], and the box variants
-//!   [`select_vertices_in`], [`select_faces_in`]): one scan of the vertices (faces), keeping
-//!   those whose position (all of whose corners) a predicate accepts, as a typed, sorted set
-//!   ([`VertexSelection`], [`FaceSelection`]). O(n) on every structure; written over
+//! - **Select** ([`select_vertices`], [`select_edges`], [`select_faces`], and the box
+//!   variants [`select_vertices_in`], [`select_edges_in`], [`select_faces_in`]): one scan of
+//!   the vertices (edges, faces), keeping those whose position (both of whose ends, all of
+//!   whose corners) a predicate accepts, as a typed, sorted set ([`VertexSelection`],
+//!   [`EdgeSelection`], [`FaceSelection`]). O(n) on every structure; written over
 //!   [`MeshEdit`] rather than the queries alone because a structure that marks deletions
 //!   ([`Deletion::Marked`](crate::core::edit::Deletion::Marked)) keeps deleted slots, which a
 //!   selection must skip.
@@ -14,8 +15,9 @@
 //!   selection transformed about a centre and written back through
 //!   [`MeshEdit::set_positions`], O(k) for k selected vertices where a position is stored once,
 //!   O(n) in explicit storage, which must find every corner holding a moved position (the
-//!   lecture's point: there "geometry cannot be changed independently of topology"). A face
-//!   selection is moved as the set of its corners ([`FaceSelection::vertices`]).
+//!   lecture's point: there "geometry cannot be changed independently of topology"). An edge
+//!   or face selection is moved as the set of its ends or corners ([`EdgeSelection::vertices`],
+//!   [`FaceSelection::vertices`]).
 //! - **Smooth** ([`smooth_step`]): one step of uniform Laplacian smoothing, the rule of the
 //!   lab's smoothing workload (an interior vertex moves to the mean of its neighbours, a
 //!   boundary vertex stays) with the result written back. The neighbours are summed in
@@ -27,7 +29,7 @@
 
 use crate::core::edit::{offered, EditOp, MeshEdit, Refusal};
 use crate::core::error::{Error, Result};
-use crate::core::ids::{FaceId, VertexId};
+use crate::core::ids::{EdgeId, FaceId, VertexId};
 use glam::{DQuat, DVec3};
 
 /// An axis-aligned box, bounds included.
@@ -71,6 +73,29 @@ impl VertexSelection {
     }
 }
 
+/// Edges chosen by a selection: ids sorted, each once.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeSelection(Vec<EdgeId>);
+
+impl EdgeSelection {
+    /// The selected edges, in increasing id order.
+    pub fn edges(&self) -> &[EdgeId] {
+        &self.0
+    }
+    /// How many edges are selected.
+    pub fn len(&self) -> usize {
+        self.0.len()
+    }
+    /// Is nothing selected?
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+    /// The ends of the selected edges, to rotate or scale them.
+    pub fn vertices<M: MeshEdit>(&self, m: &M) -> VertexSelection {
+        VertexSelection::new(self.0.iter().flat_map(|&e| m.edge_vertices(e)).collect())
+    }
+}
+
 /// Faces chosen by a selection: ids sorted, each once.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct FaceSelection(Vec<FaceId>);
@@ -111,6 +136,27 @@ pub fn select_vertices<M: MeshEdit>(m: &M, keep: impl Fn(DVec3) -> bool) -> Vert
 /// The live vertices inside `b`.
 pub fn select_vertices_in<M: MeshEdit>(m: &M, b: &Aabb) -> VertexSelection {
     select_vertices(m, |p| b.contains(p))
+}
+
+/// The live edges whose two ends' positions `keep` accepts: one scan of the edges, O(n).
+pub fn select_edges<M: MeshEdit>(m: &M, keep: impl Fn(DVec3, DVec3) -> bool) -> EdgeSelection {
+    EdgeSelection(
+        (0..m.num_edges())
+            .map(EdgeId::new)
+            .filter(|&e| {
+                if m.is_deleted_edge(e) {
+                    return false;
+                }
+                let [a, b] = m.edge_vertices(e);
+                keep(m.position(a), m.position(b))
+            })
+            .collect(),
+    )
+}
+
+/// The live edges with both ends inside `b`.
+pub fn select_edges_in<M: MeshEdit>(m: &M, b: &Aabb) -> EdgeSelection {
+    select_edges(m, |p, q| b.contains(p) && b.contains(q))
 }
 
 /// The live faces whose corner positions `keep` accepts: one scan of the faces and their
@@ -281,6 +327,19 @@ mod tests {
         let faces = select_faces_in(&m, &b);
         assert_eq!(faces.len(), 1);
         assert_eq!(ids(faces.vertices(&m).vertices()), [0, 1, 3, 4]);
+        // The edges of the one quad inside, each with both ends in the box; not 1 - 2.
+        let edges = select_edges_in(&m, &b);
+        let mut ends: Vec<[u32; 2]> = edges
+            .edges()
+            .iter()
+            .map(|&e| {
+                let [a, b] = m.edge_vertices(e).map(|v| v.0);
+                [a.min(b), a.max(b)]
+            })
+            .collect();
+        ends.sort_unstable();
+        assert_eq!(ends, [[0, 1], [0, 3], [1, 4], [3, 4]]);
+        assert_eq!(ids(edges.vertices(&m).vertices()), [0, 1, 3, 4]);
     }
 
     #[test]

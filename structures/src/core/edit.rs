@@ -80,6 +80,15 @@ pub fn offered<M: MeshEdit>(op: EditOp) -> Result<()> {
     }
 }
 
+/// Does `M` offer any topological edit (an operation beyond the moves, selection, smoothing
+/// and garbage collection that [`Offers::NOTHING`] leaves every structure)? False for a
+/// structure that moves vertices only (explicit storage, `[moves]` in the registry).
+pub fn edits_topology<M: MeshEdit>() -> bool {
+    EditOp::ALL
+        .into_iter()
+        .any(|op| !Offers::<M>::NOTHING.offers(op) && M::supports(op))
+}
+
 /// How a structure deletes.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]

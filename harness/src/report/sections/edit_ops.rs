@@ -37,9 +37,7 @@ use topolab_structures::algorithms::select::{
     rotate_selection, scale_selection, select_vertices_in, smooth_step, Aabb,
 };
 use topolab_structures::glam::{DQuat, DVec3};
-use topolab_structures::{
-    Cost, EditOp, ExplicitStorage, FaceId, MeshEdit, MeshTopology, PolygonSoup, VertexId,
-};
+use topolab_structures::{Cost, EditOp, FaceId, MeshEdit, MeshTopology, PolygonSoup, VertexId};
 
 /// The operations measured, in the order of the lecture's list: moving and selecting
 /// vertices, rotating and scaling a selection, smoothing, inserting and deleting edges,
@@ -360,15 +358,6 @@ impl EditVisitor for Cell<'_> {
     }
 }
 
-/// Runs `visitor` on the structure called `name` if it edits: the run's editable structures
-/// and explicit storage, which moves vertices only and so is not `[editable]` in the registry.
-fn visit<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-    if name == ExplicitStorage::NAME {
-        return Some(visitor.visit::<ExplicitStorage>());
-    }
-    registry::visit_editable(name, visitor)
-}
-
 /// Is the structure called `name` in the comparison?
 pub fn compared(name: &str) -> bool {
     struct Probe;
@@ -376,7 +365,7 @@ pub fn compared(name: &str) -> bool {
         type Output = ();
         fn visit<M: MeshEdit + 'static>(self) {}
     }
-    visit(name, Probe).is_some()
+    registry::visit_editable(name, Probe).is_some()
 }
 
 /// Fails, loudly, when two structures gave different meshes for the same samples.
@@ -433,7 +422,7 @@ fn measure(
                     targets: &targets,
                     quick,
                 };
-                let (declared, outcome) = visit(s, cell)
+                let (declared, outcome) = registry::visit_editable(s, cell)
                     .unwrap_or_else(|| Err(format!("{s} does not edit")))
                     .map_err(|e| {
                         ReportError::Measurement(format!("{op} on {mesh} failed on {s}: {e}"))
@@ -520,7 +509,8 @@ pub fn render(h: &mut String, rows: &[EditOpRow]) {
     }
 }
 
-/// The lecture's operations on every editable structure and explicit storage.
+/// The lecture's operations on every structure that implements `MeshEdit` (explicit storage
+/// its moves only).
 pub struct EditOps;
 
 impl Section for EditOps {
@@ -550,7 +540,7 @@ impl Section for EditOps {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use topolab_structures::{meshes, IndexHalfEdge, VertexList};
+    use topolab_structures::{meshes, ExplicitStorage, IndexHalfEdge, VertexList};
 
     fn cell<M: MeshEdit + 'static>(op: EditOp, soup: &PolygonSoup) -> EditOpRow {
         let targets = Targets::of(soup, 3);

@@ -93,7 +93,10 @@ pub(super) fn candidates(kind: SubjectKind, m: &IndexHalfEdge) -> Vec<Subject> {
                     .map(move |(a, b)| Subject::FaceAndCorners { face: f, a, b })
             })
             .collect(),
-        SubjectKind::Vertex => first(m.num_vertices()).map(Subject::Vertex).collect(),
+        // A selection's default is a vertex's; `--edge` or `--face` selects those instead.
+        SubjectKind::Vertex | SubjectKind::Selected => {
+            first(m.num_vertices()).map(Subject::Vertex).collect()
+        }
         SubjectKind::Edge => first(m.num_edges()).map(Subject::Edge).collect(),
         SubjectKind::Face => first(m.num_faces()).map(Subject::Face).collect(),
         SubjectKind::TwoVertices => (0..few)
@@ -150,14 +153,14 @@ pub fn choose_on<M: MeshEdit>(soup: &PolygonSoup, op: EditOp) -> Choice {
         let Ok(prepared) = prepare(op, subject.clone(), soup, &reference) else {
             continue;
         };
-        let Some(target) = prepared.target(&m) else {
+        let Some(mut target) = prepared.target(&m) else {
             continue;
         };
         // A refused edit changes nothing (what `MeshEdit` promises), so `m` is built again
         // only after an edit, or a setup, that was done.
         let mut changed = false;
         if let Some((_, setup)) = spec.setup {
-            if setup(&mut m, &target).is_err() {
+            if setup(&mut m, &mut target).is_err() {
                 continue;
             }
             changed = true;

@@ -165,7 +165,7 @@ impl EditVisitor for Count<'_> {
     fn visit<M: MeshEdit + 'static>(self) -> Self::Output {
         let spec = operations::edit::<M>(self.op);
         let mut m = M::from_soup(self.soup).map_err(|e| CountError::Mesh(e.to_string()))?;
-        let target = self.prepared.target(&m).ok_or_else(|| {
+        let mut target = self.prepared.target(&m).ok_or_else(|| {
             CountError::Mesh(format!(
                 "{} has no {} after building the mesh",
                 M::NAME,
@@ -173,7 +173,7 @@ impl EditVisitor for Count<'_> {
             ))
         })?;
         if let Some((what, setup)) = spec.setup {
-            setup(&mut m, &target)
+            setup(&mut m, &mut target)
                 .map_err(|e| CountError::Mesh(format!("{what} before it: {e}")))?;
         }
         let before = records::records(&m);

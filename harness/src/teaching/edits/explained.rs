@@ -43,7 +43,7 @@ pub fn explain_on<M: MeshEdit + 'static>(
     }
     let spec = edit::<M>(op);
     let mut m = M::from_soup(soup)?;
-    let target = prepared.target(&m).ok_or_else(|| {
+    let mut target = prepared.target(&m).ok_or_else(|| {
         Error::Unsupported(format!(
             "{} has no {} after building the mesh",
             M::NAME,
@@ -51,7 +51,7 @@ pub fn explain_on<M: MeshEdit + 'static>(
         ))
     })?;
     if let Some((_, setup)) = spec.setup {
-        setup(&mut m, &target)?;
+        setup(&mut m, &mut target)?;
     }
     let own_id = match (&prepared.subject, target.edge, target.face) {
         (Subject::Edge(e), Some(id), _) if id.0 != *e => Some(format!("its edge id {}", id.0)),

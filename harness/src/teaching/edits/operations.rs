@@ -2,8 +2,10 @@
 //! call, with the [`Target`] the call acts on.
 
 use super::st::algorithms::select::{
-    rotate_selection, scale_selection, select_vertices_in, smooth_step, Aabb, VertexSelection,
+    rotate_selection, scale_selection, select_edges_in, select_faces_in, select_vertices_in,
+    smooth_step, Aabb, VertexSelection,
 };
+
 use super::st::algorithms::weld::{weld_edges, weld_faces, weld_meshes};
 use super::st::{
     EdgeId, EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Result,
@@ -36,6 +38,9 @@ pub struct Target {
     pub point: DVec3,
     /// The second mesh of a weld of meshes.
     pub other: Option<PolygonSoup>,
+    /// The vertices a rotation or a scaling moves and the centre it moves them about, made by
+    /// the edit's setup ([`selection_at`]).
+    pub selection: Option<(VertexSelection, DVec3)>,
 }
 
 impl Target {
@@ -59,6 +64,12 @@ impl Target {
     pub fn face(&self) -> Result<FaceId> {
         self.face.ok_or_else(|| Self::missing("a face"))
     }
+    /// [`Target::selection`], or an error.
+    pub fn selection(&self) -> Result<&(VertexSelection, DVec3)> {
+        self.selection
+            .as_ref()
+            .ok_or_else(|| Self::missing("a selection"))
+    }
     /// [`Target::other`], or an error.
     pub fn other(&self) -> Result<&PolygonSoup> {
         self.other
@@ -70,6 +81,11 @@ impl Target {
 /// A call on structure `M` with a [`Target`].
 pub type Call<M> = fn(&mut M, &Target) -> Result<()>;
 
+/// What is done before the operation and neither explained nor counted, on structure `M`: an
+/// edit that makes the state the operation is shown on, or a selection the operation moves
+/// (kept in [`Target::selection`]).
+pub type Setup<M> = fn(&mut M, &mut Target) -> Result<()>;
+
 /// How one operation is done and explained on structure `M` ([`edit`]).
 pub struct Edit<M> {
     /// What it acts on.
@@ -80,8 +96,10 @@ pub struct Edit<M> {
     /// Does it read that neighbourhood through the structure's relations, and rewrite it
     /// (`true`), or read nothing or every record whatever the structure (`false`)?
     pub local: bool,
-    /// An edit done first and not explained: the state the operation is shown on.
-    pub setup: Option<(&'static str, Call<M>)>,
+    /// What is done first, not explained and not counted: an edit that makes the state the
+    /// operation is shown on, or the selection a rotation or scaling moves (as a caller holds
+    /// its selection before it moves it, so that the move's count is the move's).
+    pub setup: Option<(&'static str, Setup<M>)>,
     /// The operation.
     pub call: Call<M>,
 }
@@ -151,7 +169,10 @@ pub fn edit<M: MeshEdit>(op: EditOp) -> Edit<M> {
             kind: K::Vertex,
             reads: "every record (the survivors move down over the deleted slots and every id that names them is renumbered)",
             local: false,
-            setup: Some(("delete-vertex", |m, t| m.delete_vertex(t.vertex(0)?))),
+            // A vertex deleted first, so that there is something to collect; a structure that
+            // deletes nothing (explicit storage) collects nothing, and says so by writing none.
+            setup: M::supports(EditOp::DeleteVertex)
+                .then_some(("delete-vertex", |m, t| m.delete_vertex(t.vertex(0)?))),
             call: |m, _| {
                 m.garbage_collection();
                 Ok(())
@@ -175,39 +196,42 @@ pub fn edit<M: MeshEdit>(op: EditOp) -> Edit<M> {
         },
         EditOp::SetPosition => Edit {
             kind: K::Vertex,
-            reads: "nothing of the topology: the vertex's position is written where it is stored (once, in the vertex's record, in every structure --op explains; explicit storage, which holds a copy in every corner, must find each)",
+            reads: "nothing of the topology in a structure that stores a position once, in the vertex's record, where it is written; explicit storage holds a copy in every corner and compares every corner with the old coordinates to find them (O(n))",
             local: false,
             setup: None,
             call: |m, t| m.set_position(t.vertex(0)?, t.point),
         },
         EditOp::Select => Edit {
-            kind: K::Vertex,
-            reads: "every vertex's position (one scan), keeping those inside the box around the vertex that reaches halfway to its nearest neighbour; nothing is written: the selection is a sorted list of vertex ids beside the structure",
+            kind: K::Selected,
+            reads: "every vertex's position (one scan; for an edge or a face, every edge's ends or every face's corners), keeping those inside the box around the element (a vertex's reaches halfway to its nearest neighbour, an edge's or a face's is its bounding box); nothing is written: the selection is a sorted list of ids beside the structure",
             local: false,
             setup: None,
-            call: |m, t| {
-                select_vertices_in(m, &selection_box(m, t.vertex(0)?));
-                Ok(())
-            },
+            call: |m, t| select_at(m, t).map(drop),
         },
         EditOp::RotateSelection => Edit {
-            kind: K::Vertex,
-            reads: "the selection of select (the vertex, in the box reaching halfway to its nearest neighbour) and its neighbours' positions (the centre: their centroid); the selected positions are rotated by 30 degrees about the x axis through that centre and written back",
+            kind: K::Selected,
+            reads: "the positions of the selection of select at the element (made before, not counted: its vertices, an edge's ends, a face's corners; about a vertex's neighbours' centroid, an edge's midpoint, a face's centroid); they are rotated by 30 degrees about the x axis through that centre and written back",
             local: false,
-            setup: None,
+            setup: Some(("select", |m, t| {
+                t.selection = Some(selection_at(m, t)?);
+                Ok(())
+            })),
             call: |m, t| {
-                let (s, centre) = selection_about_ring(m, t.vertex(0)?)?;
-                rotate_selection(m, &s, centre, DQuat::from_rotation_x(30f64.to_radians()))
+                let (s, centre) = t.selection()?;
+                rotate_selection(m, s, *centre, DQuat::from_rotation_x(30f64.to_radians()))
             },
         },
         EditOp::ScaleSelection => Edit {
-            kind: K::Vertex,
-            reads: "the selection of select (the vertex, in the box reaching halfway to its nearest neighbour) and its neighbours' positions (the centre: their centroid); the selected positions are scaled by 1/2 about that centre and written back",
+            kind: K::Selected,
+            reads: "the positions of the selection of select at the element (made before, not counted: its vertices, an edge's ends, a face's corners; about a vertex's neighbours' centroid, an edge's midpoint, a face's centroid); they are scaled by 1/2 about that centre and written back",
             local: false,
-            setup: None,
+            setup: Some(("select", |m, t| {
+                t.selection = Some(selection_at(m, t)?);
+                Ok(())
+            })),
             call: |m, t| {
-                let (s, centre) = selection_about_ring(m, t.vertex(0)?)?;
-                scale_selection(m, &s, centre, DVec3::splat(0.5))
+                let (s, centre) = t.selection()?;
+                scale_selection(m, s, *centre, DVec3::splat(0.5))
             },
         },
         EditOp::InsertEdge => plain(
@@ -270,12 +294,52 @@ pub(super) fn selection_box<M: MeshTopology>(m: &M, v: VertexId) -> Aabb {
     }
 }
 
-/// The selection of [`EditOp::Select`] at `v`, and the centroid of `v`'s neighbours, about
-/// which [`EditOp::RotateSelection`] and [`EditOp::ScaleSelection`] move it.
-pub(super) fn selection_about_ring<M: MeshEdit>(
-    m: &M,
-    v: VertexId,
-) -> Result<(VertexSelection, DVec3)> {
+/// The box around a face's corners or an edge's ends, bounds included.
+fn bounds(points: &[DVec3]) -> Aabb {
+    let (min, max) = points.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), &p| (lo.min(p), hi.max(p)),
+    );
+    Aabb { min, max }
+}
+
+/// What [`EditOp::Select`] selects at the element of `t`: the faces with every corner in a
+/// face's bounding box, the edges with both ends in an edge's, the vertices in the box around a
+/// vertex that reaches halfway to its nearest neighbour ([`selection_box`]). Returns how many.
+fn select_at<M: MeshEdit>(m: &M, t: &Target) -> Result<usize> {
+    if let Some(f) = t.face {
+        return Ok(select_faces_in(m, &bounds(&corner_positions(m, f))).len());
+    }
+    if let Some(e) = t.edge {
+        let ends = m.edge_vertices(e).map(|v| m.position(v));
+        return Ok(select_edges_in(m, &bounds(&ends)).len());
+    }
+    Ok(select_vertices_in(m, &selection_box(m, t.vertex(0)?)).len())
+}
+
+/// The positions of face `f`'s corners, in order.
+fn corner_positions<M: MeshTopology>(m: &M, f: FaceId) -> Vec<DVec3> {
+    let mut corners = Vec::new();
+    m.face_vertices(f, |v| corners.push(m.position(v)));
+    corners
+}
+
+/// The selection of [`select_at`] as the vertices that [`EditOp::RotateSelection`] and
+/// [`EditOp::ScaleSelection`] move (a face's corners, an edge's ends), and the centre they
+/// move about: a face's centroid, an edge's midpoint, a vertex's neighbours' centroid (so that
+/// the vertex itself moves).
+pub(super) fn selection_at<M: MeshEdit>(m: &M, t: &Target) -> Result<(VertexSelection, DVec3)> {
+    if let Some(f) = t.face {
+        let corners = corner_positions(m, f);
+        let s = select_faces_in(m, &bounds(&corners));
+        return Ok((s.vertices(m), centroid(corners)));
+    }
+    if let Some(e) = t.edge {
+        let ends = m.edge_vertices(e).map(|v| m.position(v));
+        let s = select_edges_in(m, &bounds(&ends));
+        return Ok((s.vertices(m), (ends[0] + ends[1]) / 2.0));
+    }
+    let v = t.vertex(0)?;
     let s = select_vertices_in(m, &selection_box(m, v));
     let mut ring = Vec::new();
     m.vertex_vertices(v, |w| ring.push(m.position(w)));

@@ -6,7 +6,7 @@ use super::st::{
     EdgeId, EditOp, Error, FaceId, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Result,
     VertexId,
 };
-use super::subject::Subject;
+use super::subject::{Subject, SubjectKind};
 use glam::DVec3;
 
 /// A [`Subject`] with what every structure needs to find it and do the edit, found once on
@@ -29,6 +29,14 @@ pub struct Prepared {
     pub(super) other: Option<PolygonSoup>,
     /// The element in words ("edge 1 (v1 - v3)", "face 2 (v2, v0, v3)").
     pub description: String,
+}
+
+/// Does `op` select around its element (select, and rotate or scale a selection)?
+fn selects(op: EditOp) -> bool {
+    matches!(
+        op,
+        EditOp::Select | EditOp::RotateSelection | EditOp::ScaleSelection
+    )
 }
 
 pub(super) fn out_of_range(element: super::st::Element, id: u32, count: usize) -> Error {
@@ -72,7 +80,11 @@ pub fn prepare(
 ) -> Result<Prepared> {
     use super::st::Element as E;
     let kind = kind_of(op);
-    if subject.kind() != kind {
+    let selected = matches!(
+        subject.kind(),
+        SubjectKind::Vertex | SubjectKind::Edge | SubjectKind::Face
+    );
+    if subject.kind() != kind && !(kind == SubjectKind::Selected && selected) {
         return Err(Error::Unsupported(format!("{op} takes {}", kind.flags())));
     }
     let nv = reference.num_vertices();
@@ -113,7 +125,7 @@ pub fn prepare(
                         p.x, p.y, p.z
                     )
                 }
-                EditOp::Select | EditOp::RotateSelection | EditOp::ScaleSelection => format!(
+                _ if selects(op) => format!(
                     "vertex {v} (the selection: the vertices in the box around it that reaches halfway to its nearest neighbour)"
                 ),
                 _ => format!("vertex {v}"),
@@ -128,7 +140,12 @@ pub fn prepare(
             prepared.ends = Some([a, b]);
             prepared.vertices = vec![a, b];
             prepared.point = (at(a) + at(b)) / 2.0;
-            format!("edge {e} (v{a} - v{b})")
+            let selection = if selects(op) {
+                " (the selection: the edges with both ends in its bounding box)"
+            } else {
+                ""
+            };
+            format!("edge {e} (v{a} - v{b}){selection}")
         }
         Subject::Face(f) => {
             let nf = reference.num_faces();
@@ -139,7 +156,12 @@ pub fn prepare(
             prepared.point = centroid(c.iter().map(|&v| at(v)));
             let words = c.iter().map(|v| format!("v{v}")).collect::<Vec<_>>();
             prepared.corners = Some(c);
-            format!("face {f} ({})", words.join(", "))
+            let selection = if selects(op) {
+                " (the selection: the faces with every corner in its bounding box)"
+            } else {
+                ""
+            };
+            format!("face {f} ({}){selection}", words.join(", "))
         }
         Subject::Vertices(vs) => {
             for &v in vs {
@@ -313,6 +335,7 @@ impl Prepared {
             second,
             point: self.point,
             other: self.other.clone(),
+            selection: None,
         })
     }
 }

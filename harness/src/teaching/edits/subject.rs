@@ -29,6 +29,9 @@ pub enum SubjectKind {
     TwoEdges,
     /// Two faces (`--faces F,G`).
     TwoFaces,
+    /// A vertex, an edge or a face (`--vertex V`, `--edge E` or `--face F`): a selection made
+    /// around it selects elements of its kind.
+    Selected,
 }
 
 impl SubjectKind {
@@ -61,6 +64,9 @@ impl SubjectKind {
             SubjectKind::WholeMesh => "no element (every vertex of the mesh of --mesh)",
             SubjectKind::TwoEdges => "--edges E,F (two boundary edges)",
             SubjectKind::TwoFaces => "--faces F,G",
+            SubjectKind::Selected => {
+                "--vertex V, --edge E or --face F (the selection: elements of its kind around it)"
+            }
         }
     }
 }

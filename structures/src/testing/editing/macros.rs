@@ -1,6 +1,7 @@
 //! The macros that enrol a structure in the editing suite in one line.
 
-/// Generates the editing tests of every structure the registry marks `[editable]`: the
+/// Generates the editing tests of every structure the registry marks `[editable]` (the full
+/// suite) or `[moves]` (the operations it offers, the others refused as not offered): the
 /// callback of [`for_each_structure!`](crate::for_each_structure), so that the capability
 /// in the registry is the enrolment.
 ///
@@ -13,6 +14,9 @@ macro_rules! editing_suite {
     (@one $module:ident, $ty:ty, editable) => {
         $crate::edit_conformance!($module, $ty);
     };
+    (@one $module:ident, $ty:ty, moves) => {
+        $crate::edit_conformance!($module, $ty, offered_operations);
+    };
     ($($module:ident => $ty:ty $([$($capability:ident),*])?),* $(,)?) => {
         $( $crate::editing_suite!(@one $module, $ty, $($($capability),*)?); )*
 
@@ -22,7 +26,23 @@ macro_rules! editing_suite {
                 .into_iter()
                 .flatten()
                 .collect();
-            assert_eq!(tested, $crate::registry::editable_names());
+            // The `[editable]` ones offer the topological edits, the `[moves]` ones none.
+            let topological: Vec<&str> = tested
+                .iter()
+                .copied()
+                .filter(|name| {
+                    $crate::registry::visit_editable(name, Offers($crate::EditOp::SplitEdge))
+                        == Some(true)
+                })
+                .collect();
+            assert_eq!(topological, $crate::registry::editable_names());
+            struct Offers($crate::EditOp);
+            impl $crate::registry::EditVisitor for Offers {
+                type Output = bool;
+                fn visit<M: $crate::MeshEdit>(self) -> bool {
+                    M::supports(self.0)
+                }
+            }
             // And run-time choice by name reaches exactly those, each as itself.
             struct Name;
             impl $crate::registry::EditVisitor for Name {
@@ -42,6 +62,9 @@ macro_rules! editing_suite {
         None
     };
     (@name $ty:ty, editable) => {
+        Some(<$ty as $crate::MeshTopology>::NAME)
+    };
+    (@name $ty:ty, moves) => {
         Some(<$ty as $crate::MeshTopology>::NAME)
     };
 }

@@ -15,8 +15,10 @@
 //! refused as not implemented: a face is a list of coordinates with nothing shared, so an
 //! insertion or deletion would have to find its neighbours by comparing coordinates over the
 //! whole mesh, which the lab does not write for a structure the lecture keeps as its
-//! counter-example. It is not `[editable]` in the registry: the changing workloads and the
-//! editing suite's full count need the topological edits.
+//! counter-example. The registry marks it `[moves]`, not `[editable]`: `explain --op`,
+//! `list`, the report's measured operations and the editing suite (its offered operations)
+//! have it; the changing workloads and refinement, which need topological edits, say it does
+//! not offer them.
 //!
 //! | operation | how | cost |
 //! |---|---|---|
@@ -34,6 +36,7 @@ use super::{bits, ExplicitStorage};
 use crate::core::edit::{refuse, smooth_cost, Deletion, EditOp, MeshEdit, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{FaceId, VertexId};
+use crate::core::reads;
 use crate::core::topology::Cost;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -103,6 +106,8 @@ impl MeshEdit for ExplicitStorage {
             .iter()
             .map(|(&v, &p)| (bits(self.ids.positions[v as usize]), p))
             .collect();
+        // Every corner compared: the O(n) the lecture names, counted as reads for teaching.
+        reads::scanned("corners", &self.corners.keys, 0);
         for k in &mut self.corners.keys {
             if let Some(&p) = old_to_new.get(&bits(*k)) {
                 *k = p;
