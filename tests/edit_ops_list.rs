@@ -69,3 +69,49 @@ fn every_editing_operation_is_a_row_and_explicit_storage_a_column() {
     assert_eq!(cell("vertex-list", "smooth"), "O(n²)");
     assert_eq!(cell("index-half-edge", "smooth"), "O(n)");
 }
+
+/// `list --json`'s editing rows: per structure, its operations' costs and its schemes'.
+fn editing_json() -> Vec<serde_json::Value> {
+    let out = Command::new(env!("CARGO_BIN_EXE_topolab"))
+        .args(["list", "--json"])
+        .output()
+        .expect("run topolab");
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    v["editing"].as_array().expect("editing rows").clone()
+}
+
+#[test]
+fn refinement_and_thinning_have_rows_whose_cost_follows_the_operations_they_do() {
+    let text = list();
+    assert!(text.contains("Refinement and thinning"), "{text}");
+    for row in editing_json() {
+        let name = row["name"].as_str().unwrap();
+        let cost = |op: &str| -> String {
+            let costs = row["costs"].as_array().unwrap();
+            let c = costs.iter().find(|c| c[0] == op).expect("an operation");
+            c[1].as_str().unwrap().to_string()
+        };
+        let scheme = |s: &str| -> String {
+            let schemes = row["schemes"].as_array().unwrap();
+            let c = schemes.iter().find(|c| c[0] == s).expect("a scheme");
+            c[1].as_str().unwrap().to_string()
+        };
+        let bisection = scheme("bisection (a split)");
+        let decimation = scheme("decimation (a collapse)");
+        // A structure that does not split (collapse) has no bisection (decimation) ...
+        assert_eq!(cost("split-edge") == "—", bisection == "—", "{name}");
+        assert_eq!(cost("collapse-edge") == "—", decimation == "—", "{name}");
+        // ... one whose split scans has a scanning bisection, and a local one adds the heap.
+        if cost("split-edge") == "O(n)" {
+            assert_eq!(bisection, "O(n)", "{name}");
+        }
+        // A local bisection or decimation still pays for its heap: a logarithm shows.
+        for step in [&bisection, &decimation] {
+            let scans = ["—", "O(n)", "O(k·n)", "O(n²)", "O(∂n1)"];
+            if !scans.contains(&step.as_str()) {
+                assert!(step.contains("log n"), "{name}: {step}");
+            }
+        }
+    }
+}

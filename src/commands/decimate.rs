@@ -170,7 +170,7 @@ pub fn check_structure(name: &str) -> Result<(), Failure> {
     let why = if !registry::NAMES.contains(&name) {
         return Err(crate::input::unknown_structure(name));
     } else if registry::visit_editable(name, Decimates).is_some() {
-        "it offers no vertex split, so a decimation on it could not be undone"
+        "it does not offer both the edge collapse a decimation makes and the vertex split that undoes it (not offered: a missing feature)"
     } else {
         "it has no editing operations"
     };

@@ -6,6 +6,7 @@
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
+use topolab_structures::algorithms::schemes::Scheme;
 use topolab_structures::{Capabilities, Deletion, EditOp, MeshEdit, MeshTopology, Operator};
 
 /// An editable structure's declared cost per editing operation.
@@ -14,6 +15,9 @@ pub(crate) struct EditRow {
     pub(crate) name: &'static str,
     pub(crate) deletion: Deletion,
     pub(crate) costs: Vec<(&'static str, &'static str)>,
+    /// The declared cost of a step of each refinement and thinning ([`Scheme`]), `—` where
+    /// the structure does not run it.
+    pub(crate) schemes: Vec<(&'static str, String)>,
 }
 
 /// What an operation the structure does not implement shows instead of a cost.
@@ -36,6 +40,13 @@ impl registry::EditVisitor for EditRowOf {
                         UNSUPPORTED
                     };
                     (op.name(), cost)
+                })
+                .collect(),
+            schemes: Scheme::ALL
+                .iter()
+                .map(|&s| {
+                    let cost = s.declared::<M>();
+                    (s.name(), cost.unwrap_or_else(|| UNSUPPORTED.to_string()))
                 })
                 .collect(),
         }
@@ -174,7 +185,7 @@ pub fn list(json: bool) -> Result<String, Failure> {
     let edits = edit_rows();
     let _ = write!(
         out,
-        "\nEditing operations (MeshEdit) and their cost\n{:<20}",
+        "\nEditing operations (MeshEdit) and their cost\n{:<24}",
         "operation"
     );
     for r in &edits {
@@ -182,9 +193,22 @@ pub fn list(json: bool) -> Result<String, Failure> {
     }
     out.push('\n');
     for (i, op) in EditOp::ALL.iter().enumerate() {
-        let _ = write!(out, "{:<20}", op.name());
+        let _ = write!(out, "{:<24}", op.name());
         for r in &edits {
             let _ = write!(out, "{:>width$}", r.costs[i].1);
+        }
+        out.push('\n');
+    }
+    // The lecture's refinement and thinning: algorithms over the operations above, a step's
+    // declared cost from the structure's.
+    let _ = writeln!(
+        out,
+        "\nRefinement and thinning (the lecture's Verfeinerung, Ausdünnung), one step"
+    );
+    for (i, scheme) in Scheme::ALL.iter().enumerate() {
+        let _ = write!(out, "{:<24}", scheme.name());
+        for r in &edits {
+            let _ = write!(out, "{:>width$}", r.schemes[i].1);
         }
         out.push('\n');
     }
@@ -194,6 +218,10 @@ pub fn list(json: bool) -> Result<String, Failure> {
         "\n(n: elements scanned; k: the local size around the element edited (valence or face size), except in {} and {}, where k is the number of vertices selected)",
         EditOp::RotateSelection.name(),
         EditOp::ScaleSelection.name(),
+    );
+    let _ = writeln!(
+        out,
+        "(refinement and thinning: one step of √3 subdivision (a face split and 1.5 flips), of adaptive longest-edge bisection (the edge found from its ends, split, up to four heap pushes) and of decimation by quadric error (the collapse, the kept vertex's faces, O(k) heap keys); a scan in any part dominates)"
     );
     let _ = writeln!(out, "\noperators:");
     for spec in &topolab_harness::measuring::catalogue::CATALOGUE {

@@ -5,7 +5,8 @@
 //! ([`adaptive`]), the changing workloads of the Surface_mesh benchmark on any editable
 //! structure ([`changing`]), the selection, rotation, scaling and smoothing of vertices
 //! ([`select`]), decimation by quadric error and its reconstruction
-//! ([`decimate`]), element renumbering ([`ordering`]), and the union-find they share.
+//! ([`decimate`]), the declared cost of a step of each refinement and thinning
+//! ([`schemes`]), element renumbering ([`ordering`]), and the union-find they share.
 
 pub mod adaptive;
 pub mod changing;
@@ -15,6 +16,7 @@ pub mod hull;
 pub mod ordering;
 pub mod refine;
 pub mod repair;
+pub mod schemes;
 pub mod select;
 pub mod summary;
 pub(crate) mod union_find;
