@@ -100,17 +100,12 @@ pub fn table(names: &[&str], case: &Case, growth: bool) -> String {
     }
     let _ = writeln!(w);
     let mut missing = Vec::new();
-    let tori = counted::growth(op, subject);
-    for &name in names {
-        let _ = write!(w, "  {name:<width$}");
-        for (faces, case) in &tori {
-            let found = case
-                .as_ref()
-                .map_err(Clone::clone)
-                .and_then(|c| c.count(name));
-            let _ = write!(w, "  {:>18}", cell(&found));
+    for row in counted::growth_of(op, subject, names, &GROWTH_FACES) {
+        let _ = write!(w, "  {:<width$}", row.structure);
+        for (faces, found) in &row.counts {
+            let _ = write!(w, "  {:>18}", cell(found));
             if let Err(e) = found {
-                missing.push(format!("{name} on {faces} faces: {e}"));
+                missing.push(format!("{} on {faces} faces: {e}", row.structure));
             }
         }
         let _ = writeln!(w);

@@ -3,6 +3,7 @@
 //! their costs (every `EditOp` a row, the lecture's list among them; `—` where a structure
 //! does not offer it), as a table or JSON.
 
+use crate::commands::{explain_edit, list_counted};
 use crate::input::Failure;
 use crate::registry::{self, StructureVisitor};
 use std::fmt::Write as _;
@@ -91,8 +92,8 @@ impl StructureVisitor for Row {
     }
 }
 
-/// The text of `topolab list [--json]`.
-pub fn list(json: bool) -> Result<String, Failure> {
+/// The text of `topolab list [--json] [--counted]`.
+pub fn list(json: bool, counted: bool) -> Result<String, Failure> {
     let rows: Vec<StructureRow> = registry::NAMES
         .iter()
         .map(|n| registry::visit(n, Row).expect("registered"))
@@ -109,6 +110,11 @@ pub fn list(json: bool) -> Result<String, Failure> {
             "editing": edit_rows(),
             "absent": absent,
         });
+        let mut v = v;
+        if counted {
+            v["counted"] =
+                serde_json::json!(list_counted::counted_cells(&explain_edit::editable()));
+        }
         return Ok(serde_json::to_string_pretty(&v).expect("serialisable") + "\n");
     }
     let mut out = String::new();
@@ -223,6 +229,14 @@ pub fn list(json: bool) -> Result<String, Failure> {
         out,
         "(refinement and thinning: one step of √3 subdivision (a face split and 1.5 flips), of adaptive longest-edge bisection (the edge found from its ends, split, up to four heap pushes) and of decimation by quadric error (the collapse, the kept vertex's faces, O(k) heap keys); a scan in any part dominates)"
     );
+    if counted {
+        out += &list_counted::text(&explain_edit::editable(), width);
+    } else {
+        let _ = writeln!(
+            out,
+            "(`topolab list --counted` adds each operation's counted reads on tori of about 128 and 2,000 faces)"
+        );
+    }
     let _ = writeln!(out, "\noperators:");
     for spec in &topolab_harness::measuring::catalogue::CATALOGUE {
         let _ = writeln!(out, "  {:<18}{}", spec.name, spec.about);

@@ -17,6 +17,7 @@ pub mod info;
 mod info_che;
 mod info_text;
 pub mod list;
+pub mod list_counted;
 pub mod reconstruct;
 pub mod refine;
 pub mod refine_adaptive;

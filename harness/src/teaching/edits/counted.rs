@@ -63,12 +63,16 @@ pub enum CountError {
     /// The mesh, or the element on it, does not take the edit (not an oriented manifold, an
     /// element of the wrong kind or past the mesh's count, a structure that cannot store it).
     Mesh(String),
+    /// The structure does not offer the operation (a missing feature, not a refusal).
+    NotOffered(String),
 }
 
 impl std::fmt::Display for CountError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            CountError::NotCounted(m) | CountError::Mesh(m) => f.write_str(m),
+            CountError::NotCounted(m) | CountError::Mesh(m) | CountError::NotOffered(m) => {
+                f.write_str(m)
+            }
         }
     }
 }
@@ -145,11 +149,65 @@ pub fn growth(
     op: topolab_structures::EditOp,
     subject: &Subject,
 ) -> Vec<(usize, Result<EditCase, CountError>)> {
-    GROWTH_FACES
+    growth_on(op, subject, &GROWTH_FACES)
+}
+
+/// [`growth`] on tori of about `sizes` triangles.
+pub fn growth_on(
+    op: topolab_structures::EditOp,
+    subject: &Subject,
+    sizes: &[usize],
+) -> Vec<(usize, Result<EditCase, CountError>)> {
+    sizes
         .iter()
         .map(|&faces| {
             let torus = topolab_structures::meshes::torus_with_triangles(faces);
             (torus.num_faces(), EditCase::new(&torus, op, subject))
+        })
+        .collect()
+}
+
+/// One structure's counts of an edit on the tori of [`GROWTH_FACES`] ([`growth_of`]).
+#[derive(Clone, Debug)]
+pub struct Growth {
+    /// The structure.
+    pub structure: String,
+    /// Per torus, its faces and the count (or why there is none).
+    pub counts: Vec<(usize, Result<CountedEdit, CountError>)>,
+}
+
+impl Growth {
+    /// The structure's declared cost of the edit, from its first count.
+    pub fn cost(&self) -> Option<&str> {
+        self.counts
+            .iter()
+            .find_map(|(_, c)| c.as_ref().ok().map(|c| c.cost.as_str()))
+    }
+}
+
+/// `op` on `subject` counted on every structure of `names` on the tori of about `sizes`
+/// triangles (each torus's element prepared once, [`growth_on`]).
+pub fn growth_of(
+    op: topolab_structures::EditOp,
+    subject: &Subject,
+    names: &[&str],
+    sizes: &[usize],
+) -> Vec<Growth> {
+    let tori = growth_on(op, subject, sizes);
+    names
+        .iter()
+        .map(|&name| Growth {
+            structure: name.to_string(),
+            counts: tori
+                .iter()
+                .map(|(faces, case)| {
+                    let found = case
+                        .as_ref()
+                        .map_err(Clone::clone)
+                        .and_then(|c| c.count(name));
+                    (*faces, found)
+                })
+                .collect(),
         })
         .collect()
 }
@@ -163,6 +221,13 @@ struct Count<'a> {
 impl EditVisitor for Count<'_> {
     type Output = Result<CountedEdit, CountError>;
     fn visit<M: MeshEdit + 'static>(self) -> Self::Output {
+        if !M::supports(self.op) {
+            return Err(CountError::NotOffered(format!(
+                "{} does not offer {}",
+                M::NAME,
+                self.op
+            )));
+        }
         let spec = operations::edit::<M>(self.op);
         let mut m = M::from_soup(self.soup).map_err(|e| CountError::Mesh(e.to_string()))?;
         let mut target = self.prepared.target(&m).ok_or_else(|| {
