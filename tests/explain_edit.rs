@@ -344,15 +344,15 @@ fn a_split_on_the_face_rewrite_structures_names_their_records() {
 #[test]
 fn a_refused_collapse_on_the_face_rewrite_structures_exits_with_its_reason() {
     // On the open tetrahedron, edge 1 = v1 - v3 (a boundary vertex to the apex) passes the link
-    // condition, and its collapse would leave one valid triangle, (2, 0, 3); the third corners
-    // v0 and v2 of its two triangles are neighbours of valence 3, so OpenMesh's tetrahedron
-    // test refuses it. Edge 0 = v0 - v1, a boundary edge, fails the link condition: the rings
-    // of v0 and v1 share v2, which is on no triangle of the edge (the collapse would close the
-    // boundary into two triangles on v1, v2, v3).
+    // condition in both forms, and its collapse would leave one valid triangle, (2, 0, 3); the
+    // third corners v0 and v2 of its two triangles are neighbours of valence 3, so OpenMesh's
+    // tetrahedron test refuses it. Edge 0 = v0 - v1, a boundary edge, fails the link condition
+    // in its vertex-ring form: the rings of v0 and v1 share v2, which is on no triangle of the
+    // edge (the collapse would close the boundary into two triangles on v1, v2, v3).
     for name in ["winged-edge", "edge-list", "vertex-list"] {
         for (edge, reason) in [
             ("1", "OpenMesh's tetrahedron test fails"),
-            ("0", "the link condition fails"),
+            ("0", "the link condition in its vertex-ring form fails"),
         ] {
             let out = topolab(&["explain", name, "--op", "collapse", "--edge", edge]);
             let stderr = String::from_utf8_lossy(&out.stderr);

@@ -51,12 +51,14 @@ use crate::registry::{
 use std::fmt::Write;
 use std::sync::LazyLock;
 use topolab_harness::teaching::edits::described::{reads, Family};
+use topolab_harness::teaching::edits::refusals::witness;
 use topolab_harness::teaching::edits::{
     choose_on, default_case_on, edit, explain_on, kind_of, prepare, Choice, DefaultCase, Prepared,
     Subject, SubjectKind,
 };
 use topolab_structures::{
-    CheL0, CheL1, CheL2, CheL3, EditOp, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup,
+    CheL0, CheL1, CheL2, CheL3, EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology,
+    PolygonSoup,
 };
 
 /// An editing operation as `--op` takes it: every [`EditOp`] by its name, and the names of
@@ -523,9 +525,19 @@ impl Explain<'_> {
         let spec = edit::<M>(self.op);
         let op = self.op;
         let what = &self.prepared.description;
-        let done = explain_on::<M>(self.soup, op, self.prepared).map_err(|e| Failure {
-            message: format!("{e} ({what} on {})", self.label),
-            code: 1,
+        let done = explain_on::<M>(self.soup, op, self.prepared).map_err(|e| {
+            // The test that failed and the element that shows it, from the mesh before the
+            // edit: the same for every structure that refuses it.
+            let taught = match &e {
+                Error::EditRefused { reason, .. } => witness(self.soup, op, self.prepared, *reason)
+                    .map(|w| format!("\ntest and element: {w}"))
+                    .unwrap_or_default(),
+                _ => String::new(),
+            };
+            Failure {
+                message: format!("{e} ({what} on {}){taught}", self.label),
+                code: 1,
+            }
         })?;
         let mut out = String::new();
         let w = &mut out;
