@@ -57,8 +57,7 @@ use topolab_harness::teaching::edits::{
     Subject, SubjectKind,
 };
 use topolab_structures::{
-    CheL0, CheL1, CheL2, CheL3, EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology,
-    PolygonSoup,
+    CheL0, CheL1, CheL2, CheL3, EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup,
 };
 
 /// An editing operation as `--op` takes it: every [`EditOp`] by its name, and the names of

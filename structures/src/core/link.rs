@@ -9,7 +9,9 @@
 
 use crate::core::edit_op::Refusal;
 use crate::core::ids::VertexId;
-use crate::core::neighbourhood::{corners, faces_at, is_boundary_edge, is_boundary_vertex, neighbours};
+use crate::core::neighbourhood::{
+    corners, faces_at, is_boundary_edge, is_boundary_vertex, neighbours,
+};
 use crate::core::topology::MeshTopology;
 
 /// The test of the collapse of `v0` into `v1` that fails, in the order the structures ask
@@ -205,13 +207,16 @@ pub fn vertex_link<M: MeshTopology>(m: &M, v: VertexId) -> Link {
         let k = c.len();
         if let Some(i) = c.iter().position(|&w| w == v) {
             let (x, y) = (c[(i + 1) % k], c[(i + 2) % k]);
-            link.vertices.extend([LinkVertex::Vertex(x), LinkVertex::Vertex(y)]);
-            link.edges.push([LinkVertex::Vertex(x), LinkVertex::Vertex(y)]);
+            link.vertices
+                .extend([LinkVertex::Vertex(x), LinkVertex::Vertex(y)]);
+            link.edges
+                .push([LinkVertex::Vertex(x), LinkVertex::Vertex(y)]);
         }
     }
     for w in neighbours(m, v) {
         if is_boundary_edge(m, v, w) {
-            link.vertices.extend([LinkVertex::Vertex(w), LinkVertex::Omega]);
+            link.vertices
+                .extend([LinkVertex::Vertex(w), LinkVertex::Omega]);
             link.edges.push([LinkVertex::Vertex(w), LinkVertex::Omega]);
         }
     }
@@ -224,7 +229,8 @@ pub fn edge_link<M: MeshTopology>(m: &M, a: VertexId, b: VertexId) -> Link {
     let faces = faces_around(m, a);
     let (vl, vr) = third_corners(&faces, a, b);
     let mut link = Link::default();
-    link.vertices.extend(vl.into_iter().chain(vr).map(LinkVertex::Vertex));
+    link.vertices
+        .extend(vl.into_iter().chain(vr).map(LinkVertex::Vertex));
     if is_boundary_edge(m, a, b) {
         link.vertices.push(LinkVertex::Omega);
     }

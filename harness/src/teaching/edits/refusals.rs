@@ -52,6 +52,14 @@ pub fn refused_text(error: &Error, soup: &PolygonSoup, op: EditOp, prepared: &Pr
     }
 }
 
+/// [`witness`] of a refused face addition on `soup`, for any list of corners (the command
+/// line asks for three at least; the call takes any).
+pub fn new_face_witness(soup: &PolygonSoup, corners: &[u32], reason: Refusal) -> Option<String> {
+    let mut faces: Vec<Vec<u32>> = soup.faces().map(<[u32]>::to_vec).collect();
+    faces.push(corners.to_vec());
+    faces_witness(soup, &faces, Made::NewFace, reason)
+}
+
 fn v(x: VertexId) -> String {
     format!("v{}", x.0)
 }
@@ -121,7 +129,11 @@ fn collapse(soup: &PolygonSoup, prepared: &Prepared, reason: Refusal) -> Option<
     let full = if extra.is_empty() {
         format!("the full link condition (Dey et al.) holds: {links} = {edge}")
     } else {
-        let mut what: Vec<String> = extra.vertices.iter().map(|x| format!("vertex {x}")).collect();
+        let mut what: Vec<String> = extra
+            .vertices
+            .iter()
+            .map(|x| format!("vertex {x}"))
+            .collect();
         what.extend(extra.edges.iter().map(|[x, y]| format!("edge {x} - {y}")));
         format!(
             "the full link condition (Dey et al.) fails: {links} has {} beyond {edge}",
