@@ -31,6 +31,11 @@ pub fn witness(
         Refusal::LinkCondition | Refusal::TetrahedronTest if op == EditOp::CollapseEdge => {
             collapse(soup, prepared, reason)
         }
+        Refusal::BadFace | Refusal::NonManifoldEdge | Refusal::NonManifoldVertex
+            if op == EditOp::AddFace =>
+        {
+            new_face_witness(soup, &prepared.vertices, reason)
+        }
         Refusal::BadFace | Refusal::NonManifoldEdge | Refusal::NonManifoldVertex => {
             let (faces, what) = result_faces(soup, op, prepared)?;
             faces_witness(soup, &faces, what, reason)
@@ -155,7 +160,8 @@ enum Made {
 }
 
 /// The face list `op` would leave, where it is a face-list edit the lab can write out
-/// (adding, deleting or welding faces and vertices, deleting an edge), with what it makes.
+/// (deleting faces and vertices, welding vertices, deleting an edge; a new face is
+/// [`new_face_witness`]'s), with what it makes.
 fn result_faces(
     soup: &PolygonSoup,
     op: EditOp,
@@ -163,10 +169,6 @@ fn result_faces(
 ) -> Option<(Vec<Vec<u32>>, Made)> {
     let mut faces: Vec<Vec<u32>> = soup.faces().map(<[u32]>::to_vec).collect();
     let made = match (op, &prepared.subject) {
-        (EditOp::AddFace, _) => {
-            faces.push(prepared.vertices.clone());
-            Made::NewFace
-        }
         (EditOp::DeleteFace, Subject::Face(f)) => {
             faces.remove(*f as usize);
             Made::Left
