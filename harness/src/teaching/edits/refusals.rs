@@ -50,7 +50,7 @@ pub fn witness(
 pub fn refused_text(error: &Error, soup: &PolygonSoup, op: EditOp, prepared: &Prepared) -> String {
     match error {
         Error::EditRefused { reason, .. } => match witness(soup, op, prepared, *reason) {
-            Some(w) => format!("{error}; {w}"),
+            Some(w) => format!("{error}; test and element: {w}"),
             None => error.to_string(),
         },
         _ => error.to_string(),
