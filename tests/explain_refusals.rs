@@ -188,6 +188,19 @@ fn check_collapses(name: &str, mesh: &str) -> Vec<(u32, &'static str)> {
             );
             "tetrahedron"
         } else if text.contains("pmp-library's") {
+            let on_boundary = |x: u32| ring(&fs, x).iter().any(|&w| is_boundary(&fs, x, w));
+            if text.contains("\"a triangle with two boundary edges\" fails") {
+                let x = number_after(&text, &format!("the triangle (v{a}, v{b}, v"));
+                assert!(
+                    is_boundary(&fs, b, x) && is_boundary(&fs, x, a),
+                    "v{x}: {at}"
+                );
+            } else if text.contains("\"an interior edge between boundary vertices\" fails") {
+                assert!(
+                    on_boundary(a) && on_boundary(b) && !is_boundary(&fs, a, b),
+                    "{at}"
+                );
+            }
             assert!(
                 !extra.is_empty(),
                 "the full form fails where a boundary rule does: {at}"
@@ -244,6 +257,14 @@ fn a_refused_collapse_names_its_test_and_element_on_every_structure() {
             torus.iter().any(|&(e, t)| e == 1 && t == "vertex-ring"),
             "{name}: {torus:?}"
         );
+        // pmp-library's boundary rules: the single triangle's every edge has a triangle with
+        // two boundary edges; a strip's interior edges join two boundary vertices.
+        let mut boundary = 0;
+        for mesh in ["single-triangle", "triangle-strip", "grid"] {
+            let refused = check_collapses(name, mesh);
+            boundary += refused.iter().filter(|&&(_, t)| t == "boundary").count();
+        }
+        assert!(boundary > 0, "{name}: no boundary rule named");
     }
 }
 
