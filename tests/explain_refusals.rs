@@ -464,6 +464,40 @@ fn a_merged_polygon_that_repeats_a_corner_is_a_repeated_corner() {
 }
 
 #[test]
+fn a_weld_of_two_corners_of_a_face_is_a_repeated_corner() {
+    // Every two vertices of the open tetrahedron share a face: welding v1 into v0 would give
+    // that face v0 twice.
+    let fs = faces("open-tetrahedron");
+    let face = fs
+        .iter()
+        .find(|f| f.contains(&0) && f.contains(&1))
+        .expect("a face on v0 and v1");
+    let welded: Vec<u32> = face.iter().map(|&v| if v == 1 { 0 } else { v }).collect();
+    let show = |c: &[u32]| c.iter().map(u32::to_string).collect::<Vec<_>>().join(", ");
+    let expected = format!(
+        "repeated corner: the face ({}) with v1 welded into v0, ({}), has 2 distinct corners but corner 0 twice",
+        show(face),
+        show(&welded)
+    );
+    let asked = Asked {
+        vertices: vec![0, 1],
+        ..Asked::default()
+    };
+    let mut explained = 0;
+    for name in editable() {
+        let Err(message) = explain(name, "open-tetrahedron", EditOp::WeldVertices, &asked) else {
+            panic!("{name}: the weld succeeded");
+        };
+        if message.contains("not offer") {
+            continue;
+        }
+        explained += 1;
+        assert!(message.contains(&expected), "{name}: {message}");
+    }
+    assert!(explained > 0, "some structure welds vertices");
+}
+
+#[test]
 fn a_face_of_two_corners_is_too_few_corners_and_one_of_a_corner_twice_a_repeated_corner() {
     // The command line asks for three corners at least; the call takes any, so the witness of
     // a new face is asked directly, on what the index half-edge refuses.

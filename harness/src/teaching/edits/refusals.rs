@@ -157,6 +157,13 @@ enum Made {
     Merged,
     /// The faces left.
     Left,
+    /// The faces of a weld of vertex `from` into vertex `into`, each where it was.
+    Welded {
+        /// The vertex kept.
+        into: u32,
+        /// The vertex welded into it.
+        from: u32,
+    },
 }
 
 /// The face list `op` would leave, where it is a face-list edit the lab can write out
@@ -183,7 +190,10 @@ fn result_faces(
                     *x = vs[0];
                 }
             }
-            Made::Left
+            Made::Welded {
+                into: vs[0],
+                from: vs[1],
+            }
         }
         (EditOp::DeleteEdge, Subject::Edge(_)) => {
             let [a, b] = prepared.ends?;
@@ -206,7 +216,7 @@ fn result_faces(
                 .filter(|&(f, _)| f != f1 && f != f2)
                 .map(|(_, c)| c)
                 .collect();
-            // Last, so that a face-list check names it first only where nothing else fails.
+            // The other faces are the mesh's own, valid: what fails is the merged polygon.
             faces.push(merged);
             Made::Merged
         }
@@ -224,14 +234,17 @@ fn faces_witness(
     reason: Refusal,
 ) -> Option<String> {
     let result = PolygonSoup::from_polygons(soup.positions.clone(), faces);
-    let polygon = |f: usize| {
-        let c: Vec<String> = faces[f].iter().map(u32::to_string).collect();
-        let what = match made {
-            Made::NewFace => "the new face",
-            Made::Merged => "the merged polygon",
-            Made::Left => "a face",
-        };
-        format!("{what} ({})", c.join(", "))
+    let corners = |c: &[u32]| c.iter().map(u32::to_string).collect::<Vec<_>>().join(", ");
+    let polygon = |f: usize| match made {
+        Made::NewFace => format!("the new face ({})", corners(&faces[f])),
+        Made::Merged => format!("the merged polygon ({})", corners(&faces[f])),
+        Made::Left => format!("a face ({})", corners(&faces[f])),
+        // A weld rewrites faces in place: face f was the mesh's face f.
+        Made::Welded { into, from } => format!(
+            "the face ({}) with v{from} welded into v{into}, ({}),",
+            corners(soup.face(f)),
+            corners(&faces[f])
+        ),
     };
     let error = match reason {
         Refusal::BadFace => result.check().err()?,
