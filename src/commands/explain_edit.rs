@@ -33,9 +33,12 @@
 //! canonical `grid`, where none succeeds on triangles, on the canonical `quad-strip`, and where
 //! none succeeds on an open mesh, on a torus of 128 triangles), named, with one where that
 //! structure refuses it and why. A refused edit exits with code 1 and the structure's reason
-//! ([`topolab_structures::Refusal`]); an operation the structure does not offer exits with
-//! code 1 too, said to be not offered (a missing feature, not a refusal). An element past the mesh's
-//! count, or of the wrong kind for the operation, is a usage error (code 2).
+//! ([`topolab_structures::Refusal`]), followed, where the mesh shows it, by the test that
+//! failed and the element that shows it (`test and element: ...`,
+//! [`topolab_harness::teaching::edits::refusals::witness`], the same for every structure); an
+//! operation the structure does not offer exits with code 1 too, said to be not offered (a
+//! missing feature, not a refusal). An element past the mesh's count, or of the wrong kind for
+//! the operation, is a usage error (code 2).
 //!
 //! The records are each structure's [`MeshTopology::explain`] lines read as records, except
 //! for the CHE levels, whose containers are listed entry by entry
