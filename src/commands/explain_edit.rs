@@ -33,9 +33,12 @@
 //! canonical `grid`, where none succeeds on triangles, on the canonical `quad-strip`, and where
 //! none succeeds on an open mesh, on a torus of 128 triangles), named, with one where that
 //! structure refuses it and why. A refused edit exits with code 1 and the structure's reason
-//! ([`topolab_structures::Refusal`]); an operation the structure does not offer exits with
-//! code 1 too, said to be not offered (a missing feature, not a refusal). An element past the mesh's
-//! count, or of the wrong kind for the operation, is a usage error (code 2).
+//! ([`topolab_structures::Refusal`]), followed, where the mesh shows it, by the test that
+//! failed and the element that shows it (`test and element: ...`,
+//! [`topolab_harness::teaching::edits::refusals::witness`], the same for every structure); an
+//! operation the structure does not offer exits with code 1 too, said to be not offered (a
+//! missing feature, not a refusal). An element past the mesh's count, or of the wrong kind for
+//! the operation, is a usage error (code 2).
 //!
 //! The records are each structure's [`MeshTopology::explain`] lines read as records, except
 //! for the CHE levels, whose containers are listed entry by entry
@@ -51,12 +54,13 @@ use crate::registry::{
 use std::fmt::Write;
 use std::sync::LazyLock;
 use topolab_harness::teaching::edits::described::{reads, Family};
+use topolab_harness::teaching::edits::refusals::witness;
 use topolab_harness::teaching::edits::{
     choose_on, default_case_on, edit, explain_on, kind_of, prepare, Choice, DefaultCase, Prepared,
     Subject, SubjectKind,
 };
 use topolab_structures::{
-    CheL0, CheL1, CheL2, CheL3, EditOp, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup,
+    CheL0, CheL1, CheL2, CheL3, EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup,
 };
 
 /// An editing operation as `--op` takes it: every [`EditOp`] by its name, and the names of
@@ -526,9 +530,19 @@ impl Explain<'_> {
         let spec = edit::<M>(self.op);
         let op = self.op;
         let what = &self.prepared.description;
-        let done = explain_on::<M>(self.soup, op, self.prepared).map_err(|e| Failure {
-            message: format!("{e} ({what} on {})", self.label),
-            code: 1,
+        let done = explain_on::<M>(self.soup, op, self.prepared).map_err(|e| {
+            // The test that failed and the element that shows it, from the mesh before the
+            // edit: the same for every structure that refuses it.
+            let taught = match &e {
+                Error::EditRefused { reason, .. } => witness(self.soup, op, self.prepared, *reason)
+                    .map(|w| format!("\ntest and element: {w}"))
+                    .unwrap_or_default(),
+                _ => String::new(),
+            };
+            Failure {
+                message: format!("{e} ({what} on {}){taught}", self.label),
+                code: 1,
+            }
         })?;
         let mut out = String::new();
         let w = &mut out;

@@ -141,12 +141,14 @@ pub enum Refusal {
     NoSuchElement,
     /// A weld of a vertex to itself: both ids name the same vertex.
     SameVertex,
-    /// A face with fewer than three corners or a repeated vertex.
+    /// A face with too few corners (fewer than three) or a repeated corner (a vertex twice):
+    /// two tests of `docs/editing.md`, which `topolab explain` tells apart, naming the face or
+    /// the corner.
     BadFace,
     /// The result would have an edge with more than two faces, or two faces running it the
     /// same way (an oriented manifold's two faces of an edge run it in opposite directions).
     NonManifoldEdge,
-    /// The result would have a vertex whose faces form several fans.
+    /// Several fans: the result would have a vertex whose faces form several fans.
     NonManifoldVertex,
     /// The operation needs triangles (flip, edge split, collapse) and a face is not one.
     NotTriangles,
@@ -159,14 +161,15 @@ pub enum Refusal {
     /// A collapse of the edge from `v0` to `v1` refused by the link condition as pmp-library's
     /// `SurfaceMesh::is_collapse_ok` (and OpenMesh's `TriConnectivity::is_collapse_ok`) state
     /// it, with `vl` and `vr` the third corners of the edge's one or two triangles:
-    /// - the link condition proper: the one-rings of `v0` and `v1` share a vertex other than
-    ///   `vl` and `vr` (on the canonical `torus`, edge 1 = v3 - v4, whose rings share v5 as
-    ///   well: edge v4 - v5 would have four triangles);
-    /// - and the rules `is_collapse_ok` adds for the boundary and degenerate cases: a triangle
-    ///   of the edge whose two other edges are both boundary edges (the collapse would leave an
-    ///   edge without faces), `vl` equal to `vr` (the edge's two triangles share their third
-    ///   corner), and an interior edge between two boundary vertices (the collapse would pinch
-    ///   the boundary at one vertex).
+    /// - the link condition in its vertex-ring form: the one-rings of `v0` and `v1` share a
+    ///   vertex other than `vl` and `vr` (on the canonical `torus`, edge 1 = v3 - v4, whose
+    ///   rings share v5 as well: edge v4 - v5 would have four triangles). The full link
+    ///   condition of Dey et al. compares the links' edges too; see `docs/editing.md`;
+    /// - and the rules `is_collapse_ok` adds for the boundary and degenerate cases (named as
+    ///   in `docs/editing.md`): "a triangle with two boundary edges" (the collapse would leave
+    ///   an edge without faces), "distinct third corners" (`vl` equal to `vr`: the edge's two
+    ///   triangles share their third corner) and "an interior edge between boundary vertices"
+    ///   (the collapse would pinch the boundary at one vertex).
     ///
     /// The C++ baselines also return it where the library's own test, asked after the lab's,
     /// fails (OpenMesh's `is_collapse_ok`, CGAL's `Euler::does_satisfy_link_condition`), and the
@@ -175,14 +178,15 @@ pub enum Refusal {
     /// [`Refusal::TetrahedronTest`], not this. See `docs/editing.md` for an allowed and a
     /// refused example.
     LinkCondition,
-    /// A collapse refused by OpenMesh's tetrahedron test, which is not the link condition:
-    /// the third corners `vl` and `vr` of the edge's two triangles are neighbours and both have
-    /// valence 3. OpenMesh's Decimater asks it in `BaseDecimaterT::is_collapse_legal`, after
-    /// `is_collapse_ok`; pmp-library's `is_collapse_ok` does not have it. On a closed
-    /// tetrahedron it refuses a collapse that would leave two triangles on the same three
-    /// vertices, which the one-ring test passes. It refuses more than that: on the open
+    /// A collapse refused by OpenMesh's tetrahedron test: the third corners `vl` and `vr` of
+    /// the edge's two triangles are neighbours and both have valence 3. OpenMesh's Decimater
+    /// asks it in `BaseDecimaterT::is_collapse_legal`, after `is_collapse_ok`; pmp-library's
+    /// `is_collapse_ok` does not have it. On a closed tetrahedron it refuses a collapse that
+    /// would leave two triangles on the same three vertices, which the link condition in its
+    /// vertex-ring form passes and the full link condition of Dey et al. fails (the links of
+    /// the edge's ends share the edge vl - vr). It refuses more than that: on the open
     /// tetrahedron (the CHE thesis chapter's Figure 4.10) the collapse of edge 1 (v1 into the
-    /// apex v3) passes the link condition and would leave one valid triangle, (2, 0, 3), but
+    /// apex v3) passes the link condition in both forms and would leave one valid triangle, (2, 0, 3), but
     /// v0 and v2 are neighbours of valence 3, so it is refused. See `docs/editing.md`.
     TetrahedronTest,
     /// Boundary curves to weld run the same way where they meet: the result would not be
@@ -212,11 +216,13 @@ impl Refusal {
         match self {
             Refusal::NoSuchElement => "an id is out of range or names a deleted element",
             Refusal::SameVertex => "both ids name the same vertex: a vertex cannot be welded to itself",
-            Refusal::BadFace => "a face needs at least three distinct vertices",
-            Refusal::NonManifoldEdge => {
-                "an edge would have more than two faces, or two faces running it the same way"
+            Refusal::BadFace => {
+                "too few corners or a repeated corner: a face needs at least three corners, none of them twice"
             }
-            Refusal::NonManifoldVertex => "a vertex's faces would form several fans",
+            Refusal::NonManifoldEdge => {
+                "non-manifold edge: an edge would have more than two faces, or two faces running it the same way"
+            }
+            Refusal::NonManifoldVertex => "several fans: a vertex's faces would form several fans",
             Refusal::NotTriangles => "the faces around the edge must be triangles",
             Refusal::BoundaryEdge => {
                 "a boundary edge has one face: it cannot be flipped, nor deleted to merge two faces"
@@ -224,10 +230,10 @@ impl Refusal {
             Refusal::EdgeExists => "the edge it would create exists already",
             Refusal::NotNeighbours => "the vertices are not neighbours as required",
             Refusal::LinkCondition => {
-                "the link condition fails: the result would not be a manifold with the mesh's topology"
+                "the link condition in its vertex-ring form, or a boundary rule of pmp-library's is_collapse_ok, fails: the result would not be a manifold with the mesh's topology"
             }
             Refusal::TetrahedronTest => {
-                "OpenMesh's tetrahedron test fails (it is not the link condition): the third corners of the edge's two triangles are neighbours and both have valence 3"
+                "OpenMesh's tetrahedron test fails: the third corners vl and vr of the edge's two triangles are neighbours and both have valence 3"
             }
             Refusal::Orientation => {
                 "the boundary curves run the same way where they meet: the result would not be oriented"

@@ -17,6 +17,7 @@ pub mod edit_op;
 pub mod error;
 pub mod family;
 pub mod ids;
+pub mod link;
 pub mod neighbourhood;
 pub mod offers;
 pub mod operator;

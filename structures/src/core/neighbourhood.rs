@@ -7,6 +7,7 @@
 use crate::core::edit_op::{EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
+use crate::core::link::collapse_failure;
 use crate::core::topology::MeshTopology;
 
 pub(crate) use crate::core::offers::refuse;
@@ -106,7 +107,8 @@ pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
 
 /// The test of [`MeshEdit::collapse_edge`](crate::core::edit::MeshEdit::collapse_edge) over
 /// the queries alone (pmp-library's `is_collapse_ok`, refused as [`Refusal::LinkCondition`],
-/// with OpenMesh's tetrahedron test, refused as [`Refusal::TetrahedronTest`]), so that
+/// with OpenMesh's tetrahedron test, refused as [`Refusal::TetrahedronTest`]: each test is
+/// [`crate::core::link::collapse_failure`]'s), so that
 /// any structure can run it (`is_deleted` tells the vertices an edit deleted): the faces around
 /// `from` with their corners when the collapse may be done, the refusal otherwise.
 /// [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse)'s default, and the
@@ -132,40 +134,10 @@ pub fn check_collapse<M: MeshTopology>(
     if faces.iter().any(|c| c.len() != 3) {
         return no(Refusal::NotTriangles);
     }
-    let third = |a: VertexId, b: VertexId| {
-        faces.iter().find_map(|c| {
-            (0..3)
-                .find(|&i| c[i] == a && c[(i + 1) % 3] == b)
-                .map(|i| c[(i + 2) % 3])
-        })
-    };
-    let (left, right) = (third(from, to), third(to, from));
-    for (side, a, b) in [(left, to, from), (right, from, to)] {
-        if let Some(x) = side {
-            if is_boundary_edge(m, a, x) && is_boundary_edge(m, x, b) {
-                return no(Refusal::LinkCondition);
-            }
-        }
-    }
-    if left == right {
-        return no(Refusal::LinkCondition);
-    }
-    // OpenMesh's tetrahedron test (its Decimater's `is_collapse_legal`), not the link condition.
-    if let (Some(l), Some(r)) = (left, right) {
-        let valence = |v: VertexId| neighbours(m, v).len();
-        if neighbours(m, l).contains(&r) && valence(l) == 3 && valence(r) == 3 {
-            return no(Refusal::TetrahedronTest);
-        }
-    }
-    if is_boundary_vertex(m, from) && is_boundary_vertex(m, to) && !is_boundary_edge(m, from, to) {
-        return no(Refusal::LinkCondition);
-    }
-    let ring1 = neighbours(m, to);
-    if ring0
-        .iter()
-        .any(|&w| w != to && Some(w) != left && Some(w) != right && ring1.contains(&w))
-    {
-        return no(Refusal::LinkCondition);
+    // The tests in pmp-library's order, OpenMesh's tetrahedron test after its rule of
+    // distinct third corners (`core/link.rs` names each, as docs/editing.md defines them).
+    if let Some(failure) = collapse_failure(m, from, to, &faces, &ring0) {
+        return no(failure.refusal());
     }
     Ok((around, faces))
 }

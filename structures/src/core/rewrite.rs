@@ -431,19 +431,29 @@ pub fn diagonal_split(
     Some((run(i, j), run(j, i)))
 }
 
-/// The polygon that merges face `first` (running a → b at corner `i`) and face `second`
-/// (running b → a at corner `j`) across the edge {a, b}: `first`'s corners from b round to a,
-/// then `second`'s strictly between a and b. `None` when a corner would repeat.
+/// The corners of the polygon that merges face `first` (running a → b at corner `i`) and
+/// face `second` (running b → a at corner `j`) across the edge {a, b}: `first`'s corners from
+/// b round to a, then `second`'s strictly between a and b, whether or not one repeats (what
+/// `explain` shows of a refused deletion).
+pub fn merged_corners<T>(first: &[T], i: usize, second: &[T], j: usize) -> Vec<T>
+where
+    T: Copy,
+{
+    let (k1, k2) = (first.len(), second.len());
+    // first[i] = a, first[i + 1] = b; second[j] = b, second[j + 1] = a.
+    let mut out: Vec<T> = (1..=k1).map(|t| first[(i + t) % k1]).collect();
+    out.extend((2..k2).map(|t| second[(j + t) % k2]));
+    out
+}
+
+/// [`merged_corners`], `None` when a corner would repeat.
 pub fn merged_polygon(
     first: &[VertexId],
     i: usize,
     second: &[VertexId],
     j: usize,
 ) -> Option<Vec<VertexId>> {
-    let (k1, k2) = (first.len(), second.len());
-    // first[i] = a, first[i + 1] = b; second[j] = b, second[j + 1] = a.
-    let mut out: Vec<VertexId> = (1..=k1).map(|t| first[(i + t) % k1]).collect();
-    out.extend((2..k2).map(|t| second[(j + t) % k2]));
+    let out = merged_corners(first, i, second, j);
     let distinct = (1..out.len()).all(|t| !out[..t].contains(&out[t]));
     distinct.then_some(out)
 }

@@ -5,6 +5,7 @@ use super::explained::explain_on;
 use super::operations::centroid;
 use super::operations::edit;
 use super::prepare::{corners_of, prepare};
+use super::refusals::refused_text;
 use super::subject::{Subject, SubjectKind};
 use crate::teaching::edits::picture::TeachingEdit;
 use topolab_structures::meshes;
@@ -175,7 +176,10 @@ pub fn choose_on<M: MeshEdit>(soup: &PolygonSoup, op: EditOp) -> Choice {
                 ..
             }) => {}
             Err(e) => {
-                choice.refused.get_or_insert((subject, e.to_string()));
+                if choice.refused.is_none() {
+                    let why = refused_text(&e, soup, op, &prepared);
+                    choice.refused = Some((subject, why));
+                }
             }
         }
         if changed {

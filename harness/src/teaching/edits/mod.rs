@@ -24,6 +24,7 @@ mod operations;
 pub mod picture;
 mod prepare;
 pub mod records;
+pub mod refusals;
 mod subject;
 
 pub use choose::{

@@ -594,9 +594,10 @@ impl<L: HalfEdgeLinksMut> HalfEdge<L> {
         if vl == vr {
             return Some(Refusal::LinkCondition);
         }
-        // OpenMesh's tetrahedron test, not the link condition: collapsing an edge of a closed
-        // tetrahedron would leave two triangles on the same three vertices, which the one-ring
-        // test below passes; the test refuses every collapse whose vl and vr are neighbours of
+        // OpenMesh's tetrahedron test (its Decimater's, not `is_collapse_ok`'s): collapsing an
+        // edge of a closed tetrahedron would leave two triangles on the same three vertices,
+        // which the link condition in its vertex-ring form below passes and the full link
+        // condition fails; the test refuses every collapse whose vl and vr are neighbours of
         // valence 3 (on the open tetrahedron too, where the result would be one triangle).
         if vl != NONE
             && vr != NONE
