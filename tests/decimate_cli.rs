@@ -129,7 +129,7 @@ fn bad_input_and_bad_requests_are_refused_and_nothing_is_written() {
             vec!["--faces", "20"],
             vec!["--structure", "explicit"],
             2,
-            "it has no editing operations; decimation and reconstruction run on the structures the decimation suite enrols",
+            "it does not offer both the edge collapse a decimation makes and the vertex split that undoes it (not offered",
         ),
         (
             "torus",

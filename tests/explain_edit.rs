@@ -817,10 +817,28 @@ fn set_position_writes_the_vertex_position_only() {
     }
 }
 
-/// A deletion shows as one: on a structure that marks (the half-edges), the deleted face and
-/// the edge that bordered it alone get records of their own, as a deleted vertex does.
+/// A deletion shows as one: on every structure the deleted face gets a record of its own (a
+/// marking structure's, or a line saying a compacting one removed it at once and which face
+/// took its slot); on a structure that marks (the half-edges), the edge that bordered it alone
+/// too, as a deleted vertex does.
 #[test]
 fn a_deleted_face_and_edge_get_records_of_their_own() {
+    for name in editable() {
+        if not_offered(name, EditOp::DeleteFace) {
+            continue;
+        }
+        let text = run(
+            name,
+            None,
+            EditOp::DeleteFace,
+            &Asked {
+                face: Some(0),
+                ..Asked::default()
+            },
+        )
+        .unwrap_or_else(|f| panic!("{name}: {}", f.message));
+        assert!(added(&text).contains(&"f0.deleted"), "{name}: {text}");
+    }
     for name in ["index-half-edge", "pointer-half-edge"] {
         let text = run(
             name,

@@ -433,7 +433,7 @@ fn bad_levels_records_and_requests_are_refused_and_nothing_is_written() {
             "explicit",
         ],
         2,
-        "no editing operations",
+        "it does not offer both the edge collapse",
     );
     assert!(!out.exists());
     std::fs::remove_dir_all(&dir).unwrap();

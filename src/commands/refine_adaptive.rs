@@ -11,8 +11,8 @@
 //! (`--allow-memory` runs it anyway). The prediction and its memory are stated on stderr before
 //! the work, and the faces made so far shown against it while it runs (a bar, on a terminal).
 //! Refused (exit 1): a structure that cannot refine locally (the regular grid and the height
-//! field, whose vertices are implicit in (i, j): a split would break the grid; the explicit
-//! storage, which has no editing operations), polygons, input the structure cannot store. The
+//! field, whose vertices are implicit in (i, j): a split would break the grid; explicit
+//! storage, which moves vertices only and does not offer the split), polygons, input the structure cannot store. The
 //! final face count is known only once the refinement ends (the medians a split makes may be
 //! split too), so the refinement runs under a budget of faces, the lower of the `u32` limit and
 //! what the available memory holds at the structure's bytes per face (measured on

@@ -7,7 +7,9 @@ use super::records::{diff, records};
 use super::subject::Subject;
 use crate::teaching::edits::picture::EditPicture;
 use std::collections::HashSet;
-use topolab_structures::{EditOp, Error, FaceId, MeshEdit, PolygonSoup, Refusal, Result, VertexId};
+use topolab_structures::{
+    Deletion, EditOp, Error, FaceId, MeshEdit, PolygonSoup, Refusal, Result, VertexId,
+};
 
 /// One structure's explained edit.
 #[derive(Clone, Debug)]
@@ -60,18 +62,53 @@ pub fn explain_on<M: MeshEdit + 'static>(
     };
     let before_records = records(&m);
     let before = picture(&m, marked_subject(prepared));
+    let faces_before = m.num_faces();
     (spec.call)(&mut m, &target)?;
     m.validate()?;
     let after_records = records(&m);
     let made = marked_made(&before, &m, prepared);
     let after = picture(&m, made);
+    let mut changes = diff(&before_records, &after_records);
+    changes.extend(compacted::<M>(faces_before, m.num_faces(), target.face));
     Ok(Explained {
         structure: M::NAME,
         own_id,
-        changes: diff(&before_records, &after_records),
+        changes,
         before,
         after,
     })
+}
+
+/// A deletion in a structure that removes faces at once (it does not mark them): the records
+/// alone show only the last face moving into the freed slot, so a line says what was deleted,
+/// as a marking structure's `f{i}.deleted` record does. `deleted`: the face the edit named, if
+/// one.
+fn compacted<M: MeshEdit>(before: usize, after: usize, deleted: Option<FaceId>) -> Vec<String> {
+    if M::DELETION == Deletion::Marked || after >= before {
+        return Vec::new();
+    }
+    let gone = before - after;
+    let how = match M::DELETION {
+        Deletion::Compacted => {
+            "the triangle arrays are compacted, so the ids of later triangles change"
+        }
+        _ => "the last face moves into each freed slot",
+    };
+    match deleted {
+        Some(f) if gone == 1 => vec![format!(
+            "+ f{}.deleted: yes (removed at once: {how}; the face that was f{} is now f{})",
+            f.0,
+            before - 1,
+            f.0
+        )],
+        _ if gone == 1 => vec![format!(
+            "+ faces.deleted: 1 (removed at once: {how}; id f{after} is gone)"
+        )],
+        _ => vec![format!(
+            "+ faces.deleted: {gone} (removed at once: {how}; ids f{after} to f{} are gone)",
+            before - 1
+        )],
+    }
 }
 
 /// Vertices and edges (by their ends) drawn marked.
