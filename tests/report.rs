@@ -157,6 +157,10 @@ fn a_quick_report_has_every_structure_and_operator_and_no_mismatch() {
         topolab::HAS_QHULL
     );
     assert!(html.contains("Table 4.1, measured") && html.contains("Figure 4.10"));
+    // No number a reader cannot use: no infinite or undefined ratio anywhere on the page.
+    for bad in ["inf×", "NaN", ">inf<", " inf "] {
+        assert!(!html.contains(bad), "the page shows {bad:?}");
+    }
     // How the baselines are run: one entry per outside library the run used, each saying its
     // build, on the page and in results.json.
     let baselines = json["baselines"].as_array().unwrap();

@@ -201,9 +201,13 @@ pub fn limit(
     })
 }
 
-/// A measured cell's time as a multiple of its limit.
+/// A measured cell's time as a multiple of its limit; `None` where the limit is no positive
+/// time (a model that reads nothing per element, such as the boundary curves of a closed
+/// torus: no ratio to it means anything, and `inf×` is not a number a reader can use).
 pub(crate) fn times_limit(m: &crate::measuring::cells::Measurement) -> Option<f64> {
-    Some(m.ns_per_item? / m.limit.as_ref()?.ns_per_item)
+    let limit = m.limit.as_ref()?.ns_per_item;
+    let x = m.ns_per_item? / limit;
+    (limit > 0.0 && x.is_finite()).then_some(x)
 }
 
 /// How a limit was set, for a cell's tooltip and a target's reason.

@@ -15,7 +15,7 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
     let Some((mesh, tri)) = largest(r, "torus") else {
         return;
     };
-    let _ = write!(h, "<h2>Sweeps and their limits ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the measured time as a multiple of its <i>limit</i>, the time the structure's declared access model allows on this machine (the probe's bandwidth and load latency by working-set size, under Machine): the largest of the bytes the sweep reads at the bandwidth (each container's cache lines once, as a sweep in storage order reads them; a scan in full for every query), its chain of dependent loads (each step of a fan walk is one) at the latency of one query's working set, and the checksum's arithmetic per answer. The reads of the edge keys the checksum mixes in count too. 1× = as fast as the design allows; well above = work the model leaves out (arithmetic on the chain, branches, bookkeeping) or a layout poorer than declared; below 1× = consecutive queries overlapped their short chains, which the model counts one after the other; – = no model declared. Hover a cell for its bounds. The last row is each structure's worst cell.</div><table><tr><th class=l>operator</th>");
+    let _ = write!(h, "<h2>Sweeps and their limits ({mesh}, {tri} triangles)</h2><div class=read><b>How to read it.</b> A sweep answers the operator for every element; the cell shows nanoseconds per element. Below it, the measured time as a multiple of its <i>limit</i>, the time the structure's declared access model allows on this machine (the probe's bandwidth and load latency by working-set size, under Machine): the largest of the bytes the sweep reads at the bandwidth (each container's cache lines once, as a sweep in storage order reads them; a scan in full for every query), its chain of dependent loads (each step of a fan walk is one) at the latency of one query's working set, and the checksum's arithmetic per answer. The reads of the edge keys the checksum mixes in count too. 1× = as fast as the design allows; well above = work the model leaves out (arithmetic on the chain, branches, bookkeeping) or a layout poorer than declared; below 1× = consecutive queries overlapped their short chains, which the model counts one after the other; limit 0 = the model reads nothing per element (the boundary curves of a closed torus), so no ratio is given; – = no model declared. Hover a cell for its bounds. The last row is each structure's worst cell.</div><table><tr><th class=l>operator</th>");
     for n in names {
         let _ = write!(h, "<th>{n}</th>");
     }
@@ -38,6 +38,9 @@ fn sweeps(h: &mut String, r: &Results, names: &[&str]) {
                         (Some(x), Some(l)) => format!(
                             "<td title=\"{}\">{t}<br><span class=small>{x:.1}× limit</span></td>",
                             esc(&limit_text(l)),
+                        ),
+                        (None, Some(_)) => format!(
+                            "<td title=\"the model reads nothing per element here\">{t}<br><span class=small>limit 0</span></td>"
                         ),
                         _ => format!("<td>{t}<br><span class=small>–</span></td>"),
                     }
