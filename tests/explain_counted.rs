@@ -4,8 +4,17 @@
 mod common;
 
 use common::run::topolab;
-use topolab::commands::explain_edit::editable;
 use topolab_structures::EditOp;
+
+/// The structures `--op` explains that offer the topological edits (`[editable]`): explicit
+/// storage, which moves vertices only, offers none of the edits these tests refuse or count.
+fn editable() -> Vec<&'static str> {
+    let topological = topolab_structures::registry::editable_names();
+    topolab::commands::explain_edit::editable()
+        .into_iter()
+        .filter(|n| topological.contains(n))
+        .collect()
+}
 
 /// The lesson of counted edits: a flip on the vertex list searches the faces, so its reads
 /// grow with the mesh, where the index half-edge and the CHE level 2 reach the edge through

@@ -6,15 +6,7 @@
 #[allow(dead_code)]
 mod run;
 
-use run::topolab;
-
-/// The lines of `text` that change a record (`  key.field: old -> new` or `  key: old -> new`).
-fn changed(text: &str) -> Vec<&str> {
-    text.lines()
-        .filter(|l| l.starts_with("  ") && l.contains(" -> "))
-        .map(str::trim)
-        .collect()
-}
+use run::{changed, topolab};
 
 #[test]
 fn explicit_storage_moves_a_vertex_by_finding_every_copy_of_it() {

@@ -5,12 +5,22 @@
 //! refuses an edit must name the same element.
 
 use std::collections::BTreeSet;
-use topolab::commands::explain_edit::{self, editable, Asked, Counting};
+use topolab::commands::explain_edit::{self, Asked, Counting};
 use topolab_harness::teaching::edits::refusals::new_face_witness;
 use topolab_structures::meshes::canonical_by_name;
 use topolab_structures::{
     EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Refusal, VertexId,
 };
+
+/// The structures `--op` explains that offer the topological edits (`[editable]`): explicit
+/// storage, which moves vertices only, offers none of the edits these tests refuse or count.
+fn editable() -> Vec<&'static str> {
+    let topological = topolab_structures::registry::editable_names();
+    topolab::commands::explain_edit::editable()
+        .into_iter()
+        .filter(|n| topological.contains(n))
+        .collect()
+}
 
 /// ω, the vertex the boundary is coned off to, among this file's link vertices.
 const OMEGA: u32 = u32::MAX;

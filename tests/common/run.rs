@@ -23,3 +23,12 @@ pub fn topolab(args: &[&str]) -> Output {
 pub fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
+
+/// The lines of an `explain --op` text that change a record (`  key.field: old -> new` or
+/// `  key: old -> new`).
+pub fn changed(text: &str) -> Vec<&str> {
+    text.lines()
+        .filter(|l| l.starts_with("  ") && l.contains(" -> "))
+        .map(str::trim)
+        .collect()
+}
