@@ -139,6 +139,11 @@ impl PolygonSoup {
         Ok((self.positions, self.indices))
     }
 
+    /// The positions, taken without a copy (the faces are dropped).
+    pub fn into_positions(self) -> Vec<DVec3> {
+        self.positions
+    }
+
     /// The flat index buffer (all corners of all faces).
     #[inline]
     pub fn indices(&self) -> &[u32] {

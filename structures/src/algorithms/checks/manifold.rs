@@ -5,7 +5,7 @@
 //! union-find forest over the corners for the fans and then the boundary curves, one over the
 //! faces for the orientation, a component number a vertex, and the components themselves.
 
-use super::{CheckSummary, Component, FindingKind, Findings};
+use super::{CheckSummary, Components, Counts, FindingKind, Findings, UNDEFINED};
 use crate::algorithms::summary::Undefined;
 use crate::algorithms::union_find::UnionFind;
 use crate::core::error::Error;
@@ -38,7 +38,7 @@ pub(super) fn topology(
                 let c = &mut components[component_of[a as usize] as usize];
                 c.manifold = false;
                 // Its boundary curves are undefined where an edge has more than two faces.
-                c.boundary_curves = None;
+                c.boundary_curves = UNDEFINED;
                 non_manifold_edges += 1;
                 found.add(FindingKind::NonManifoldEdge, || {
                     let faces: Vec<u32> = faces.into_iter().map(&original).collect();
@@ -154,7 +154,9 @@ pub(super) fn topology(
             if !counted[curve] {
                 counted[curve] = true;
                 let c = &mut components[component_of_face(conn.corner_face[c0 as usize])];
-                c.boundary_curves = c.boundary_curves.map(|n| n + 1);
+                if c.boundary_curves != UNDEFINED {
+                    c.boundary_curves += 1;
+                }
             }
         }
     }
@@ -175,14 +177,7 @@ pub(super) fn topology(
             )
         });
     }
-    for c in &mut components {
-        c.euler_characteristic = i64::from(c.vertices) - i64::from(c.edges) + i64::from(c.faces);
-        // χ = 2 - 2g - b for a connected orientable surface.
-        c.genus = match (c.manifold && c.orientable, c.boundary_curves) {
-            (true, Some(b)) => Some((2 - c.euler_characteristic - i64::from(b)) / 2),
-            _ => None,
-        };
-    }
+    let components = Components(components);
     CheckSummary {
         vertices,
         faces,
@@ -205,7 +200,7 @@ pub(super) fn topology(
 /// Per vertex its component (faces joined through shared vertices; `NONE` for a vertex no
 /// face uses), the components numbered in the order of the roots of the vertices'
 /// union-find, as the report lists them; and the components, their vertices counted.
-fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Component>) {
+fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Counts>) {
     let nv = clean.num_vertices();
     let mut joined = UnionFind::new(nv);
     for face in clean.faces() {
@@ -230,15 +225,13 @@ fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Component>) {
             component_of[v as usize] = component_of[joined.find(v).0 as usize];
         }
     }
-    let empty = Component {
+    let empty = Counts {
         faces: 0,
         vertices: 0,
         edges: 0,
-        boundary_curves: Some(0),
-        euler_characteristic: 0,
+        boundary_curves: 0,
         orientable: true,
         manifold: true,
-        genus: None,
     };
     let mut components = vec![empty; roots as usize];
     for &c in component_of.iter().filter(|&&c| c != NONE) {

@@ -3,7 +3,7 @@
 //! and its fan walk, without hash maps: linear in the corners for bounded valence.
 
 use crate::core::error::{Error, Result};
-use crate::core::soup::PolygonSoup;
+use crate::core::soup::{Connectivity, PolygonSoup};
 
 /// The "no element" value of the `u32` link arrays.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -57,7 +57,15 @@ impl HalfEdgeArrays {
                 }
             })
             .collect();
-        let next_corner = |c: usize| soup.next_corner(c, conn.corner_face[c] as usize);
+        // Each corner's edge is not needed past its half-edge: dropped before the arrays are
+        // made (no pass added).
+        let Connectivity {
+            edge_corners,
+            corner_edge,
+            corner_face,
+        } = conn;
+        drop(corner_edge);
+        let next_corner = |c: usize| soup.next_corner(c, corner_face[c] as usize);
 
         let mut vertex = vec![NONE; nh];
         let mut face = vec![NONE; nh];
@@ -65,14 +73,14 @@ impl HalfEdgeArrays {
         let mut vertex_half_edge = vec![NONE; soup.num_vertices()];
         for (c, &h) in corner_half_edge.iter().enumerate() {
             vertex[h as usize] = indices[c];
-            face[h as usize] = conn.corner_face[c];
+            face[h as usize] = corner_face[c];
             next[h as usize] = corner_half_edge[next_corner(c)];
             vertex_half_edge[indices[c] as usize] = h;
         }
         // Boundary half-edges: start where their twin ends; each one is then the (only, as
         // every vertex is one fan) boundary half-edge leaving its start vertex.
         let mut boundary = Vec::new();
-        for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
+        for (e, &[c0, c1]) in edge_corners.iter().enumerate() {
             if c1 == NONE {
                 let b = 2 * e as u32 + 1;
                 let start = indices[next_corner(c0 as usize)];
