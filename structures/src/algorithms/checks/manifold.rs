@@ -1,9 +1,10 @@
 //! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
 //! orientability, and per component its Euler characteristic, boundary and genus.
 //!
-//! Memory: the edge analysis ([`Connectivity`]: 8 bytes a corner and 8 an edge), one
-//! union-find forest over the corners for the fans and then the boundary curves, one over the
-//! faces for the orientation, a component number a vertex, and the components themselves.
+//! Memory: the edge analysis ([`Connectivity`]: 8 bytes a corner, 4 of them dropped once the
+//! non-manifold edges are marked, and 8 an edge), one union-find forest over the corners for
+//! the fans and then the boundary curves, one over the faces for the orientation, a component
+//! number a vertex, and the components themselves (20 bytes each: [`Components`]).
 
 use super::{CheckSummary, Components, Counts, FindingKind, Findings, UNDEFINED};
 use crate::algorithms::summary::Undefined;
@@ -25,7 +26,16 @@ pub(super) fn topology(
     found: &mut Findings,
 ) -> CheckSummary {
     let ids = found.numbering();
-    let (conn, problems) = Connectivity::analyse(clean, false);
+    let (mut conn, problems) = Connectivity::analyse(clean, false);
+    // An edge of more than two corners (non-manifold): a corner maps to it that is neither
+    // of the two it lists. Any other edge with one corner is on the boundary. Each corner's
+    // edge is not read past this: dropped before the components and the fans are made.
+    let mut crowded = vec![false; conn.num_edges()];
+    for (c, &e) in conn.corner_edge.iter().enumerate() {
+        let [c0, c1] = conn.edge_corners[e as usize];
+        crowded[e as usize] |= c as u32 != c0 && c as u32 != c1;
+    }
+    conn.corner_edge = Vec::new();
     let original = |f: u32| kept.map_or(f, |kept| kept[f as usize]);
     let (nf, nc) = (clean.num_faces(), clean.num_corners());
     let indices = clean.indices();
@@ -106,13 +116,6 @@ pub(super) fn topology(
                 )
             });
         }
-    }
-    // An edge of more than two corners (non-manifold): a corner maps to it that is neither
-    // of the two it lists. Any other edge with one corner is on the boundary.
-    let mut crowded = vec![false; conn.num_edges()];
-    for (c, &e) in conn.corner_edge.iter().enumerate() {
-        let [c0, c1] = conn.edge_corners[e as usize];
-        crowded[e as usize] |= c as u32 != c0 && c as u32 != c1;
     }
     // Orientation: faces across an interior edge agree (parity 0), across an edge both
     // traverse the same way they disagree (parity 1); an odd cycle means no orientation exists.

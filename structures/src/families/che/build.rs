@@ -283,8 +283,10 @@ fn triangle_sides(t: usize, corners: &[u32], n: u32) -> Option<[(u32, u32, u32);
 fn opposites_by_map(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
     let n = num_vertices as u32;
     let mut o = vec![-1i32; v.len()];
-    // The first half-edge of each edge, by its sorted end vertices.
-    let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(v.len() / 2);
+    // The first half-edge of each edge, by its sorted end vertices: room for as many edges as
+    // half-edges (all on the boundary: a vertex of many fans), so that the table never grows,
+    // which would hold the old table and the new one, twice as large, at once.
+    let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(v.len());
     for (t, corners) in v.chunks_exact(3).enumerate() {
         for (he, from, to) in triangle_sides(t, corners, n)? {
             match first.entry((from.min(to), from.max(to))) {
