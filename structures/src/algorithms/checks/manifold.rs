@@ -26,7 +26,8 @@ pub(super) fn topology(
     found: &mut Findings,
 ) -> CheckSummary {
     let ids = found.numbering();
-    let (mut conn, problems) = Connectivity::analyse(clean, false);
+    // `clean` may have no positions left ([`super::check_owned`]): `vertices` counts them.
+    let (mut conn, problems) = Connectivity::analyse_of(clean, vertices, false);
     // An edge of more than two corners (non-manifold): a corner maps to it that is neither
     // of the two it lists. Any other edge with one corner is on the boundary. Each corner's
     // edge is not read past this: dropped before the components and the fans are made.
@@ -39,7 +40,7 @@ pub(super) fn topology(
     let original = |f: u32| kept.map_or(f, |kept| kept[f as usize]);
     let (nf, nc) = (clean.num_faces(), clean.num_corners());
     let indices = clean.indices();
-    let (component_of, mut components) = components(clean);
+    let (component_of, mut components) = components(clean, vertices);
     let component_of_face = |f: u32| component_of[clean.face(f as usize)[0] as usize] as usize;
     let mut non_manifold_edges = 0;
     for problem in problems {
@@ -203,8 +204,7 @@ pub(super) fn topology(
 /// Per vertex its component (faces joined through shared vertices; `NONE` for a vertex no
 /// face uses), the components numbered in the order of the roots of the vertices'
 /// union-find, as the report lists them; and the components, their vertices counted.
-fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Counts>) {
-    let nv = clean.num_vertices();
+fn components(clean: &PolygonSoup, nv: usize) -> (Vec<u32>, Vec<Counts>) {
     let mut joined = UnionFind::new(nv);
     for face in clean.faces() {
         for w in face.windows(2) {

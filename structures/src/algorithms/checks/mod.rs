@@ -429,7 +429,9 @@ pub fn check(raw: &RawSoup, options: &Options) -> Report {
 }
 
 /// [`check`], taking `raw`: the faces that take part in the edge analysis are kept in its
-/// arrays, the others dropped in place, so that the analysis needs no copy of the mesh.
+/// arrays, the others dropped in place, so that the analysis needs no copy of the mesh; the
+/// positions, which the edge analysis does not read, are dropped before it (24 bytes a
+/// vertex: most of a mesh of separate faces).
 pub fn check_owned(mut raw: RawSoup, options: &Options) -> Report {
     let inspected = inspect(&raw, options);
     if let Some(kept) = &inspected.kept {
@@ -437,6 +439,7 @@ pub fn check_owned(mut raw: RawSoup, options: &Options) -> Report {
         raw.soup
             .retain_faces(|j| kept.next_if(|&&k| k as usize == j).is_some());
     }
+    raw.soup.positions = Vec::new();
     inspected.finish(&raw.soup)
 }
 
