@@ -110,14 +110,17 @@ fn not_a_mesh(spec: &str, e: SpecError) -> Failure {
 /// it returns bytes to add to its measured peak, usually 0: a text's growth,
 /// [`limits::growing_text`]).
 pub fn load_mesh(spec: &str, work: impl Fn(&PolygonSoup) -> u64) -> Result<PolygonSoup, Failure> {
-    load_for(spec, true, work)
+    load_for(spec, true, false, work)
 }
 
 /// [`load_mesh`] and [`load_mesh_consumed`]: `count_soup` says whether a generated mesh's soup
-/// is counted besides `work` (not when `work` holds it already).
+/// is counted besides `work` (not when `work` holds it already); `separate`, whether `work` is
+/// measured on [`limits::separate_triangles`] besides [`limits::sample_mesh`] (the larger
+/// peak per element is scaled).
 fn load_for(
     spec: &str,
     count_soup: bool,
+    separate: bool,
     work: impl Fn(&PolygonSoup) -> u64,
 ) -> Result<PolygonSoup, Failure> {
     let path = Path::new(spec);
@@ -127,25 +130,26 @@ fn load_for(
         // it (and its measured peak counts it).
         let size = MeshSize::of(&soup);
         let base = if count_soup { size.soup_bytes() } else { 0 };
-        admit_work(spec, &size, base, work)?;
+        admit_work(spec, &size, base, separate, work)?;
         return Ok(soup);
     }
     let parsed = meshes::parse_spec(spec).map_err(|e| not_a_mesh(spec, e))?;
     let size = parsed.size();
     let soup = if count_soup { size.soup_bytes() } else { 0 };
-    admit_work(spec, &size, soup, work)?;
+    admit_work(spec, &size, soup, separate, work)?;
     Ok(parsed.generate())
 }
 
 /// [`load_mesh`] for work that consumes the mesh (its arrays become the result's, as
 /// `convert --to che` builds the CHE): `work` takes a copy of the sample by value and is
 /// measured with it, so the mesh is counted once, in the work's peak, and not again as the
-/// soup it is generated into.
+/// soup it is generated into. The mesh is then most of the peak, so the work is measured on
+/// [`limits::separate_triangles`] too (more bytes of mesh an element than the sample mesh's).
 pub fn load_mesh_consumed(
     spec: &str,
     work: impl Fn(PolygonSoup) -> u64,
 ) -> Result<PolygonSoup, Failure> {
-    load_for(spec, false, |sample| work(sample.clone()))
+    load_for(spec, false, true, |sample| work(sample.clone()))
 }
 
 /// The size of the built-in mesh `spec` names, when it names one and no file (`None` for a
@@ -158,12 +162,15 @@ pub fn built_in_size(spec: &str) -> Option<MeshSize> {
 }
 
 /// Refuses a mesh of `size` when `base` bytes (its soup, if not yet built) and `work` on it,
-/// measured on [`limits::sample_mesh`] and scaled by elements ([`limits::elements`]), exceed
-/// the available memory. Meshes no larger than the sample pass unmeasured.
+/// measured on [`limits::sample_mesh`] (and on [`limits::separate_triangles`] when
+/// `separate`: made here, once the mesh is read, not held while it is) and scaled by elements
+/// ([`limits::elements`]; the largest of the samples' scaled peaks), exceed the available
+/// memory. Meshes no larger than the sample pass unmeasured.
 fn admit_work(
     spec: &str,
     size: &MeshSize,
     base: u64,
+    separate: bool,
     work: impl Fn(&PolygonSoup) -> u64,
 ) -> Result<(), Failure> {
     let sample = limits::sample_mesh();
@@ -172,8 +179,15 @@ fn admit_work(
     if elements <= sample_elements {
         return Ok(());
     }
-    let (extra, peak) = limits::peak_of(|| work(&sample));
-    let work = limits::scale(peak + extra, sample_elements, elements);
+    let measured = |s: &PolygonSoup| {
+        let (extra, peak) = limits::peak_of(|| work(s));
+        limits::scale(peak + extra, limits::elements(&MeshSize::of(s)), elements)
+    };
+    let mut work = measured(&sample);
+    drop(sample);
+    if separate {
+        work = work.max(measured(&limits::separate_triangles()));
+    }
     limits::admit(spec, base.saturating_add(work))
 }
 

@@ -118,6 +118,25 @@ pub fn mesh_within_u32(what: &str, size: &MeshSize) -> Result<(), Failure> {
     )
 }
 
+/// The second sample of the work that a mesh of more vertices an element than
+/// [`sample_mesh`] weighs more on (a component, three vertices and a grid cell of their own a
+/// face: `check`'s findings, the CHE's containers): 4,050 separate triangles, a unit apart. A
+/// command measured on both scales the larger of the two peaks per element.
+pub fn separate_triangles() -> PolygonSoup {
+    let n = 4050u32;
+    let positions = (0..3 * n)
+        .map(|i| {
+            glam::DVec3::new(
+                (i / 3) as f64,
+                (i % 3 == 1) as u8 as f64,
+                (i % 3 == 2) as u8 as f64,
+            )
+        })
+        .collect();
+    let faces: Vec<[u32; 3]> = (0..n).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
+    PolygonSoup::from_polygons(positions, &faces)
+}
+
 /// The peak heap `work` allocates beyond what was allocated when it started, in bytes, as the
 /// process's counting allocator ([`crate::ALLOCATOR`]) sees it, C++'s allocations included.
 /// `work` must allocate on the calling thread: the allocator counts one thread's bytes.

@@ -65,7 +65,7 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
     })?;
     crate::input::warn_skipped(&name, &raw.skipped);
     let elements = limits::elements(&MeshSize::of(&raw.soup));
-    let samples = [limits::sample_mesh(), separate_triangles(4050)];
+    let samples = [limits::sample_mesh(), limits::separate_triangles()];
     let sample_elements = |s: &PolygonSoup| limits::elements(&MeshSize::of(s));
     if elements > samples.iter().map(sample_elements).min().unwrap_or(0) {
         let work = samples
@@ -89,21 +89,6 @@ fn read(args: &CheckArgs, options: &Options) -> Result<RawSoup, Failure> {
         limits::admit(&format!("checking {name}"), soup.saturating_add(work))?;
     }
     Ok(raw)
-}
-
-/// `n` separate triangles, a unit apart: the sample of the checks' costs per component.
-fn separate_triangles(n: u32) -> PolygonSoup {
-    let positions = (0..3 * n)
-        .map(|i| {
-            glam::DVec3::new(
-                (i / 3) as f64,
-                (i % 3 == 1) as u8 as f64,
-                (i % 3 == 2) as u8 as f64,
-            )
-        })
-        .collect();
-    let faces: Vec<[u32; 3]> = (0..n).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
-    PolygonSoup::from_polygons(positions, &faces)
 }
 
 /// The report on `args.file` (a mesh file, not a `.che` file), read and checked after the

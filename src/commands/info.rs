@@ -11,13 +11,13 @@ use std::path::Path;
 use topolab_structures::summary::{summarize, Summary};
 use topolab_structures::{Error, MeshTopology, PolygonSoup};
 
-/// Takes the mesh: it is dropped once the structure is built, before the summary's work.
+/// Takes the mesh: the structure is built from it consumed ([`MeshTopology::from_soup_owned`]:
+/// a CHE takes its arrays, another structure drops it once built), before the summary's work.
 struct InfoVisit(PolygonSoup);
 impl StructureVisitor for InfoVisit {
     type Output = Result<Summary, Error>;
     fn visit<M: MeshTopology>(self) -> Self::Output {
-        let m = M::from_soup(&self.0)?;
-        drop(self.0);
+        let m = M::from_soup_owned(self.0)?;
         Ok(summarize(&m))
     }
 }

@@ -20,6 +20,7 @@ const NOT_QUERIES: &[&str] = &[
     "capabilities",
     "cost",
     "from_soup",
+    "from_soup_owned",
     "for_each_edge",
     "validate",
     "heap_bytes",

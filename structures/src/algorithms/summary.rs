@@ -275,7 +275,14 @@ pub fn summarize<M: MeshTopology>(m: &M) -> Summary {
         unused += first.is_none() as usize;
     }
     let components = (0..nf as u32).filter(|&f| joined.find(f).0 == f).count();
-    let mut curves = BoundaryCurves::default();
+    drop(joined);
+    // The curves' edges reserved for the boundary edges (each in one curve), so that a mesh
+    // of many boundary edges does not double its buffer past them.
+    let boundary_edges = m.num_boundary_edges();
+    let mut curves = BoundaryCurves {
+        edges: Vec::with_capacity(boundary_edges),
+        starts: Vec::new(),
+    };
     m.boundary_curves(&mut curves);
     let mut triangles_only = nf > 0;
     for f in 0..nf {
@@ -290,7 +297,7 @@ pub fn summarize<M: MeshTopology>(m: &M) -> Summary {
             unused,
             m.num_edges(),
             nf,
-            m.num_boundary_edges(),
+            boundary_edges,
             curves.len(),
             components,
         ],

@@ -34,6 +34,11 @@ macro_rules! delegate_topology {
             ) -> $crate::core::error::Result<Self> {
                 <$inner as $crate::core::topology::MeshTopology>::from_soup(soup).map($outer)
             }
+            fn from_soup_owned(
+                soup: $crate::core::soup::PolygonSoup,
+            ) -> $crate::core::error::Result<Self> {
+                <$inner as $crate::core::topology::MeshTopology>::from_soup_owned(soup).map($outer)
+            }
             #[inline]
             fn num_vertices(&self) -> usize {
                 self.0.num_vertices()

@@ -139,6 +139,11 @@ impl PolygonSoup {
         Ok((self.positions, self.indices))
     }
 
+    /// The positions, taken without a copy (the faces are dropped).
+    pub fn into_positions(self) -> Vec<DVec3> {
+        self.positions
+    }
+
     /// The flat index buffer (all corners of all faces).
     #[inline]
     pub fn indices(&self) -> &[u32] {
@@ -391,7 +396,18 @@ impl Connectivity {
     /// high valence makes the buckets too long; any other falls back to sorting the corners by
     /// vertex pair, which finds and orders the problems.
     pub fn analyse(soup: &PolygonSoup, stop_at_first: bool) -> (Self, Vec<Error>) {
-        match buckets::connectivity_by_buckets(soup) {
+        Self::analyse_of(soup, soup.num_vertices(), stop_at_first)
+    }
+
+    /// [`Connectivity::analyse`] of a soup of `num_vertices` vertices whose positions may have
+    /// been dropped (the analysis reads no position): the checks' edge analysis, which holds
+    /// the faces alone.
+    pub(crate) fn analyse_of(
+        soup: &PolygonSoup,
+        num_vertices: usize,
+        stop_at_first: bool,
+    ) -> (Self, Vec<Error>) {
+        match buckets::connectivity_by_buckets(soup, num_vertices) {
             Some(connectivity) => (connectivity, Vec::new()),
             None => Self::analyse_by_sorting(soup, stop_at_first),
         }

@@ -156,6 +156,15 @@ pub trait MeshTopology: Sized + 'static {
     /// Builds the structure; fails with a typed error on input it cannot store.
     fn from_soup(soup: &PolygonSoup) -> Result<Self>;
 
+    /// [`MeshTopology::from_soup`] consuming the soup, for a caller that needs it no more
+    /// (`topolab info`): a structure whose arrays are the soup's (the CHE's `G[]` and `V[]`)
+    /// takes them instead of copying them, so the soup and the structure are not held at
+    /// once. The same structure and the same refusals as `from_soup`; the default builds from
+    /// the soup, then drops it.
+    fn from_soup_owned(soup: PolygonSoup) -> Result<Self> {
+        Self::from_soup(&soup)
+    }
+
     /// Number of vertices (including unused ones).
     fn num_vertices(&self) -> usize;
     /// Number of undirected edges.

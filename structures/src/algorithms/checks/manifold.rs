@@ -1,11 +1,12 @@
 //! The edge analysis of the usable faces: non-manifold edges and vertices, orientation and
 //! orientability, and per component its Euler characteristic, boundary and genus.
 //!
-//! Memory: the edge analysis ([`Connectivity`]: 8 bytes a corner and 8 an edge), one
-//! union-find forest over the corners for the fans and then the boundary curves, one over the
-//! faces for the orientation, a component number a vertex, and the components themselves.
+//! Memory: the edge analysis ([`Connectivity`]: 8 bytes a corner, 4 of them dropped once the
+//! non-manifold edges are marked, and 8 an edge), one union-find forest over the corners for
+//! the fans and then the boundary curves, one over the faces for the orientation, a component
+//! number a vertex, and the components themselves (20 bytes each: [`Components`]).
 
-use super::{CheckSummary, Component, FindingKind, Findings};
+use super::{CheckSummary, Components, Counts, FindingKind, Findings, UNDEFINED};
 use crate::algorithms::summary::Undefined;
 use crate::algorithms::union_find::UnionFind;
 use crate::core::error::Error;
@@ -25,11 +26,21 @@ pub(super) fn topology(
     found: &mut Findings,
 ) -> CheckSummary {
     let ids = found.numbering();
-    let (conn, problems) = Connectivity::analyse(clean, false);
+    // `clean` may have no positions left ([`super::check_owned`]): `vertices` counts them.
+    let (mut conn, problems) = Connectivity::analyse_of(clean, vertices, false);
+    // An edge of more than two corners (non-manifold): a corner maps to it that is neither
+    // of the two it lists. Any other edge with one corner is on the boundary. Each corner's
+    // edge is not read past this: dropped before the components and the fans are made.
+    let mut crowded = vec![false; conn.num_edges()];
+    for (c, &e) in conn.corner_edge.iter().enumerate() {
+        let [c0, c1] = conn.edge_corners[e as usize];
+        crowded[e as usize] |= c as u32 != c0 && c as u32 != c1;
+    }
+    conn.corner_edge = Vec::new();
     let original = |f: u32| kept.map_or(f, |kept| kept[f as usize]);
     let (nf, nc) = (clean.num_faces(), clean.num_corners());
     let indices = clean.indices();
-    let (component_of, mut components) = components(clean);
+    let (component_of, mut components) = components(clean, vertices);
     let component_of_face = |f: u32| component_of[clean.face(f as usize)[0] as usize] as usize;
     let mut non_manifold_edges = 0;
     for problem in problems {
@@ -38,7 +49,7 @@ pub(super) fn topology(
                 let c = &mut components[component_of[a as usize] as usize];
                 c.manifold = false;
                 // Its boundary curves are undefined where an edge has more than two faces.
-                c.boundary_curves = None;
+                c.boundary_curves = UNDEFINED;
                 non_manifold_edges += 1;
                 found.add(FindingKind::NonManifoldEdge, || {
                     let faces: Vec<u32> = faces.into_iter().map(&original).collect();
@@ -107,13 +118,6 @@ pub(super) fn topology(
             });
         }
     }
-    // An edge of more than two corners (non-manifold): a corner maps to it that is neither
-    // of the two it lists. Any other edge with one corner is on the boundary.
-    let mut crowded = vec![false; conn.num_edges()];
-    for (c, &e) in conn.corner_edge.iter().enumerate() {
-        let [c0, c1] = conn.edge_corners[e as usize];
-        crowded[e as usize] |= c as u32 != c0 && c as u32 != c1;
-    }
     // Orientation: faces across an interior edge agree (parity 0), across an edge both
     // traverse the same way they disagree (parity 1); an odd cycle means no orientation exists.
     // Boundary curves per fan (the definition of `crate::summary`): each boundary edge joins
@@ -154,7 +158,9 @@ pub(super) fn topology(
             if !counted[curve] {
                 counted[curve] = true;
                 let c = &mut components[component_of_face(conn.corner_face[c0 as usize])];
-                c.boundary_curves = c.boundary_curves.map(|n| n + 1);
+                if c.boundary_curves != UNDEFINED {
+                    c.boundary_curves += 1;
+                }
             }
         }
     }
@@ -175,14 +181,7 @@ pub(super) fn topology(
             )
         });
     }
-    for c in &mut components {
-        c.euler_characteristic = i64::from(c.vertices) - i64::from(c.edges) + i64::from(c.faces);
-        // χ = 2 - 2g - b for a connected orientable surface.
-        c.genus = match (c.manifold && c.orientable, c.boundary_curves) {
-            (true, Some(b)) => Some((2 - c.euler_characteristic - i64::from(b)) / 2),
-            _ => None,
-        };
-    }
+    let components = Components(components);
     CheckSummary {
         vertices,
         faces,
@@ -205,8 +204,7 @@ pub(super) fn topology(
 /// Per vertex its component (faces joined through shared vertices; `NONE` for a vertex no
 /// face uses), the components numbered in the order of the roots of the vertices'
 /// union-find, as the report lists them; and the components, their vertices counted.
-fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Component>) {
-    let nv = clean.num_vertices();
+fn components(clean: &PolygonSoup, nv: usize) -> (Vec<u32>, Vec<Counts>) {
     let mut joined = UnionFind::new(nv);
     for face in clean.faces() {
         for w in face.windows(2) {
@@ -230,15 +228,13 @@ fn components(clean: &PolygonSoup) -> (Vec<u32>, Vec<Component>) {
             component_of[v as usize] = component_of[joined.find(v).0 as usize];
         }
     }
-    let empty = Component {
+    let empty = Counts {
         faces: 0,
         vertices: 0,
         edges: 0,
-        boundary_curves: Some(0),
-        euler_characteristic: 0,
+        boundary_curves: 0,
         orientable: true,
         manifold: true,
-        genus: None,
     };
     let mut components = vec![empty; roots as usize];
     for &c in component_of.iter().filter(|&&c| c != NONE) {

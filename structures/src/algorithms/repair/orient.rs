@@ -13,10 +13,11 @@ use crate::core::soup::{Connectivity, PolygonSoup};
 /// Union-find with parity over faces, as the orientability check runs it.
 pub(super) fn orient(soup: &mut PolygonSoup, log: &mut RepairLog) {
     let nf = soup.num_faces();
-    let mut parity = UnionFind::new(nf);
     let mut contradicted = Vec::new();
-    {
+    let parity = {
         let (conn, _) = Connectivity::analyse(soup, false);
+        // Made once the analysis is, not beside its scratch arrays.
+        let mut parity = UnionFind::new(nf);
         for &[c0, c1] in conn.edge_corners.iter().filter(|e| e[1] != u32::MAX) {
             let (f, g) = (conn.corner_face[c0 as usize], conn.corner_face[c1 as usize]);
             // The same start vertex: both traverse the edge the same way, one must be flipped.
@@ -25,7 +26,8 @@ pub(super) fn orient(soup: &mut PolygonSoup, log: &mut RepairLog) {
                 contradicted.push(f);
             }
         }
-    }
+        parity
+    };
     // Per face its component's root and its side (parity) relative to the root.
     let (root, side) = parity.into_roots();
     let mut non_orientable = vec![false; nf];

@@ -34,10 +34,14 @@ pub(crate) const fn bucket_step_budget(items: usize) -> usize {
     16 * items + 4096
 }
 
-/// [`Connectivity`] of a checked soup by buckets (see the module docs), or `None` when some
-/// edge has more than two corners or two corners running the same way, or when the buckets
-/// take more than [`bucket_step_budget`] steps (a vertex of very high valence).
-pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity> {
+/// [`Connectivity`] of a checked soup of `num_vertices` vertices (its positions' count, or
+/// what it was before they were dropped) by buckets (see the module docs), or `None` when
+/// some edge has more than two corners or two corners running the same way, or when the
+/// buckets take more than [`bucket_step_budget`] steps (a vertex of very high valence).
+pub(super) fn connectivity_by_buckets(
+    soup: &PolygonSoup,
+    num_vertices: usize,
+) -> Option<Connectivity> {
     let nc = soup.num_corners();
     let indices = soup.indices();
     let mut corner_face = Vec::with_capacity(nc);
@@ -47,7 +51,7 @@ pub(super) fn connectivity_by_buckets(soup: &PolygonSoup) -> Option<Connectivity
     // filed[e], edge e's larger vertex and the edge filed before it. A step along a bucket is
     // one load, and the edge a corner finds is the index it found it at (no second table to
     // read), next to its corners in `edge_corners`.
-    let mut head = vec![NONE; soup.num_vertices()];
+    let mut head = vec![NONE; num_vertices];
     let mut filed: Vec<[u32; 2]> = Vec::with_capacity(nc / 2 + 1);
     let mut steps_left = bucket_step_budget(nc);
     for (f, w) in soup.offsets().windows(2).enumerate() {
@@ -105,7 +109,7 @@ mod tests {
     /// (a checked soup); where the sorting analysis finds a problem, the buckets give up.
     fn agrees_with_sorting(soup: &PolygonSoup) -> std::result::Result<(), TestCaseError> {
         let (sorted, problems) = Connectivity::analyse_by_sorting(soup, false);
-        match connectivity_by_buckets(soup) {
+        match connectivity_by_buckets(soup, soup.num_vertices()) {
             Some(b) => {
                 prop_assert!(problems.is_empty(), "buckets stored {problems:?}");
                 prop_assert_eq!(b.edge_corners, sorted.edge_corners);
@@ -138,7 +142,7 @@ mod tests {
             (fin, "non-manifold-edge"),
             (same, "inconsistent-orientation"),
         ] {
-            assert!(connectivity_by_buckets(&soup).is_none());
+            assert!(connectivity_by_buckets(&soup, soup.num_vertices()).is_none());
             let e: Error = soup.connectivity().unwrap_err();
             assert_eq!(e.kind(), problem);
         }
@@ -154,7 +158,7 @@ mod tests {
             .collect();
         let soup = PolygonSoup::from_polygons(positions, &faces);
         assert!((k as usize).pow(2) / 2 > bucket_step_budget(soup.num_corners()));
-        assert!(connectivity_by_buckets(&soup).is_none());
+        assert!(connectivity_by_buckets(&soup, soup.num_vertices()).is_none());
         let (by_sorting, problems) = Connectivity::analyse_by_sorting(&soup, true);
         assert!(problems.is_empty());
         let c = soup.connectivity().expect("a fan of quads is a manifold");
@@ -175,7 +179,7 @@ mod tests {
         #[test]
         fn buckets_store_every_subset_of_a_grid(seed in any::<u64>()) {
             let soup = meshes::random_mesh(seed, RandomMeshParams::default());
-            prop_assert!(connectivity_by_buckets(&soup).is_some());
+            prop_assert!(connectivity_by_buckets(&soup, soup.num_vertices()).is_some());
             agrees_with_sorting(&soup)?;
         }
     }

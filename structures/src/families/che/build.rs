@@ -129,9 +129,14 @@ pub(crate) fn build_fast(soup: &PolygonSoup, structure: &'static str) -> Result<
     if !g.iter().all(|p| p.is_finite()) {
         return Err(refusal(soup, structure));
     }
-    let (o, vh) =
-        opposites_and_vertex_half_edges(&v, g.len()).ok_or_else(|| refusal(soup, structure))?;
+    // A refusal drops the containers first: the shared checks that name the problem take
+    // their own arrays, and a vertex of many fans is refused after its `O[]` is built.
+    let Some((o, vh)) = opposites_and_vertex_half_edges(&v, g.len()) else {
+        drop((g, v));
+        return Err(refusal(soup, structure));
+    };
     if !every_vertex_one_fan(&o, &vh) {
+        drop((g, v, o, vh));
         return Err(refusal(soup, structure));
     }
     Ok(Checked { g, v, o, vh })
@@ -150,9 +155,14 @@ pub(crate) fn build_fast_owned(soup: PolygonSoup, structure: &'static str) -> Re
     if !g.iter().all(|p| p.is_finite()) {
         return Err(refuse(g, v));
     }
+    // `O[]` and `VH[]` are dropped before a refusal's shared checks take their own arrays.
     match opposites_and_vertex_half_edges(&v, g.len()) {
         Some((o, vh)) if every_vertex_one_fan(&o, &vh) => Ok(Checked { g, v, o, vh }),
-        _ => Err(refuse(g, v)),
+        Some(containers) => {
+            drop(containers);
+            Err(refuse(g, v))
+        }
+        None => Err(refuse(g, v)),
     }
 }
 
@@ -246,6 +256,8 @@ pub fn opposites_by_buckets(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> 
                 at = found as u32;
                 steps_left -= 1;
                 if steps_left == 0 {
+                    // The buckets' arrays are dropped before the map's are made.
+                    drop((head, node, o));
                     return opposites_by_map(v, num_vertices);
                 }
             }
@@ -271,8 +283,10 @@ fn triangle_sides(t: usize, corners: &[u32], n: u32) -> Option<[(u32, u32, u32);
 fn opposites_by_map(v: &[u32], num_vertices: usize) -> Option<Vec<i32>> {
     let n = num_vertices as u32;
     let mut o = vec![-1i32; v.len()];
-    // The first half-edge of each edge, by its sorted end vertices.
-    let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(v.len() / 2);
+    // The first half-edge of each edge, by its sorted end vertices: room for as many edges as
+    // half-edges (all on the boundary: a vertex of many fans), so that the table never grows,
+    // which would hold the old table and the new one, twice as large, at once.
+    let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(v.len());
     for (t, corners) in v.chunks_exact(3).enumerate() {
         for (he, from, to) in triangle_sides(t, corners, n)? {
             match first.entry((from.min(to), from.max(to))) {

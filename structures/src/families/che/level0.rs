@@ -1,7 +1,7 @@
 //! CHE level 0, the "triangle soup" (§4.1): `G[]` and `V[]` only; every relation that needs a
 //! neighbour scans `V[]` (Algorithms 5, 8, 9).
 
-use super::build::{build_fast, Checked};
+use super::build::{build_fast, build_fast_owned, Checked};
 use super::{che_topology, half_edges_of, next, prev, printed, triangle};
 use super::{vec_bytes, CheLevel, StarRead};
 use crate::core::error::{Error, Result};
@@ -74,9 +74,18 @@ impl CheL0 {
     }
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
-        // The checks need O[] (non-manifold edges and vertices are refused at every level);
-        // level 0 keeps only G[] and V[].
-        build_fast(soup, <Self as MeshTopology>::NAME).map(|c: Checked| Self::from_parts(c.g, c.v))
+        build_fast(soup, <Self as MeshTopology>::NAME).map(Self::finish)
+    }
+
+    /// [`Self::build`] consuming the soup ([`build_fast_owned`]: no copy of its arrays).
+    fn build_owned(soup: PolygonSoup) -> Result<Self> {
+        build_fast_owned(soup, <Self as MeshTopology>::NAME).map(Self::finish)
+    }
+
+    /// The checks need O[] (non-manifold edges and vertices are refused at every level);
+    /// level 0 keeps only G[] and V[].
+    fn finish(c: Checked) -> Self {
+        Self::from_parts(c.g, c.v)
     }
 
     /// `G[]`: the vertex positions.

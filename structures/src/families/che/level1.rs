@@ -2,7 +2,7 @@
 //! half-edge (`-1` on the boundary). Edge and triangle relations become O(1); the vertex star
 //! still scans `V[]` for its first half-edge (Algorithm 6).
 
-use super::build::{build_chapter, build_fast, Checked};
+use super::build::{build_chapter, build_fast, build_fast_owned, Checked};
 use super::level0::check_start_vertices;
 use super::{che_topology, fan_walk_algorithm_7, next, opposite_of, printed, vec_bytes};
 use super::{CheL0, CheLevel, StarRead};
@@ -46,6 +46,11 @@ impl CheL1 {
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
         build_fast(soup, <Self as MeshTopology>::NAME).map(|c| Self::from_checked(c).0)
+    }
+
+    /// [`Self::build`] consuming the soup ([`build_fast_owned`]: no copy of its arrays).
+    fn build_owned(soup: PolygonSoup) -> Result<Self> {
+        build_fast_owned(soup, <Self as MeshTopology>::NAME).map(|c| Self::from_checked(c).0)
     }
 
     /// Builds level 1 with the chapter's Algorithm 1 (a map keyed by vertex pairs) instead of

@@ -3,7 +3,9 @@
 //! star starts at `VH[v]` (Algorithm 7): O(deg v). The timed relations walk it from both ends
 //! at once ([`Fan::spokes`]; see "Speed" in the [module docs](super)).
 
-use super::build::{build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan, Checked};
+use super::build::{
+    build_chapter, build_fast, build_fast_owned, edge_map_algorithm_2, edge_map_by_scan, Checked,
+};
 use super::fan::{ranges_hold, Fan};
 use super::level1::check_opposites;
 use super::triangle;
@@ -62,6 +64,12 @@ impl CheL2 {
     fn build(soup: &PolygonSoup) -> Result<Self> {
         let name = <Self as MeshTopology>::NAME;
         build_fast(soup, name).and_then(|c| Self::from_checked(c, edge_map_by_scan, name))
+    }
+
+    /// [`Self::build`] consuming the soup ([`build_fast_owned`]: no copy of its arrays).
+    fn build_owned(soup: PolygonSoup) -> Result<Self> {
+        let name = <Self as MeshTopology>::NAME;
+        build_fast_owned(soup, name).and_then(|c| Self::from_checked(c, edge_map_by_scan, name))
     }
 
     /// Builds level 2 with the chapter's Algorithms 1, 2 and 3 (maps) instead of the fast

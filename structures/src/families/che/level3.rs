@@ -4,7 +4,8 @@
 //! are walked from `CH[]` (Algorithm 10) in O(∂n1).
 
 use super::build::{
-    boundary_curves_algorithm_4, build_chapter, build_fast, edge_map_algorithm_2, edge_map_by_scan,
+    boundary_curves_algorithm_4, build_chapter, build_fast, build_fast_owned, edge_map_algorithm_2,
+    edge_map_by_scan,
 };
 use super::{che_topology, level2::level2_cost, printed, vec_bytes, walk_boundary_curve};
 use super::{next_boundary_half_edge, opposite_of, CheL2, CheLevel, StarRead};
@@ -42,6 +43,13 @@ impl CheL3 {
 
     fn build(soup: &PolygonSoup) -> Result<Self> {
         build_fast(soup, Self::NAME)
+            .and_then(|c| CheL2::from_checked(c, edge_map_by_scan, Self::NAME))
+            .and_then(Self::from_level2)
+    }
+
+    /// [`Self::build`] consuming the soup ([`build_fast_owned`]: no copy of its arrays).
+    fn build_owned(soup: PolygonSoup) -> Result<Self> {
+        build_fast_owned(soup, Self::NAME)
             .and_then(|c| CheL2::from_checked(c, edge_map_by_scan, Self::NAME))
             .and_then(Self::from_level2)
     }

@@ -46,6 +46,11 @@ macro_rules! che_topology {
             ) -> $crate::core::error::Result<Self> {
                 Self::build(soup)
             }
+            fn from_soup_owned(
+                soup: $crate::core::soup::PolygonSoup,
+            ) -> $crate::core::error::Result<Self> {
+                Self::build_owned(soup)
+            }
             #[inline]
             fn num_vertices(&self) -> usize {
                 self.geometry().len()

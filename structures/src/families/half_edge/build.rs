@@ -3,7 +3,7 @@
 //! and its fan walk, without hash maps: linear in the corners for bounded valence.
 
 use crate::core::error::{Error, Result};
-use crate::core::soup::PolygonSoup;
+use crate::core::soup::{Connectivity, PolygonSoup};
 
 /// The "no element" value of the `u32` link arrays.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -57,7 +57,17 @@ impl HalfEdgeArrays {
                 }
             })
             .collect();
-        let next_corner = |c: usize| soup.next_corner(c, conn.corner_face[c] as usize);
+        // The edge analysis is not read past the corners' half-edges but for each corner's
+        // face: each corner's edge and each edge's corners are dropped before the arrays are
+        // made, the corners' faces once they are (the same passes: the boundary is found in
+        // `face`, its start in `vertex` and `next`).
+        let Connectivity {
+            edge_corners,
+            corner_edge,
+            corner_face,
+        } = conn;
+        drop((corner_edge, edge_corners));
+        let next_corner = |c: usize| soup.next_corner(c, corner_face[c] as usize);
 
         let mut vertex = vec![NONE; nh];
         let mut face = vec![NONE; nh];
@@ -65,17 +75,25 @@ impl HalfEdgeArrays {
         let mut vertex_half_edge = vec![NONE; soup.num_vertices()];
         for (c, &h) in corner_half_edge.iter().enumerate() {
             vertex[h as usize] = indices[c];
-            face[h as usize] = conn.corner_face[c];
+            face[h as usize] = corner_face[c];
             next[h as usize] = corner_half_edge[next_corner(c)];
             vertex_half_edge[indices[c] as usize] = h;
         }
-        // Boundary half-edges: start where their twin ends; each one is then the (only, as
-        // every vertex is one fan) boundary half-edge leaving its start vertex.
+        let face_half_edge = soup
+            .offsets()
+            .iter()
+            .take(soup.num_faces())
+            .map(|&c| corner_half_edge[c as usize])
+            .collect();
+        drop((corner_half_edge, corner_face));
+        // Boundary half-edges: edge e's half-edge 2e runs along a corner, 2e + 1 along the
+        // face on the other side, if there is one (a face in `face`). A boundary half-edge
+        // starts where its twin ends, where the twin's successor starts; each one is then the
+        // (only, as every vertex is one fan) boundary half-edge leaving its start vertex.
         let mut boundary = Vec::new();
-        for (e, &[c0, c1]) in conn.edge_corners.iter().enumerate() {
-            if c1 == NONE {
-                let b = 2 * e as u32 + 1;
-                let start = indices[next_corner(c0 as usize)];
+        for b in (1..nh as u32).step_by(2) {
+            if face[b as usize] == NONE {
+                let start = vertex[next[(b ^ 1) as usize] as usize];
                 vertex[b as usize] = start;
                 vertex_half_edge[start as usize] = b;
                 boundary.push(b);
@@ -86,12 +104,6 @@ impl HalfEdgeArrays {
             let end = vertex[(b ^ 1) as usize];
             next[b as usize] = vertex_half_edge[end as usize];
         }
-        let face_half_edge = soup
-            .offsets()
-            .iter()
-            .take(soup.num_faces())
-            .map(|&c| corner_half_edge[c as usize])
-            .collect();
         Ok(Self {
             vertex,
             next,

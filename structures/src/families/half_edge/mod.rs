@@ -116,6 +116,12 @@ pub trait HalfEdgeLinks: Sized + 'static {
     /// Builds the storage from the arrays and the soup's positions.
     fn from_arrays(arrays: HalfEdgeArrays, positions: &[DVec3]) -> Self;
 
+    /// [`HalfEdgeLinks::from_arrays`] taking the positions: a storage that keeps them as they
+    /// are takes them without a copy (`from_soup_owned`).
+    fn from_arrays_owned(arrays: HalfEdgeArrays, positions: Vec<DVec3>) -> Self {
+        Self::from_arrays(arrays, &positions)
+    }
+
     /// Number of half-edges.
     fn num_half_edges(&self) -> usize;
     /// Number of vertices.

@@ -51,6 +51,16 @@ impl<L: HalfEdgeLinks> MeshTopology for HalfEdge<L> {
         })
     }
 
+    /// The same arrays; the soup's faces dropped before the links are made, its positions
+    /// taken rather than copied where the storage keeps them ([`HalfEdgeLinks::from_arrays_owned`]).
+    fn from_soup_owned(soup: PolygonSoup) -> Result<Self> {
+        let arrays = HalfEdgeArrays::from_soup(&soup)?;
+        Ok(Self {
+            links: L::from_arrays_owned(arrays, soup.into_positions()),
+            marks: Default::default(),
+        })
+    }
+
     #[inline]
     fn num_vertices(&self) -> usize {
         self.links.num_vertices()

@@ -569,19 +569,13 @@ impl OwnedLevel {
     /// (the peak is the level's containers and its construction's temporaries). Refuses what
     /// the level's `from_soup` refuses, alike, and a level other than 0–3.
     pub fn build(soup: PolygonSoup, level: u8) -> Result<Self> {
-        use super::build::build_fast_owned;
         use crate::core::topology::MeshTopology;
         use crate::families::che::{CheL0, CheL1, CheL2, CheL3};
-        let level2 = |soup, name| {
-            build_fast_owned(soup, name)
-                .and_then(|c| CheL2::from_checked(c, crate::families::che::edge_map_by_scan, name))
-        };
         Ok(match level {
-            0 => build_fast_owned(soup, CheL0::NAME)
-                .map(|c| Self::L0(CheL0::from_parts(c.g, c.v)))?,
-            1 => build_fast_owned(soup, CheL1::NAME).map(|c| Self::L1(CheL1::from_checked(c).0))?,
-            2 => Self::L2(level2(soup, CheL2::NAME)?),
-            3 => Self::L3(level2(soup, CheL3::NAME).and_then(CheL3::from_level2)?),
+            0 => Self::L0(CheL0::from_soup_owned(soup)?),
+            1 => Self::L1(CheL1::from_soup_owned(soup)?),
+            2 => Self::L2(CheL2::from_soup_owned(soup)?),
+            3 => Self::L3(CheL3::from_soup_owned(soup)?),
             _ => {
                 return Err(Error::InvalidParameter {
                     parameter: "level",

@@ -431,6 +431,11 @@ impl<const L: u8> MappedChe<L> {
         })
     }
 
+    /// [`Self::build`]: the mapped level keeps no array of the soup's to take.
+    fn build_owned(soup: PolygonSoup) -> Result<Self> {
+        Self::build(&soup)
+    }
+
     /// Builds the owned level `L` from `soup`, writes it to a temporary `.che` file, maps it,
     /// verifies it and removes the file (the mapping keeps its pages): `from_soup`, for the
     /// conformance suite and the round-trip tests. Real use opens a file: [`MappedChe::open`].

@@ -69,12 +69,16 @@ impl HalfEdgeLinks for IndexLinks {
     const PREDECESSOR: Cost = Cost::Constant;
 
     fn from_arrays(arrays: HalfEdgeArrays, positions: &[DVec3]) -> Self {
+        Self::from_arrays_owned(arrays, positions.to_vec())
+    }
+
+    fn from_arrays_owned(arrays: HalfEdgeArrays, positions: Vec<DVec3>) -> Self {
         let mut prev = vec![NONE; arrays.num_half_edges()];
         for (h, &n) in arrays.next.iter().enumerate() {
             prev[n as usize] = h as u32;
         }
         Self {
-            positions: positions.to_vec(),
+            positions,
             arrays,
             prev,
         }
