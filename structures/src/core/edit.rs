@@ -213,8 +213,7 @@ pub trait MeshEdit: MeshTopology {
         if !Self::supports(EditOp::CollapseEdge) {
             return Err(not_offered::<Self>(EditOp::CollapseEdge));
         }
-        crate::core::neighbourhood::check_collapse(self, from, to, |v| self.is_deleted_vertex(v))
-            .map(drop)
+        crate::core::link::check_collapse(self, from, to, |v| self.is_deleted_vertex(v)).map(drop)
     }
     /// Splits vertex `v` into the edge from a new vertex at `p` to `v`, with the triangles
     /// (new, `v`, `left`) and (`v`, new, `right`); the faces around `v` from `left` to

@@ -1,18 +1,59 @@
 //! Which test of a collapse fails and the element that shows it ([`collapse_failure`]), and
 //! the full link condition of Dey, Edelsbrunner, Guha and Nekhayev ("Topology preserving edge
 //! contraction", 1999) computed on the links themselves ([`link_violations`]): what
-//! [`check_collapse`](crate::core::neighbourhood::check_collapse) decides with, and what
+//! [`check_collapse`] decides with, and what
 //! `topolab explain --op collapse-edge` names in a refusal. `docs/editing.md` defines each test
 //! by the name used here. Over the queries of [`MeshTopology`] alone, so every structure gives
 //! the same answer; each helper allocates small vectors (editing and teaching, never a timed
 //! query).
 
-use crate::core::edit_op::Refusal;
-use crate::core::ids::VertexId;
+use crate::core::edit_op::{EditOp, Refusal};
+use crate::core::error::Result;
+use crate::core::ids::{FaceId, VertexId};
 use crate::core::neighbourhood::{
-    corners, faces_at, is_boundary_edge, is_boundary_vertex, neighbours,
+    corners, faces_at, is_boundary_edge, is_boundary_vertex, neighbours, refuse,
 };
 use crate::core::topology::MeshTopology;
+
+/// The faces around a vertex, each with its corners.
+pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
+
+/// The test of [`MeshEdit::collapse_edge`](crate::core::edit::MeshEdit::collapse_edge) over
+/// the queries alone (pmp-library's `is_collapse_ok`, refused as [`Refusal::LinkCondition`],
+/// with OpenMesh's tetrahedron test, refused as [`Refusal::TetrahedronTest`]: each test is
+/// [`collapse_failure`]'s), so that
+/// any structure can run it (`is_deleted` tells the vertices an edit deleted): the faces around
+/// `from` with their corners when the collapse may be done, the refusal otherwise.
+/// [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse)'s default, and the
+/// first half of [`collapse_edge`](crate::core::rewrite::collapse_edge).
+pub fn check_collapse<M: MeshTopology>(
+    m: &M,
+    from: VertexId,
+    to: VertexId,
+    is_deleted: impl Fn(VertexId) -> bool,
+) -> Result<Star> {
+    let op = EditOp::CollapseEdge;
+    let no = |r| Err(refuse::<M>(op, r));
+    let live = |v: VertexId| v.index() < m.num_vertices() && !is_deleted(v);
+    if !live(from) || !live(to) {
+        return no(Refusal::NoSuchElement);
+    }
+    let ring0 = neighbours(m, from);
+    if !ring0.contains(&to) {
+        return no(Refusal::NotNeighbours);
+    }
+    let around = faces_at(m, from);
+    let faces: Vec<Vec<VertexId>> = around.iter().map(|&f| corners(m, f)).collect();
+    if faces.iter().any(|c| c.len() != 3) {
+        return no(Refusal::NotTriangles);
+    }
+    // The tests in pmp-library's order, OpenMesh's tetrahedron test after its rule of
+    // distinct third corners (`core/link.rs` names each, as docs/editing.md defines them).
+    if let Some(failure) = collapse_failure(m, from, to, &faces, &ring0) {
+        return no(failure.refusal());
+    }
+    Ok((around, faces))
+}
 
 /// The test of the collapse of `v0` into `v1` that fails, in the order the structures ask
 /// them (pmp-library's `SurfaceMesh::is_collapse_ok`, with OpenMesh's tetrahedron test after

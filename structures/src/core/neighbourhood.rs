@@ -1,13 +1,10 @@
 //! A vertex's neighbourhood over the queries of [`MeshTopology`] alone (its faces, their
-//! corners, its neighbours, which of its sides are boundary) and the collapse test built on it
-//! ([`check_collapse`]): what the face-rewriting structures ([`crate::core::rewrite`]) and the
-//! default of [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse) share.
+//! corners, its neighbours, which of its sides are boundary): what the face-rewriting
+//! structures ([`crate::core::rewrite`]) and the collapse test
+//! ([`check_collapse`](crate::core::link::check_collapse)) are built on.
 //! Each helper allocates a small vector: they serve the editing operations, never a timed query.
 
-use crate::core::edit_op::{EditOp, Refusal};
-use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-use crate::core::link::collapse_failure;
 use crate::core::topology::MeshTopology;
 
 pub(crate) use crate::core::offers::refuse;
@@ -100,44 +97,4 @@ pub(crate) fn is_boundary_vertex<M: MeshTopology>(m: &M, v: VertexId) -> bool {
     neighbours(m, v)
         .into_iter()
         .any(|w| is_boundary_edge(m, v, w))
-}
-
-/// The faces around a vertex, each with its corners.
-pub type Star = (Vec<FaceId>, Vec<Vec<VertexId>>);
-
-/// The test of [`MeshEdit::collapse_edge`](crate::core::edit::MeshEdit::collapse_edge) over
-/// the queries alone (pmp-library's `is_collapse_ok`, refused as [`Refusal::LinkCondition`],
-/// with OpenMesh's tetrahedron test, refused as [`Refusal::TetrahedronTest`]: each test is
-/// [`crate::core::link::collapse_failure`]'s), so that
-/// any structure can run it (`is_deleted` tells the vertices an edit deleted): the faces around
-/// `from` with their corners when the collapse may be done, the refusal otherwise.
-/// [`MeshEdit::check_collapse`](crate::core::edit::MeshEdit::check_collapse)'s default, and the
-/// first half of [`collapse_edge`](crate::core::rewrite::collapse_edge).
-pub fn check_collapse<M: MeshTopology>(
-    m: &M,
-    from: VertexId,
-    to: VertexId,
-    is_deleted: impl Fn(VertexId) -> bool,
-) -> Result<Star> {
-    let op = EditOp::CollapseEdge;
-    let no = |r| Err(refuse::<M>(op, r));
-    let live = |v: VertexId| v.index() < m.num_vertices() && !is_deleted(v);
-    if !live(from) || !live(to) {
-        return no(Refusal::NoSuchElement);
-    }
-    let ring0 = neighbours(m, from);
-    if !ring0.contains(&to) {
-        return no(Refusal::NotNeighbours);
-    }
-    let around = faces_at(m, from);
-    let faces: Vec<Vec<VertexId>> = around.iter().map(|&f| corners(m, f)).collect();
-    if faces.iter().any(|c| c.len() != 3) {
-        return no(Refusal::NotTriangles);
-    }
-    // The tests in pmp-library's order, OpenMesh's tetrahedron test after its rule of
-    // distinct third corners (`core/link.rs` names each, as docs/editing.md defines them).
-    if let Some(failure) = collapse_failure(m, from, to, &faces, &ring0) {
-        return no(failure.refusal());
-    }
-    Ok((around, faces))
 }

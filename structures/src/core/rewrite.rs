@@ -27,9 +27,10 @@
 use crate::core::edit::{EditOp, Refusal};
 use crate::core::error::Result;
 use crate::core::ids::{EdgeId, FaceId, VertexId};
-pub use crate::core::neighbourhood::Star;
+use crate::core::link::check_collapse;
+pub use crate::core::link::Star;
 use crate::core::neighbourhood::{
-    adjacent, check_collapse, corners, face_with, faces_at, neighbours, refuse, sides_of,
+    adjacent, corners, face_with, faces_at, neighbours, refuse, sides_of,
 };
 use crate::core::topology::MeshTopology;
 use glam::DVec3;
