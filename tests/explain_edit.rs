@@ -2,11 +2,9 @@
 //! records an edit writes, and a refused edit's exit code and reason, for every editing
 //! operation on every structure `--op` explains.
 
-#[path = "common/run.rs"]
-#[allow(dead_code)]
-mod run;
+mod common;
 
-use run::{changed, topolab};
+use common::run::{changed, topolab};
 use topolab::commands::explain_edit::{self, editable, Asked, Counting};
 use topolab::failure::Failure;
 use topolab_structures::{EditOp, Refusal};

@@ -2,11 +2,9 @@
 //! their operations: explicit storage finds every copy of a moved position, a structure that
 //! stores it once writes it once; and a selection made of vertices, edges or faces.
 
-#[path = "common/run.rs"]
-#[allow(dead_code)]
-mod run;
+mod common;
 
-use run::{changed, topolab};
+use common::run::{changed, topolab};
 
 #[test]
 fn explicit_storage_moves_a_vertex_by_finding_every_copy_of_it() {
