@@ -436,9 +436,6 @@ fn list_shows_the_edit_costs_of_openmesh_beside_the_others() {
 }
 
 #[cfg(not(has_openmesh))]
-mod common;
-
-#[cfg(not(has_openmesh))]
 #[test]
 fn skipped_openmesh_edit_costs_in_list_not_compiled_in() {
     common::report_skip("openmesh's edit costs in list", topolab::OPENMESH_MISSING);
