@@ -39,7 +39,7 @@ pub struct Target {
     /// The second mesh of a weld of meshes.
     pub other: Option<PolygonSoup>,
     /// The vertices a rotation or a scaling moves and the centre it moves them about, made by
-    /// the edit's setup ([`selection_at`]).
+    /// the edit's setup (`selection_at`).
     pub selection: Option<(VertexSelection, DVec3)>,
 }
 
