@@ -5,16 +5,9 @@ mod common;
 
 use common::run::topolab;
 use topolab_structures::EditOp;
-
-/// The structures `--op` explains that offer the topological edits (`[editable]`): explicit
-/// storage, which moves vertices only, offers none of the edits these tests refuse or count.
-fn editable() -> Vec<&'static str> {
-    let topological = topolab_structures::registry::editable_names();
-    topolab::commands::explain_edit::editable()
-        .into_iter()
-        .filter(|n| topological.contains(n))
-        .collect()
-}
+// The structures that offer the topological edits these tests refuse or count: explicit
+// storage (`[moves]`) offers none of them.
+use topolab_structures::registry::editable_names;
 
 /// The lesson of counted edits: a flip on the vertex list searches the faces, so its reads
 /// grow with the mesh, where the index half-edge and the CHE level 2 reach the edge through
@@ -88,7 +81,7 @@ fn counted_edits_side_by_side_grow_with_the_mesh_only_where_the_structure_search
 #[test]
 fn every_editable_structure_counts_the_reads_and_writes_of_a_split() {
     let torus = topolab_structures::meshes::torus(8, 6);
-    for name in editable() {
+    for name in editable_names() {
         let counted = topolab_harness::teaching::edits::counted::count(
             name,
             &torus,

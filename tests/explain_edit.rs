@@ -526,16 +526,9 @@ fn named_element(op: EditOp) -> &'static str {
 /// it has no polygon to split by a diagonal (insert-edge) and cannot hold the polygon merging
 /// two triangles makes (delete-edge).
 fn not_offered(name: &str, op: EditOp) -> bool {
-    struct Offers(EditOp);
-    impl topolab_structures::registry::EditVisitor for Offers {
-        type Output = bool;
-        fn visit<M: topolab_structures::MeshEdit + 'static>(self) -> bool {
-            M::supports(self.0)
-        }
-    }
     // `che` explains the four levels, which offer the same operations.
     let name = if name == "che" { "che-l0" } else { name };
-    topolab_structures::registry::visit_editable(name, Offers(op)) == Some(false)
+    topolab_registry::offers(name, op) == Some(false)
 }
 
 #[test]

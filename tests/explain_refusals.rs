@@ -11,16 +11,9 @@ use topolab_structures::meshes::canonical_by_name;
 use topolab_structures::{
     EditOp, Error, IndexHalfEdge, MeshEdit, MeshTopology, PolygonSoup, Refusal, VertexId,
 };
-
-/// The structures `--op` explains that offer the topological edits (`[editable]`): explicit
-/// storage, which moves vertices only, offers none of the edits these tests refuse or count.
-fn editable() -> Vec<&'static str> {
-    let topological = topolab_structures::registry::editable_names();
-    topolab::commands::explain_edit::editable()
-        .into_iter()
-        .filter(|n| topological.contains(n))
-        .collect()
-}
+// The structures that offer the topological edits these tests refuse or count: explicit
+// storage (`[moves]`) offers none of them.
+use topolab_structures::registry::editable_names;
 
 /// ω, the vertex the boundary is coned off to, among this file's link vertices.
 const OMEGA: u32 = u32::MAX;
@@ -240,7 +233,7 @@ fn check_collapses(name: &str, mesh: &str) -> Vec<(u32, &'static str)> {
 
 #[test]
 fn a_refused_collapse_names_its_test_and_element_on_every_structure() {
-    for name in editable() {
+    for name in editable_names() {
         // The open tetrahedron of the CHE thesis chapter's Figure 4.10: its three boundary
         // edges fail the vertex-ring form (each pair of boundary vertices shares the third
         // one), its three edges to the apex OpenMesh's tetrahedron test (docs/editing.md).
@@ -352,7 +345,7 @@ fn several_fans_names_the_vertex_of_two_fans() {
     // Deleting face 3 of the grid leaves one of its corners with two fans.
     let mut left = faces("grid");
     let gone = left.remove(3);
-    for name in editable() {
+    for name in editable_names() {
         let Err(message) = explain(
             name,
             "grid",
@@ -391,7 +384,7 @@ fn a_non_manifold_edge_is_named_by_its_vertices() {
         vertices: vec![0, 1, 2],
         ..Asked::default()
     };
-    for name in editable() {
+    for name in editable_names() {
         let message = explain(name, "open-tetrahedron", EditOp::AddFace, &asked)
             .expect_err("a second face on the same sides");
         let a = number_after(&message, "non-manifold edge: edge v");
@@ -440,7 +433,7 @@ fn a_merged_polygon_that_repeats_a_corner_is_a_repeated_corner() {
     let fs = vec![vec![0, 1, 2, 3], vec![0, 3, 2]];
     let mesh = path.to_str().expect("a UTF-8 path");
     let mut explained = 0;
-    for name in editable() {
+    for name in editable_names() {
         let Err(message) = explain(name, mesh, EditOp::DeleteEdge, &Asked::edge(3)) else {
             panic!("{name}: the deletion of edge 3 succeeded");
         };
@@ -494,7 +487,7 @@ fn a_weld_of_two_corners_of_a_face_is_a_repeated_corner() {
         ..Asked::default()
     };
     let mut explained = 0;
-    for name in editable() {
+    for name in editable_names() {
         let Err(message) = explain(name, "open-tetrahedron", EditOp::WeldVertices, &asked) else {
             panic!("{name}: the weld succeeded");
         };

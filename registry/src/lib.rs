@@ -112,6 +112,19 @@ pub fn visit_editable<V: EditVisitor>(name: &str, visitor: V) -> Option<V::Outpu
 /// their own Euler operations (OpenMesh's, CGAL's), when compiled in.
 pub const NATIVE_CHANGING: &[&str] = COMPILED;
 
+/// Does the structure called `name` offer `op` ([`MeshEdit::supports`](topolab_structures::MeshEdit::supports))?
+/// `None` where it implements no `MeshEdit` (or there is none of that name).
+pub fn offers(name: &str, op: topolab_structures::EditOp) -> Option<bool> {
+    struct Offers(topolab_structures::EditOp);
+    impl EditVisitor for Offers {
+        type Output = bool;
+        fn visit<M: topolab_structures::MeshEdit>(self) -> bool {
+            M::supports(self.0)
+        }
+    }
+    visit_editable(name, Offers(op))
+}
+
 /// Does the structure called `name` change a mesh's topology: through `MeshEdit`'s
 /// topological edits ([`visit_editable`], [`edits_topology`]) or natively
 /// ([`NATIVE_CHANGING`])? Explicit storage implements `MeshEdit` for its moves only: not

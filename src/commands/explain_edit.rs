@@ -49,10 +49,11 @@
 use super::explain_counted as counted;
 use crate::input::{mesh_or_tetrahedron, Failure};
 use crate::registry::{
-    missing_baseline, peer_crate, visit_editable, EditVisitor, CPP_BASELINES, NAMES,
+    missing_baseline, offers, peer_crate, visit_editable, EditVisitor, CPP_BASELINES,
 };
 use std::fmt::Write;
 use std::sync::LazyLock;
+use topolab_harness::teaching::edits::counted::counted_structures;
 use topolab_harness::teaching::edits::described::{reads, Family};
 use topolab_harness::teaching::edits::refusals::witness;
 use topolab_harness::teaching::edits::{
@@ -88,22 +89,12 @@ impl clap::ValueEnum for ExplainOp {
     }
 }
 
-/// The structures `--op` can explain: every one the registry marks `[editable]` (that
-/// [`visit_editable`] reaches) but the C++ baselines ([`CPP_BASELINES`]) and the Rust
-/// crates ([`peer_crate`]), whose records live inside their library and cannot be listed, in
-/// the registry's order.
+/// The structures `--op` can explain: the lab's structures that implement `MeshEdit`
+/// (`[editable]` or `[moves]` in the registry), in the registry's order; not the C++ baselines
+/// nor the Rust crates, whose records live inside their library and cannot be listed
+/// ([`counted_structures`], which the counts and the report's teaching section take too).
 pub fn editable() -> Vec<&'static str> {
-    struct Probe;
-    impl EditVisitor for Probe {
-        type Output = ();
-        fn visit<M: MeshEdit + 'static>(self) {}
-    }
-    NAMES
-        .iter()
-        .copied()
-        .filter(|name| !CPP_BASELINES.contains(name) && peer_crate(name).is_none())
-        .filter(|name| visit_editable(name, Probe).is_some())
-        .collect()
+    counted_structures()
 }
 
 /// The element asked for on the command line: `--edge`, `--face`, `--vertex`, `--vertices`.
@@ -351,13 +342,10 @@ pub fn run(
     }
     // An operation the structure does not offer is a missing feature, said so before any
     // element is chosen, never shown as a refusal of one.
-    if let Some(&lacking) = names
-        .iter()
-        .find(|n| visit_editable(n, Offers(op)) == Some(false))
-    {
+    if let Some(&lacking) = names.iter().find(|n| offers(n, op) == Some(false)) {
         let offering: Vec<&str> = editable()
             .into_iter()
-            .filter(|n| visit_editable(n, Offers(op)) == Some(true))
+            .filter(|n| offers(n, op) == Some(true))
             .collect();
         return Err(Failure {
             message: format!(
@@ -442,15 +430,6 @@ pub fn run(
     };
     out += &counted::table(&names, &case, counting.growth);
     Ok(out)
-}
-
-/// Does the structure visited offer the operation?
-struct Offers(EditOp);
-impl EditVisitor for Offers {
-    type Output = bool;
-    fn visit<M: MeshEdit + 'static>(self) -> bool {
-        M::supports(self.0)
-    }
 }
 
 /// [`default_case_on`] the structure visited.

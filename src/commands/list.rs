@@ -198,12 +198,16 @@ pub fn list(json: bool, counted: bool) -> Result<String, Failure> {
         let _ = write!(out, "{:>width$}", r.name);
     }
     out.push('\n');
-    for (i, op) in EditOp::ALL.iter().enumerate() {
-        let _ = write!(out, "{:<24}", op.name());
+    // One row: its name, then a cell per structure.
+    let row = |out: &mut String, name: &str, cell: &dyn Fn(&EditRow) -> &str| {
+        let _ = write!(out, "{name:<24}");
         for r in &edits {
-            let _ = write!(out, "{:>width$}", r.costs[i].1);
+            let _ = write!(out, "{:>width$}", cell(r));
         }
         out.push('\n');
+    };
+    for (i, op) in EditOp::ALL.iter().enumerate() {
+        row(&mut out, op.name(), &|r| r.costs[i].1);
     }
     // The lecture's refinement and thinning: algorithms over the operations above, a step's
     // declared cost from the structure's.
@@ -212,11 +216,7 @@ pub fn list(json: bool, counted: bool) -> Result<String, Failure> {
         "\nRefinement and thinning (the lecture's Verfeinerung, Ausdünnung), one step"
     );
     for (i, scheme) in Scheme::ALL.iter().enumerate() {
-        let _ = write!(out, "{:<24}", scheme.name());
-        for r in &edits {
-            let _ = write!(out, "{:>width$}", r.schemes[i].1);
-        }
-        out.push('\n');
+        row(&mut out, scheme.name(), &|r| r.schemes[i].1.as_str());
     }
     // The selection rows count what is selected, not a neighbourhood: their k says so.
     let _ = writeln!(

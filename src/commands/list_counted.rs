@@ -47,7 +47,7 @@ pub(crate) fn counted_cells(names: &[&str]) -> Vec<CountedCell> {
                 None => vec![(0, Err("no default element".to_string()))],
             };
             let declared = rows.get(i).and_then(|r| r.cost()).map(str::to_string);
-            let scan = matches!(declared.as_deref(), Some("O(n)" | "O(k·n)" | "O(n²)"));
+            let scan = rows.get(i).is_some_and(|r| r.scans());
             let counts: Vec<u64> = reads.iter().filter_map(|(_, r)| r.clone().ok()).collect();
             let flat = counts.len() == LIST_FACES.len()
                 && counts.windows(2).all(|w| w[1] < 2 * w[0].max(1));

@@ -90,21 +90,14 @@ pub fn adaptive(
         .map_err(|e| Failure::usage(format!("--max-edge {max_edge}: {e}")))?;
     // Longest-edge bisection splits edges: a structure that implements `MeshEdit` without
     // offering the split (explicit storage moves vertices only) cannot run it.
-    struct Splits;
-    impl EditVisitor for Splits {
-        type Output = bool;
-        fn visit<M: MeshEdit + 'static>(self) -> bool {
-            M::supports(EditOp::SplitEdge)
-        }
-    }
     let splitting = || -> Vec<&str> {
         registry::NAMES
             .iter()
             .copied()
-            .filter(|n| registry::visit_editable(n, Splits) == Some(true))
+            .filter(|n| registry::offers(n, EditOp::SplitEdge) == Some(true))
             .collect()
     };
-    match registry::visit_editable(structure, Splits) {
+    match registry::offers(structure, EditOp::SplitEdge) {
         Some(true) => {}
         Some(false) => {
             return Err(Failure {

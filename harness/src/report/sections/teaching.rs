@@ -6,26 +6,9 @@ use crate::format::esc;
 use crate::page::svg;
 use crate::report::section::{Page, Section};
 use crate::results::{Results, TeachingEdit};
-use crate::teaching::edits::counted::{growth_of, CountError, GROWTH_FACES};
+use crate::teaching::edits::counted::{counted_structures, growth_of, CountError, GROWTH_FACES};
 use crate::teaching::edits::{default_case, TAUGHT};
 use std::fmt::Write;
-use topolab_structures::registry::{self, EditVisitor};
-use topolab_structures::MeshEdit;
-
-/// The lab's structures that implement `MeshEdit` (the counting build has them, not the
-/// baselines, which edit inside their libraries), in registry order.
-fn counted_structures() -> Vec<&'static str> {
-    struct Probe;
-    impl EditVisitor for Probe {
-        type Output = ();
-        fn visit<M: MeshEdit + 'static>(self) {}
-    }
-    registry::NAMES
-        .iter()
-        .copied()
-        .filter(|n| registry::visit_editable(n, Probe).is_some())
-        .collect()
-}
 
 /// The taught edits counted on tori of growing size, every structure beside its declared
 /// cost: the same counts as `topolab explain NAME --op OP --structures A,B`, from the same

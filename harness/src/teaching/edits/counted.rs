@@ -46,6 +46,8 @@ pub struct CountedEdit {
     pub structure: &'static str,
     /// Its declared cost of the operation, in the notation of the queries' costs.
     pub cost: String,
+    /// Does that cost grow with the mesh (a scan: O(n), O(k·n), O(n²))?
+    pub scans: bool,
     /// Container reads through the structure's counted accessors.
     pub reads: u64,
     /// Elements of its records that changed (fields, a list's entries).
@@ -75,6 +77,22 @@ impl std::fmt::Display for CountError {
             }
         }
     }
+}
+
+/// The lab's structures that implement `MeshEdit`, in registry order: those whose edits the
+/// counting build counts (the baselines and the Rust crates edit inside their libraries) and
+/// `explain --op` lists record by record.
+pub fn counted_structures() -> Vec<&'static str> {
+    struct Probe;
+    impl EditVisitor for Probe {
+        type Output = ();
+        fn visit<M: MeshEdit + 'static>(self) {}
+    }
+    st::registry::NAMES
+        .iter()
+        .copied()
+        .filter(|n| visit_editable(n, Probe).is_some())
+        .collect()
 }
 
 /// The counting build's operation of the timed build's `op` (the same enum, compiled twice).
@@ -179,9 +197,14 @@ pub struct Growth {
 impl Growth {
     /// The structure's declared cost of the edit, from its first count.
     pub fn cost(&self) -> Option<&str> {
-        self.counts
-            .iter()
-            .find_map(|(_, c)| c.as_ref().ok().map(|c| c.cost.as_str()))
+        self.first().map(|c| c.cost.as_str())
+    }
+    /// Does that cost grow with the mesh ([`CountedEdit::scans`])?
+    pub fn scans(&self) -> bool {
+        self.first().is_some_and(|c| c.scans)
+    }
+    fn first(&self) -> Option<&CountedEdit> {
+        self.counts.iter().find_map(|(_, c)| c.as_ref().ok())
     }
 }
 
@@ -247,6 +270,7 @@ impl EditVisitor for Count<'_> {
         Ok(CountedEdit {
             structure: M::NAME,
             cost: M::edit_cost(self.op).notation().to_string(),
+            scans: M::edit_cost(self.op).expected_exponent() >= 1.0,
             reads,
             writes: records::written(&before, &after),
             refused: done.err().map(|e| e.to_string()),

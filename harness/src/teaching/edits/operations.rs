@@ -3,7 +3,7 @@
 
 use super::st::algorithms::select::{
     rotate_selection, scale_selection, select_edges_in, select_faces_in, select_vertices_in,
-    smooth_step, Aabb, VertexSelection,
+    smooth_step, Aabb, EdgeSelection, FaceSelection, VertexSelection,
 };
 
 use super::st::algorithms::weld::{weld_edges, weld_faces, weld_meshes};
@@ -303,25 +303,37 @@ fn bounds(points: &[DVec3]) -> Aabb {
     Aabb { min, max }
 }
 
-/// What [`EditOp::Select`] selects at the element of `t`: the faces with every corner in a
-/// face's bounding box, the edges with both ends in an edge's, the vertices in the box around a
-/// vertex that reaches halfway to its nearest neighbour ([`selection_box`]). Returns how many.
-fn select_at<M: MeshEdit>(m: &M, t: &Target) -> Result<usize> {
+/// What [`EditOp::Select`] selects at the element of `t`, with what its centre is made of.
+enum Picked {
+    /// The faces with every corner in a face's bounding box; the face's corners.
+    Faces(FaceSelection, Vec<DVec3>),
+    /// The edges with both ends in an edge's bounding box; the edge's ends.
+    Edges(EdgeSelection, [DVec3; 2]),
+    /// The vertices in the box around a vertex that reaches halfway to its nearest neighbour
+    /// ([`selection_box`]); the vertex.
+    Vertices(VertexSelection, VertexId),
+}
+
+/// The selection at the element of `t` (a face, an edge or a vertex): one scan of the
+/// elements of its kind.
+fn select_at<M: MeshEdit>(m: &M, t: &Target) -> Result<Picked> {
     if let Some(f) = t.face {
-        return Ok(select_faces_in(m, &bounds(&corner_positions(m, f))).len());
+        let mut corners = Vec::new();
+        m.face_vertices(f, |v| corners.push(m.position(v)));
+        return Ok(Picked::Faces(
+            select_faces_in(m, &bounds(&corners)),
+            corners,
+        ));
     }
     if let Some(e) = t.edge {
         let ends = m.edge_vertices(e).map(|v| m.position(v));
-        return Ok(select_edges_in(m, &bounds(&ends)).len());
+        return Ok(Picked::Edges(select_edges_in(m, &bounds(&ends)), ends));
     }
-    Ok(select_vertices_in(m, &selection_box(m, t.vertex(0)?)).len())
-}
-
-/// The positions of face `f`'s corners, in order.
-fn corner_positions<M: MeshTopology>(m: &M, f: FaceId) -> Vec<DVec3> {
-    let mut corners = Vec::new();
-    m.face_vertices(f, |v| corners.push(m.position(v)));
-    corners
+    let v = t.vertex(0)?;
+    Ok(Picked::Vertices(
+        select_vertices_in(m, &selection_box(m, v)),
+        v,
+    ))
 }
 
 /// The selection of [`select_at`] as the vertices that [`EditOp::RotateSelection`] and
@@ -329,21 +341,15 @@ fn corner_positions<M: MeshTopology>(m: &M, f: FaceId) -> Vec<DVec3> {
 /// move about: a face's centroid, an edge's midpoint, a vertex's neighbours' centroid (so that
 /// the vertex itself moves).
 pub(super) fn selection_at<M: MeshEdit>(m: &M, t: &Target) -> Result<(VertexSelection, DVec3)> {
-    if let Some(f) = t.face {
-        let corners = corner_positions(m, f);
-        let s = select_faces_in(m, &bounds(&corners));
-        return Ok((s.vertices(m), centroid(corners)));
-    }
-    if let Some(e) = t.edge {
-        let ends = m.edge_vertices(e).map(|v| m.position(v));
-        let s = select_edges_in(m, &bounds(&ends));
-        return Ok((s.vertices(m), (ends[0] + ends[1]) / 2.0));
-    }
-    let v = t.vertex(0)?;
-    let s = select_vertices_in(m, &selection_box(m, v));
-    let mut ring = Vec::new();
-    m.vertex_vertices(v, |w| ring.push(m.position(w)));
-    Ok((s, centroid(ring)))
+    Ok(match select_at(m, t)? {
+        Picked::Faces(s, corners) => (s.vertices(m), centroid(corners)),
+        Picked::Edges(s, [p, q]) => (s.vertices(m), (p + q) / 2.0),
+        Picked::Vertices(s, v) => {
+            let mut ring = Vec::new();
+            m.vertex_vertices(v, |w| ring.push(m.position(w)));
+            (s, centroid(ring))
+        }
+    })
 }
 
 /// What [`edit`] says `op` acts on.
